@@ -1,0 +1,166 @@
+//! The crate's error type.
+//!
+//! Every data-dependent failure is an [`Error`] whose message names the offending field with
+//! the same name the JavaScript bindings use (`c`, `p`, `alpha`, `existence[3]`, `truth[2]`, …),
+//! so a Rust user and a JavaScript user read the same sentence.
+
+use alloc::string::String;
+use core::fmt;
+
+/// What went wrong, and where.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum Error {
+    /// A number outside its documented domain (NaN, infinite, negative, …).
+    InvalidParameter {
+        /// The field, e.g. `c` or `truth[2][0]`.
+        what: String,
+        /// The offending value.
+        value: f64,
+        /// The domain it must lie in, as a phrase: "finite and > 0".
+        expected: &'static str,
+    },
+    /// A probability that is NaN or outside [0, 1].
+    InvalidProbability {
+        /// The field, e.g. `existence[3]`.
+        what: String,
+        /// The offending value.
+        value: f64,
+    },
+    /// Two things that must have the same length or dimension do not.
+    DimensionMismatch {
+        /// The field, e.g. `estimate[4]`.
+        what: String,
+        /// The length or dimension required.
+        expected: usize,
+        /// The length or dimension found.
+        found: usize,
+    },
+    /// A matrix that must be symmetric positive definite is not.
+    NotPositiveDefinite {
+        /// The field, e.g. `components[1].cov`.
+        what: String,
+    },
+    /// A request the method cannot serve with these settings (e.g. the GOSPA decomposition
+    /// for α ≠ 2).
+    Unsupported {
+        /// The field whose value makes the request unsupported.
+        what: String,
+        /// Why, as a sentence fragment.
+        reason: &'static str,
+    },
+}
+
+/// `Result` with [`Error`] as its default error type.
+pub type Result<T, E = Error> = core::result::Result<T, E>;
+
+impl Error {
+    /// An [`Error::InvalidParameter`].
+    pub fn parameter(what: impl Into<String>, value: f64, expected: &'static str) -> Self {
+        Error::InvalidParameter {
+            what: what.into(),
+            value,
+            expected,
+        }
+    }
+
+    /// An [`Error::InvalidProbability`].
+    pub fn probability(what: impl Into<String>, value: f64) -> Self {
+        Error::InvalidProbability {
+            what: what.into(),
+            value,
+        }
+    }
+
+    /// An [`Error::DimensionMismatch`].
+    pub fn dimension(what: impl Into<String>, expected: usize, found: usize) -> Self {
+        Error::DimensionMismatch {
+            what: what.into(),
+            expected,
+            found,
+        }
+    }
+
+    /// The field this error is about.
+    pub fn field(&self) -> &str {
+        match self {
+            Error::InvalidParameter { what, .. }
+            | Error::InvalidProbability { what, .. }
+            | Error::DimensionMismatch { what, .. }
+            | Error::NotPositiveDefinite { what }
+            | Error::Unsupported { what, .. } => what,
+        }
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::InvalidParameter {
+                what,
+                value,
+                expected,
+            } => write!(f, "{what} must be {expected}, got {value}"),
+            Error::InvalidProbability { what, value } => {
+                write!(f, "{what} must be a probability in [0, 1], got {value}")
+            }
+            Error::DimensionMismatch {
+                what,
+                expected,
+                found,
+            } => write!(f, "{what} has length {found}, expected {expected}"),
+            Error::NotPositiveDefinite { what } => {
+                write!(f, "{what} must be symmetric positive definite")
+            }
+            Error::Unsupported { what, reason } => write!(f, "{what}: {reason}"),
+        }
+    }
+}
+
+impl core::error::Error for Error {}
+
+/// Checks that `value` is a probability in [0, 1] (NaN is rejected).
+pub(crate) fn check_probability(what: impl FnOnce() -> String, value: f64) -> Result<f64> {
+    if (0.0..=1.0).contains(&value) {
+        Ok(value)
+    } else {
+        Err(Error::probability(what(), value))
+    }
+}
+
+/// Checks every entry of `values` with [`check_probability`], naming it `name[i]`.
+pub(crate) fn check_probabilities(name: &str, values: &[f64]) -> Result<()> {
+    for (i, &r) in values.iter().enumerate() {
+        check_probability(|| alloc::format!("{name}[{i}]"), r)?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use alloc::string::ToString;
+
+    #[test]
+    fn messages_name_the_field() {
+        let e = Error::parameter("c", -1.0, "finite and > 0");
+        assert_eq!(e.to_string(), "c must be finite and > 0, got -1");
+        assert_eq!(e.field(), "c");
+        let e = Error::probability("existence[3]", 1.5);
+        assert_eq!(
+            e.to_string(),
+            "existence[3] must be a probability in [0, 1], got 1.5"
+        );
+        let e = Error::dimension("estimate[1]", 2, 3);
+        assert_eq!(e.to_string(), "estimate[1] has length 3, expected 2");
+    }
+
+    #[test]
+    fn probability_check_rejects_nan_and_out_of_range() {
+        assert!(check_probabilities("r", &[0.0, 0.5, 1.0]).is_ok());
+        for bad in [f64::NAN, -0.1, 1.0 + 1e-12, f64::INFINITY] {
+            let e = check_probabilities("r", &[0.2, bad]).unwrap_err();
+            assert_eq!(e.field(), "r[1]");
+        }
+    }
+}

@@ -1,0 +1,71 @@
+//! The only place that knows where float functions come from.
+//!
+//! Every transcendental function goes through the pure-Rust [`libm`] crate, with std or
+//! without, so that a native build, a `wasm32` build and a `no_std` microcontroller build give
+//! bit-identical results for the same inputs (std's `powf`/`exp` call the platform's C library
+//! natively but compiler-builtins on wasm32, and those differ in the last bits).
+
+/// √x (correctly rounded everywhere; IEEE 754 requires it).
+#[inline]
+pub fn sqrt(x: f64) -> f64 {
+    libm::sqrt(x)
+}
+
+/// xʸ.
+#[inline]
+pub fn pow(x: f64, y: f64) -> f64 {
+    libm::pow(x, y)
+}
+
+/// eˣ.
+#[inline]
+pub fn exp(x: f64) -> f64 {
+    libm::exp(x)
+}
+
+/// Natural logarithm.
+#[inline]
+pub fn ln(x: f64) -> f64 {
+    libm::log(x)
+}
+
+/// ln(1 + x), accurate for small x.
+#[inline]
+pub fn ln_1p(x: f64) -> f64 {
+    libm::log1p(x)
+}
+
+/// |x|.
+#[inline]
+pub fn abs(x: f64) -> f64 {
+    libm::fabs(x)
+}
+
+/// ln n! as a sum of ln k (exact to rounding for the sizes used here).
+pub fn ln_factorial(n: usize) -> f64 {
+    (2..=n).map(|k| ln(k as f64)).sum()
+}
+
+/// xᵖ for the metric orders: exact shortcuts for p = 1 and p = 2, `pow` otherwise.
+#[inline]
+pub fn powp(x: f64, p: f64) -> f64 {
+    if p == 1.0 {
+        x
+    } else if p == 2.0 {
+        x * x
+    } else {
+        pow(x, p)
+    }
+}
+
+/// x^(1/p), the inverse of [`powp`]: exact shortcuts for p = 1 and p = 2.
+#[inline]
+pub fn rootp(x: f64, p: f64) -> f64 {
+    if p == 1.0 {
+        x
+    } else if p == 2.0 {
+        sqrt(x)
+    } else {
+        pow(x, 1.0 / p)
+    }
+}

@@ -1,0 +1,1 @@
+//! Shared helpers for fisst's paper reproductions and cross-crate tests.
