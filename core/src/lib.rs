@@ -50,6 +50,7 @@ extern crate std;
 pub mod cardinality;
 pub mod error;
 pub mod estimators;
+pub mod gaussian;
 pub mod math;
 pub mod metrics;
 

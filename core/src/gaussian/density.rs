@@ -1,0 +1,215 @@
+//! A multivariate Gaussian with a validated covariance.
+
+use alloc::string::String;
+use alloc::vec::Vec;
+
+use nalgebra::{DMatrix, DVector};
+use rand::Rng;
+
+use crate::error::{Error, Result};
+use crate::math::fns;
+
+/// N(m, P): a mean and a symmetric positive definite covariance, validated once and stored
+/// with its Cholesky factor (P is never inverted).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Gaussian {
+    mean: DVector<f64>,
+    cov: DMatrix<f64>,
+    /// Lower-triangular L with L Lᵀ = P.
+    chol: DMatrix<f64>,
+    ln_det: f64,
+}
+
+/// Relative tolerance of the symmetry check.
+const SYMMETRY_TOL: f64 = 1e-9;
+
+impl Gaussian {
+    /// N(mean, cov). `what` names the Gaussian in errors (e.g. `density` or
+    /// `mixture[2]`); the mean is reported as `{what}.mean`, the covariance as `{what}.cov`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a non-finite entry, [`Error::DimensionMismatch`] if
+    /// `cov` is not `n × n` for `n = mean.len()`, [`Error::NotPositiveDefinite`] if `cov` is
+    /// not symmetric (to a relative 1e-9) positive definite.
+    pub fn new(mean: DVector<f64>, cov: DMatrix<f64>, what: &str) -> Result<Self> {
+        let n = mean.len();
+        if n == 0 {
+            return Err(Error::dimension(alloc::format!("{what}.mean"), 1, 0));
+        }
+        if let Some(i) = mean.iter().position(|v| !v.is_finite()) {
+            return Err(Error::parameter(
+                alloc::format!("{what}.mean[{i}]"),
+                mean[i],
+                "finite",
+            ));
+        }
+        if cov.nrows() != n || cov.ncols() != n {
+            let found = if cov.nrows() != n {
+                cov.nrows()
+            } else {
+                cov.ncols()
+            };
+            return Err(Error::dimension(alloc::format!("{what}.cov"), n, found));
+        }
+        let cov_name = || -> String { alloc::format!("{what}.cov") };
+        if let Some(k) = cov.iter().position(|v| !v.is_finite()) {
+            // nalgebra is column-major: k = col·n + row.
+            return Err(Error::parameter(
+                alloc::format!("{what}.cov[{}][{}]", k % n, k / n),
+                cov[k],
+                "finite",
+            ));
+        }
+        for i in 0..n {
+            for j in 0..i {
+                let (a, b) = (cov[(i, j)], cov[(j, i)]);
+                let scale = fns::sqrt(fns::abs(cov[(i, i)] * cov[(j, j)]));
+                if fns::abs(a - b) > SYMMETRY_TOL * scale.max(f64::MIN_POSITIVE) {
+                    return Err(Error::NotPositiveDefinite { what: cov_name() });
+                }
+            }
+        }
+        // Symmetrise exactly so that downstream results do not depend on which triangle
+        // carried the rounding.
+        let cov = (&cov + cov.transpose()) * 0.5;
+        let chol = cov
+            .clone()
+            .cholesky()
+            .ok_or_else(|| Error::NotPositiveDefinite { what: cov_name() })?
+            .unpack();
+        let ln_det = chol.diagonal().iter().map(|d| 2.0 * fns::ln(*d)).sum();
+        Ok(Self {
+            mean,
+            cov,
+            chol,
+            ln_det,
+        })
+    }
+
+    /// N(mean, cov) from a slice and a row-major `n·n` slice.
+    ///
+    /// # Errors
+    /// As [`Gaussian::new`]; [`Error::DimensionMismatch`] if `cov.len() != n²`.
+    pub fn from_slices(mean: &[f64], cov_row_major: &[f64], what: &str) -> Result<Self> {
+        let n = mean.len();
+        if cov_row_major.len() != n * n {
+            return Err(Error::dimension(
+                alloc::format!("{what}.cov"),
+                n * n,
+                cov_row_major.len(),
+            ));
+        }
+        Self::new(
+            DVector::from_column_slice(mean),
+            DMatrix::from_row_slice(n, n, cov_row_major),
+            what,
+        )
+    }
+
+    /// N(mean, σ²I).
+    ///
+    /// # Errors
+    /// As [`Gaussian::new`] (σ must be finite and > 0).
+    pub fn isotropic(mean: &[f64], sigma: f64, what: &str) -> Result<Self> {
+        if !(sigma.is_finite() && sigma > 0.0) {
+            return Err(Error::parameter(
+                alloc::format!("{what}.sigma"),
+                sigma,
+                "finite and > 0",
+            ));
+        }
+        let n = mean.len();
+        Self::new(
+            DVector::from_column_slice(mean),
+            DMatrix::from_diagonal_element(n, n, sigma * sigma),
+            what,
+        )
+    }
+
+    /// The dimension n.
+    pub fn dim(&self) -> usize {
+        self.mean.len()
+    }
+
+    /// The mean m.
+    pub fn mean(&self) -> &DVector<f64> {
+        &self.mean
+    }
+
+    /// The covariance P (exactly symmetric).
+    pub fn cov(&self) -> &DMatrix<f64> {
+        &self.cov
+    }
+
+    /// The lower Cholesky factor L, L Lᵀ = P.
+    pub fn chol(&self) -> &DMatrix<f64> {
+        &self.chol
+    }
+
+    /// ln det P.
+    pub fn ln_det(&self) -> f64 {
+        self.ln_det
+    }
+
+    /// (x − m)ᵀ P⁻¹ (x − m), by a triangular solve. `x` must have length n.
+    pub fn mahalanobis_sq(&self, x: &[f64]) -> f64 {
+        debug_assert_eq!(x.len(), self.dim());
+        let n = self.dim();
+        // Forward substitution L y = x − m.
+        let mut y: Vec<f64> = Vec::with_capacity(n);
+        let mut total = 0.0;
+        for (i, (&xi, &mi)) in x.iter().zip(self.mean.iter()).enumerate().take(n) {
+            let mut s = xi - mi;
+            for (j, yj) in y.iter().enumerate() {
+                s -= self.chol[(i, j)] * yj;
+            }
+            let yi = s / self.chol[(i, i)];
+            total += yi * yi;
+            y.push(yi);
+        }
+        total
+    }
+
+    /// ln N(x; m, P).
+    pub fn ln_pdf(&self, x: &[f64]) -> f64 {
+        let n = self.dim() as f64;
+        -0.5 * (n * fns::ln(2.0 * core::f64::consts::PI) + self.ln_det + self.mahalanobis_sq(x))
+    }
+
+    /// N(x; m, P).
+    pub fn pdf(&self, x: &[f64]) -> f64 {
+        fns::exp(self.ln_pdf(x))
+    }
+
+    /// A draw m + L z with z standard normal.
+    pub fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> DVector<f64> {
+        let z = DVector::from_iterator(
+            self.dim(),
+            (0..self.dim()).map(|_| super::normal::sample(rng)),
+        );
+        &self.mean + &self.chol * z
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn validates_and_evaluates() {
+        let g = Gaussian::from_slices(&[1.0, 2.0], &[4.0, 1.0, 1.0, 2.0], "density").unwrap();
+        assert_eq!(g.dim(), 2);
+        assert!((g.ln_det() - (7.0f64).ln()).abs() < 1e-14);
+        // P⁻¹ = [2 −1; −1 4]/7; x − m = (1, 0) → 2/7
+        assert!((g.mahalanobis_sq(&[2.0, 2.0]) - 2.0 / 7.0).abs() < 1e-15);
+        let e = Gaussian::from_slices(&[0.0, 0.0], &[1.0, 2.0, 2.0, 1.0], "density").unwrap_err();
+        assert_eq!(e.field(), "density.cov");
+        let e = Gaussian::from_slices(&[0.0, 0.0], &[1.0, 0.5, 0.4, 1.0], "d").unwrap_err();
+        assert_eq!(e.field(), "d.cov");
+        let e = Gaussian::from_slices(&[0.0, f64::NAN], &[1.0, 0.0, 0.0, 1.0], "d").unwrap_err();
+        assert_eq!(e.field(), "d.mean[1]");
+        let e = Gaussian::from_slices(&[0.0], &[1.0, 0.0], "d").unwrap_err();
+        assert_eq!(e.field(), "d.cov");
+        assert!(Gaussian::isotropic(&[0.0], 0.0, "d").is_err());
+    }
+}

@@ -1,0 +1,9 @@
+//! Gaussian densities with validated covariances, Gaussian mixtures, and the scalar normal
+//! distribution functions.
+
+mod density;
+mod mixture;
+pub mod normal;
+
+pub use density::Gaussian;
+pub use mixture::GaussianMixture;
