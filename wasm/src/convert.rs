@@ -100,8 +100,8 @@ pub fn boolean(v: &JsValue, field: &str) -> JsResult<bool> {
         return Ok(b);
     }
     match v.as_f64() {
-        Some(x) if x == 0.0 => Ok(false),
-        Some(x) if x == 1.0 => Ok(true),
+        Some(0.0) => Ok(false),
+        Some(1.0) => Ok(true),
         _ => Err(type_error(format!(
             "{field} must be a boolean, got {}",
             describe(v)
@@ -210,6 +210,17 @@ impl Options {
             Some(v) => number(&v, key),
             None => Ok(default),
         }
+    }
+
+    /// An integer in `[min, max]`, or `default` when absent.
+    pub fn integer_or(&self, key: &str, default: usize, min: usize, max: usize) -> JsResult<usize> {
+        let x = self.number_or(key, default as f64)?;
+        if x.fract() != 0.0 || x < min as f64 || x > max as f64 {
+            return Err(range_error(format!(
+                "{key} must be an integer in [{min}, {max}], got {x}"
+            )));
+        }
+        Ok(x as usize)
     }
 
     /// A required finite number.

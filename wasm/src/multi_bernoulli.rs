@@ -148,13 +148,7 @@ pub fn mb_decision_map(
 ) -> JsResult<JsValue> {
     let opts = Options::new(&options, "options", true)?;
     let estimator = string(&opts.require("estimator")?, "estimator")?;
-    let resolution = opts.number_or("resolution", 100.0)?;
-    if !(resolution >= 1.0 && resolution <= 2000.0 && resolution.fract() == 0.0) {
-        return Err(range_error(format!(
-            "resolution must be an integer in [1, 2000], got {resolution}"
-        )));
-    }
-    let res = resolution as usize;
+    let res = opts.integer_or("resolution", 100, 1, 2000)?;
     let c = opts.number_or("c", 1.0)?;
     let p = opts.number_or("p", 2.0)?;
     let metric = match estimator.as_str() {
@@ -187,7 +181,7 @@ pub fn mb_decision_map(
     }
     let decisions = Uint8Array::from(codes.as_slice());
     Ok(object(&[
-        ("resolution", resolution.into()),
+        ("resolution", (res as f64).into()),
         ("decisions", decisions.into()),
     ]))
 }
@@ -202,15 +196,11 @@ pub fn mb_identical_component_counts(
 ) -> JsResult<JsValue> {
     let opts = Options::new(&options, "options", true)?;
     let r = opts.number("existence")?;
-    let max_n = opts.number("maxComponents")?;
-    if !(max_n >= 1.0 && max_n <= 1000.0 && max_n.fract() == 0.0) {
-        return Err(range_error(format!(
-            "maxComponents must be an integer in [1, 1000], got {max_n}"
-        )));
-    }
+    opts.require("maxComponents")?;
+    let max_n = opts.integer_or("maxComponents", 1, 1, 1000)?;
     let count = |u: &[bool]| u.iter().filter(|&&b| b).count() as f64;
     let (mut ns, mut g, mut o, mut u, mut m) = (vec![], vec![], vec![], vec![], vec![]);
-    for n in 1..=max_n as usize {
+    for n in 1..=max_n {
         let rs = vec![r; n];
         ns.push(n as f64);
         g.push(count(
