@@ -1,0 +1,60 @@
+# fisst — the two set-up commands are `make demo` and `make test`; each installs what is missing.
+SHELL := /bin/bash
+.SHELLFLAGS := -euo pipefail -c
+PORT ?= 8000
+export CHROMEDRIVER ?= /usr/bin/chromedriver
+
+.PHONY: demo test pkg web-pkg setup setup-test check lint test-native test-nostd test-wasm test-js bench clean
+
+## make demo: install what is missing, build the npm package, serve web/ on 127.0.0.1:$(PORT)
+demo: setup web-pkg
+	node scripts/serve.mjs web $(PORT)
+
+## make test: install what is missing, then every test (native, no_std, wasm in Node and Chromium, npm package, pages)
+test: setup-test lint test-native test-nostd test-wasm test-js
+	@echo "make test: all passed"
+
+## make pkg: the npm package `fisst` in wasm/pkg/
+pkg: setup
+	scripts/build-pkg.sh
+
+web-pkg: pkg
+	rm -rf web/pkg
+	cp -r wasm/pkg web/pkg
+
+setup:
+	scripts/setup.sh
+
+setup-test:
+	scripts/setup.sh --test
+
+lint:
+	cargo fmt --all -- --check
+	cargo clippy --locked --workspace --all-targets -- -D warnings
+	cargo clippy --locked -p fisst-wasm --target wasm32-unknown-unknown --all-targets -- -D warnings
+	RUSTDOCFLAGS="-D warnings" cargo doc --locked --workspace --no-deps
+
+test-native:
+	cargo test --locked
+
+test-nostd:
+	cargo test --locked -p fisst --no-default-features
+	cargo build --locked -p fisst --no-default-features --target thumbv7em-none-eabihf
+
+test-wasm:
+	cargo test --locked --target wasm32-unknown-unknown -p fisst-wasm --test node
+	cargo test --locked --target wasm32-unknown-unknown -p fisst-wasm --test browser
+
+test-js: web-pkg
+	scripts/npm-deps.sh
+	cd tests/js && node --test contract.test.mjs readme.test.mjs
+	cd tests/js && node --test --test-concurrency=1 pages.test.mjs
+
+## make bench: criterion benches and the side-by-side scripts (not part of `make test`)
+bench: pkg
+	cd benches && cargo bench
+	python3 benches/gospa_vs_scipy.py
+
+clean:
+	cargo clean
+	rm -rf wasm/pkg web/pkg tests/js/node_modules tests/browser/screenshots

@@ -1,0 +1,109 @@
+// Every demo page in headless Chromium: loads without a console error, reacts to its controls
+// with the values the npm package computes, and leaves a screenshot in
+// tests/browser/screenshots/ (git-ignored).
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { existsSync, readFileSync } from 'node:fs';
+import path from 'node:path';
+import * as fisst from 'fisst';
+import { startBrowser, ROOT } from './lib/browser.mjs';
+
+let browser;
+
+before(async () => {
+  assert.ok(existsSync(path.join(ROOT, 'web/pkg/fisst_wasm.js')), 'web/pkg is missing: run `make web-pkg`');
+  browser = await startBrowser();
+});
+
+after(async () => {
+  await browser?.close();
+});
+
+const demoPages = () => {
+  const html = readFileSync(path.join(ROOT, 'web/index.html'), 'utf8');
+  return [...html.matchAll(/href="([a-z0-9-]+\.html)"/g)].map((m) => m[1]);
+};
+
+test('index lists the demos and every page loads cleanly', async () => {
+  const pages = demoPages();
+  assert.ok(pages.includes('spooky.html'));
+  const index = await browser.open('index.html');
+  assert.deepEqual(index.errors, []);
+  await index.close();
+  for (const rel of pages) {
+    const page = await browser.open(rel);
+    await page.waitForTimeout(200);
+    assert.deepEqual(page.errors, [], `${rel} has errors`);
+    await browser.screenshot(page, path.basename(rel, '.html'));
+    await page.close();
+  }
+});
+
+const text = (page, sel) => page.locator(sel).textContent();
+
+function describe(report) {
+  const on = report.map((u, i) => (u ? i + 1 : 0)).filter(Boolean);
+  return on.length === 0 ? 'report nothing' : `report ${on.join(' and ')}`;
+}
+
+test('spooky: sliders move the decisions to the package values', async () => {
+  const page = await browser.open('spooky.html');
+  for (const [r1, r2] of [[0.4, 0.4], [0.4, 0.9], [0.4, 0.1], [0.7, 0.2], [0.55, 0.05]]) {
+    await page.locator('#r1').fill(String(r1));
+    await page.locator('#r2').fill(String(r2));
+    for (const metric of ['gospa', 'ospa', 'uospa']) {
+      const expected = fisst.mbOptimalEstimate({ existence: [r1, r2], metric });
+      assert.equal(await text(page, `#decision-${metric}`), describe(expected.report), `${metric} at ${r1},${r2}`);
+    }
+  }
+  // The story buttons walk through Example 5.
+  await page.locator('#story-case1').click();
+  assert.equal(await text(page, '#decision-ospa'), 'report 2');
+  assert.match(await text(page, '#story'), /OSPA now report 2/);
+  await page.locator('#story-case2').click();
+  assert.equal(await text(page, '#decision-ospa'), 'report nothing');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('spooky: Fig. 3 readout follows eq. (11)', async () => {
+  const page = await browser.open('spooky.html');
+  await page.locator('#fig3-r').fill('0.2');
+  await page.locator('#fig3-nmax').fill('40');
+  for (const n of [5, 7, 8, 20]) {
+    await page.locator('#fig3-n').fill(String(n));
+    const expected = (1 - 0.2) ** n < 0.2 ? n : 0;
+    assert.equal(Number(await text(page, '#fig3-ospa')), expected, `n=${n}`);
+    assert.equal(Number(await text(page, '#fig3-gospa')), 0);
+  }
+  await page.close();
+});
+
+test('spooky: clicking points updates the GOSPA decomposition', async () => {
+  const page = await browser.open('spooky.html');
+  await page.locator('#pg-clear').click();
+  const canvas = page.locator('#playground');
+  const box = await canvas.boundingBox();
+  // truth at two places, one estimate near the first, one far away
+  await canvas.click({ position: { x: 100, y: 100 } });
+  await canvas.click({ position: { x: 300, y: 300 } });
+  await canvas.click({ position: { x: 112, y: 100 }, modifiers: ['Shift'] });
+  await canvas.click({ position: { x: 420, y: 60 }, modifiers: ['Shift'] });
+  assert.ok(box.width > 400);
+  const state = JSON.parse(await text(page, '#pg-points'));
+  assert.equal(state.truth.length, 2);
+  assert.equal(state.estimate.length, 2);
+  const g = fisst.gospa(state.truth, state.estimate, { c: state.c, p: state.p });
+  assert.equal(Number(await text(page, '#gospa-missed')), g.missed);
+  assert.equal(Number(await text(page, '#gospa-false')), g.falseTargets);
+  assert.equal(g.missed, 1);
+  assert.equal(g.falseTargets, 1);
+  assert.ok(Math.abs(Number(await text(page, '#gospa-distance')) - g.distance) < 1e-4);
+  // moving the cut-off slider changes the distance
+  await page.locator('#pg-c').fill('4');
+  const g4 = fisst.gospa(state.truth, state.estimate, { c: 4, p: state.p });
+  assert.ok(Math.abs(Number(await text(page, '#gospa-distance')) - g4.distance) < 1e-4);
+  assert.deepEqual(page.errors, []);
+  await browser.screenshot(page, 'spooky-playground');
+  await page.close();
+});
