@@ -5,10 +5,20 @@
 //! bit-identical results for the same inputs (std's `powf`/`exp` call the platform's C library
 //! natively but compiler-builtins on wasm32, and those differ in the last bits).
 
-/// √x (correctly rounded everywhere; IEEE 754 requires it).
+/// √x, correctly rounded (IEEE 754 requires it of every implementation, so any correct
+/// square root gives the same bits). With `std` this is the hardware instruction (`sqrtsd`,
+/// wasm's `f64.sqrt`): libm's own wasm path needs nightly intrinsics and otherwise falls back
+/// to a software square root about ten times slower. Without `std`, libm's.
 #[inline]
 pub fn sqrt(x: f64) -> f64 {
-    libm::sqrt(x)
+    #[cfg(feature = "std")]
+    {
+        f64::sqrt(x)
+    }
+    #[cfg(not(feature = "std"))]
+    {
+        libm::sqrt(x)
+    }
 }
 
 /// xʸ.
@@ -68,4 +78,28 @@ pub fn rootp(x: f64, p: f64) -> f64 {
     } else {
         pow(x, 1.0 / p)
     }
+}
+
+/// The four-quadrant arctangent of y/x, in (−π, π].
+#[inline]
+pub fn atan2(y: f64, x: f64) -> f64 {
+    libm::atan2(y, x)
+}
+
+/// arccos x, in [0, π] (NaN outside [−1, 1]).
+#[inline]
+pub fn acos(x: f64) -> f64 {
+    libm::acos(x)
+}
+
+/// ln Γ(x) for x > 0.
+#[inline]
+pub fn ln_gamma(x: f64) -> f64 {
+    libm::lgamma(x)
+}
+
+/// The complementary error function erfc x = 1 − erf x, accurate in the upper tail.
+#[inline]
+pub fn erfc(x: f64) -> f64 {
+    libm::erfc(x)
 }

@@ -32,12 +32,31 @@ pub(crate) fn check_cutoff_order(c: f64, p: f64) -> Result<()> {
 
 /// The optimal assignment of the cut-off costs `min(d(x, y), c)^p` between `x` and `y`.
 ///
-/// Returns `(pairs, costs)`: the `min(|x|, |y|)` assigned `(i, j)` pairs (i indexes `x`, j
-/// indexes `y`, sorted by i) and each pair's cut-off cost `min(d, c)^p` and raw distance `d`.
+/// Returns the `min(|x|, |y|)` assigned pairs (sorted by truth index) with their raw distance
+/// and cut-off cost, and the minimal total `Σ min(d, c)^p`.
+///
+/// # Method: decomposition into the components of the "closer than c" graph
+/// Every pair with `d ≥ c` costs exactly `c^p`, so for `|x| ≤ |y|`
+///
+/// ```text
+/// min_π Σ_i min(d(x_i, y_π(i)), c)^p = c^p |x| + min_γ Σ_{(i,j)∈γ} (d(x_i, y_j)^p − c^p)
+/// ```
+///
+/// where γ ranges over the partial matchings that use only edges of the bipartite graph
+/// `G = {(i, j) : d(x_i, y_j) < c}` (rows of π outside γ go to leftover columns at cost c^p;
+/// there are enough of them because |x| ≤ |y|). The right-hand minimum splits over the
+/// connected components of G, and each component's part is again a rectangular assignment
+/// problem on its own (small) cost matrix by the same identity. So the solver runs one exact
+/// assignment per component, keeps the pairs closer than c, and completes the permutation
+/// with leftover rows and columns in index order (all at cost c^p, since a leftover pair
+/// closer than c would improve an optimum). For the sparse scenes trackers are scored on this
+/// is close to linear after the `O(|x||y|)` distance pass; in the dense worst case it is the
+/// single full problem. The value is exactly the optimum; among equally good assignments the
+/// one returned may differ from a dense solver's.
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] naming `distance(truth[i], estimate[j])` if the metric returns a
-/// NaN or negative value, or the metric's own error (e.g. ragged points).
+/// NaN or negative value, or the metric's own validation error (e.g. ragged points).
 pub(crate) fn cutoff_assignment<T, M: Metric<T> + ?Sized>(
     x: &[T],
     y: &[T],
@@ -45,11 +64,12 @@ pub(crate) fn cutoff_assignment<T, M: Metric<T> + ?Sized>(
     c: f64,
     p: f64,
 ) -> Result<CutoffAssignment> {
-    let (n, m) = (x.len(), y.len());
-    let mut cost = Vec::with_capacity(n * m);
-    let mut dist = Vec::with_capacity(n * m);
     metric.validate(x, y)?;
+    let (n, m) = (x.len(), y.len());
     let cp = fns::powp(c, p);
+    // Edges of G, and a union-find over the n + m vertices (rows first).
+    let mut edges: Vec<(usize, usize, f64)> = Vec::new();
+    let mut forest = UnionFind::new(n + m);
     for (i, xi) in x.iter().enumerate() {
         for (j, yj) in y.iter().enumerate() {
             let d = metric.distance(xi, yj);
@@ -60,25 +80,112 @@ pub(crate) fn cutoff_assignment<T, M: Metric<T> + ?Sized>(
                     ">= 0 (a metric)",
                 ));
             }
-            cost.push(if d >= c { cp } else { fns::powp(d, p) });
-            dist.push(d);
+            if d < c {
+                edges.push((i, j, d));
+                forest.union(i, n + j);
+            }
         }
     }
-    let a = assignment::solve_unchecked(&cost, n, m);
-    let pairs = a
-        .pairs
-        .into_iter()
-        .map(|(i, j)| AssignedPair {
+    // Components with at least one edge, numbered by first appearance.
+    let mut component_of_root = alloc::vec![usize::MAX; n + m];
+    let mut members: Vec<(Vec<usize>, Vec<usize>, Vec<(usize, usize, f64)>)> = Vec::new();
+    let mut local = alloc::vec![usize::MAX; n + m];
+    for &(i, j, d) in &edges {
+        let root = forest.find(i);
+        if component_of_root[root] == usize::MAX {
+            component_of_root[root] = members.len();
+            members.push((Vec::new(), Vec::new(), Vec::new()));
+        }
+        let comp = &mut members[component_of_root[root]];
+        if local[i] == usize::MAX {
+            local[i] = comp.0.len();
+            comp.0.push(i);
+        }
+        if local[n + j] == usize::MAX {
+            local[n + j] = comp.1.len();
+            comp.1.push(j);
+        }
+        comp.2.push((local[i], local[n + j], d));
+    }
+    let mut pairs: Vec<AssignedPair> = Vec::with_capacity(n.min(m));
+    let mut row_done = alloc::vec![false; n];
+    let mut col_done = alloc::vec![false; m];
+    let mut costs = Vec::new();
+    let mut dists = Vec::new();
+    for (rows, cols, local_edges) in &members {
+        let (r, k) = (rows.len(), cols.len());
+        costs.clear();
+        costs.resize(r * k, cp);
+        dists.clear();
+        dists.resize(r * k, f64::INFINITY);
+        for &(a, b, d) in local_edges {
+            costs[a * k + b] = fns::powp(d, p);
+            dists[a * k + b] = d;
+        }
+        for (a, b) in assignment::solve_unchecked(&costs, r, k).pairs {
+            let d = dists[a * k + b];
+            if d < c {
+                let (i, j) = (rows[a], cols[b]);
+                row_done[i] = true;
+                col_done[j] = true;
+                pairs.push(AssignedPair {
+                    truth: i,
+                    estimate: j,
+                    distance: d,
+                    cost: costs[a * k + b],
+                });
+            }
+        }
+    }
+    // Complete the permutation with leftover rows and columns, in index order.
+    let leftover_rows = (0..n).filter(|&i| !row_done[i]);
+    let leftover_cols = (0..m).filter(|&j| !col_done[j]);
+    for (i, j) in leftover_rows.zip(leftover_cols) {
+        pairs.push(AssignedPair {
             truth: i,
             estimate: j,
-            distance: dist[i * m + j],
-            cost: cost[i * m + j],
-        })
-        .collect();
-    Ok(CutoffAssignment {
-        pairs,
-        total: a.cost,
-    })
+            distance: metric.distance(&x[i], &y[j]),
+            cost: cp,
+        });
+    }
+    pairs.sort_unstable_by_key(|q| q.truth);
+    let total = crate::math::sum::sum(pairs.iter().map(|q| q.cost));
+    Ok(CutoffAssignment { pairs, total })
+}
+
+/// Disjoint sets with path halving and union by size.
+struct UnionFind {
+    parent: Vec<usize>,
+    size: Vec<usize>,
+}
+
+impl UnionFind {
+    fn new(n: usize) -> Self {
+        Self {
+            parent: (0..n).collect(),
+            size: alloc::vec![1; n],
+        }
+    }
+
+    fn find(&mut self, mut v: usize) -> usize {
+        while self.parent[v] != v {
+            self.parent[v] = self.parent[self.parent[v]];
+            v = self.parent[v];
+        }
+        v
+    }
+
+    fn union(&mut self, a: usize, b: usize) {
+        let (mut a, mut b) = (self.find(a), self.find(b));
+        if a == b {
+            return;
+        }
+        if self.size[a] < self.size[b] {
+            core::mem::swap(&mut a, &mut b);
+        }
+        self.parent[b] = a;
+        self.size[a] += self.size[b];
+    }
 }
 
 /// An assigned pair and its distances.
