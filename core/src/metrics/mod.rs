@@ -88,31 +88,36 @@ pub(crate) fn cutoff_assignment<T, M: Metric<T> + ?Sized>(
     }
     // Components with at least one edge, numbered by first appearance.
     let mut component_of_root = alloc::vec![usize::MAX; n + m];
-    let mut members: Vec<(Vec<usize>, Vec<usize>, Vec<(usize, usize, f64)>)> = Vec::new();
+    let mut members: Vec<Component> = Vec::new();
     let mut local = alloc::vec![usize::MAX; n + m];
     for &(i, j, d) in &edges {
         let root = forest.find(i);
         if component_of_root[root] == usize::MAX {
             component_of_root[root] = members.len();
-            members.push((Vec::new(), Vec::new(), Vec::new()));
+            members.push(Component::default());
         }
         let comp = &mut members[component_of_root[root]];
         if local[i] == usize::MAX {
-            local[i] = comp.0.len();
-            comp.0.push(i);
+            local[i] = comp.rows.len();
+            comp.rows.push(i);
         }
         if local[n + j] == usize::MAX {
-            local[n + j] = comp.1.len();
-            comp.1.push(j);
+            local[n + j] = comp.cols.len();
+            comp.cols.push(j);
         }
-        comp.2.push((local[i], local[n + j], d));
+        comp.edges.push((local[i], local[n + j], d));
     }
     let mut pairs: Vec<AssignedPair> = Vec::with_capacity(n.min(m));
     let mut row_done = alloc::vec![false; n];
     let mut col_done = alloc::vec![false; m];
     let mut costs = Vec::new();
     let mut dists = Vec::new();
-    for (rows, cols, local_edges) in &members {
+    for Component {
+        rows,
+        cols,
+        edges: local_edges,
+    } in &members
+    {
         let (r, k) = (rows.len(), cols.len());
         costs.clear();
         costs.resize(r * k, cp);
@@ -151,6 +156,15 @@ pub(crate) fn cutoff_assignment<T, M: Metric<T> + ?Sized>(
     pairs.sort_unstable_by_key(|q| q.truth);
     let total = crate::math::sum::sum(pairs.iter().map(|q| q.cost));
     Ok(CutoffAssignment { pairs, total })
+}
+
+/// A connected component of the "closer than c" graph: its rows and columns (global indices)
+/// and its edges in local indices with their distances.
+#[derive(Default)]
+struct Component {
+    rows: Vec<usize>,
+    cols: Vec<usize>,
+    edges: Vec<(usize, usize, f64)>,
 }
 
 /// Disjoint sets with path halving and union by size.
