@@ -9,7 +9,7 @@
 //! ```
 //!
 //! (Mahler, *Advances in Statistical Multisource-Multitarget Information Fusion*, 2014, p. 102,
-//! cited as [27] in `003_…`; eq. (88) of `001_…` with r_S = r). It is computed by the
+//! cited as ref. 27 in `003_…`; eq. (88) of `001_…` with r_S = r). It is computed by the
 //! recursion `ρ_k(n) = (1 − r_k) ρ_{k−1}(n) + r_k ρ_{k−1}(n − 1)`, which only adds and
 //! multiplies nonnegative numbers: every entry is nonnegative and accurate to a few ulps
 //! *relative to itself*, with no cancellation. (The DFT form (90) of `001_…` and the

@@ -25,7 +25,7 @@
 //!   the size is the k maximising `Σ_{top k} (s_i + ln c) − ln k!`. With P_i = εI in d
 //!   dimensions and `c = (2πε)^(d/2)` the objective becomes
 //!   `Π_{j∉I} (1 − r_j) Π_{i∈I} r_i / |I|!`, free of ε (NOTES.md).
-//! - **MAP cardinality, then most probable** (as in Vo & Vo 2013 [30] of `003_…`): n̂ =
+//! - **MAP cardinality, then most probable** (as in Vo & Vo 2013, ref. 30 of `003_…`): n̂ =
 //!   argmax_n ρ(n), then the n̂ components of largest r_i.
 //!
 //! With equal covariances MaM and the third estimator coincide (the scores are ordered like

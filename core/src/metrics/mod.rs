@@ -1,7 +1,7 @@
 //! Multi-object metrics: OSPA with its localisation and cardinality parts, UOSPA, and GOSPA
 //! with its decomposition into localisation, missed and false targets.
 //!
-//! All of them are built on one computation ([`cutoff_assignment`]): the assignment that
+//! All of them are built on one computation (a crate-internal `cutoff_assignment`): the assignment that
 //! minimises `Σ d^(c)(x_i, y_π(i))^p` with `d^(c) = min(d, c)` — the cut-off distance raised to
 //! the order *before* the minimisation. (Minimising `Σ d` and raising afterwards, as Stone Soup
 //! does, picks the wrong assignment whenever p ≠ 1.)
