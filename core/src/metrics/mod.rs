@@ -67,9 +67,11 @@ pub(crate) fn cutoff_assignment<T, M: Metric<T> + ?Sized>(
     metric.validate(x, y)?;
     let (n, m) = (x.len(), y.len());
     let cp = fns::powp(c, p);
-    // Edges of G, and a union-find over the n + m vertices (rows first).
-    let mut edges: Vec<(usize, usize, f64)> = Vec::new();
+    // All distances (row-major), and a union-find over the n + m vertices (rows first) joined
+    // by the edges of G.
+    let mut dist = Vec::with_capacity(n * m);
     let mut forest = UnionFind::new(n + m);
+    let mut has_edge = alloc::vec![false; n + m];
     for (i, xi) in x.iter().enumerate() {
         for (j, yj) in y.iter().enumerate() {
             let d = metric.distance(xi, yj);
@@ -81,90 +83,90 @@ pub(crate) fn cutoff_assignment<T, M: Metric<T> + ?Sized>(
                 ));
             }
             if d < c {
-                edges.push((i, j, d));
                 forest.union(i, n + j);
+                has_edge[i] = true;
+                has_edge[n + j] = true;
             }
+            dist.push(d);
         }
     }
-    // Components with at least one edge, numbered by first appearance.
+    // Components with at least one edge, numbered by first appearance (rows, then columns).
     let mut component_of_root = alloc::vec![usize::MAX; n + m];
     let mut members: Vec<Component> = Vec::new();
-    let mut local = alloc::vec![usize::MAX; n + m];
-    for &(i, j, d) in &edges {
-        let root = forest.find(i);
+    for v in (0..n + m).filter(|&v| has_edge[v]) {
+        let root = forest.find(v);
         if component_of_root[root] == usize::MAX {
             component_of_root[root] = members.len();
             members.push(Component::default());
         }
         let comp = &mut members[component_of_root[root]];
-        if local[i] == usize::MAX {
-            local[i] = comp.rows.len();
-            comp.rows.push(i);
+        if v < n {
+            comp.rows.push(v);
+        } else {
+            comp.cols.push(v - n);
         }
-        if local[n + j] == usize::MAX {
-            local[n + j] = comp.cols.len();
-            comp.cols.push(j);
-        }
-        comp.edges.push((local[i], local[n + j], d));
     }
+    let cost_of = |d: f64| if d < c { fns::powp(d, p) } else { cp };
     let mut pairs: Vec<AssignedPair> = Vec::with_capacity(n.min(m));
     let mut row_done = alloc::vec![false; n];
     let mut col_done = alloc::vec![false; m];
-    let mut costs = Vec::new();
-    let mut dists = Vec::new();
-    for Component {
-        rows,
-        cols,
-        edges: local_edges,
-    } in &members
-    {
-        let (r, k) = (rows.len(), cols.len());
-        costs.clear();
-        costs.resize(r * k, cp);
-        dists.clear();
-        dists.resize(r * k, f64::INFINITY);
-        for &(a, b, d) in local_edges {
-            costs[a * k + b] = fns::powp(d, p);
-            dists[a * k + b] = d;
+    let mut keep = |i: usize, j: usize, d: f64, pairs: &mut Vec<AssignedPair>| {
+        if d < c {
+            row_done[i] = true;
+            col_done[j] = true;
+            pairs.push(AssignedPair {
+                truth: i,
+                estimate: j,
+                distance: d,
+                cost: fns::powp(d, p),
+            });
         }
-        for (a, b) in assignment::solve_unchecked(&costs, r, k).pairs {
-            let d = dists[a * k + b];
-            if d < c {
+    };
+    if members.len() == 1 && members[0].rows.len() == n && members[0].cols.len() == m {
+        // One component holds everything: solve the full problem in the distance buffer.
+        let costs: Vec<f64> = dist.iter().map(|&d| cost_of(d)).collect();
+        for (i, j) in assignment::solve_unchecked(&costs, n, m).pairs {
+            keep(i, j, dist[i * m + j], &mut pairs);
+        }
+    } else {
+        let mut costs = Vec::new();
+        for Component { rows, cols } in &members {
+            let k = cols.len();
+            costs.clear();
+            costs.extend(
+                rows.iter()
+                    .flat_map(|&i| cols.iter().map(move |&j| (i, j)))
+                    .map(|(i, j)| cost_of(dist[i * m + j])),
+            );
+            for (a, b) in assignment::solve_unchecked(&costs, rows.len(), k).pairs {
                 let (i, j) = (rows[a], cols[b]);
-                row_done[i] = true;
-                col_done[j] = true;
-                pairs.push(AssignedPair {
-                    truth: i,
-                    estimate: j,
-                    distance: d,
-                    cost: costs[a * k + b],
-                });
+                keep(i, j, dist[i * m + j], &mut pairs);
             }
         }
     }
     // Complete the permutation with leftover rows and columns, in index order.
     let leftover_rows = (0..n).filter(|&i| !row_done[i]);
     let leftover_cols = (0..m).filter(|&j| !col_done[j]);
-    for (i, j) in leftover_rows.zip(leftover_cols) {
-        pairs.push(AssignedPair {
+    let mut completion: Vec<AssignedPair> = leftover_rows
+        .zip(leftover_cols)
+        .map(|(i, j)| AssignedPair {
             truth: i,
             estimate: j,
-            distance: metric.distance(&x[i], &y[j]),
+            distance: dist[i * m + j],
             cost: cp,
-        });
-    }
+        })
+        .collect();
+    pairs.append(&mut completion);
     pairs.sort_unstable_by_key(|q| q.truth);
     let total = crate::math::sum::sum(pairs.iter().map(|q| q.cost));
     Ok(CutoffAssignment { pairs, total })
 }
 
-/// A connected component of the "closer than c" graph: its rows and columns (global indices)
-/// and its edges in local indices with their distances.
+/// A connected component of the "closer than c" graph: its rows and columns (global indices).
 #[derive(Default)]
 struct Component {
     rows: Vec<usize>,
     cols: Vec<usize>,
-    edges: Vec<(usize, usize, f64)>,
 }
 
 /// Disjoint sets with path halving and union by size.
