@@ -50,8 +50,10 @@ extern crate std;
 pub mod cardinality;
 pub mod error;
 pub mod estimators;
+pub mod fov;
 pub mod gaussian;
 pub mod math;
 pub mod metrics;
+pub mod regions;
 
 pub use error::{Error, Result};

@@ -15,9 +15,11 @@
 //! ```
 
 mod convert;
+mod fov;
 mod metrics;
 mod multi_bernoulli;
 
+pub use fov::{fov_cardinality_js, fov_variance_map};
 pub use metrics::{gospa, linear_assignment, ospa, uospa};
 pub use multi_bernoulli::{
     mb_alternative_estimate, mb_decision_map, mb_identical_component_counts, mb_mean_square_error,

@@ -1,0 +1,405 @@
+//! Field-of-view cardinality pmfs and the sensor-placement map (Sections VI–VII of
+//! `001_0f0df91eee9b30d5.txt`).
+
+use wasm_bindgen::prelude::*;
+
+use crate::convert::{
+    JsResult, Options, OrThrow, array, number, number_array, numbers, object, points, range_error,
+    type_error,
+};
+use fisst::fov::{GridAxis, MultiObjectDensity, fov_cardinality, variance_map};
+use fisst::gaussian::{Gaussian, GaussianMixture};
+use fisst::regions::Region;
+use js_sys::{Array, Float64Array};
+
+/// At most this many Gaussians in one call (each costs one region mass).
+const MAX_GAUSSIANS: usize = 10_000;
+/// At most this many polygon vertices.
+const MAX_VERTICES: usize = 1_000;
+/// Budget of one `fovCardinality` call in estimated native microseconds (about 2 s): the
+/// number of Gaussians times the cost of one mass for the FoV's kind and dimension.
+const MASS_BUDGET_US: f64 = 2e6;
+/// At most this many entries of an i.i.d.-cluster cardinality pmf (the thinning is O(n²)).
+const MAX_CARDINALITY_LEN: usize = 20_001;
+/// At most this many (component, FoV centre) pairs in one variance map.
+const MAX_MAP_WORK: f64 = 2e8;
+
+#[wasm_bindgen(typescript_custom_section)]
+const TS_FOV: &'static str = r#"
+/** A Gaussian: `mean` (length n) and `cov` (n × n, nested arrays). */
+export interface FovGaussian { mean: number[] | Float64Array; cov: (number[] | Float64Array)[]; }
+
+/** A multi-Bernoulli component: existence probability and Gaussian density. */
+export interface FovBernoulli extends FovGaussian { existence: number; }
+
+/** A weighted Gaussian (a PHD or mixture component). */
+export interface FovWeightedGaussian extends FovGaussian { weight: number; }
+
+/**
+ * A multi-object density: exactly one key.
+ * - `multiBernoulli`: one entry per potential object.
+ * - `poisson`: the PHD as a Gaussian mixture; its weights sum to the expected count N_X.
+ * - `iidCluster`: cardinality pmf ρ(0), ρ(1), … (sums to 1) and single-object density (weights sum to 1).
+ * - `glmb`: one entry per hypothesis: its weight (all sum to 1) and the densities of its labels.
+ */
+export type FovRfs =
+  | { multiBernoulli: FovBernoulli[] }
+  | { poisson: FovWeightedGaussian[] }
+  | { iidCluster: { cardinality: number[] | Float64Array; density: FovWeightedGaussian[] } }
+  | { glmb: { weight: number; components: FovGaussian[] }[] };
+
+/**
+ * A field of view in the position subspace (the first state components):
+ * a closed box (any dimension), a closed polygon (2D; either orientation; even–odd rule when
+ * self-intersecting), or a closed disc (a ball in higher dimensions).
+ */
+export type FovRegion =
+  | { box: { min: number[] | Float64Array; max: number[] | Float64Array } }
+  | { polygon: [number, number][] }
+  | { disc: { center: number[] | Float64Array; radius: number } };
+
+export interface FovCardinalityOptions {
+  rfs: FovRfs;
+  fov: FovRegion;
+  /** p_D (default 1): with p_D < 1 the pmf is that of object-originated detections, eq. (75). */
+  detectionProbability?: number;
+}
+
+/**
+ * `pmf[n]`: probability of n objects (detections) in the FoV, n = 0 … (Poisson and
+ * i.i.d. cluster: up to where the tail is below 1e-15). `mean`, `variance`: closed forms.
+ * `massInFov[i]` = ⟨1_S, p_i⟩ for each Gaussian in input order (each mixture component for
+ * Poisson and i.i.d. cluster; for glmb, hypothesis 0's components, then hypothesis 1's, …),
+ * without p_D.
+ */
+export interface FovCardinalityResult {
+  pmf: number[];
+  mean: number;
+  variance: number;
+  massInFov: number[];
+}
+
+export interface FovVarianceMapOptions {
+  multiBernoulli: FovBernoulli[];
+  /** FoV width and height (an axis-aligned box centred on each grid point). */
+  fovSize: [number, number];
+  /** Centres: `[min, max, count]` per axis, `count` in [1, 4096] (like linspace). */
+  grid: { x: [number, number, number]; y: [number, number, number] };
+}
+
+/**
+ * `variance[j * nx + i]` is the FoV-count variance with the FoV centred at (x_i, y_j):
+ * row-major, y the outer index. `argmax` is the centre `[x, y]` of the largest, `max` its value.
+ */
+export interface FovVarianceMapResult {
+  variance: Float64Array;
+  argmax: [number, number];
+  max: number;
+}
+"#;
+
+/// `obj[key]` of the object `path`, or a `TypeError` naming `path.key`.
+fn required(obj: &Options, key: &str, path: &str) -> JsResult<JsValue> {
+    obj.get(key)?
+        .ok_or_else(|| type_error(format!("{path}.{key} is required")))
+}
+
+/// `{ mean, cov }` at `path` as a Gaussian named `path` in errors.
+fn gaussian(obj: &Options, path: &str) -> JsResult<Gaussian> {
+    let mean = numbers(&required(obj, "mean", path)?, &format!("{path}.mean"))?;
+    let cov_path = format!("{path}.cov");
+    let rows = points(&required(obj, "cov", path)?, &cov_path)?;
+    let n = mean.len();
+    if rows.len() != n {
+        return Err(range_error(format!(
+            "{cov_path} has length {}, expected {n}",
+            rows.len()
+        )));
+    }
+    let mut flat = Vec::with_capacity(n * n);
+    for (i, row) in rows.iter().enumerate() {
+        if row.len() != n {
+            return Err(range_error(format!(
+                "{cov_path}[{i}] has length {}, expected {n}",
+                row.len()
+            )));
+        }
+        flat.extend_from_slice(row);
+    }
+    Gaussian::from_slices(&mean, &flat, path).or_throw()
+}
+
+/// An array at `path` of at most [`MAX_GAUSSIANS`] entries, each an object.
+fn entries(v: &JsValue, path: &str) -> JsResult<Vec<(String, Options)>> {
+    let arr = array(v, path, "an array of objects")?;
+    if arr.length() as usize > MAX_GAUSSIANS {
+        return Err(range_error(format!(
+            "{path} has {} entries, at most {MAX_GAUSSIANS} are supported",
+            arr.length()
+        )));
+    }
+    arr.iter()
+        .enumerate()
+        .map(|(i, e)| {
+            let name = format!("{path}[{i}]");
+            Options::new(&e, &name, true).map(|o| (name, o))
+        })
+        .collect()
+}
+
+fn bernoullis(v: &JsValue, path: &str) -> JsResult<Vec<(f64, Gaussian)>> {
+    entries(v, path)?
+        .into_iter()
+        .map(|(name, o)| {
+            let r = number(
+                &required(&o, "existence", &name)?,
+                &format!("{name}.existence"),
+            )?;
+            Ok((r, gaussian(&o, &name)?))
+        })
+        .collect()
+}
+
+fn mixture(v: &JsValue, path: &str) -> JsResult<GaussianMixture> {
+    let comps = entries(v, path)?
+        .into_iter()
+        .map(|(name, o)| {
+            let w = number(&required(&o, "weight", &name)?, &format!("{name}.weight"))?;
+            Ok((w, gaussian(&o, &name)?))
+        })
+        .collect::<JsResult<Vec<_>>>()?;
+    GaussianMixture::new(comps, path).or_throw()
+}
+
+fn rfs(v: &JsValue) -> JsResult<MultiObjectDensity> {
+    let o = Options::new(v, "rfs", true)?;
+    let keys = ["multiBernoulli", "poisson", "iidCluster", "glmb"];
+    let mut found = Vec::new();
+    for k in keys {
+        if let Some(val) = o.get(k)? {
+            found.push((k, val));
+        }
+    }
+    let [(key, val)] = found.as_slice() else {
+        return Err(type_error(format!(
+            "rfs must have exactly one of the keys multiBernoulli, poisson, iidCluster, glmb \
+             (found {})",
+            found.len()
+        )));
+    };
+    match *key {
+        "multiBernoulli" => Ok(MultiObjectDensity::MultiBernoulli(bernoullis(
+            val,
+            "rfs.multiBernoulli",
+        )?)),
+        "poisson" => Ok(MultiObjectDensity::Poisson(mixture(val, "rfs.poisson")?)),
+        "iidCluster" => {
+            let c = Options::new(val, "rfs.iidCluster", true)?;
+            let cardinality = numbers(
+                &required(&c, "cardinality", "rfs.iidCluster")?,
+                "rfs.iidCluster.cardinality",
+            )?;
+            if cardinality.len() > MAX_CARDINALITY_LEN {
+                return Err(range_error(format!(
+                    "rfs.iidCluster.cardinality has {} entries, at most {MAX_CARDINALITY_LEN} \
+                     are supported",
+                    cardinality.len()
+                )));
+            }
+            let density = mixture(
+                &required(&c, "density", "rfs.iidCluster")?,
+                "rfs.iidCluster.density",
+            )?;
+            Ok(MultiObjectDensity::IidCluster {
+                cardinality,
+                density,
+            })
+        }
+        _ => {
+            let mut total = 0usize;
+            let mut hyps = Vec::new();
+            for (name, h) in entries(val, "rfs.glmb")? {
+                let w = number(&required(&h, "weight", &name)?, &format!("{name}.weight"))?;
+                let path = format!("{name}.components");
+                let comps = entries(&required(&h, "components", &name)?, &path)?;
+                total += comps.len();
+                if total > MAX_GAUSSIANS {
+                    return Err(range_error(format!(
+                        "rfs.glmb has more than {MAX_GAUSSIANS} components in all"
+                    )));
+                }
+                let gs = comps
+                    .into_iter()
+                    .map(|(n, o)| gaussian(&o, &n))
+                    .collect::<JsResult<Vec<_>>>()?;
+                hyps.push((w, gs));
+            }
+            Ok(MultiObjectDensity::Glmb(hyps))
+        }
+    }
+}
+
+/// An estimate of the native cost of one Gaussian mass in `fov`, in microseconds (measured:
+/// a 2D box ~1 µs, a 2D disc or small polygon ~150–200 µs, a 3D box ~100 µs, a 3D ball
+/// ~20 ms; each extra dimension multiplies by ~150).
+fn mass_cost_us(kind: &str, dim: usize, vertices: usize) -> f64 {
+    let nested = 150f64.powi(dim.saturating_sub(2) as i32);
+    match kind {
+        "box" if dim <= 2 => 1.0,
+        "box" => nested,
+        "polygon" => 150.0 + 10.0 * vertices as f64,
+        _ if dim <= 1 => 1.0,
+        _ => 150.0 * nested,
+    }
+}
+
+fn region(v: &JsValue) -> JsResult<(Region, f64)> {
+    let o = Options::new(v, "fov", true)?;
+    let found: Vec<(&str, JsValue)> = ["box", "polygon", "disc"]
+        .into_iter()
+        .filter_map(|k| o.get(k).transpose().map(|r| r.map(|v| (k, v))))
+        .collect::<JsResult<_>>()?;
+    let [(key, val)] = found.as_slice() else {
+        return Err(type_error(format!(
+            "fov must have exactly one of the keys box, polygon, disc (found {})",
+            found.len()
+        )));
+    };
+    match *key {
+        "box" => {
+            let b = Options::new(val, "fov.box", true)?;
+            let min = numbers(&required(&b, "min", "fov.box")?, "fov.box.min")?;
+            let max = numbers(&required(&b, "max", "fov.box")?, "fov.box.max")?;
+            let cost = mass_cost_us("box", min.len(), 0);
+            Ok((Region::axis_box(&min, &max, "fov.box").or_throw()?, cost))
+        }
+        "polygon" => {
+            let pts = points(val, "fov.polygon")?;
+            if pts.len() > MAX_VERTICES {
+                return Err(range_error(format!(
+                    "fov.polygon has {} vertices, at most {MAX_VERTICES} are supported",
+                    pts.len()
+                )));
+            }
+            let mut verts = Vec::with_capacity(pts.len());
+            for (i, p) in pts.iter().enumerate() {
+                let &[x, y] = p.as_slice() else {
+                    return Err(range_error(format!(
+                        "fov.polygon[{i}] has length {}, expected 2",
+                        p.len()
+                    )));
+                };
+                verts.push([x, y]);
+            }
+            let cost = mass_cost_us("polygon", 2, verts.len());
+            Ok((Region::polygon(&verts, "fov.polygon").or_throw()?, cost))
+        }
+        _ => {
+            let d = Options::new(val, "fov.disc", true)?;
+            let center = numbers(&required(&d, "center", "fov.disc")?, "fov.disc.center")?;
+            let radius = number(&required(&d, "radius", "fov.disc")?, "fov.disc.radius")?;
+            let cost = mass_cost_us("disc", center.len(), 0);
+            Ok((Region::ball(&center, radius, "fov.disc").or_throw()?, cost))
+        }
+    }
+}
+
+/// The pmf of the number of objects inside a field of view (Propositions 1–4 of the "Split
+/// happens!" paper): options `{ rfs, fov, detectionProbability = 1 }` (see the
+/// `FovCardinalityOptions` type); returns `{ pmf, mean, variance, massInFov }`.
+#[wasm_bindgen(js_name = fovCardinality, unchecked_return_type = "FovCardinalityResult")]
+pub fn fov_cardinality_js(
+    #[wasm_bindgen(unchecked_param_type = "FovCardinalityOptions")] options: JsValue,
+) -> JsResult<JsValue> {
+    let opts = Options::new(&options, "options", true)?;
+    let density = rfs(&required(&opts, "rfs", "options")?)?;
+    let (fov, cost) = region(&required(&opts, "fov", "options")?)?;
+    let count = match &density {
+        MultiObjectDensity::Poisson(m) => m.len(),
+        MultiObjectDensity::IidCluster { density, .. } => density.len(),
+        MultiObjectDensity::MultiBernoulli(c) => c.len(),
+        MultiObjectDensity::Glmb(h) => h.iter().map(|(_, c)| c.len()).sum(),
+    };
+    if count as f64 * cost > MASS_BUDGET_US {
+        return Err(range_error(format!(
+            "fov: {count} Gaussian masses in this region would take about {:.0} s; use fewer \
+             components, fewer polygon vertices or fewer FoV dimensions",
+            count as f64 * cost * 1e-6
+        )));
+    }
+    let pd = opts.number_or("detectionProbability", 1.0)?;
+    let res = fov_cardinality(&density, &fov, pd).or_throw()?;
+    Ok(object(&[
+        ("pmf", number_array(&res.cardinality.pmf)),
+        ("mean", res.cardinality.mean.into()),
+        ("variance", res.cardinality.variance.into()),
+        ("massInFov", number_array(&res.mass_in_fov)),
+    ]))
+}
+
+fn grid_axis(grid: &Options, key: &str) -> JsResult<GridAxis> {
+    let path = format!("grid.{key}");
+    let v = numbers(&required(grid, key, "grid")?, &path)?;
+    let &[min, max, count] = v.as_slice() else {
+        return Err(range_error(format!(
+            "{path} has length {}, expected 3 ([min, max, count])",
+            v.len()
+        )));
+    };
+    if count.fract() != 0.0 || !(1.0..=fisst::fov::MAX_GRID_AXIS as f64).contains(&count) {
+        return Err(range_error(format!(
+            "{path}[2] must be an integer count in [1, {}], got {count}",
+            fisst::fov::MAX_GRID_AXIS
+        )));
+    }
+    Ok(GridAxis {
+        min,
+        max,
+        count: count as usize,
+    })
+}
+
+/// The FoV-count variance of a multi-Bernoulli over a grid of FoV centres, and its maximiser
+/// (Section VII of the "Split happens!" paper): options
+/// `{ multiBernoulli, fovSize: [width, height], grid: { x: [min, max, count], y: [min, max,
+/// count] } }`; returns `{ variance: Float64Array (row-major, y outer), argmax: [x, y], max }`.
+#[wasm_bindgen(js_name = fovVarianceMap, unchecked_return_type = "FovVarianceMapResult")]
+pub fn fov_variance_map(
+    #[wasm_bindgen(unchecked_param_type = "FovVarianceMapOptions")] options: JsValue,
+) -> JsResult<JsValue> {
+    let opts = Options::new(&options, "options", true)?;
+    let comps = bernoullis(
+        &required(&opts, "multiBernoulli", "options")?,
+        "multiBernoulli",
+    )?;
+    let size = numbers(&required(&opts, "fovSize", "options")?, "fovSize")?;
+    let &[w, h] = size.as_slice() else {
+        return Err(range_error(format!(
+            "fovSize has length {}, expected 2 ([width, height])",
+            size.len()
+        )));
+    };
+    let grid = Options::new(&required(&opts, "grid", "options")?, "grid", true)?;
+    let x = grid_axis(&grid, "x")?;
+    let y = grid_axis(&grid, "y")?;
+    if comps.len() as f64 * (x.count * y.count) as f64 > MAX_MAP_WORK {
+        return Err(range_error(format!(
+            "multiBernoulli.length × grid cells is {}, at most {MAX_MAP_WORK:e} is supported",
+            comps.len() * x.count * y.count
+        )));
+    }
+    let map = variance_map(&comps, [w, h], x, y).or_throw()?;
+    let argmax: JsValue = [map.argmax[0], map.argmax[1]]
+        .iter()
+        .map(|&v| JsValue::from_f64(v))
+        .collect::<Array>()
+        .into();
+    Ok(object(&[
+        (
+            "variance",
+            Float64Array::from(map.variance.as_slice()).into(),
+        ),
+        ("argmax", argmax),
+        ("max", map.max.into()),
+    ]))
+}
