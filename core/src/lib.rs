@@ -44,7 +44,8 @@
 #![doc(test(attr(deny(warnings))))]
 
 extern crate alloc;
-#[cfg(feature = "std")]
+// Tests may use std whatever the features (the library itself never does without `std`).
+#[cfg(any(feature = "std", test))]
 extern crate std;
 
 pub mod cardinality;
@@ -54,6 +55,8 @@ pub mod fov;
 pub mod gaussian;
 pub mod math;
 pub mod metrics;
+pub mod mixture;
 pub mod regions;
+pub mod splitting;
 
 pub use error::{Error, Result};

@@ -160,7 +160,7 @@ fn bernoullis(v: &JsValue, path: &str) -> JsResult<Vec<(f64, Gaussian)>> {
         .collect()
 }
 
-fn mixture(v: &JsValue, path: &str) -> JsResult<GaussianMixture> {
+pub(crate) fn mixture(v: &JsValue, path: &str) -> JsResult<GaussianMixture> {
     let comps = entries(v, path)?
         .into_iter()
         .map(|(name, o)| {
@@ -253,7 +253,7 @@ fn mass_cost_us(kind: &str, dim: usize, vertices: usize) -> f64 {
     }
 }
 
-fn region(v: &JsValue) -> JsResult<(Region, f64)> {
+pub(crate) fn region(v: &JsValue) -> JsResult<(Region, f64)> {
     let o = Options::new(v, "fov", true)?;
     let found: Vec<(&str, JsValue)> = ["box", "polygon", "disc"]
         .into_iter()

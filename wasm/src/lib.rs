@@ -18,12 +18,16 @@ mod convert;
 mod fov;
 mod metrics;
 mod multi_bernoulli;
+mod splitting;
 
 pub use fov::{fov_cardinality_js, fov_variance_map};
 pub use metrics::{gospa, linear_assignment, ospa, uospa};
 pub use multi_bernoulli::{
     mb_alternative_estimate, mb_decision_map, mb_identical_component_counts, mb_mean_square_error,
     mb_optimal_estimate, multi_bernoulli_cardinality_js, multi_bernoulli_leave_one_out,
+};
+pub use splitting::{
+    negative_information_scenario_js, reduce_mixture_js, split_for_regions_js, split_library_js,
 };
 
 use wasm_bindgen::prelude::*;

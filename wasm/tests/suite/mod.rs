@@ -5,6 +5,7 @@
 mod fov;
 mod metrics;
 mod multi_bernoulli;
+mod splitting;
 
 use wasm_bindgen::{JsCast, JsValue};
 

@@ -1,0 +1,197 @@
+//! The split of a full-state component along one of its covariance eigenvectors, eqs.
+//! (27)–(31) of `001_…`.
+
+use alloc::string::String;
+use alloc::vec::Vec;
+
+use nalgebra::{DMatrix, DVector, SymmetricEigen};
+
+use super::SplitLibrary;
+use crate::error::{Error, Result};
+use crate::gaussian::Gaussian;
+use crate::math::fns;
+
+/// Iteration cap of the symmetric eigensolver (it converges in a few sweeps; the cap only
+/// guarantees termination).
+const EIGEN_MAX_ITER: usize = 10_000;
+
+/// The eigendecomposition P = V Λ Vᵀ of a symmetric positive definite matrix, eigenvalues in
+/// descending order (ties keep the solver's order), each eigenvector's largest-magnitude
+/// entry positive (the first such on ties), so the order and signs are reproducible.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Eigen {
+    /// λ₁ ≥ λ₂ ≥ … > 0.
+    pub values: Vec<f64>,
+    /// Column i is the unit eigenvector of `values[i]`.
+    pub vectors: DMatrix<f64>,
+}
+
+impl Eigen {
+    /// The decomposition of `cov` (symmetric positive definite). `what` names it in errors.
+    ///
+    /// # Errors
+    /// [`Error::NotPositiveDefinite`] naming `what` if the solver does not converge or an
+    /// eigenvalue is not finite and > 0.
+    pub fn new(cov: &DMatrix<f64>, what: &str) -> Result<Self> {
+        let n = cov.nrows();
+        let not_pd = || Error::NotPositiveDefinite {
+            what: String::from(what),
+        };
+        let eig = SymmetricEigen::try_new(cov.clone(), f64::EPSILON, EIGEN_MAX_ITER)
+            .ok_or_else(not_pd)?;
+        let mut order: Vec<usize> = (0..n).collect();
+        // Stable sort: equal eigenvalues keep the solver's (deterministic) order.
+        order.sort_by(|&a, &b| {
+            eig.eigenvalues[b]
+                .partial_cmp(&eig.eigenvalues[a])
+                .unwrap_or(core::cmp::Ordering::Equal)
+        });
+        let mut values = Vec::with_capacity(n);
+        let mut vectors = DMatrix::zeros(n, n);
+        for (col, &i) in order.iter().enumerate() {
+            let value = eig.eigenvalues[i];
+            if !(value.is_finite() && value > 0.0) {
+                return Err(not_pd());
+            }
+            values.push(value);
+            let v = eig.eigenvectors.column(i);
+            let mut big = 0;
+            for r in 1..n {
+                if fns::abs(v[r]) > fns::abs(v[big]) {
+                    big = r;
+                }
+            }
+            let sign = if v[big] < 0.0 { -1.0 } else { 1.0 };
+            for r in 0..n {
+                vectors[(r, col)] = sign * v[r];
+            }
+        }
+        Ok(Self { values, vectors })
+    }
+}
+
+/// Splits `weight · N(m, P)` into R components along the k-th eigenvector of P (eigenvalues
+/// in descending order, k = 0 the largest), eqs. (27)–(31) of `001_0f0df91eee9b30d5.txt`:
+///
+/// ```text
+/// w N(x; m, P) ≈ Σ_{j=1}^{R} w^{(j)} N(x; m^{(j)}, P^{(j)})            (27)
+/// w^{(j)} = w̃_j w                                                    (28)
+/// m^{(j)} = m + √λ_k m̃_j v_k                                         (29)
+/// P^{(j)} = V Λ' Vᵀ,  Λ' = diag(λ₁ … σ̃² λ_k … λ_n)                    (30)–(31)
+/// ```
+///
+/// with (w̃, m̃, σ̃) from `library`. P^{(j)} is computed in the equivalent rank-one form
+/// P − (1 − σ̃²) λ_k v_k v_kᵀ, which leaves every direction orthogonal to v_k exactly as in P.
+///
+/// # Moments
+/// The children's mixture has mean m (the library is symmetric: Σ w̃_j m̃_j = 0; exact up to
+/// rounding) and covariance P − (1 − V) λ_k v_k v_kᵀ with V = [`SplitLibrary::variance`]:
+/// for Table I, 4.97 % of λ_k is lost along v_k and nothing in any other direction.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming `k` if k ≥ n, `weight` if not finite and ≥ 0;
+/// [`Error::NotPositiveDefinite`] naming `{what}.cov` if the eigensolver fails or a child's
+/// covariance fails its Cholesky factorisation (only for extremely ill-conditioned P).
+///
+/// # Examples
+/// ```
+/// use fisst::gaussian::Gaussian;
+/// use fisst::splitting::{SplitLibrary, split_component};
+/// let g = Gaussian::from_slices(&[1.0, 2.0], &[4.0, 0.0, 0.0, 1.0], "p")?;
+/// let parts = split_component(1.0, &g, 0, &SplitLibrary::table_i(), "p")?;
+/// assert_eq!(parts.len(), 4);
+/// // Along x (eigenvalue 4): means 1 + 2·m̃_j, variance 4·σ̃².
+/// assert!((parts[3].1.mean()[0] - (1.0 + 2.0 * 1.42237156603631)).abs() < 1e-12);
+/// assert!((parts[0].1.cov()[(0, 0)] - 4.0 * 0.58160633157686f64.powi(2)).abs() < 1e-12);
+/// # Ok::<(), fisst::Error>(())
+/// ```
+pub fn split_component(
+    weight: f64,
+    gaussian: &Gaussian,
+    k: usize,
+    library: &SplitLibrary,
+    what: &str,
+) -> Result<Vec<(f64, Gaussian)>> {
+    if !(weight.is_finite() && weight >= 0.0) {
+        return Err(Error::parameter("weight", weight, "finite and >= 0"));
+    }
+    let n = gaussian.dim();
+    if k >= n {
+        return Err(Error::parameter(
+            "k",
+            k as f64,
+            "an eigenvector index below the dimension",
+        ));
+    }
+    let eigen = Eigen::new(gaussian.cov(), &alloc::format!("{what}.cov"))?;
+    split_with_eigen(
+        weight,
+        gaussian.mean(),
+        gaussian.cov(),
+        &eigen,
+        k,
+        library,
+        what,
+    )
+}
+
+/// The children's common covariance P − (1 − σ̃²) λ_k v_k v_kᵀ, exactly symmetric.
+pub(crate) fn child_covariance(
+    cov: &DMatrix<f64>,
+    eigen: &Eigen,
+    k: usize,
+    sigma: f64,
+) -> DMatrix<f64> {
+    let n = cov.nrows();
+    let c = (1.0 - sigma * sigma) * eigen.values[k];
+    let v = eigen.vectors.column(k);
+    let mut out = DMatrix::zeros(n, n);
+    for i in 0..n {
+        for j in 0..=i {
+            let x = 0.5 * (cov[(i, j)] + cov[(j, i)]) - c * v[i] * v[j];
+            out[(i, j)] = x;
+            out[(j, i)] = x;
+        }
+    }
+    out
+}
+
+/// The children's means m + √λ_k m̃_j v_k.
+pub(crate) fn child_means(
+    mean: &DVector<f64>,
+    eigen: &Eigen,
+    k: usize,
+    library: &SplitLibrary,
+) -> Vec<DVector<f64>> {
+    let root = fns::sqrt(eigen.values[k]);
+    let v = eigen.vectors.column(k);
+    library
+        .means()
+        .iter()
+        .map(|&mt| {
+            let step = root * mt;
+            DVector::from_iterator(
+                mean.len(),
+                mean.iter().zip(v.iter()).map(|(m, vi)| m + step * vi),
+            )
+        })
+        .collect()
+}
+
+pub(crate) fn split_with_eigen(
+    weight: f64,
+    mean: &DVector<f64>,
+    cov: &DMatrix<f64>,
+    eigen: &Eigen,
+    k: usize,
+    library: &SplitLibrary,
+    what: &str,
+) -> Result<Vec<(f64, Gaussian)>> {
+    let child_cov = child_covariance(cov, eigen, k, library.sigma());
+    let means = child_means(mean, eigen, k, library);
+    let mut out = Vec::with_capacity(means.len());
+    for (m, &wt) in means.into_iter().zip(library.weights()) {
+        out.push((wt * weight, Gaussian::new(m, child_cov.clone(), what)?));
+    }
+    Ok(out)
+}

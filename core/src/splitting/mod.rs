@@ -1,0 +1,73 @@
+//! Recursive Gaussian splitting along region boundaries: Section IV of
+//! `001_0f0df91eee9b30d5.txt` (K. A. LeGrand, S. Ferrari, "Split happens! Imprecise and
+//! negative information in Gaussian mixture random finite set filtering," JAIF 2022).
+//!
+//! The posterior of "not detected in the field of view S" (or "inside region S") is the
+//! prior times an indicator, eqs. (8)–(9): no longer a Gaussian mixture. The mean-based
+//! partition (11)–(12) ([`partition`]) keeps or drops whole components by where their mean
+//! lies, which is accurate only when the components near ∂S are small. Algorithms 1 and 2
+//! ([`split_for_region`], [`split_for_regions`]) make them small: every component that
+//! straddles a boundary (tested on a collocation grid in its whitened position space) is
+//! split along its best direction with a precomputed univariate split ([`SplitLibrary`],
+//! eqs. (13)–(14), applied by [`split_component`], eqs. (27)–(31)), recursively.
+//!
+//! - [`SplitLibrary`]: Table I verbatim, and an optimiser for any R and λ with equally
+//!   spaced or free symmetric means.
+//! - [`split_component`]: one split along an eigenvector; mean exact, covariance short by
+//!   (1 − [`SplitLibrary::variance`]) λ_k along that eigenvector.
+//! - [`split_for_regions`]: Algorithms 1–2 with w_min, the grid (ζ, N_g), the split
+//!   direction (26) and its tie rule, k* (32), and caps on depth and size
+//!   ([`SplitOptions`], [`SplitOutcome`]).
+//! - [`partition`], [`partition_accuracy`]: (11)–(12) and their error against the exact
+//!   region mass ([`crate::regions::Region::gaussian_mass`]).
+//! - [`non_detection_update`], [`NegativeInformationScenario`]: the non-detection update
+//!   (57)–(58) and the Fig. 5 example.
+//!
+//! Mixture reduction after an update is in [`crate::mixture`].
+//!
+//! ```
+//! use fisst::gaussian::{Gaussian, GaussianMixture};
+//! use fisst::regions::Region;
+//! use fisst::splitting::{SplitLibrary, SplitOptions, non_detection_update, split_for_region};
+//! // A density straddling the FoV's left edge; the sensor saw nothing (p_D = 1).
+//! let g = Gaussian::from_slices(&[-1.0, 0.0], &[1.0, 0.0, 0.0, 1.0], "prior[0]")?;
+//! let prior = GaussianMixture::new(vec![(1.0, g)], "prior")?;
+//! let fov = Region::axis_box(&[-1.0, -2.0], &[3.0, 2.0], "fov")?;
+//! let library = SplitLibrary::table_i();
+//! let split = split_for_region(&prior, &fov, &library, &SplitOptions::default())?;
+//! let (posterior, p_miss) = non_detection_update(&split.mixture, &fov, 1.0)?;
+//! // The exact non-detection probability is 1 − P(x ∈ FoV) ≈ 0.52.
+//! assert!((p_miss - 0.52).abs() < 0.03);
+//! assert!(posterior.len() > 10);
+//! # Ok::<(), fisst::Error>(())
+//! ```
+//!
+//! # References
+//! - `001_0f0df91eee9b30d5.txt`, Section IV (eqs. (10)–(35), Algorithms 1 and 2, Fig. 5,
+//!   Appendix A) and Section V-B (eqs. (57)–(58)).
+//! - K. J. DeMars, R. H. Bishop, M. K. Jah, "Entropy-based approach for uncertainty
+//!   propagation of nonlinear dynamical systems," J. Guid. Control Dyn. 36(4):1047–1057,
+//!   2013, doi:10.2514/1.58987 — the split library and the multivariate split (reference 34 of `001`).
+mod component;
+mod library;
+mod negative_information;
+mod objective;
+mod optimise;
+mod partition;
+mod recursive;
+
+pub use component::{Eigen, split_component};
+pub use library::{
+    MAX_LAMBDA, MAX_SPLIT_COMPONENTS, MIN_LAMBDA, MIN_SPLIT_COMPONENTS, Spacing, SplitLibrary,
+};
+pub use negative_information::{
+    NegativeInformationScenario, NegativeInformationStep, constant_velocity, non_detection_update,
+    predict,
+};
+pub use partition::{Partition, PartitionAccuracy, partition, partition_accuracy};
+pub use recursive::{
+    MAX_DEPTH_LIMIT, MAX_GRID_POINTS, SplitOptions, SplitOutcome, SplitStop, split_for_region,
+    split_for_regions,
+};
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,567 @@
+//! Algorithms 1 and 2 of `001_…`: recursive splitting of the components that straddle the
+//! boundaries of one or several regions.
+
+use alloc::format;
+use alloc::rc::Rc;
+use alloc::vec::Vec;
+use core::cell::OnceCell;
+
+use nalgebra::{DMatrix, DVector};
+
+use super::SplitLibrary;
+use super::component::{Eigen, child_covariance, child_means};
+use crate::error::{Error, Result};
+use crate::gaussian::{Gaussian, GaussianMixture};
+use crate::math::fns;
+use crate::regions::Region;
+
+/// Largest number of collocation points N_g^{n_s} of the full grid (before the ball cut (22)).
+pub const MAX_GRID_POINTS: usize = 1 << 20;
+/// Largest recursion depth [`SplitOptions::max_depth`] may be set to.
+pub const MAX_DEPTH_LIMIT: usize = 64;
+
+/// The knobs of Algorithms 1 and 2 (the split library is passed separately).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SplitOptions {
+    /// n_s: the position states are the first `position_dims` state components (Section III
+    /// of `001_…`); every region must have this dimension. Default 2.
+    pub position_dims: usize,
+    /// w_min: components with weight below it are never split (Algorithm 1); neither are
+    /// components of weight 0. The weight is absolute (compare it with the mixture's total
+    /// weight). Default 0.01, the value of the Fig. 5 example.
+    pub min_weight: f64,
+    /// ζ of eqs. (20)–(22): the collocation grid spans [−ζ, ζ] per axis of the whitened
+    /// position space and keeps the points with ‖ȳ‖ ≤ ζ, so ζ is a Mahalanobis radius. A
+    /// component whose region boundary lies entirely outside that radius is not split (it
+    /// keeps up to Φ(−ζ) of its weight on the wrong side: 2.3 % for ζ = 2). Default 2 with
+    /// N_g = 15, as in the authors' public Python implementation (`pyest`, `split_for_fov`);
+    /// Appendix A's example (plane l = 9 holds the points i₁ = 2 … 14) fits that grid.
+    pub grid_bound: f64,
+    /// N_g of eqs. (20)–(22): grid points per axis (≥ 2; odd values put a point on every
+    /// principal axis). Default 15.
+    pub grid_points: usize,
+    /// Cap on the recursion depth (each level splits a component at most once). A
+    /// component that still straddles a boundary at this depth is kept unsplit and the
+    /// outcome reports [`SplitStop::MaxDepth`]. Default 16; at most [`MAX_DEPTH_LIMIT`].
+    pub max_depth: usize,
+    /// Cap on the number of components of the result. A split that would exceed it is not
+    /// made (its component is kept unsplit) and the outcome reports
+    /// [`SplitStop::MaxComponents`]. Default 10 000.
+    pub max_components: usize,
+}
+
+impl Default for SplitOptions {
+    fn default() -> Self {
+        Self {
+            position_dims: 2,
+            min_weight: 0.01,
+            grid_bound: 2.0,
+            grid_points: 15,
+            max_depth: 16,
+            max_components: 10_000,
+        }
+    }
+}
+
+/// Which cap stopped the recursion early.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SplitStop {
+    /// A component still straddled a boundary at [`SplitOptions::max_depth`].
+    MaxDepth,
+    /// A split would have exceeded [`SplitOptions::max_components`].
+    MaxComponents,
+}
+
+/// The result of [`split_for_regions`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct SplitOutcome {
+    /// The split mixture. Each input component is replaced in place by its descendants, so
+    /// the order follows the input.
+    pub mixture: GaussianMixture,
+    /// The number of recursion levels at which some component was split.
+    pub depth: usize,
+    /// The number of split operations (each replaces one component by R).
+    pub splits: usize,
+    /// `None` when the recursion ended by itself (every remaining component is consistently
+    /// inside or outside on the grid, or lighter than w_min); otherwise the cap that
+    /// stopped it. The mixture is valid either way, only less refined.
+    pub stop: Option<SplitStop>,
+}
+
+/// The collocation grid of eqs. (20)–(22).
+struct Grid {
+    /// The points ȳ, flat, `n_s` numbers each.
+    points: Vec<f64>,
+    /// Their index tuples (i₁ … i_{n_s}) − 1, flat.
+    index: Vec<usize>,
+    ns: usize,
+    ng: usize,
+}
+
+impl Grid {
+    /// ```text
+    /// ȳ_j(l) = −ζ + 2ζ (l − 1)/(N_g − 1)               (21)
+    /// G = {(i₁ … i_{n_s}) : ‖ȳ_{i₁…i_{n_s}}‖ ≤ ζ}       (22)
+    /// ```
+    fn new(ns: usize, ng: usize, zeta: f64) -> Self {
+        let axis: Vec<f64> = (0..ng)
+            .map(|l| -zeta + 2.0 * zeta * (l as f64 / (ng - 1) as f64))
+            .collect();
+        // Points on the sphere ‖ȳ‖ = ζ (the axis ends when N_g is odd) belong to G; the
+        // relative slack absorbs the rounding of ȳ.
+        let r2 = zeta * zeta * (1.0 + 1e-12);
+        let mut points = Vec::new();
+        let mut index = Vec::new();
+        let mut idx = alloc::vec![0usize; ns];
+        loop {
+            let norm2: f64 = idx.iter().map(|&i| axis[i] * axis[i]).sum();
+            if norm2 <= r2 {
+                points.extend(idx.iter().map(|&i| axis[i]));
+                index.extend_from_slice(&idx);
+            }
+            // Odometer increment.
+            let mut d = 0;
+            loop {
+                if d == ns {
+                    return Self {
+                        points,
+                        index,
+                        ns,
+                        ng,
+                    };
+                }
+                idx[d] += 1;
+                if idx[d] < ng {
+                    break;
+                }
+                idx[d] = 0;
+                d += 1;
+            }
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.points.len() / self.ns
+    }
+}
+
+/// What a component needs for the split decision: the full-state eigendecomposition and
+/// the position block's.
+struct CovInfo {
+    full: Eigen,
+    position: Eigen,
+}
+
+/// One component during the recursion. Siblings share their covariance and its
+/// decomposition.
+struct Item {
+    weight: f64,
+    mean: DVector<f64>,
+    cov: Rc<Shared>,
+    /// The input component it descends from (names errors).
+    origin: usize,
+    /// The input Gaussian, for components never split.
+    original: Option<Gaussian>,
+    done: bool,
+}
+
+struct Shared {
+    cov: DMatrix<f64>,
+    info: OnceCell<CovInfo>,
+}
+
+impl Shared {
+    fn new(cov: DMatrix<f64>) -> Rc<Self> {
+        Rc::new(Self {
+            cov,
+            info: OnceCell::new(),
+        })
+    }
+
+    fn info(&self, ns: usize, origin: usize) -> Result<&CovInfo> {
+        if let Some(info) = self.info.get() {
+            return Ok(info);
+        }
+        let what = format!("mixture[{origin}].cov");
+        let full = Eigen::new(&self.cov, &what)?;
+        let position = if ns == self.cov.nrows() {
+            full.clone()
+        } else {
+            Eigen::new(&self.cov.view((0, 0), (ns, ns)).into_owned(), &what)?
+        };
+        Ok(self.info.get_or_init(|| CovInfo { full, position }))
+    }
+}
+
+/// Validates the options against the mixture and regions.
+fn validate(
+    mixture: &GaussianMixture,
+    regions: &[Region],
+    library: &SplitLibrary,
+    options: &SplitOptions,
+) -> Result<()> {
+    let ns = options.position_dims;
+    if ns == 0 {
+        return Err(Error::parameter("positionDims", 0.0, "an integer >= 1"));
+    }
+    if let Some(n) = mixture.dim()
+        && ns > n
+    {
+        return Err(Error::parameter(
+            "positionDims",
+            ns as f64,
+            "at most the state dimension",
+        ));
+    }
+    for (i, r) in regions.iter().enumerate() {
+        if r.dim() != ns {
+            return Err(Error::dimension(format!("regions[{i}]"), ns, r.dim()));
+        }
+    }
+    if !(options.min_weight.is_finite() && options.min_weight >= 0.0) {
+        return Err(Error::parameter(
+            "minWeight",
+            options.min_weight,
+            "finite and >= 0",
+        ));
+    }
+    if !(options.grid_bound.is_finite() && options.grid_bound > 0.0) {
+        return Err(Error::parameter(
+            "gridBound",
+            options.grid_bound,
+            "finite and > 0",
+        ));
+    }
+    let ng = options.grid_points;
+    let total = (0..ns).try_fold(1usize, |acc, _| acc.checked_mul(ng));
+    if ng < 2 || total.is_none_or(|t| t > MAX_GRID_POINTS) {
+        return Err(Error::parameter(
+            "gridPoints",
+            ng as f64,
+            "an integer >= 2 with gridPoints^positionDims <= 2^20",
+        ));
+    }
+    if options.max_depth > MAX_DEPTH_LIMIT {
+        return Err(Error::parameter(
+            "maxDepth",
+            options.max_depth as f64,
+            "an integer in [0, 64]",
+        ));
+    }
+    if library.components() < 2 {
+        return Err(Error::parameter(
+            "components",
+            library.components() as f64,
+            "an integer >= 2",
+        ));
+    }
+    Ok(())
+}
+
+/// Algorithm 1 of `001_…` (`split_for_fov`): [`split_for_regions`] with one region.
+///
+/// # Errors
+/// As [`split_for_regions`].
+pub fn split_for_region(
+    mixture: &GaussianMixture,
+    region: &Region,
+    library: &SplitLibrary,
+    options: &SplitOptions,
+) -> Result<SplitOutcome> {
+    split_for_regions(mixture, core::slice::from_ref(region), library, options)
+}
+
+/// Algorithm 2 of `001_0f0df91eee9b30d5.txt` (`split_for_multifov`, Algorithm 1 when there is
+/// one region): recursively splits every component that straddles a region boundary, so that
+/// the mean-based partition [`partition`](super::partition) (11)–(12) becomes accurate.
+///
+/// For each component ℓ with weight ≥ w_min ([`SplitOptions::min_weight`]):
+///
+/// 1. **Change of variables** (15)–(19): with P_s = V_s Λ_s V_sᵀ the position block of P
+///    (first n_s states) and m_s its mean, y = Λ_s^{−1/2} V_sᵀ (s − m_s) makes the position
+///    marginal N(0, I); the region maps to S_y = h(S).
+///
+///    ```text
+///    y = h(s) = Λ_s^{−1/2} V_sᵀ (s − m_s)             (15)–(17)
+///    ```
+///
+/// 2. **Collocation grid** (20)–(22) of N_g points per axis on [−ζ, ζ], kept within the ball
+///    ‖ȳ‖ ≤ ζ.
+/// 3. **Inclusion** (23), (33): d^{(ι)} = 1_{S_y^{(ι)}}(ȳ) = 1_{S^{(ι)}}(m_s + V_s Λ_s^{1/2} ȳ),
+///    decided by the region's own exact test [`Region::contains`] on the mapped-back point
+///    (no region is ever transformed, so the test stays exact).
+/// 4. **Split or not** (24), (34): no split when, for every region, all grid points agree.
+/// 5. **Position direction** (25)–(26), (35): a grid plane y_j = ȳ_j(l) is consistent when, in
+///    every region, all its points agree; j* maximises the number of consistent planes.
+///    **Tie rule**: among tied j the eigenvector of the largest eigenvalue λ_{s,j} (the
+///    paper's rule; eigenvalues are sorted descending, so the first).
+/// 6. **Full-state direction** (32): k* = argmax_k |[v_{s,j*}ᵀ 0ᵀ] v_k| over the eigenvectors
+///    of the full P (ties again to the largest eigenvalue), and the component is split by
+///    [`split_component`](super::split_component) (27)–(31) along v_{k*}.
+///
+/// The children are examined again at the next level; the recursion ends when no component
+/// needs a split. Each level evaluates (34)–(35) as products over all regions, so the result
+/// does not depend on the order of `regions` (bit for bit).
+///
+/// # Caps
+/// Nothing can make it run away: each level splits a component at most once, the depth is
+/// capped by [`SplitOptions::max_depth`] and the size by [`SplitOptions::max_components`].
+/// At a cap the recursion **stops** (the components not yet refined stay as they are) and
+/// [`SplitOutcome::stop`] says which cap; it is not an error. With w_min > 0 the recursion
+/// ends by itself after at most ln(w_min/w)/ln(max_j w̃_j) levels.
+///
+/// # Limitations
+/// The decision only sees the collocation points: a region (or a part of one) thinner than
+/// the grid spacing 2ζ/(N_g − 1) (0.29 σ by default) can fall between the points and go
+/// unnoticed, and a boundary farther than ζ from the mean is ignored. The accuracy of the
+/// final partition is limited by w_min (see [`partition_accuracy`](super::partition_accuracy)).
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming `positionDims` (0 or above the state dimension),
+/// `minWeight` (negative or not finite), `gridBound` (not finite and > 0), `gridPoints` (< 2
+/// or N_g^{n_s} > 2²⁰), `maxDepth` (> 64); [`Error::DimensionMismatch`] naming `regions[i]`
+/// for a region whose dimension is not n_s; [`Error::NotPositiveDefinite`] naming
+/// `mixture[ℓ].cov` if an eigendecomposition or a child's Cholesky factorisation fails.
+///
+/// # Examples
+/// ```
+/// use fisst::gaussian::{Gaussian, GaussianMixture};
+/// use fisst::regions::Region;
+/// use fisst::splitting::{SplitLibrary, SplitOptions, partition, split_for_regions};
+/// let g = Gaussian::from_slices(&[0.0, 0.0], &[1.0, 0.0, 0.0, 1.0], "mixture[0]")?;
+/// let p = GaussianMixture::new(vec![(1.0, g)], "mixture")?;
+/// let fov = Region::axis_box(&[0.5, -10.0], &[10.0, 10.0], "regions[0]")?;
+/// let library = SplitLibrary::for_components(3, 0.001, Default::default())?;
+/// let out = split_for_regions(&p, &[fov.clone()], &library, &SplitOptions::default())?;
+/// assert!(out.mixture.len() > 1 && out.stop.is_none());
+/// // Mean-based partition: close to the exact P(x > 0.5) = 0.3085.
+/// let part = partition(&out.mixture, &fov)?;
+/// assert!((part.inside_weight - 0.3085).abs() < 0.02);
+/// # Ok::<(), fisst::Error>(())
+/// ```
+pub fn split_for_regions(
+    mixture: &GaussianMixture,
+    regions: &[Region],
+    library: &SplitLibrary,
+    options: &SplitOptions,
+) -> Result<SplitOutcome> {
+    validate(mixture, regions, library, options)?;
+    let ns = options.position_dims;
+    let grid = Grid::new(ns, options.grid_points, options.grid_bound);
+    if grid.len() == 0 {
+        return Err(Error::parameter(
+            "gridPoints",
+            options.grid_points as f64,
+            "a grid with at least one point within gridBound of the origin (use an odd count)",
+        ));
+    }
+    let r = library.components();
+    let mut items: Vec<Item> = mixture
+        .components()
+        .iter()
+        .enumerate()
+        .map(|(i, (w, g))| Item {
+            weight: *w,
+            mean: g.mean().clone(),
+            cov: Shared::new(g.cov().clone()),
+            origin: i,
+            original: Some(g.clone()),
+            done: false,
+        })
+        .collect();
+    let mut depth = 0;
+    let mut splits = 0;
+    let mut stop = None;
+    let mut scratch = Scratch::new(&grid);
+    loop {
+        if items.iter().all(|it| it.done) {
+            break;
+        }
+        let mut count = items.len();
+        let mut next = Vec::with_capacity(items.len());
+        let mut split_here = false;
+        for mut item in items {
+            if item.done {
+                next.push(item);
+                continue;
+            }
+            let k = if item.weight < options.min_weight || item.weight == 0.0 || regions.is_empty()
+            {
+                None
+            } else {
+                let info = item.cov.info(ns, item.origin)?;
+                split_direction(&item.mean, info, regions, &grid, &mut scratch)
+            };
+            let Some(k) = k else {
+                item.done = true;
+                next.push(item);
+                continue;
+            };
+            if depth >= options.max_depth {
+                stop = Some(SplitStop::MaxDepth);
+                item.done = true;
+                next.push(item);
+                continue;
+            }
+            if count + (r - 1) > options.max_components {
+                stop = Some(SplitStop::MaxComponents);
+                item.done = true;
+                next.push(item);
+                continue;
+            }
+            let info = item.cov.info(ns, item.origin)?;
+            let cov = Shared::new(child_covariance(
+                &item.cov.cov,
+                &info.full,
+                k,
+                library.sigma(),
+            ));
+            for (mean, wt) in child_means(&item.mean, &info.full, k, library)
+                .into_iter()
+                .zip(library.weights())
+            {
+                next.push(Item {
+                    weight: wt * item.weight,
+                    mean,
+                    cov: Rc::clone(&cov),
+                    origin: item.origin,
+                    original: None,
+                    done: false,
+                });
+            }
+            count += r - 1;
+            splits += 1;
+            split_here = true;
+        }
+        items = next;
+        if split_here {
+            depth += 1;
+        }
+    }
+    let mut components = Vec::with_capacity(items.len());
+    for item in items {
+        let g = match item.original {
+            Some(g) => g,
+            None => Gaussian::new(
+                item.mean,
+                item.cov.cov.clone(),
+                &format!("mixture[{}]", item.origin),
+            )?,
+        };
+        components.push((item.weight, g));
+    }
+    Ok(SplitOutcome {
+        mixture: GaussianMixture::new(components, "mixture")?,
+        depth,
+        splits,
+        stop,
+    })
+}
+
+/// Buffers reused across components.
+struct Scratch {
+    /// The grid mapped back to position space, flat.
+    mapped: Vec<f64>,
+    /// Per plane (j, l): the reference inclusion of the current region (0 unset, 1 out,
+    /// 2 in) and whether the plane is consistent in every region so far.
+    plane_ref: Vec<u8>,
+    plane_ok: Vec<bool>,
+}
+
+impl Scratch {
+    fn new(grid: &Grid) -> Self {
+        Self {
+            mapped: alloc::vec![0.0; grid.points.len()],
+            plane_ref: alloc::vec![0; grid.ns * grid.ng],
+            plane_ok: alloc::vec![true; grid.ns * grid.ng],
+        }
+    }
+}
+
+/// The split decision of one component: `None` if every region includes or excludes the
+/// whole grid (24)/(34), otherwise k* of (32) for the direction j* of (26)/(35).
+fn split_direction(
+    mean: &DVector<f64>,
+    info: &CovInfo,
+    regions: &[Region],
+    grid: &Grid,
+    scratch: &mut Scratch,
+) -> Option<usize> {
+    let ns = grid.ns;
+    let pos = &info.position;
+    // s = m_s + V_s Λ_s^{1/2} ȳ  (the inverse of (15)).
+    let roots: Vec<f64> = pos.values.iter().map(|&l| fns::sqrt(l)).collect();
+    for (p, out) in grid
+        .points
+        .chunks_exact(ns)
+        .zip(scratch.mapped.chunks_exact_mut(ns))
+    {
+        for (i, o) in out.iter_mut().enumerate() {
+            let mut s = mean[i];
+            for j in 0..ns {
+                s += pos.vectors[(i, j)] * roots[j] * p[j];
+            }
+            *o = s;
+        }
+    }
+    scratch.plane_ok.iter_mut().for_each(|x| *x = true);
+    let mut all_consistent = true;
+    for region in regions {
+        scratch.plane_ref.iter_mut().for_each(|x| *x = 0);
+        let mut first: u8 = 0;
+        for (s, idx) in scratch
+            .mapped
+            .chunks_exact(ns)
+            .zip(grid.index.chunks_exact(ns))
+        {
+            let d: u8 = if region.contains(s) { 2 } else { 1 };
+            if first == 0 {
+                first = d;
+            } else if first != d {
+                all_consistent = false;
+            }
+            for (j, &l) in idx.iter().enumerate() {
+                let slot = j * grid.ng + l;
+                let r = &mut scratch.plane_ref[slot];
+                if *r == 0 {
+                    *r = d;
+                } else if *r != d {
+                    scratch.plane_ok[slot] = false;
+                }
+            }
+        }
+    }
+    if all_consistent {
+        return None;
+    }
+    // (26): the direction with the most consistent planes; ties to the largest eigenvalue.
+    let mut j_star = 0;
+    let mut best = 0usize;
+    for j in 0..ns {
+        let c = scratch.plane_ok[j * grid.ng..(j + 1) * grid.ng]
+            .iter()
+            .filter(|&&ok| ok)
+            .count();
+        if j == 0 || c > best {
+            best = c;
+            j_star = j;
+        }
+    }
+    // (32): the full-state eigenvector best aligned with [v_{s,j*}; 0]; ties to the largest
+    // eigenvalue.
+    let full = &info.full;
+    let n = full.values.len();
+    let mut k_star = 0;
+    let mut best_dot = -1.0;
+    for k in 0..n {
+        let dot: f64 = (0..ns)
+            .map(|i| pos.vectors[(i, j_star)] * full.vectors[(i, k)])
+            .sum();
+        let dot = fns::abs(dot);
+        if dot > best_dot {
+            best_dot = dot;
+            k_star = k;
+        }
+    }
+    Some(k_star)
+}
