@@ -7,7 +7,10 @@ use crate::convert::{
     JsResult, Options, OrThrow, array, number, number_array, numbers, object, points, range_error,
     type_error,
 };
-use fisst::fov::{GridAxis, MultiObjectDensity, fov_cardinality, variance_map};
+use fisst::fov::{
+    GridAxis, MAX_SCENE_COUNT, MultiObjectDensity, SceneOptions, fov_cardinality,
+    mixture_density_grid, placement_scene, variance_map,
+};
 use fisst::gaussian::{Gaussian, GaussianMixture};
 use fisst::regions::Region;
 use js_sys::{Array, Float64Array};
@@ -23,6 +26,11 @@ const MASS_BUDGET_US: f64 = 2e6;
 const MAX_CARDINALITY_LEN: usize = 20_001;
 /// At most this many (component, FoV centre) pairs in one variance map.
 const MAX_MAP_WORK: f64 = 2e8;
+/// At most this many (component, grid point) density evaluations in one `mixtureDensityGrid`
+/// call (~80 ns each natively: about 2 s).
+const MAX_DENSITY_WORK: f64 = 2.5e7;
+/// The largest seed of `placementScene` (integers are exact in a JS number up to 2⁵³ − 1).
+const MAX_SEED: f64 = 9_007_199_254_740_991.0;
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_FOV: &'static str = r#"
@@ -95,6 +103,31 @@ export interface FovVarianceMapResult {
   variance: Float64Array;
   argmax: [number, number];
   max: number;
+}
+
+/**
+ * Options of `placementScene`, every one optional: `count` components (integer in [0, 10000],
+ * default 100), `seed` (integer in [0, 2^53 − 1], default 1), means uniform in
+ * [−extent, extent]² (`extent` > 0, default 3), principal standard deviations uniform in
+ * `sigma` = [min, max] (0 < min ≤ max, default [0.1, 0.5]); existence uniform in [0.35, 1).
+ */
+export interface PlacementSceneOptions {
+  count?: number;
+  seed?: number;
+  extent?: number;
+  sigma?: [number, number];
+}
+
+/** A seeded multi-Bernoulli scene; `multiBernoulli` is ready for `fovCardinality` and `fovVarianceMap`. */
+export interface PlacementSceneResult {
+  multiBernoulli: { existence: number; mean: [number, number]; cov: [[number, number], [number, number]] }[];
+}
+
+export interface MixtureDensityGridOptions {
+  /** Σ weight · N(mean, cov); components of 3 or more dimensions use their first two (position) components. */
+  mixture: FovWeightedGaussian[];
+  /** Positions: `[min, max, count]` per axis, `count` in [1, 4096] (like linspace). */
+  grid: { x: [number, number, number]; y: [number, number, number] };
 }
 "#;
 
@@ -402,4 +435,90 @@ pub fn fov_variance_map(
         ("argmax", argmax),
         ("max", map.max.into()),
     ]))
+}
+
+/// A seeded random multi-Bernoulli scene like the sensor-placement example of the "Split
+/// happens!" paper (Section VII, Figs 9–10): options `{ count = 100, seed = 1, extent = 3,
+/// sigma = [0.1, 0.5] }` (see `PlacementSceneOptions`); returns `{ multiBernoulli: [{
+/// existence, mean: [x, y], cov: [[a, b], [b, c]] }, …] }`. The same seed gives the same scene
+/// on every platform, and a smaller `count` is a prefix of a larger one.
+#[wasm_bindgen(js_name = placementScene, unchecked_return_type = "PlacementSceneResult")]
+pub fn placement_scene_js(
+    #[wasm_bindgen(unchecked_optional_param_type = "PlacementSceneOptions")] options: Option<
+        JsValue,
+    >,
+) -> JsResult<JsValue> {
+    let opts = Options::new(&options.unwrap_or(JsValue::UNDEFINED), "options", false)?;
+    let count = opts.integer_or("count", 100, 0, MAX_SCENE_COUNT)?;
+    let seed = opts.number_or("seed", 1.0)?;
+    if seed.fract() != 0.0 || !(0.0..=MAX_SEED).contains(&seed) {
+        return Err(range_error(format!(
+            "seed must be an integer in [0, 2^53 - 1], got {seed}"
+        )));
+    }
+    let extent = opts.number_or("extent", 3.0)?;
+    let sigma = match opts.get("sigma")? {
+        None => [0.1, 0.5],
+        Some(v) => {
+            let s = numbers(&v, "sigma")?;
+            let &[lo, hi] = s.as_slice() else {
+                return Err(range_error(format!(
+                    "sigma has length {}, expected 2 ([min, max])",
+                    s.len()
+                )));
+            };
+            [lo, hi]
+        }
+    };
+    let scene = placement_scene(&SceneOptions {
+        count,
+        seed: seed as u64,
+        extent,
+        sigma,
+    })
+    .or_throw()?;
+    let components: Array = scene
+        .iter()
+        .map(|(r, g)| {
+            let m = g.mean();
+            let p = g.cov();
+            let cov: Array = [
+                number_array(&[p[(0, 0)], p[(0, 1)]]),
+                number_array(&[p[(1, 0)], p[(1, 1)]]),
+            ]
+            .iter()
+            .collect();
+            object(&[
+                ("existence", (*r).into()),
+                ("mean", number_array(&[m[0], m[1]])),
+                ("cov", cov.into()),
+            ])
+        })
+        .collect();
+    Ok(object(&[("multiBernoulli", components.into())]))
+}
+
+/// A Gaussian mixture's density Σ w N(s; m, P) at every position of a grid, e.g. a
+/// multi-Bernoulli's PHD Σ r N(s; m, P) as a heat map (Fig. 9 of the "Split happens!" paper):
+/// options `{ mixture: [{ weight, mean, cov }, …], grid: { x: [min, max, count], y: [min, max,
+/// count] } }`; returns a `Float64Array`, row-major with y as the outer index (entry
+/// `j * nx + i`). Components of 3 or more dimensions contribute their position marginal (first
+/// two components).
+#[wasm_bindgen(js_name = mixtureDensityGrid)]
+pub fn mixture_density_grid_js(
+    #[wasm_bindgen(unchecked_param_type = "MixtureDensityGridOptions")] options: JsValue,
+) -> JsResult<Float64Array> {
+    let opts = Options::new(&options, "options", true)?;
+    let mix = mixture(&required(&opts, "mixture", "options")?, "mixture")?;
+    let grid = Options::new(&required(&opts, "grid", "options")?, "grid", true)?;
+    let x = grid_axis(&grid, "x")?;
+    let y = grid_axis(&grid, "y")?;
+    if mix.len() as f64 * (x.count * y.count) as f64 > MAX_DENSITY_WORK {
+        return Err(range_error(format!(
+            "mixture.length × grid cells is {}, at most {MAX_DENSITY_WORK:e} is supported",
+            mix.len() * x.count * y.count
+        )));
+    }
+    let d = mixture_density_grid(&mix, x, y).or_throw()?;
+    Ok(Float64Array::from(d.as_slice()))
 }

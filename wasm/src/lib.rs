@@ -20,7 +20,7 @@ mod metrics;
 mod multi_bernoulli;
 mod splitting;
 
-pub use fov::{fov_cardinality_js, fov_variance_map};
+pub use fov::{fov_cardinality_js, fov_variance_map, mixture_density_grid_js, placement_scene_js};
 pub use metrics::{gospa, linear_assignment, ospa, uospa};
 pub use multi_bernoulli::{
     mb_alternative_estimate, mb_decision_map, mb_identical_component_counts, mb_mean_square_error,

@@ -19,17 +19,23 @@
 //!   [`Region::gaussian_mass`](crate::regions::Region::gaussian_mass).
 //! - [`variance_map`]: the FoV-count variance over a grid of FoV centres and its maximiser
 //!   (Section VII).
+//! - [`placement_scene`]: seeded random scenes like Section VII's (Figs 9–10), and
+//!   [`mixture_density_grid`]: a Gaussian mixture (the PHD (99)) over a grid, for Fig. 9.
 
 mod density;
+mod density_grid;
 mod placement;
 pub mod pmf;
+pub mod scene;
 
 pub use density::{FovCount, MultiObjectDensity, fov_cardinality};
+pub use density_grid::mixture_density_grid;
 pub use placement::{GridAxis, MAX_GRID_AXIS, MAX_GRID_CELLS, VarianceMap, variance_map};
 pub use pmf::{
     FovCardinality, GlmbHypothesis, glmb, iid_cluster, multi_bernoulli, multi_bernoulli_dft,
     multi_bernoulli_enumerated, poisson,
 };
+pub use scene::{MAX_SCENE_COUNT, SceneOptions, placement_scene};
 
 #[cfg(test)]
 mod tests;

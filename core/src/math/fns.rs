@@ -103,3 +103,21 @@ pub fn ln_gamma(x: f64) -> f64 {
 pub fn erfc(x: f64) -> f64 {
     libm::erfc(x)
 }
+
+/// sin x.
+#[inline]
+pub fn sin(x: f64) -> f64 {
+    libm::sin(x)
+}
+
+/// cos x.
+#[inline]
+pub fn cos(x: f64) -> f64 {
+    libm::cos(x)
+}
+
+/// arctan x, in (−π/2, π/2).
+#[inline]
+pub fn atan(x: f64) -> f64 {
+    libm::atan(x)
+}

@@ -1,5 +1,7 @@
 use super::{assert_throws, get, js, num, nums};
-use fisst_wasm::{fov_cardinality_js, fov_variance_map};
+use fisst_wasm::{
+    fov_cardinality_js, fov_variance_map, mixture_density_grid_js, placement_scene_js,
+};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -395,5 +397,232 @@ fn variance_map_errors_name_the_field() {
         call("[1,1]", r#"{"x":[0,1,4096],"y":[0,1,4096]}"#),
         "RangeError",
         "grid",
+    );
+}
+
+/// Component `k` of a `placementScene` result as (existence, mx, my, P00, P01, P11), checking
+/// the shape of the entry on the way.
+fn scene_entry(scene: &wasm_bindgen::JsValue, k: u32) -> [f64; 6] {
+    let mb = js_sys::Array::from(&get(scene, "multiBernoulli"));
+    let e = mb.get(k);
+    let mean = nums(&get(&e, "mean"));
+    let cov = js_sys::Array::from(&get(&e, "cov"));
+    assert_eq!((mean.len(), cov.length()), (2, 2));
+    let (c0, c1) = (nums(&cov.get(0)), nums(&cov.get(1)));
+    assert_eq!(c0[1], c1[0]);
+    [num(&e, "existence"), mean[0], mean[1], c0[0], c0[1], c1[1]]
+}
+
+#[wasm_bindgen_test]
+fn placement_scene_is_the_native_scene() {
+    // The same numbers as the native test `fov::scene::tests::default_scene_is_pinned`:
+    // bit-identical scenes natively and in wasm32.
+    let golden: [(u32, [f64; 6]); 2] = [
+        (
+            0,
+            [
+                0.7182650238619825,
+                1.4746905435762068,
+                2.8260165215207773,
+                0.07713190551083224,
+                -1.046535880936458e-5,
+                0.07713020602897852,
+            ],
+        ),
+        (
+            99,
+            [
+                0.5111431663750448,
+                0.693157593170812,
+                0.7195304907966535,
+                0.06554451512016446,
+                0.04699713313188498,
+                0.2250281971638252,
+            ],
+        ),
+    ];
+    let scene = placement_scene_js(None).unwrap();
+    assert_eq!(
+        js_sys::Array::from(&get(&scene, "multiBernoulli")).length(),
+        100
+    );
+    for (k, want) in golden {
+        assert_eq!(
+            scene_entry(&scene, k).map(f64::to_bits),
+            want.map(f64::to_bits)
+        );
+    }
+    // Explicit defaults give the same scene; a smaller count is a prefix; the recipe holds.
+    let explicit = placement_scene_js(Some(js(
+        r#"{"count":100,"seed":1,"extent":3,"sigma":[0.1,0.5]}"#,
+    )))
+    .unwrap();
+    assert_eq!(super::json(&explicit), super::json(&scene));
+    let small =
+        placement_scene_js(Some(js(r#"{"count":7,"extent":2,"sigma":[0.2,0.2]}"#))).unwrap();
+    assert_eq!(
+        js_sys::Array::from(&get(&small, "multiBernoulli")).length(),
+        7
+    );
+    let prefix =
+        placement_scene_js(Some(js(r#"{"count":3,"extent":2,"sigma":[0.2,0.2]}"#))).unwrap();
+    for k in 0..3 {
+        assert_eq!(scene_entry(&small, k), scene_entry(&prefix, k));
+    }
+    for k in 0..7 {
+        let [r, x, y, a, b, c] = scene_entry(&small, k);
+        assert!((0.35..1.0).contains(&r) && x.abs() <= 2.0 && y.abs() <= 2.0);
+        // σ₁ = σ₂ = 0.2: P = 0.04 I whatever the rotation.
+        assert!((a - 0.04).abs() < 1e-15 && b.abs() < 1e-15 && (c - 0.04).abs() < 1e-15);
+    }
+    let other = placement_scene_js(Some(js(r#"{"seed":2}"#))).unwrap();
+    assert_ne!(scene_entry(&other, 0), scene_entry(&scene, 0));
+    // The result feeds fovVarianceMap and fovCardinality unchanged.
+    let mb = super::json(&get(&small, "multiBernoulli"));
+    let map = fov_variance_map(js(&format!(
+        r#"{{"multiBernoulli":{mb},"fovSize":[1,1],"grid":{{"x":[-2,2,9],"y":[-2,2,9]}}}}"#
+    )))
+    .unwrap();
+    assert!(num(&map, "max") > 0.0);
+    let card = cardinality(
+        &format!(r#"{{"multiBernoulli":{mb}}}"#),
+        r#"{"box":{"min":[-9,-9],"max":[9,9]}}"#,
+        "",
+    )
+    .unwrap();
+    let total: f64 = (0..7).map(|k| scene_entry(&small, k)[0]).sum();
+    assert!((num(&card, "mean") - total).abs() < 1e-12);
+}
+
+#[wasm_bindgen_test]
+fn placement_scene_errors_name_the_field() {
+    let call = |o: &str| placement_scene_js(Some(js(o)));
+    assert_throws(call("[1]"), "TypeError", "options");
+    assert_throws(call(r#"{"count":10001}"#), "RangeError", "count");
+    assert_throws(call(r#"{"count":2.5}"#), "RangeError", "count");
+    assert_throws(call(r#"{"count":"5"}"#), "TypeError", "count");
+    assert_throws(call(r#"{"seed":-1}"#), "RangeError", "seed");
+    assert_throws(call(r#"{"seed":0.5}"#), "RangeError", "seed");
+    assert_throws(call(r#"{"seed":1e300}"#), "RangeError", "seed");
+    assert_throws(call(r#"{"extent":0}"#), "RangeError", "extent");
+    assert_throws(call(r#"{"sigma":[0.5]}"#), "RangeError", "sigma");
+    assert_throws(call(r#"{"sigma":[0,1]}"#), "RangeError", "sigma[0]");
+    assert_throws(call(r#"{"sigma":[0.5,0.4]}"#), "RangeError", "sigma[1]");
+    assert_throws(call(r#"{"sigma":[0.5,"x"]}"#), "TypeError", "sigma[1]");
+    // The largest exact integer seed and seed 0 are fine; count 0 gives an empty scene.
+    assert!(call(r#"{"seed":9007199254740991,"count":1}"#).is_ok());
+    let empty = call(r#"{"seed":0,"count":0}"#).unwrap();
+    assert_eq!(
+        js_sys::Array::from(&get(&empty, "multiBernoulli")).length(),
+        0
+    );
+}
+
+#[wasm_bindgen_test]
+fn mixture_density_grid_values_and_shape() {
+    // 0.7 N((1, −1), [[0.5, 0.1], [0.1, 0.3]]) + 0.4 N((0, 2), [[1, −0.2], [−0.2, 0.4]]).
+    let pdf = |x: f64, y: f64, m: [f64; 2], p: [f64; 3]| {
+        let det = p[0] * p[2] - p[1] * p[1];
+        let (dx, dy) = (x - m[0], y - m[1]);
+        let q = (p[2] * dx * dx - 2.0 * p[1] * dx * dy + p[0] * dy * dy) / det;
+        (-0.5 * q).exp() / (2.0 * std::f64::consts::PI * det.sqrt())
+    };
+    let mix = r#"[{"weight":0.7,"mean":[1,-1],"cov":[[0.5,0.1],[0.1,0.3]]},
+                  {"weight":0.4,"mean":[0,2],"cov":[[1,-0.2],[-0.2,0.4]]}]"#;
+    let out = mixture_density_grid_js(js(&format!(
+        r#"{{"mixture":{mix},"grid":{{"x":[-2,3,11],"y":[-3,4,8]}}}}"#
+    )))
+    .unwrap();
+    let d = out.to_vec();
+    assert_eq!(d.len(), 88);
+    for j in 0..8 {
+        for i in 0..11 {
+            let (x, y) = (-2.0 + 0.5 * i as f64, -3.0 + j as f64);
+            let want = 0.7 * pdf(x, y, [1.0, -1.0], [0.5, 0.1, 0.3])
+                + 0.4 * pdf(x, y, [0.0, 2.0], [1.0, -0.2, 0.4]);
+            assert!(
+                (d[j * 11 + i] - want).abs() <= 1e-14 * want + 1e-300,
+                "({i}, {j}): {} vs {want}",
+                d[j * 11 + i]
+            );
+        }
+    }
+    // 4D states (x, y, vx, vy): the position marginal.
+    let mix4 = r#"[{"weight":1,"mean":[1,-1,5,5],
+        "cov":[[0.5,0.1,0.2,0],[0.1,0.3,0,0],[0.2,0,1,0],[0,0,0,1]]}]"#;
+    let out = mixture_density_grid_js(js(&format!(
+        r#"{{"mixture":{mix4},"grid":{{"x":[1,1,1],"y":[-1,-1,1]}}}}"#
+    )))
+    .unwrap();
+    let want = pdf(1.0, -1.0, [1.0, -1.0], [0.5, 0.1, 0.3]);
+    assert!((out.to_vec()[0] - want).abs() < 1e-14 * want);
+    // An empty mixture is zero everywhere.
+    let out =
+        mixture_density_grid_js(js(r#"{"mixture":[],"grid":{"x":[0,1,2],"y":[0,1,3]}}"#)).unwrap();
+    assert_eq!(out.to_vec(), vec![0.0; 6]);
+}
+
+/// `mixtureDensityGrid` with its `Float64Array` as a `JsValue`.
+fn density(opts: wasm_bindgen::JsValue) -> Result<wasm_bindgen::JsValue, wasm_bindgen::JsValue> {
+    mixture_density_grid_js(opts).map(Into::into)
+}
+
+#[wasm_bindgen_test]
+fn mixture_density_grid_errors_name_the_field() {
+    let call =
+        |mix: &str, grid: &str| density(js(&format!(r#"{{"mixture":{mix},"grid":{grid}}}"#)));
+    let ok_mix = r#"[{"weight":1,"mean":[0,0],"cov":[[1,0],[0,1]]}]"#;
+    let grid = r#"{"x":[0,1,3],"y":[0,1,3]}"#;
+    assert!(call(ok_mix, grid).is_ok());
+    assert_throws(
+        density(js(r#"{"grid":{"x":[0,1,3],"y":[0,1,3]}}"#)),
+        "TypeError",
+        "options.mixture",
+    );
+    assert_throws(
+        density(js(&format!(r#"{{"mixture":{ok_mix}}}"#))),
+        "TypeError",
+        "options.grid",
+    );
+    assert_throws(
+        call(r#"[{"weight":-1,"mean":[0,0],"cov":[[1,0],[0,1]]}]"#, grid),
+        "RangeError",
+        "mixture[0].weight",
+    );
+    assert_throws(
+        call(r#"[{"mean":[0,0],"cov":[[1,0],[0,1]]}]"#, grid),
+        "TypeError",
+        "mixture[0].weight",
+    );
+    assert_throws(
+        call(r#"[{"weight":1,"mean":[0],"cov":[[1]]}]"#, grid),
+        "RangeError",
+        "mixture[0].mean",
+    );
+    assert_throws(
+        call(r#"[{"weight":1,"mean":[0,0],"cov":[[1,2],[2,1]]}]"#, grid),
+        "RangeError",
+        "mixture[0].cov",
+    );
+    assert_throws(
+        call(ok_mix, r#"{"x":[0,1,0],"y":[0,1,3]}"#),
+        "RangeError",
+        "grid.x[2]",
+    );
+    assert_throws(
+        call(ok_mix, r#"{"x":[0,1,3],"y":[1,0,3]}"#),
+        "RangeError",
+        "grid.y[1]",
+    );
+    assert_throws(call(ok_mix, r#"{"x":[0,1,3]}"#), "TypeError", "grid.y");
+    // 100 components × 600² points exceed the work cap.
+    let many = format!(
+        "[{}]",
+        vec![r#"{"weight":1,"mean":[0,0],"cov":[[1,0],[0,1]]}"#; 100].join(",")
+    );
+    assert_throws(
+        call(&many, r#"{"x":[0,1,600],"y":[0,1,600]}"#),
+        "RangeError",
+        "mixture",
     );
 }
