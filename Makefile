@@ -54,6 +54,8 @@ test-js: web-pkg
 bench: pkg
 	cd benches && cargo bench
 	python3 benches/gospa_vs_scipy.py
+	python3 benches/pmf_vs_scipy.py
+	python3 benches/map_vs_numpy.py
 
 clean:
 	cargo clean
