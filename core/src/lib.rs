@@ -48,6 +48,7 @@ extern crate alloc;
 #[cfg(any(feature = "std", test))]
 extern crate std;
 
+pub mod bernoulli;
 pub mod cardinality;
 pub mod error;
 pub mod estimators;

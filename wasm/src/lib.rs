@@ -14,12 +14,17 @@
 //! await init();
 //! ```
 
+mod bernoulli;
 mod convert;
 mod fov;
 mod metrics;
 mod multi_bernoulli;
 mod splitting;
 
+pub use bernoulli::{
+    bernoulli_estimate, bernoulli_loss_curve, bernoulli_threshold_curve, mmuc_estimate,
+    multi_bernoulli_point_estimate, probability_outside_ball,
+};
 pub use fov::{fov_cardinality_js, fov_variance_map, mixture_density_grid_js, placement_scene_js};
 pub use metrics::{gospa, linear_assignment, ospa, uospa};
 pub use multi_bernoulli::{

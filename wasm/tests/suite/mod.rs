@@ -2,6 +2,7 @@
 //! Node (`tests/node.rs`) and in Chromium (`tests/browser.rs`).
 #![allow(dead_code)]
 
+mod bernoulli;
 mod fov;
 mod metrics;
 mod multi_bernoulli;

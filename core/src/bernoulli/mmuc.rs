@@ -1,0 +1,764 @@
+//! The minimum mean uniform cost (MMUC) estimate, eq. (12) of `000_…`:
+//! a* = argmin_a q(a), the centre of the ball of radius r0 holding the most probability.
+
+use alloc::vec::Vec;
+
+use crate::bernoulli::ball::{DEFAULT_TOLERANCE, GaussianBall};
+use crate::bernoulli::density::{ParticleSet, Repr, SpatialDensity, dist2, mixture_outside};
+use crate::bernoulli::loss::check_radius;
+use crate::error::Result;
+use crate::math::fns;
+use crate::math::sum::NeumaierSum;
+
+/// How [`SpatialDensity::mmuc`] found a*.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MmucMethod {
+    /// The mean of a Gaussian: exact by Sherman's theorem (a symmetric unimodal density and
+    /// a symmetric convex set: the ball holds the most mass when centred at the mean).
+    GaussianMean,
+    /// The common mean of a mixture whose components all share it: exact, by Sherman's
+    /// theorem applied to each component (each q_j is minimised there, hence their sum).
+    SharedMean,
+    /// A multi-start local search over a mixture (see [`SpatialDensity::mmuc`]): the best of
+    /// the local optima found; a global optimum in every case tested, not a proof.
+    MixtureSearch,
+    /// An exhaustive search over particles: exact.
+    ParticlesExact,
+    /// A local search over particles, used when exhaustive search would take too long (d ≥ 3
+    /// and many close particles): a heuristic.
+    ParticlesHeuristic,
+}
+
+/// The MMUC estimate a* and q(a*).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mmuc {
+    /// a*.
+    pub center: Vec<f64>,
+    /// q(a*) = ∫ 1{‖x − a*‖ > r0} s(dx), computed exactly as
+    /// [`SpatialDensity::prob_outside_ball`] computes it (same tolerance, same value).
+    pub miss_probability: f64,
+    /// The error estimate of `miss_probability` (0 for particles).
+    pub error: f64,
+    /// How a* was found.
+    pub method: MmucMethod,
+}
+
+impl SpatialDensity {
+    /// The MMUC estimate of eq. (12) of `000_…`, the a that minimises q(a) for this
+    /// density and tolerance radius r0 (`radius`):
+    ///
+    /// ```text
+    /// a* = argmin_a ∫ 1{‖x − a‖ > r0} s(dx)
+    /// ```
+    ///
+    /// - **Gaussian**: the mean (Sherman's theorem: S. Sherman, "A theorem on convex sets
+    ///   with applications," Ann. Math. Statist. 26(4):763–767, 1955; also T. W. Anderson,
+    ///   Proc. AMS 6(2):170–176, 1955).
+    /// - **Mixture**: the common mean if every component has it (exact, as above). Otherwise
+    ///   a global search: BFGS with an Armijo line search on q, with the analytic gradient
+    ///   `∂q/∂a = Σ_j w_j U_j M_j/λ_j` of each component (first moments over the ball, computed
+    ///   on the quadrature's nodes; see `ball`), from every component mean, the mixture mean,
+    ///   and the weighted midpoint of every pair of components close enough to share a ball
+    ///   (≤ 2 r0 + 6(σ_i + σ_j) apart) when that midpoint beats both means — this finds optima
+    ///   that lie between modes — each run to steps below 1e-7 of the smallest length scale
+    ///   min(r0, σ_min); the best is kept. A local search cannot prove a global optimum; the
+    ///   tests compare it with dense grid searches.
+    /// - **Particles**: exact in any dimension with the weight covered by a closed ball
+    ///   (particles at exactly r0 are inside, as in (9)). 1D: a sweep over the sorted
+    ///   particles (an optimal interval can start at a particle), O(n log n). 2D: an optimal
+    ///   disc can be moved until a particle lies on its boundary, so an angular sweep of the
+    ///   disc centres on the circle of radius r0 about each particle finds it, O(n² log n).
+    ///   d ≥ 3: the lowest point (in a fixed generic direction) of the set of centres covering
+    ///   an optimal subset lies on the spheres of at most d particles, so enumerating the
+    ///   centres defined by every set of ≤ d mutually close particles finds it; when that
+    ///   would exceed ~2·10⁷ candidate checks a mean-shift local search from a subsample of
+    ///   particles is used instead ([`MmucMethod::ParticlesHeuristic`]). In every case the
+    ///   returned centre is then moved to the centre of the smallest ball enclosing the
+    ///   covered particles (Welzl), which keeps them inside with the largest margin.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) naming `radius` unless
+    /// finite and > 0.
+    pub fn mmuc(&self, radius: f64) -> Result<Mmuc> {
+        check_radius(radius)?;
+        Ok(match self.repr() {
+            Repr::Gaussian(g) => {
+                let center: Vec<f64> = g.gaussian().mean().iter().copied().collect();
+                let b = g.outside(&center, radius, DEFAULT_TOLERANCE);
+                Mmuc {
+                    center,
+                    miss_probability: b.outside,
+                    error: b.error,
+                    method: MmucMethod::GaussianMean,
+                }
+            }
+            Repr::Mixture { components, mean } => mixture_mmuc(components, mean, radius),
+            Repr::Particles(p) => particle_mmuc(p, radius),
+        })
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Mixtures
+// ---------------------------------------------------------------------------------------
+
+/// Tolerance on q during the search.
+const SEARCH_TOLERANCE: f64 = 1e-10;
+
+fn mixture_mmuc(components: &[(f64, GaussianBall)], mean: &[f64], radius: f64) -> Mmuc {
+    let finish = |center: Vec<f64>, method: MmucMethod| {
+        let b = mixture_outside(components, &center, radius, DEFAULT_TOLERANCE);
+        Mmuc {
+            center,
+            miss_probability: b.outside,
+            error: b.error,
+            method,
+        }
+    };
+    let live: Vec<&(f64, GaussianBall)> = components.iter().filter(|(w, _)| *w > 0.0).collect();
+    let means: Vec<Vec<f64>> = live
+        .iter()
+        .map(|(_, g)| g.gaussian().mean().iter().copied().collect())
+        .collect();
+    if let Some(first) = means.first()
+        && means.iter().all(|m| m == first)
+    {
+        return finish(first.clone(), MmucMethod::SharedMean);
+    }
+    // The smallest length scale on which q(a) can change.
+    let min_sd = live
+        .iter()
+        .map(|(_, g)| g.min_sd())
+        .fold(f64::INFINITY, f64::min);
+    let length = radius.min(min_sd).max(f64::MIN_POSITIVE);
+    let typical_sd = live.iter().map(|(w, g)| w * g.max_sd()).sum::<f64>();
+    let step = 0.25 * (radius + typical_sd);
+    let q_start = |a: &[f64]| mixture_outside(components, a, radius, 1e-8).outside;
+
+    // Starts: every component mean, the mixture mean, promising midpoints.
+    let mut starts: Vec<Vec<f64>> = Vec::new();
+    let push_unique = |starts: &mut Vec<Vec<f64>>, x: Vec<f64>| {
+        if !starts.iter().any(|s| s == &x) {
+            starts.push(x);
+        }
+    };
+    for m in &means {
+        push_unique(&mut starts, m.clone());
+    }
+    push_unique(&mut starts, mean.to_vec());
+    let at_means: Vec<f64> = means.iter().map(|m| q_start(m)).collect();
+    if live.len() <= 40 {
+        for i in 0..live.len() {
+            for j in i + 1..live.len() {
+                let (wi, gi) = live[i];
+                let (wj, gj) = live[j];
+                let reach = 2.0 * radius + 6.0 * (gi.max_sd() + gj.max_sd());
+                if dist2(&means[i], &means[j]) > reach * reach {
+                    continue;
+                }
+                let mid: Vec<f64> = means[i]
+                    .iter()
+                    .zip(&means[j])
+                    .map(|(a, b)| (wi * a + wj * b) / (wi + wj))
+                    .collect();
+                if q_start(&mid) < at_means[i].min(at_means[j]) {
+                    push_unique(&mut starts, mid);
+                }
+            }
+        }
+    }
+
+    let opts = BfgsOptions {
+        step,
+        xtol: 1e-7 * length,
+        max_iter: 200,
+    };
+    let mut q_grad =
+        |a: &[f64]| mixture_outside_with_gradient(components, a, radius, SEARCH_TOLERANCE);
+    let mut best: Option<(f64, Vec<f64>)> = None;
+    for x0 in &starts {
+        let (x, fx) = bfgs(&mut q_grad, x0, &opts);
+        if best.as_ref().is_none_or(|b| fx < b.0) {
+            best = Some((fx, x));
+        }
+    }
+    let center = best.map_or_else(|| mean.to_vec(), |b| b.1);
+    finish(center, MmucMethod::MixtureSearch)
+}
+
+/// Σ_j w_j q_j(a) and its gradient.
+fn mixture_outside_with_gradient(
+    components: &[(f64, GaussianBall)],
+    center: &[f64],
+    radius: f64,
+    tol: f64,
+) -> (f64, Vec<f64>) {
+    let mut value = NeumaierSum::new();
+    let mut grad = alloc::vec![0.0; center.len()];
+    for (w, g) in components {
+        if *w == 0.0 {
+            continue;
+        }
+        let (b, gj) = g.outside_with_gradient(center, radius, tol);
+        value.add(w * b.outside);
+        for (a, x) in grad.iter_mut().zip(&gj) {
+            *a += w * x;
+        }
+    }
+    (value.total(), grad)
+}
+
+struct BfgsOptions {
+    /// Length of the first step (and 4× the longest step).
+    step: f64,
+    /// Stop when a step is shorter than this (max norm).
+    xtol: f64,
+    max_iter: usize,
+}
+
+/// BFGS on the inverse Hessian with an Armijo backtracking line search (Nocedal & Wright,
+/// Numerical Optimization, 2nd ed., Algorithm 6.1), steps capped at 4·`step`. Returns the
+/// best point and its value.
+fn bfgs<F: FnMut(&[f64]) -> (f64, Vec<f64>)>(
+    f: &mut F,
+    x0: &[f64],
+    o: &BfgsOptions,
+) -> (Vec<f64>, f64) {
+    let n = x0.len();
+    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+    let norm = |a: &[f64]| fns::sqrt(dot(a, a));
+    let mut x = x0.to_vec();
+    let (mut fx, mut g) = f(&x);
+    let scaled_identity = |g: &[f64]| -> Vec<f64> {
+        let c = o.step / norm(g).max(f64::MIN_POSITIVE);
+        let mut h = alloc::vec![0.0; n * n];
+        for i in 0..n {
+            h[i * n + i] = c;
+        }
+        h
+    };
+    let mut h = scaled_identity(&g);
+    let mut first = true;
+    for _ in 0..o.max_iter {
+        if norm(&g) == 0.0 {
+            break;
+        }
+        let mut p: Vec<f64> = (0..n).map(|i| -dot(&h[i * n..(i + 1) * n], &g)).collect();
+        let mut slope = dot(&g, &p);
+        if slope >= 0.0 {
+            h = scaled_identity(&g);
+            p = (0..n).map(|i| -h[i * n + i] * g[i]).collect();
+            slope = dot(&g, &p);
+        }
+        let cap = 4.0 * o.step;
+        let len = norm(&p);
+        if len > cap {
+            for v in &mut p {
+                *v *= cap / len;
+            }
+            slope *= cap / len;
+        }
+        let plen = norm(&p);
+        let mut alpha = 1.0;
+        let accepted = loop {
+            let xn: Vec<f64> = x.iter().zip(&p).map(|(xi, pi)| xi + alpha * pi).collect();
+            let (fnew, gnew) = f(&xn);
+            if fnew <= fx + 1e-4 * alpha * slope {
+                break Some((xn, fnew, gnew));
+            }
+            alpha *= 0.5;
+            if alpha * plen < o.xtol {
+                break None;
+            }
+        };
+        let Some((xn, fnew, gnew)) = accepted else {
+            break;
+        };
+        let s: Vec<f64> = xn.iter().zip(&x).map(|(a, b)| a - b).collect();
+        let y: Vec<f64> = gnew.iter().zip(&g).map(|(a, b)| a - b).collect();
+        x = xn;
+        fx = fnew;
+        g = gnew;
+        if s.iter().all(|v| fns::abs(*v) < o.xtol) {
+            break;
+        }
+        let sy = dot(&s, &y);
+        if sy > 1e-12 * norm(&s) * norm(&y) {
+            if first {
+                // Nocedal & Wright (6.20): scale H₀ before the first update.
+                let c = sy / dot(&y, &y);
+                h = alloc::vec![0.0; n * n];
+                for i in 0..n {
+                    h[i * n + i] = c;
+                }
+                first = false;
+            }
+            // H ← (I − ρ s yᵀ) H (I − ρ y sᵀ) + ρ s sᵀ
+            let rho = 1.0 / sy;
+            let hy: Vec<f64> = (0..n).map(|i| dot(&h[i * n..(i + 1) * n], &y)).collect();
+            let yhy = dot(&y, &hy);
+            for i in 0..n {
+                for j in 0..n {
+                    h[i * n + j] += -rho * (hy[i] * s[j] + s[i] * hy[j])
+                        + (rho * rho * yhy + rho) * s[i] * s[j];
+                }
+            }
+        }
+    }
+    (x, fx)
+}
+
+// ---------------------------------------------------------------------------------------
+// Particles
+// ---------------------------------------------------------------------------------------
+
+/// Relative slack with which a particle counts as covered while searching (the final count
+/// uses the exact test at the returned centre).
+const COVER_SLACK: f64 = 1e-9;
+
+/// Candidate checks (candidates × particles) allowed to the exhaustive search in d ≥ 3.
+const EXHAUSTIVE_BUDGET: usize = 20_000_000;
+
+fn particle_mmuc(p: &ParticleSet, radius: f64) -> Mmuc {
+    let (candidate, method) = match p.dim() {
+        1 => (sweep_1d(p, radius), MmucMethod::ParticlesExact),
+        2 => (sweep_2d(p, radius), MmucMethod::ParticlesExact),
+        _ => match enumerate_centres(p, radius) {
+            Some(c) => (c, MmucMethod::ParticlesExact),
+            None => (mean_shift(p, radius), MmucMethod::ParticlesHeuristic),
+        },
+    };
+    // Re-centre on the smallest ball enclosing what the candidate covers.
+    let slack = radius * (1.0 + COVER_SLACK);
+    let covered: Vec<&[f64]> = (0..p.len())
+        .filter(|&i| p.weights()[i] > 0.0 && dist2(p.point(i), &candidate) <= slack * slack)
+        .map(|i| p.point(i))
+        .collect();
+    let mut center = candidate;
+    let mut q = p.outside(&center, radius);
+    if let Some((c, _)) = smallest_enclosing_ball(&covered) {
+        let qc = p.outside(&c, radius);
+        if qc <= q {
+            center = c;
+            q = qc;
+        }
+    }
+    Mmuc {
+        center,
+        miss_probability: q,
+        error: 0.0,
+        method,
+    }
+}
+
+/// Weight within the closed ball (with the search slack).
+fn covered_weight(p: &ParticleSet, center: &[f64], radius: f64) -> f64 {
+    let r = radius * (1.0 + COVER_SLACK);
+    let r2 = r * r;
+    (0..p.len())
+        .filter(|&i| dist2(p.point(i), center) <= r2)
+        .map(|i| p.weights()[i])
+        .sum()
+}
+
+/// 1D: the best interval [x_i, x_j] with x_j − x_i ≤ 2 r0, centred at its midpoint.
+fn sweep_1d(p: &ParticleSet, radius: f64) -> Vec<f64> {
+    let mut xs: Vec<(f64, f64)> = (0..p.len())
+        .map(|i| (p.point(i)[0], p.weights()[i]))
+        .collect();
+    xs.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let width = 2.0 * radius;
+    let (mut best, mut best_c) = (-1.0, xs[0].0);
+    let mut j = 0;
+    let mut window = 0.0;
+    for i in 0..xs.len() {
+        if j < i {
+            j = i;
+            window = 0.0;
+        }
+        if j == i {
+            window = xs[i].1;
+            j = i + 1;
+        }
+        while j < xs.len() && xs[j].0 - xs[i].0 <= width {
+            window += xs[j].1;
+            j += 1;
+        }
+        if window > best {
+            best = window;
+            best_c = 0.5 * (xs[i].0 + xs[j - 1].0);
+        }
+        window -= xs[i].1;
+    }
+    alloc::vec![best_c]
+}
+
+/// 2D: for each particle i, the centres c = x_i + r0 (cos θ, sin θ) of discs with x_i on
+/// their boundary; particle j is covered for θ in an arc of half-width acos(d_ij / 2r0)
+/// about the direction of x_j. A sweep over the arcs' ends finds the best θ.
+fn sweep_2d(p: &ParticleSet, radius: f64) -> Vec<f64> {
+    let n = p.len();
+    let two_pi = 2.0 * core::f64::consts::PI;
+    let reach2 = 4.0 * radius * radius * (1.0 + COVER_SLACK);
+    // Sort by x so that only particles within 2 r0 in x are visited.
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&a, &b| p.point(a)[0].total_cmp(&p.point(b)[0]));
+    let xs: Vec<f64> = order.iter().map(|&i| p.point(i)[0]).collect();
+    let mut best = -1.0;
+    let mut best_center = p.point(order[0]).to_vec();
+    let mut events: Vec<(f64, f64)> = Vec::new();
+    for (oi, &i) in order.iter().enumerate() {
+        let xi = p.point(i);
+        let mut base = p.weights()[i];
+        let mut wrapped = 0.0;
+        events.clear();
+        let lo = xs.partition_point(|&x| x < xi[0] - 2.0 * radius);
+        for (oj, &j) in order.iter().enumerate().skip(lo) {
+            if xs[oj] > xi[0] + 2.0 * radius {
+                break;
+            }
+            if oj == oi {
+                continue;
+            }
+            let xj = p.point(j);
+            let w = p.weights()[j];
+            let d2 = dist2(xi, xj);
+            if d2 > reach2 || w == 0.0 {
+                continue;
+            }
+            if d2 == 0.0 {
+                base += w;
+                continue;
+            }
+            let d = fns::sqrt(d2);
+            let alpha = fns::atan2(xj[1] - xi[1], xj[0] - xi[0]);
+            let beta = fns::acos((d / (2.0 * radius)).min(1.0));
+            let mut s = alpha - beta;
+            while s < 0.0 {
+                s += two_pi;
+            }
+            while s >= two_pi {
+                s -= two_pi;
+            }
+            let e = s + 2.0 * beta;
+            if e > two_pi {
+                wrapped += w;
+                events.push((e - two_pi, -w));
+                events.push((s, w));
+            } else {
+                events.push((s, w));
+                events.push((e, -w));
+            }
+        }
+        // Arc starts before ends at equal angles: arcs are closed.
+        events.sort_by(|a, b| a.0.total_cmp(&b.0).then(b.1.total_cmp(&a.1)));
+        let mut cur = base + wrapped;
+        let candidate = |cur: f64, theta: f64, best: &mut f64, best_center: &mut Vec<f64>| {
+            if cur > *best {
+                *best = cur;
+                *best_center = alloc::vec![
+                    xi[0] + radius * fns::cos(theta),
+                    xi[1] + radius * fns::sin(theta)
+                ];
+            }
+        };
+        let first_angle = events.first().map_or(0.0, |e| e.0);
+        // Before the first event (angle 0 up to it) the wrapped arcs are active.
+        candidate(cur, 0.5 * first_angle, &mut best, &mut best_center);
+        for k in 0..events.len() {
+            cur += events[k].1;
+            if events[k].1 > 0.0 {
+                let next = events.get(k + 1).map_or(two_pi, |e| e.0);
+                candidate(cur, 0.5 * (events[k].0 + next), &mut best, &mut best_center);
+            }
+        }
+    }
+    best_center
+}
+
+/// d ≥ 3: the centres determined by every set of ≤ d mutually close particles (see
+/// [`SpatialDensity::mmuc`]); `None` when the search would exceed its budget.
+fn enumerate_centres(p: &ParticleSet, radius: f64) -> Option<Vec<f64>> {
+    let n = p.len();
+    let d = p.dim();
+    let reach2 = 4.0 * radius * radius * (1.0 + COVER_SLACK);
+    let live: Vec<usize> = (0..n).filter(|&i| p.weights()[i] > 0.0).collect();
+    let neighbours: Vec<Vec<usize>> = live
+        .iter()
+        .map(|&i| {
+            live.iter()
+                .copied()
+                .filter(|&j| j > i && dist2(p.point(i), p.point(j)) <= reach2)
+                .collect()
+        })
+        .collect();
+    // Count the subsets first (cliques of size ≤ d in the "within 2 r0" graph).
+    let mut count = 0usize;
+    let limit = EXHAUSTIVE_BUDGET / n.max(1);
+    let index_of = |i: usize| live.binary_search(&i).unwrap_or(0);
+    let mut stack: Vec<Vec<usize>> = live.iter().map(|&i| alloc::vec![i]).collect();
+    let mut subsets: Vec<Vec<usize>> = Vec::new();
+    while let Some(set) = stack.pop() {
+        count += 1;
+        if count > limit {
+            return None;
+        }
+        if set.len() < d {
+            let last = set[set.len() - 1];
+            for &j in &neighbours[index_of(last)] {
+                if set[..set.len() - 1]
+                    .iter()
+                    .all(|&k| dist2(p.point(k), p.point(j)) <= reach2)
+                {
+                    let mut s = set.clone();
+                    s.push(j);
+                    stack.push(s);
+                }
+            }
+        }
+        subsets.push(set);
+    }
+    let direction: Vec<f64> = {
+        let v: Vec<f64> = (0..d)
+            .map(|k| fns::sqrt(2.0 + k as f64) - 1.0 + 0.1 * k as f64)
+            .collect();
+        let norm = fns::sqrt(v.iter().map(|x| x * x).sum());
+        v.iter().map(|x| x / norm).collect()
+    };
+    let mut best = -1.0;
+    let mut best_center = p.point(live[0]).to_vec();
+    for set in &subsets {
+        let pts: Vec<&[f64]> = set.iter().map(|&i| p.point(i)).collect();
+        for c in lowest_centres(&pts, radius, &direction) {
+            let w = covered_weight(p, &c, radius);
+            if w > best {
+                best = w;
+                best_center = c;
+            }
+        }
+    }
+    Some(best_center)
+}
+
+/// The points minimising ⟨e, c⟩ over the intersection of the spheres of radius r0 about
+/// `pts` (one point, or two if e is orthogonal to that intersection's flat); empty when the
+/// spheres do not meet or the points are affinely dependent.
+fn lowest_centres(pts: &[&[f64]], radius: f64, e: &[f64]) -> Vec<Vec<f64>> {
+    let d = e.len();
+    let Some((o, r2)) = circumcentre(pts) else {
+        return Vec::new();
+    };
+    let h2 = radius * radius - r2;
+    if h2 < -COVER_SLACK * radius * radius {
+        return Vec::new();
+    }
+    let h = fns::sqrt(h2.max(0.0));
+    // Orthonormal basis of the hull's directions, then e's component orthogonal to it.
+    let basis = orthonormal(pts.iter().skip(1).map(|x| {
+        x.iter()
+            .zip(pts[0])
+            .map(|(a, b)| a - b)
+            .collect::<Vec<f64>>()
+    }));
+    let project_out = |v: &[f64]| -> Vec<f64> {
+        let mut v = v.to_vec();
+        for b in &basis {
+            let dot: f64 = v.iter().zip(b).map(|(x, y)| x * y).sum();
+            for (vi, bi) in v.iter_mut().zip(b) {
+                *vi -= dot * bi;
+            }
+        }
+        v
+    };
+    let ep = project_out(e);
+    let norm = fns::sqrt(ep.iter().map(|x| x * x).sum());
+    if norm > 1e-9 {
+        return alloc::vec![
+            o.iter()
+                .zip(&ep)
+                .map(|(oi, ei)| oi - h * ei / norm)
+                .collect()
+        ];
+    }
+    // e lies in the hull's span: every point of the intersection is as low; take two.
+    for k in 0..d {
+        let mut u = alloc::vec![0.0; d];
+        u[k] = 1.0;
+        let up = project_out(&u);
+        let un = fns::sqrt(up.iter().map(|x| x * x).sum());
+        if un > 1e-6 {
+            return [1.0, -1.0]
+                .iter()
+                .map(|s| {
+                    o.iter()
+                        .zip(&up)
+                        .map(|(oi, ui)| oi + s * h * ui / un)
+                        .collect()
+                })
+                .collect();
+        }
+    }
+    alloc::vec![o]
+}
+
+/// Gram–Schmidt (twice, for stability); vectors that are dependent are dropped.
+fn orthonormal(vs: impl Iterator<Item = Vec<f64>>) -> Vec<Vec<f64>> {
+    let mut basis: Vec<Vec<f64>> = Vec::new();
+    for mut v in vs {
+        let scale = fns::sqrt(v.iter().map(|x| x * x).sum());
+        for _ in 0..2 {
+            for b in &basis {
+                let dot: f64 = v.iter().zip(b).map(|(x, y)| x * y).sum();
+                for (vi, bi) in v.iter_mut().zip(b) {
+                    *vi -= dot * bi;
+                }
+            }
+        }
+        let norm = fns::sqrt(v.iter().map(|x| x * x).sum());
+        if norm > 1e-12 * scale && norm > 0.0 {
+            basis.push(v.iter().map(|x| x / norm).collect());
+        }
+    }
+    basis
+}
+
+/// The centre of the sphere through `pts` that lies in their affine hull, and its squared
+/// radius; `None` for affinely dependent points.
+fn circumcentre(pts: &[&[f64]]) -> Option<(Vec<f64>, f64)> {
+    let x0 = pts.first()?;
+    let k = pts.len() - 1;
+    if k == 0 {
+        return Some((x0.to_vec(), 0.0));
+    }
+    let v: Vec<Vec<f64>> = pts[1..]
+        .iter()
+        .map(|x| x.iter().zip(x0.iter()).map(|(a, b)| a - b).collect())
+        .collect();
+    // Solve (2 V Vᵀ) α = (‖v_i‖²) by Gaussian elimination with partial pivoting.
+    let mut m: Vec<Vec<f64>> = (0..k)
+        .map(|i| {
+            let mut row: Vec<f64> = (0..k)
+                .map(|j| 2.0 * v[i].iter().zip(&v[j]).map(|(a, b)| a * b).sum::<f64>())
+                .collect();
+            row.push(v[i].iter().map(|a| a * a).sum());
+            row
+        })
+        .collect();
+    let scale = m
+        .iter()
+        .map(|r| fns::abs(r[0]))
+        .fold(0.0, f64::max)
+        .max(f64::MIN_POSITIVE);
+    for col in 0..k {
+        let piv = (col..k).max_by(|&a, &b| fns::abs(m[a][col]).total_cmp(&fns::abs(m[b][col])))?;
+        if fns::abs(m[piv][col]) <= 1e-12 * scale {
+            return None;
+        }
+        m.swap(col, piv);
+        let (top, rest) = m.split_at_mut(col + 1);
+        let pivot_row = &top[col];
+        for row in rest.iter_mut() {
+            let factor = row[col] / pivot_row[col];
+            for (x, p) in row.iter_mut().zip(pivot_row).skip(col) {
+                *x -= factor * p;
+            }
+        }
+    }
+    let mut alpha = alloc::vec![0.0; k];
+    for row in (0..k).rev() {
+        let mut s = m[row][k];
+        for c in row + 1..k {
+            s -= m[row][c] * alpha[c];
+        }
+        alpha[row] = s / m[row][row];
+    }
+    let mut o = x0.to_vec();
+    for (a, vi) in alpha.iter().zip(&v) {
+        for (oj, vij) in o.iter_mut().zip(vi) {
+            *oj += a * vij;
+        }
+    }
+    let r2 = dist2(&o, x0);
+    Some((o, r2))
+}
+
+/// The smallest ball enclosing `pts` (Welzl's algorithm in Gärtner's move-to-front form,
+/// recursion depth ≤ d + 1): its centre and squared radius.
+fn smallest_enclosing_ball(pts: &[&[f64]]) -> Option<(Vec<f64>, f64)> {
+    let first = pts.first()?;
+    let d = first.len();
+    let mut list: Vec<&[f64]> = pts.to_vec();
+    let mut boundary: Vec<&[f64]> = Vec::with_capacity(d + 1);
+    let n = list.len();
+    Some(move_to_front(&mut list, n, &mut boundary, d))
+}
+
+fn move_to_front<'a>(
+    list: &mut Vec<&'a [f64]>,
+    end: usize,
+    boundary: &mut Vec<&'a [f64]>,
+    d: usize,
+) -> (Vec<f64>, f64) {
+    let mut ball = match circumcentre(boundary) {
+        Some(b) => b,
+        None if boundary.is_empty() => (alloc::vec![0.0; d], -1.0),
+        // Dependent boundary points (from rounding): fall back to the first one's ball.
+        None => (boundary[0].to_vec(), 0.0),
+    };
+    if boundary.len() == d + 1 {
+        return ball;
+    }
+    let mut i = 0;
+    while i < end {
+        let pt = list[i];
+        if ball.1 < 0.0 || dist2(pt, &ball.0) > ball.1 * (1.0 + 1e-12) {
+            boundary.push(pt);
+            ball = move_to_front(list, i, boundary, d);
+            boundary.pop();
+            let moved = list.remove(i);
+            list.insert(0, moved);
+        }
+        i += 1;
+    }
+    ball
+}
+
+/// A heuristic for many particles in d ≥ 3: flat-kernel mean shift (move the centre to the
+/// weighted mean of the particles it covers) from a subsample of at most 256 particles.
+fn mean_shift(p: &ParticleSet, radius: f64) -> Vec<f64> {
+    let n = p.len();
+    let stride = n.div_ceil(256).max(1);
+    let r2 = radius * radius;
+    let mut best = -1.0;
+    let mut best_center = p.point(0).to_vec();
+    for s in (0..n).step_by(stride) {
+        let mut c = p.point(s).to_vec();
+        for _ in 0..30 {
+            let mut acc = alloc::vec![0.0; p.dim()];
+            let mut w = 0.0;
+            for i in 0..n {
+                if dist2(p.point(i), &c) <= r2 {
+                    w += p.weights()[i];
+                    for (a, x) in acc.iter_mut().zip(p.point(i)) {
+                        *a += p.weights()[i] * x;
+                    }
+                }
+            }
+            if w <= 0.0 {
+                break;
+            }
+            let next: Vec<f64> = acc.iter().map(|a| a / w).collect();
+            let moved = dist2(&next, &c);
+            c = next;
+            if moved <= 1e-24 * r2 {
+                break;
+            }
+        }
+        let w = covered_weight(p, &c, radius);
+        if w > best {
+            best = w;
+            best_center = c;
+        }
+    }
+    best_center
+}

@@ -1,0 +1,57 @@
+//! Optimal Bernoulli point estimation (paper `000_…`: A. Narykov, M. Üney, J. F. Ralph,
+//! "Optimal Bernoulli point estimation with applications").
+//!
+//! A Bernoulli filter hands over an existence probability p and a spatial density s. Under
+//! the application-oriented loss (7) — a cost matrix for reporting or not, plus a cost c
+//! when the reported point is farther than r0 from the target — the Bayes-optimal report
+//! (Theorem III.3) is the MMUC point a* (12) when p exceeds a threshold Γ (11) that depends
+//! on the costs and on how much of s a ball of radius r0 can hold:
+//!
+//! ```text
+//! q(a) = ∫ 1{‖x − a‖ > r0} s(dx),   a* = argmin_a q(a)
+//! Γ    = (c00 − c10) / (c00 − c01 − c10 + c11 + c q(a*))
+//! ```
+//!
+//! | item | paper |
+//! |---|---|
+//! | [`Costs`], [`ApplicationLoss`] | loss (7)–(9), Table I presets ([`Costs::mpe`], [`Costs::mmol`]) |
+//! | [`SpatialDensity`] | s: Gaussian, Gaussian mixture, weighted particles |
+//! | [`SpatialDensity::prob_outside_ball`] | q(a), the integral in (11)–(13); method and error bound in [`ball`] |
+//! | [`SpatialDensity::mmuc`] | a*, eq. (12) |
+//! | [`threshold`], [`expected_loss_empty`], [`expected_loss_singleton`] | (11), (14), (13) |
+//! | [`estimate`] | Theorem III.3, eq. (10); Corollaries IV.1 (MPE) and IV.2 (MMOL) |
+//! | [`multi_bernoulli_estimate`] | the theorem per component of a multi-Bernoulli |
+//! | [`isotropic_threshold_curve`], [`chi_square_sf`] | Fig. 3: Γ against σ, in closed form |
+//!
+//! ```
+//! use fisst::bernoulli::{estimate, ApplicationLoss, Costs, SpatialDensity};
+//! // A 2D Gaussian with correlated covariance, MMOL costs, r0 = 1.
+//! let s = SpatialDensity::gaussian_from_slices(&[3.0, -1.0], &[1.0, 0.3, 0.3, 0.5])?;
+//! let loss = ApplicationLoss::new(Costs::mmol(0.9, 0.1)?, 1.0)?;
+//! let e = estimate(0.3, &s, &loss)?;
+//! assert_eq!(e.mmuc.center, vec![3.0, -1.0]); // the mean (Sherman's theorem)
+//! assert!(e.declare && e.expected_loss_singleton < e.expected_loss_empty);
+//! # Ok::<(), fisst::Error>(())
+//! ```
+
+pub mod ball;
+mod density;
+mod estimate;
+pub mod inversion;
+mod isotropic;
+mod loss;
+mod mmuc;
+mod quadrature;
+
+pub use ball::{BallProbability, DEFAULT_TOLERANCE};
+pub use density::{DensityKind, MIN_TOLERANCE, ParticleSet, SpatialDensity};
+pub use estimate::{
+    BernoulliEstimate, Direction, MultiBernoulliEstimate, Threshold, estimate, expected_loss_empty,
+    expected_loss_singleton, multi_bernoulli_estimate, threshold,
+};
+pub use isotropic::{chi_square_sf, isotropic_miss_probability, isotropic_threshold_curve};
+pub use loss::{ApplicationLoss, Costs};
+pub use mmuc::{Mmuc, MmucMethod};
+
+#[cfg(test)]
+mod tests;
