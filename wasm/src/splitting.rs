@@ -5,7 +5,8 @@ use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::convert::{
-    JsResult, Options, OrThrow, array, number_array, object, range_error, string, type_error,
+    JsResult, Options, OrThrow, array, boolean_array, number_array, object, range_error, string,
+    type_error,
 };
 use crate::fov::{mixture as mixture_from_js, region as region_from_js};
 use fisst::gaussian::GaussianMixture;
@@ -74,7 +75,7 @@ export interface SplitForRegionsOptions {
   gridBound?: number;
   /** N_g, grid points per axis (default 15; N_g^positionDims ≤ 20000). */
   gridPoints?: number;
-  /** Recursion depth cap (default 16, at most 64). */
+  /** Recursion depth cap (default 16, at most 64); 0 splits nothing: the result is the mean-based partition of `mixture` itself. */
   maxDepth?: number;
   /** Component count cap (default 10000, at most 50000). */
   maxComponents?: number;
@@ -83,7 +84,9 @@ export interface SplitForRegionsOptions {
 /**
  * `mixture`: the split mixture (same shape as the input; each input component replaced in
  * place by its descendants). `inside` / `outside`: the mean-based partition (11)–(12) of it
- * for the first region (sums of weights). `exactInside`: ⟨1_S, p⟩ of the first region under
+ * for the first region (sums of weights); `insideMask[i]`: whether component i of `mixture` is
+ * in p_S, i.e. its mean (position part) lies in the first region (`inside` is the sum of the
+ * weights it selects). `exactInside`: ⟨1_S, p⟩ of the first region under
  * the input mixture (null when too costly: more than ~0.5 s of masses, or positionDims > 4).
  * `depth`: recursion levels used; `splits`: split operations; `stop`: null, or the cap that
  * stopped the recursion.
@@ -92,6 +95,7 @@ export interface SplitForRegionsResult {
   mixture: FovWeightedGaussian[];
   inside: number;
   outside: number;
+  insideMask: boolean[];
   exactInside: number | null;
   depth: number;
   splits: number;
@@ -266,8 +270,8 @@ fn stop_to_js(stop: Option<SplitStop>) -> JsValue {
 /// mean-based partition for the first region. Options `{ mixture, regions, positionDims = 2,
 /// minWeight = 0.01, components = 3, lambda = 0.001, spacing = 'equal', gridBound = 2,
 /// gridPoints = 15, maxDepth = 16, maxComponents = 10000 }`; returns `{ mixture, inside,
-/// outside, exactInside, depth, splits, stop }`. The result does not depend on the order
-/// of `regions`.
+/// outside, insideMask, exactInside, depth, splits, stop }` (`insideMask[i]`: component i's
+/// mean is in the first region). The result does not depend on the order of `regions`.
 #[wasm_bindgen(js_name = splitForRegions, unchecked_return_type = "SplitForRegionsResult")]
 pub fn split_for_regions_js(
     #[wasm_bindgen(unchecked_param_type = "SplitForRegionsOptions")] options: JsValue,
@@ -319,6 +323,13 @@ pub fn split_for_regions_js(
         return Err(range_error("regions must not be empty"));
     };
     let part = partition(&out.mixture, first).or_throw()?;
+    // The same inclusion test as the partition (11)–(12), per component.
+    let inside_mask: Vec<bool> = out
+        .mixture
+        .components()
+        .iter()
+        .map(|(_, g)| first.contains(g.mean().as_slice()))
+        .collect();
     let affordable = mixture.len() as f64 * cost <= EXACT_MASS_BUDGET_US;
     let exact_inside = if affordable && first.dim() <= fisst::regions::MAX_MASS_DIM {
         let mut total = 0.0;
@@ -336,6 +347,7 @@ pub fn split_for_regions_js(
         ("mixture", mixture_to_js(&out.mixture)),
         ("inside", part.inside_weight.into()),
         ("outside", part.outside_weight.into()),
+        ("insideMask", boolean_array(&inside_mask)),
         ("exactInside", exact_inside),
         ("depth", (out.depth as f64).into()),
         ("splits", (out.splits as f64).into()),

@@ -75,3 +75,23 @@ export function fmt(x, digits = 4) {
   if (x !== 0 && (Math.abs(x) < 1e-3 || Math.abs(x) >= 1e5)) return x.toExponential(digits - 1);
   return Number(x.toFixed(digits)).toString();
 }
+
+/**
+ * Adds the k-σ ellipse of a Gaussian's position block (`cov[0][0]`, `cov[0][1]`, `cov[1][1]`;
+ * longer states are fine) centred on `mean` to the current path, in the pixel space of the
+ * linear scales `x`, `y`: the unit circle mapped through the Cholesky factor of the block.
+ * Call `ctx.beginPath()` first and stroke/fill afterwards (many ellipses can share a path).
+ */
+export function ellipsePath(ctx, x, y, mean, cov, k = 1) {
+  const l11 = Math.sqrt(Math.max(cov[0][0], 0));
+  const l21 = l11 > 0 ? cov[0][1] / l11 : 0;
+  const l22 = Math.sqrt(Math.max(cov[1][1] - l21 * l21, 0));
+  const sx = x(1) - x(0);
+  const sy = y(1) - y(0);
+  ctx.save();
+  // x' = a u + c v + e, y' = b u + d v + f for the unit circle (u, v).
+  ctx.transform(sx * k * l11, sy * k * l21, 0, sy * k * l22, x(mean[0]), y(mean[1]));
+  ctx.moveTo(1, 0);
+  ctx.arc(0, 0, 1, 0, 2 * Math.PI);
+  ctx.restore();
+}

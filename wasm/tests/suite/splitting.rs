@@ -116,6 +116,50 @@ fn split_for_regions_shapes_and_values() {
 }
 
 #[wasm_bindgen_test]
+fn split_for_regions_inside_mask() {
+    let out = split("").unwrap();
+    let comps = Array::from(&get(&out, "mixture"));
+    let mask: Vec<bool> = Array::from(&get(&out, "insideMask"))
+        .iter()
+        .map(|b| b.as_bool().expect("a boolean"))
+        .collect();
+    assert_eq!(mask.len(), comps.length() as usize);
+    assert!(mask.iter().any(|&b| b) && mask.iter().any(|&b| !b));
+    // Each flag is the box test of the component's position mean (x, y of the 4-D state).
+    let mut selected = 0.0;
+    for (c, &inside) in comps.iter().zip(&mask) {
+        let m = nums(&get(&c, "mean"));
+        assert_eq!(
+            inside,
+            (0.5..=5.0).contains(&m[0]) && (-5.0..=5.0).contains(&m[1])
+        );
+        if inside {
+            selected += num(&c, "weight");
+        }
+    }
+    assert!((selected - num(&out, "inside")).abs() < 1e-15);
+    // maxDepth 0: nothing is split, the result is the partition of the input itself.
+    let none = split(r#","maxDepth":0"#).unwrap();
+    assert_eq!(json(&get(&none, "mixture")), json(&js(ONE_GAUSSIAN)));
+    assert_eq!(json(&get(&none, "insideMask")), "[false]");
+    assert_eq!(num(&none, "inside"), 0.0);
+    assert_eq!(num(&none, "outside"), 1.0);
+    // Only the first region decides the flags; the others only refine the split.
+    let two = split_for_regions_js(js(&format!(
+        r#"{{"mixture":{ONE_GAUSSIAN},"regions":[{{"disc":{{"center":[0,0],"radius":0.5}}}},
+        {{"box":{{"min":[0.5,-5],"max":[5,5]}}}}]}}"#
+    )))
+    .unwrap();
+    for (c, b) in Array::from(&get(&two, "mixture"))
+        .iter()
+        .zip(Array::from(&get(&two, "insideMask")).iter())
+    {
+        let m = nums(&get(&c, "mean"));
+        assert_eq!(b.as_bool(), Some(m[0] * m[0] + m[1] * m[1] <= 0.25));
+    }
+}
+
+#[wasm_bindgen_test]
 fn split_for_regions_is_invariant_to_region_order() {
     let regions = [
         r#"{"box":{"min":[-1,-0.5],"max":[0.8,2]}}"#,
