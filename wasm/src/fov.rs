@@ -286,31 +286,35 @@ fn mass_cost_us(kind: &str, dim: usize, vertices: usize) -> f64 {
     }
 }
 
-pub(crate) fn region(v: &JsValue) -> JsResult<(Region, f64)> {
-    let o = Options::new(v, "fov", true)?;
+/// A `fov`-shaped region (`{ box }`, `{ polygon }` or `{ disc }`) named `path` in errors, with its
+/// mass-cost estimate.
+pub(crate) fn region(v: &JsValue, path: &str) -> JsResult<(Region, f64)> {
+    let o = Options::new(v, path, true)?;
     let found: Vec<(&str, JsValue)> = ["box", "polygon", "disc"]
         .into_iter()
         .filter_map(|k| o.get(k).transpose().map(|r| r.map(|v| (k, v))))
         .collect::<JsResult<_>>()?;
     let [(key, val)] = found.as_slice() else {
         return Err(type_error(format!(
-            "fov must have exactly one of the keys box, polygon, disc (found {})",
+            "{path} must have exactly one of the keys box, polygon, disc (found {})",
             found.len()
         )));
     };
     match *key {
         "box" => {
-            let b = Options::new(val, "fov.box", true)?;
-            let min = numbers(&required(&b, "min", "fov.box")?, "fov.box.min")?;
-            let max = numbers(&required(&b, "max", "fov.box")?, "fov.box.max")?;
+            let name = format!("{path}.box");
+            let b = Options::new(val, &name, true)?;
+            let min = numbers(&required(&b, "min", &name)?, &format!("{name}.min"))?;
+            let max = numbers(&required(&b, "max", &name)?, &format!("{name}.max"))?;
             let cost = mass_cost_us("box", min.len(), 0);
-            Ok((Region::axis_box(&min, &max, "fov.box").or_throw()?, cost))
+            Ok((Region::axis_box(&min, &max, &name).or_throw()?, cost))
         }
         "polygon" => {
-            let pts = points(val, "fov.polygon")?;
+            let name = format!("{path}.polygon");
+            let pts = points(val, &name)?;
             if pts.len() > MAX_VERTICES {
                 return Err(range_error(format!(
-                    "fov.polygon has {} vertices, at most {MAX_VERTICES} are supported",
+                    "{name} has {} vertices, at most {MAX_VERTICES} are supported",
                     pts.len()
                 )));
             }
@@ -318,21 +322,22 @@ pub(crate) fn region(v: &JsValue) -> JsResult<(Region, f64)> {
             for (i, p) in pts.iter().enumerate() {
                 let &[x, y] = p.as_slice() else {
                     return Err(range_error(format!(
-                        "fov.polygon[{i}] has length {}, expected 2",
+                        "{name}[{i}] has length {}, expected 2",
                         p.len()
                     )));
                 };
                 verts.push([x, y]);
             }
             let cost = mass_cost_us("polygon", 2, verts.len());
-            Ok((Region::polygon(&verts, "fov.polygon").or_throw()?, cost))
+            Ok((Region::polygon(&verts, &name).or_throw()?, cost))
         }
         _ => {
-            let d = Options::new(val, "fov.disc", true)?;
-            let center = numbers(&required(&d, "center", "fov.disc")?, "fov.disc.center")?;
-            let radius = number(&required(&d, "radius", "fov.disc")?, "fov.disc.radius")?;
+            let name = format!("{path}.disc");
+            let d = Options::new(val, &name, true)?;
+            let center = numbers(&required(&d, "center", &name)?, &format!("{name}.center"))?;
+            let radius = number(&required(&d, "radius", &name)?, &format!("{name}.radius"))?;
             let cost = mass_cost_us("disc", center.len(), 0);
-            Ok((Region::ball(&center, radius, "fov.disc").or_throw()?, cost))
+            Ok((Region::ball(&center, radius, &name).or_throw()?, cost))
         }
     }
 }
@@ -346,7 +351,7 @@ pub fn fov_cardinality_js(
 ) -> JsResult<JsValue> {
     let opts = Options::new(&options, "options", true)?;
     let density = rfs(&required(&opts, "rfs", "options")?)?;
-    let (fov, cost) = region(&required(&opts, "fov", "options")?)?;
+    let (fov, cost) = region(&required(&opts, "fov", "options")?, "fov")?;
     let count = match &density {
         MultiObjectDensity::Poisson(m) => m.len(),
         MultiObjectDensity::IidCluster { density, .. } => density.len(),

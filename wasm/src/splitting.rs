@@ -1,12 +1,10 @@
 //! Recursive Gaussian splitting along region boundaries and mixture reduction (Section IV of
 //! `001_0f0df91eee9b30d5.txt`, "Split happens!").
 
-use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::convert::{
     JsResult, Options, OrThrow, array, boolean_array, number_array, object, range_error, string,
-    type_error,
 };
 use crate::fov::{mixture as mixture_from_js, region as region_from_js};
 use fisst::gaussian::GaussianMixture;
@@ -224,24 +222,6 @@ fn library_to_js(lib: &SplitLibrary) -> JsValue {
     ])
 }
 
-/// Re-labels a converter error about `fov` as one about `path` (same JS error class).
-fn rename(err: JsValue, path: &str) -> JsValue {
-    let Some(e) = err.dyn_ref::<js_sys::Error>() else {
-        return err;
-    };
-    let message: String = e.message().into();
-    let Some(rest) = message.strip_prefix("fov") else {
-        return err;
-    };
-    let renamed = format!("{path}{rest}");
-    let name: String = e.name().into();
-    match name.as_str() {
-        "TypeError" => type_error(renamed),
-        "RangeError" => range_error(renamed),
-        _ => js_sys::Error::new(&renamed).into(),
-    }
-}
-
 /// `regions`: a non-empty array of fov-shaped regions; with each region's mass-cost estimate.
 fn regions_from_js(v: &JsValue) -> JsResult<Vec<(Region, f64)>> {
     let arr = array(v, "regions", "an array of regions")?;
@@ -253,7 +233,7 @@ fn regions_from_js(v: &JsValue) -> JsResult<Vec<(Region, f64)>> {
     }
     arr.iter()
         .enumerate()
-        .map(|(i, r)| region_from_js(&r).map_err(|e| rename(e, &format!("regions[{i}]"))))
+        .map(|(i, r)| region_from_js(&r, &format!("regions[{i}]")))
         .collect()
 }
 

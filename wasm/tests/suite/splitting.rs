@@ -221,7 +221,7 @@ fn split_for_regions_bad_input() {
         "TypeError",
         "regions",
     );
-    // Region errors name regions[i] with the fov converter's message.
+    // Region errors name regions[i] (the fov converter, given that path).
     assert_throws(
         call(&format!(
             r#"{{"mixture":{m},"regions":[{{"box":{{"min":[0,0],"max":[1,1]}}}},{{"disc":{{"center":[0,0],"radius":-1}}}}]}}"#
