@@ -30,6 +30,7 @@ setup-test:
 
 lint:
 	cargo fmt --all -- --check
+	cd benches && cargo fmt --all -- --check
 	cargo clippy --locked --workspace --all-targets -- -D warnings
 	cargo clippy --locked -p fisst-wasm --target wasm32-unknown-unknown --all-targets -- -D warnings
 	RUSTDOCFLAGS="-D warnings" cargo doc --locked --workspace --no-deps
@@ -56,6 +57,7 @@ bench: pkg
 	python3 benches/gospa_vs_scipy.py
 	python3 benches/pmf_vs_scipy.py
 	python3 benches/map_vs_numpy.py
+	python3 benches/bernoulli_vs_scipy.py
 
 clean:
 	cargo clean

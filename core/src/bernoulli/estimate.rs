@@ -70,14 +70,16 @@ pub fn threshold(costs: &Costs, miss_probability: f64) -> Result<Threshold> {
         costs.c11(),
         costs.c() * q,
     ]);
+    // A zero numerator over a negative denominator is −0 (MMOL with c_M = 0): report +0.
+    let ratio = |n: f64, d: f64| if n == 0.0 { 0.0 } else { n / d };
     Ok(if denominator < 0.0 {
         Threshold {
-            gamma: numerator / denominator,
+            gamma: ratio(numerator, denominator),
             direction: Direction::Above,
         }
     } else if denominator > 0.0 {
         Threshold {
-            gamma: numerator / denominator,
+            gamma: ratio(numerator, denominator),
             direction: Direction::Below,
         }
     } else {

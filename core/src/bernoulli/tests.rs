@@ -878,6 +878,19 @@ fn ties_report_nothing() {
 }
 
 #[test]
+fn free_countermeasure_threshold_is_positive_zero() {
+    // MMOL with c_M = 0: Γ = 0/(c_A (q − 1)) is +0, not −0 (which JS prints as "-0").
+    for q in [0.0, 0.3, 0.999] {
+        let t = threshold(&Costs::mmol(0.9, 0.0).unwrap(), q).unwrap();
+        assert_eq!(t.gamma.to_bits(), 0.0f64.to_bits(), "q={q}");
+        assert!(t.declares(1e-300) && !t.declares(0.0));
+    }
+    let g =
+        isotropic_threshold_curve(&[0.5, 2.0], 1.0, &Costs::mmol(1.0, 0.0).unwrap(), 1).unwrap();
+    assert!(g.iter().all(|x| x.to_bits() == 0));
+}
+
+#[test]
 fn figure_three_properties() {
     let sigmas: Vec<f64> = (1..=200).map(|i| 0.05 * i as f64).collect();
     for d in [1usize, 2, 3] {
