@@ -69,7 +69,9 @@ export interface SplitForRegionsOptions {
   lambda?: number;
   /** Split library family (default 'equal'). */
   spacing?: 'equal' | 'free';
-  /** ζ, the collocation grid's Mahalanobis radius (default 2). */
+  /** ζ, the collocation grid's Mahalanobis radius (default 2, as the authors' pyest).
+   *  Components whose boundary lies beyond ζ are not split, which floors the partition error
+   *  at a few 1e-3 to 1e-2 of mass; 3 lowers that part to about 1e-4, with more components. */
   gridBound?: number;
   /** N_g, grid points per axis (default 15; N_g^positionDims ≤ 20000). */
   gridPoints?: number;
