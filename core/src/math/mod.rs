@@ -1,7 +1,9 @@
-//! Numerical building blocks: float functions, compensated sums, linear assignment.
+//! Numerical building blocks: float functions, compensated sums, linear assignment, the
+//! portable seeded generator.
 
 pub mod assignment;
 pub mod fns;
+pub mod rng;
 pub mod sum;
 
 pub use assignment::{Assignment, linear_assignment};
