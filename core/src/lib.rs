@@ -28,6 +28,7 @@
 //! | feature | default | what it does |
 //! |---|---|---|
 //! | `std` | yes | std support in dependencies. Without it the crate is `#![no_std]` + `alloc` and builds for bare-metal targets such as `thumbv7em-none-eabihf`. |
+//! | `parallel` | yes | implies `std`; independent work (metric series over whole scenarios, Monte Carlo comparisons) runs on all cores with rayon. Results are identical with and without it. The wasm bindings leave it off (wasm32 has no threads). |
 //!
 //! ## Conventions
 //! - Every float function comes from `libm` (see [`math::fns`]), so the same inputs give
