@@ -1,3 +1,5 @@
+// Lists the fuzz cases of one function that take longer than 500 ms (valid and malformed):
+//   node fuzz/slowest.mjs <function> [cases = 300] [seed = 7]
 import fc from 'fast-check';
 import * as fisst from 'fisst';
 import { specs } from './specs.mjs';
