@@ -222,12 +222,12 @@ const DEFAULT_MAX_MS = 5000;
  * failure. `stats` (optional) collects counts.
  */
 export function check(spec, args, stats) {
-  const fn = fisst[spec.name];
   const start = performance.now();
   let result;
   let error;
   try {
-    result = fn(...args);
+    // A spec may drive a class: `call(fisst, args)` constructs, calls its methods, frees.
+    result = spec.call ? spec.call(fisst, args) : fisst[spec.name](...args);
   } catch (e) {
     error = e;
   }

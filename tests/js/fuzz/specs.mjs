@@ -164,8 +164,10 @@ const grid = fc.record({ x: axis, y: axis });
 // ------------------------------------------------------------------ the specs
 /**
  * Each spec: `name` (the export), `roots` (its argument names, which begin every error
- * message), `args` (an arbitrary of the argument list), `weight` (share of the runs), and
- * `maxMs`, the bound on one call (work that would take longer is refused by a documented cap).
+ * message), `args` (an arbitrary of the argument list), `weight` (share of the runs),
+ * `maxMs`, the bound on one call (work that would take longer is refused by a documented cap),
+ * and optionally `call(fisst, args)` to drive a class (construct, call methods, `free()`)
+ * instead of calling `fisst[name](...args)`.
  */
 export const specs = [
   {

@@ -12,7 +12,8 @@ const g2 = { mean: [0.1, -0.2], cov: [[1, 0.2], [0.2, 0.5]] };
 const comp = { weight: 1, ...g2 };
 const box = { box: { min: [-1, -1], max: [1, 1] } };
 
-/** Per function: a few cheap valid argument lists and a few malformed ones. */
+/** Per function (or class, with a driver below): a few cheap valid argument lists and a few
+ * malformed ones. */
 export const cases = {
   gospa: [[[[0, 0], [1, 1]], [[0, 0.5]], { c: 2 }], [[[0]], [[1], [5]], { c: 3, p: 1, alpha: 1 }], [[[0, 0]], [[0, 0]], { c: 2, aplha: 1 }], [[[0, NaN]], [], { c: 1 }]],
   ospa: [[[[0], [5]], [[1]], { c: 10, p: 1 }], [[[0, 0]], 'x', { c: 1 }]],
@@ -42,9 +43,13 @@ export const cases = {
   version: [[]],
 };
 
+/** Drivers of classes: `drivers[name](fisst, args)` (construct, call methods, `free()`). */
+export const drivers = {};
+
 function call(name, args) {
   try {
-    fisst[name](...args);
+    if (drivers[name]) drivers[name](fisst, args);
+    else fisst[name](...args);
   } catch (e) {
     if (!(e instanceof TypeError || e instanceof RangeError)) throw e;
   }
