@@ -40,3 +40,30 @@ pub fn scene(n: usize, seed: u64) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
     }
     (truth, estimate)
 }
+
+/// The median wall time in seconds of `reps` calls of `f` (`reps` ≥ 1), and the last result.
+pub fn median_time<T>(reps: usize, mut f: impl FnMut() -> T) -> (f64, T) {
+    let (seconds, out) = times(reps, &mut f);
+    (seconds[seconds.len() / 2], out)
+}
+
+/// The median and the minimum wall time in microseconds of `reps` calls of `f` (`reps` ≥ 1;
+/// the minimum is the robust figure on a shared machine).
+pub fn median_min_us(reps: usize, mut f: impl FnMut()) -> (f64, f64) {
+    let (seconds, ()) = times(reps, &mut f);
+    (seconds[seconds.len() / 2] * 1e6, seconds[0] * 1e6)
+}
+
+/// The sorted wall times in seconds of `reps` calls of `f`, and the last result.
+fn times<T>(reps: usize, f: &mut impl FnMut() -> T) -> (Vec<f64>, T) {
+    assert!(reps >= 1, "at least one repetition");
+    let mut seconds = Vec::with_capacity(reps);
+    let mut out = None;
+    for _ in 0..reps {
+        let t0 = std::time::Instant::now();
+        out = Some(f());
+        seconds.push(t0.elapsed().as_secs_f64());
+    }
+    seconds.sort_by(f64::total_cmp);
+    (seconds, out.expect("reps >= 1"))
+}

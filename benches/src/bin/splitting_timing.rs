@@ -1,14 +1,12 @@
 //! Native timings of the splitting and reduction code (issue 5): Algorithm 1 per time step of
 //! the Fig. 5 scenario of `001_…`, Runnalls' reduction of 1000 components to 100, and the
-//! split-library optimiser. Not a test: run it in release mode,
+//! split-library optimiser. Not a test: run it in release mode, from `benches/`,
 //!
 //! ```text
-//! cargo run --release -p fisst --example splitting_timing
+//! cargo run --release --bin splitting_timing
 //! ```
 //!
 //! and read the medians and minima it prints.
-
-use std::time::Instant;
 
 use fisst::gaussian::{Gaussian, GaussianMixture};
 use fisst::mixture::runnalls;
@@ -16,20 +14,7 @@ use fisst::splitting::{
     NegativeInformationScenario, Spacing, SplitLibrary, non_detection_update, predict,
     split_for_region,
 };
-
-/// Median and minimum wall time in microseconds of `runs` calls of `f` (the minimum is the
-/// robust figure on a shared machine).
-fn time_us(runs: usize, mut f: impl FnMut()) -> (f64, f64) {
-    let mut t: Vec<f64> = (0..runs)
-        .map(|_| {
-            let start = Instant::now();
-            f();
-            start.elapsed().as_secs_f64() * 1e6
-        })
-        .collect();
-    t.sort_by(|a, b| a.partial_cmp(b).unwrap());
-    (t[t.len() / 2], t[0])
-}
+use fisst_benches::median_min_us as time_us;
 
 /// A deterministic 4D mixture of `n` components (a Weyl sequence, no RNG).
 fn cloud(n: usize) -> GaussianMixture {
