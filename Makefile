@@ -18,9 +18,11 @@ test: setup-test lint test-native test-nostd test-wasm test-js
 pkg: setup
 	scripts/build-pkg.sh
 
+## make web-pkg: the served folder web/: the npm package in web/pkg/, uPlot in web/vendor/
 web-pkg: pkg
 	rm -rf web/pkg
 	cp -r wasm/pkg web/pkg
+	scripts/web-deps.sh
 
 setup:
 	scripts/setup.sh
@@ -61,4 +63,4 @@ bench: pkg
 
 clean:
 	cargo clean
-	rm -rf wasm/pkg web/pkg tests/js/node_modules tests/browser/screenshots
+	rm -rf wasm/pkg web/pkg web/vendor web/node_modules tests/js/node_modules tests/browser/screenshots

@@ -1,4 +1,4 @@
-// Small canvas helpers shared by the demo pages (no dependencies).
+// Canvas set-up for HiDPI screens, linear scales and axes for the scene views.
 
 /** Sizes a canvas for the device pixel ratio; returns its 2D context in CSS pixels. */
 export function setupCanvas(canvas, width, height) {
@@ -12,11 +12,26 @@ export function setupCanvas(canvas, width, height) {
   return ctx;
 }
 
-/** A linear map from [d0, d1] to [p0, p1]. */
+/** A linear map from [d0, d1] to [p0, p1], with `.invert`. */
 export function scale(d0, d1, p0, p1) {
   const f = (x) => p0 + ((x - d0) / (d1 - d0)) * (p1 - p0);
   f.invert = (p) => d0 + ((p - p0) / (p1 - p0)) * (d1 - d0);
   return f;
+}
+
+/** Evenly spaced ticks from a to b inclusive (n intervals). */
+export function ticks(a, b, n) {
+  return Array.from({ length: n + 1 }, (_, i) => a + ((b - a) * i) / n);
+}
+
+/** Round ticks covering [a, b]: steps of 1, 2 or 5 × 10^k, about `n` of them. */
+export function niceTicks(a, b, n = 6) {
+  const raw = (b - a) / Math.max(n, 1);
+  const mag = 10 ** Math.floor(Math.log10(raw));
+  const step = [1, 2, 5, 10].map((m) => m * mag).find((s) => s >= raw);
+  const out = [];
+  for (let t = Math.ceil(a / step - 1e-9) * step; t <= b + 1e-9 * step; t += step) out.push(Math.abs(t) < 1e-12 * step ? 0 : t);
+  return out;
 }
 
 /** Axes with ticks and labels inside a plot box { left, top, width, height }. */
@@ -60,38 +75,5 @@ export function drawAxes(ctx, box, x, y, { xTicks, yTicks, xLabel, yLabel, fmt =
     ctx.rotate(-Math.PI / 2);
     ctx.fillText(yLabel, 0, 0);
   }
-  ctx.restore();
-}
-
-/** Evenly spaced ticks from a to b inclusive. */
-export function ticks(a, b, n) {
-  return Array.from({ length: n + 1 }, (_, i) => a + ((b - a) * i) / n);
-}
-
-/** Formats a number compactly for readouts. */
-export function fmt(x, digits = 4) {
-  if (x === null || x === undefined) return '—';
-  if (!Number.isFinite(x)) return String(x);
-  if (x !== 0 && (Math.abs(x) < 1e-3 || Math.abs(x) >= 1e5)) return x.toExponential(digits - 1);
-  return Number(x.toFixed(digits)).toString();
-}
-
-/**
- * Adds the k-σ ellipse of a Gaussian's position block (`cov[0][0]`, `cov[0][1]`, `cov[1][1]`;
- * longer states are fine) centred on `mean` to the current path, in the pixel space of the
- * linear scales `x`, `y`: the unit circle mapped through the Cholesky factor of the block.
- * Call `ctx.beginPath()` first and stroke/fill afterwards (many ellipses can share a path).
- */
-export function ellipsePath(ctx, x, y, mean, cov, k = 1) {
-  const l11 = Math.sqrt(Math.max(cov[0][0], 0));
-  const l21 = l11 > 0 ? cov[0][1] / l11 : 0;
-  const l22 = Math.sqrt(Math.max(cov[1][1] - l21 * l21, 0));
-  const sx = x(1) - x(0);
-  const sy = y(1) - y(0);
-  ctx.save();
-  // x' = a u + c v + e, y' = b u + d v + f for the unit circle (u, v).
-  ctx.transform(sx * k * l11, sy * k * l21, 0, sy * k * l22, x(mean[0]), y(mean[1]));
-  ctx.moveTo(1, 0);
-  ctx.arc(0, 0, 1, 0, 2 * Math.PI);
   ctx.restore();
 }
