@@ -8,41 +8,12 @@
 //!
 //! and read the medians and minima it prints.
 
-use fisst::gaussian::{Gaussian, GaussianMixture};
 use fisst::mixture::runnalls;
 use fisst::splitting::{
     NegativeInformationScenario, Spacing, SplitLibrary, non_detection_update, predict,
     split_for_region,
 };
-use fisst_benches::median_min_us as time_us;
-
-/// A deterministic 4D mixture of `n` components (a Weyl sequence, no RNG).
-fn cloud(n: usize) -> GaussianMixture {
-    let frac = |x: f64| x - x.floor();
-    let comps = (0..n)
-        .map(|i| {
-            let t = i as f64;
-            let m = [
-                10.0 * frac(t * 0.618_033_988_75),
-                10.0 * frac(t * 0.414_213_562_37),
-                frac(t * 0.732_050_807_57) - 0.5,
-                frac(t * 0.236_067_977_5) - 0.5,
-            ];
-            let s = 0.2 + 0.3 * frac(t * 0.302_775_637_73);
-            let c = 0.3 * s * s * (frac(t * 0.577_215_664_9) - 0.5);
-            #[rustfmt::skip]
-            let p = [
-                s * s, c, 0.0, 0.0,
-                c, s * s, 0.0, 0.0,
-                0.0, 0.0, 0.04, 0.0,
-                0.0, 0.0, 0.0, 0.04,
-            ];
-            let w = 0.5 + frac(t * 0.141_421_356_2);
-            (w, Gaussian::from_slices(&m, &p, "cloud").unwrap())
-        })
-        .collect();
-    GaussianMixture::new(comps, "cloud").unwrap()
-}
+use fisst_benches::{cloud, median_min_us as time_us};
 
 fn main() {
     let sc = NegativeInformationScenario::fig5().unwrap();
