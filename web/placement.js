@@ -2,7 +2,7 @@
 // Every number comes from the fisst package: the scene, the PHD, the variance map and its
 // argmax, and the count pmf of the dragged FoV. This file only says what to compute and draw.
 import init, * as fisst from 'fisst';
-import { chart } from './lib/chart.js';
+import { chart, markX } from './lib/chart.js';
 import { sceneView } from './lib/view.js';
 import { colorbar, heatImage } from './lib/colormap.js';
 import { clipTo, starPath } from './lib/draw.js';
@@ -78,7 +78,7 @@ function drawScene(ctx, v) {
   const { px, py, box } = v;
   ctx.imageSmoothingEnabled = true;
   ctx.drawImage(result.images[state.layer], box.left, box.top, box.width, box.height);
-  v.axes({ xLabel: 'x', yLabel: 'y', ticks: 6 });
+  v.axes({ xLabel: 'x', yLabel: 'y', ticks: 8 });
   ctx.save();
   clipTo(ctx, box);
   ctx.strokeStyle = '#f59e0b';
@@ -113,19 +113,7 @@ const pmfChart = chart($('pmf'), {
   x: { label: 'n objects in your FoV', range: () => [-0.5, pmfMax + 0.5], integer: true, format: String },
   y: { label: 'probability', range: (lo, hi) => [0, Math.max(0.1, Math.ceil(hi * 10) / 10)], format: (v) => fmt(v, 3) },
   series: [{ label: 'P(|X ∩ S| = n)', colour: '#0072b2', fill: '#0072b2', bars: true, width: 0 }],
-  overlay({ ctx, x, box }) {
-    if (!result.card) return;
-    ctx.strokeStyle = '#d55e00';
-    ctx.setLineDash([4, 3]);
-    ctx.beginPath();
-    ctx.moveTo(x(result.card.mean), 0);
-    ctx.lineTo(x(result.card.mean), box.height);
-    ctx.stroke();
-    ctx.fillStyle = '#d55e00';
-    ctx.font = '11px system-ui, sans-serif';
-    ctx.textBaseline = 'top';
-    ctx.fillText(` mean ${fmt(result.card.mean, 3)}`, x(result.card.mean), 2);
-  },
+  overlay: (o) => result.card && markX(o, result.card.mean, { colour: '#d55e00', text: `mean ${fmt(result.card.mean, 3)}` }),
 });
 
 function drawPmf() {

@@ -5,9 +5,9 @@
 // inputs from the controls and says what to draw.
 import init, * as fisst from 'fisst';
 import { sceneView } from './lib/view.js';
-import { colorbar, heatImage } from './lib/colormap.js';
+import { cellCounts, cellGrid, colorbar, heatImage } from './lib/colormap.js';
 import { clipTo, ellipsePath } from './lib/draw.js';
-import { handles, insideRegion, kindOf, regionPath, reshape, translate, validRegions } from './lib/regions.js';
+import { drawHandles, handles, insideRegion, kindOf, labelAnchor, regionPath, reshape, translate, validRegions } from './lib/regions.js';
 import { $, choice, select, slider } from './lib/controls.js';
 import { urlState } from './lib/url-state.js';
 import { pageReady, timings } from './lib/timing.js';
@@ -68,17 +68,9 @@ const timer = timings('splitting');
 const mixtureOf = () => state.components.map((c) => ({ weight: c.weight, mean: [...c.mean], cov: covOf(c) }));
 
 // ---------------------------------------------------------------- density images (display only)
-/** Cell-centred grid over a domain: `n` cells per axis (the image spans the domain exactly). */
-function cellGrid([x0, x1], [y0, y1], nx, ny) {
-  const [hx, hy] = [(x1 - x0) / nx, (y1 - y0) / ny];
-  return { x: [x0 + hx / 2, x1 - hx / 2, nx], y: [y0 + hy / 2, y1 - hy / 2, ny] };
-}
-
 /** mixtureDensityGrid at a resolution the component count allows (≤ `budget` evaluations). */
 function density(mixture, xDomain, yDomain, maxCells, budget = 1e6) {
-  const aspect = (yDomain[1] - yDomain[0]) / (xDomain[1] - xDomain[0]);
-  const nx = Math.max(24, Math.min(maxCells, Math.floor(Math.sqrt(budget / Math.max(mixture.length, 1) / aspect))));
-  const ny = Math.max(1, Math.round(nx * aspect));
+  const [nx, ny] = cellCounts(xDomain, yDomain, { maxCells, budget, terms: mixture.length });
   const values = mixture.length > 0 ? fisst.mixtureDensityGrid({ mixture, grid: cellGrid(xDomain, yDomain, nx, ny) }) : new Float64Array(nx * ny);
   return { values, nx, ny };
 }
@@ -195,20 +187,13 @@ function drawScene(ctx, v) {
     ctx.fillText(String(k + 1), x + 6, y - 4);
   });
   // Region handles on top; region labels.
+  ctx.font = '600 12px system-ui, sans-serif';
   state.regions.forEach((region, k) => {
     const c = k === 0 ? COLOUR.first : COLOUR.other;
-    ctx.fillStyle = '#ffffff';
-    ctx.strokeStyle = c;
-    ctx.lineWidth = 1.5;
-    for (const [x, y] of handles(region)) {
-      ctx.fillRect(px(x) - 4, py(y) - 4, 8, 8);
-      ctx.strokeRect(px(x) - 4, py(y) - 4, 8, 8);
-    }
-    const [lx, ly] = handles(region).reduce(([ax, ay], [x, y]) => (y > ay || (y === ay && x < ax) ? [x, y] : [ax, ay]));
-    const anchor = kindOf(region) === 'disc' ? [region.disc.center[0] - region.disc.radius * 0.7, region.disc.center[1] + region.disc.radius * 0.75] : [lx, ly];
-    ctx.font = '600 12px system-ui, sans-serif';
+    drawHandles(ctx, v, region, c);
+    const [lx, ly] = labelAnchor(region);
     ctx.fillStyle = c;
-    ctx.fillText(k === 0 ? 'S' : `S${k + 1}`, px(anchor[0]) + 6, py(anchor[1]) - 6);
+    ctx.fillText(k === 0 ? 'S' : `S${k + 1}`, px(lx) + 6, py(ly) - 6);
   });
   ctx.restore();
 }
@@ -344,7 +329,7 @@ const F5X = [-4, 4];
 const F5Y = [-2.2, 4.2]; // 8 × 6.4 units on 316 × 252 px: equal units on both axes
 const scenario = timer.time('fig5', () => fisst.negativeInformationScenario());
 const fig5 = { cache: new Map(), panels: {} };
-const fig5Bar = colorbar($('fig5-legend'), { map: 'blues', label: 'density (one scale per scan)', format: (v) => fmt(v, 3) });
+const fig5Bar = colorbar($('fig5-legend'), { map: 'greys', label: 'density (one scale per scan)', format: (v) => fmt(v, 3) });
 
 /** Per step: density images on one colour scale and the split mixture's inside flags. */
 function fig5Images(k) {
@@ -352,7 +337,7 @@ function fig5Images(k) {
   const s = scenario.steps[k - 1];
   const d = Object.fromEntries(['predicted', 'split', 'posterior'].map((key) => [key, density(s[key], F5X, F5Y, 120)]));
   const vmax = Math.max(largest(d.predicted.values), largest(d.posterior.values));
-  const images = Object.fromEntries(Object.entries(d).map(([key, v]) => [key, heatImage(v.values, v.nx, v.ny, { map: 'blues', vmax })]));
+  const images = Object.fromEntries(Object.entries(d).map(([key, v]) => [key, heatImage(v.values, v.nx, v.ny, { map: 'greys', vmax })]));
   // maxDepth 0 splits nothing: the inside flags of the split mixture as the filter used them.
   const mask = fisst.splitForRegions({ mixture: s.split, regions: [scenario.fov], maxDepth: 0 }).insideMask;
   fig5.cache.set(k, { images, mask, vmax });

@@ -1,6 +1,6 @@
 // The spooky effect made visible (paper 003). Every number comes from the fisst package.
 import init, * as fisst from 'fisst';
-import { chart } from './lib/chart.js';
+import { chart, markX } from './lib/chart.js';
 import { sceneView } from './lib/view.js';
 import { cross, dot } from './lib/draw.js';
 import { $, choice, slider } from './lib/controls.js';
@@ -129,14 +129,7 @@ const fig3 = chart($('fig3'), {
   x: { label: 'number of Bernoulli components n', range: () => [0, state.nmax], integer: true, format: String },
   y: { label: 'targets reported', range: () => [0, state.nmax], integer: true, format: String },
   series: SERIES.map((s) => ({ label: s.label, colour: s.colour, dash: s.dash, value: String })),
-  overlay({ ctx, x, box }) {
-    ctx.strokeStyle = '#9aa5b1';
-    ctx.setLineDash([1, 3]);
-    ctx.beginPath();
-    ctx.moveTo(x(state.n), 0);
-    ctx.lineTo(x(state.n), box.height);
-    ctx.stroke();
-  },
+  overlay: (o) => markX(o, state.n, { colour: '#9aa5b1', dash: [1, 3], width: 1 }),
 });
 
 function updateFig3(recompute) {

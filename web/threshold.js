@@ -3,9 +3,8 @@
 // bernoulliEstimate, bernoulliLossCurve, probabilityOutsideBall, mixtureDensityGrid); this
 // file only says what to compute and draw (the drawing, controls and timing are in lib/).
 import init, * as fisst from 'fisst';
-import { chart } from './lib/chart.js';
 import { sceneView } from './lib/view.js';
-import { colorbar, heatImage } from './lib/colormap.js';
+import { cellGrid, colorbar, heatImage } from './lib/colormap.js';
 import { thresholdGauge } from './lib/gauge.js';
 import { clipTo, cross, dot, ellipsePath, haloText, labelPlacer, richText, richTextWidth, starPath } from './lib/draw.js';
 import { $, choice, slider } from './lib/controls.js';
@@ -14,13 +13,13 @@ import { pageReady, timings } from './lib/timing.js';
 import { downloads, toCSV } from './lib/download.js';
 import { fmt, pointText } from './lib/format.js';
 
+// The charts (uPlot) load while the wasm compiles and the 2D view, the first figure, is drawn.
+const charts = import('./lib/chart.js');
 await init();
+let chart = null;
+let markX = null;
 
-const BLUE = '#0072b2';
-const RED = '#d55e00';
-const GREY = '#7b8794';
-const AMBER = '#e69f00';
-const GREEN = '#009e73';
+const [BLUE, RED, GREY, AMBER, GREEN] = ['#0072b2', '#d55e00', '#7b8794', '#e69f00', '#009e73'];
 const COMPONENT_COLOURS = ['#cc79a7', '#b45309', '#1f2933', '#56b4e9'];
 
 const SCENES = {
@@ -156,9 +155,11 @@ function drawFig3() {
 // ---------------------------------------------------------------- Fig. 2: expected loss against p
 const PS = Array.from({ length: 1001 }, (_, k) => k / 1000);
 let fig2Top = 1;
+let fig2 = null;
 /** Where a rule's loss switches between ρ_∅ and ρ_{a*}: the line is broken there. */
 const switches = (curve) => PS.map((_, k) => k).filter((k) => k > 0 && (curve.rule[k] === curve.empty[k]) !== (curve.rule[k - 1] === curve.empty[k - 1]));
-const fig2 = chart($('fig2'), {
+/** Fig. 2's chart (made on its first draw, after Fig. 3: the first figure comes sooner). */
+const makeFig2 = () => chart($('fig2'), {
   height: 320,
   x: { label: 'existence probability p', range: [0, 1], format: (v) => fmt(v, 3) },
   y: { label: 'expected loss', range: () => [0, fig2Top], format: (v) => fmt(v, 3) },
@@ -169,29 +170,12 @@ const fig2 = chart($('fig2'), {
     { label: 'optimal: report when p &gt; Γ', colour: BLUE, width: 3, breaks: () => switches(results.fig2.optimal) },
     { label: 'conventional: report when p &gt; 0.5', colour: RED, width: 2, dash: [7, 5], breaks: () => switches(results.fig2.conventional) },
   ],
-  overlay({ ctx, x, box }) {
+  overlay(o) {
     if (!results.fig2) return;
     const g = results.fig2.threshold;
-    ctx.font = '11px system-ui, sans-serif';
-    ctx.textBaseline = 'top';
-    const mark = (p, colour, text, align) => {
-      ctx.strokeStyle = colour;
-      ctx.lineWidth = 1.2;
-      ctx.setLineDash([4, 3]);
-      ctx.beginPath();
-      ctx.moveTo(x(p), 0);
-      ctx.lineTo(x(p), box.height);
-      ctx.stroke();
-      ctx.setLineDash([]);
-      ctx.textAlign = align;
-      haloText(ctx, text, x(p) + (align === 'left' ? 4 : -4), 3, colour);
-    };
-    mark(0.5, RED, 'Γ₂ = 0.5', g < 0.5 ? 'left' : 'right');
-    if (g >= 0 && g <= 1) mark(g, BLUE, `Γ₁ = ${gammaText(g)}`, g < 0.5 ? 'right' : 'left');
-    else {
-      ctx.textAlign = 'right';
-      haloText(ctx, `Γ₁ = ${gammaText(g)}: the optimal rule ${g > 1 ? 'never reports' : 'always reports'}`, box.width - 4, 3, BLUE);
-    }
+    markX(o, 0.5, { colour: RED, text: 'Γ₂ = 0.5', align: g < 0.5 ? 'left' : 'right' });
+    if (g >= 0 && g <= 1) markX(o, g, { colour: BLUE, text: `Γ₁ = ${gammaText(g)}`, align: g < 0.5 ? 'right' : 'left' });
+    else markX(o, 1, { colour: BLUE, line: false, text: `Γ₁ = ${gammaText(g)}: the optimal rule ${g > 1 ? 'never reports' : 'always reports'}`, align: 'right' });
   },
 });
 
@@ -210,6 +194,7 @@ function drawFig2() {
   const peak = Math.max(...optimal.empty, ...optimal.singleton, 0.05);
   const step = [0.05, 0.1, 0.2, 0.25, 0.5, 1, 2, 5].find((st) => peak / st <= 10) ?? 10;
   fig2Top = Math.ceil(peak / step - 1e-9) * step;
+  fig2 ??= makeFig2();
   fig2.update([PS, saving.map((d) => (d > 0 ? fig2Top : null)), optimal.empty, optimal.singleton, optimal.rule, conventional.rule]);
   $('fig2-q').textContent = fmt(q, 6);
   $('fig2-gamma').textContent = gammaText(e.threshold);
@@ -263,8 +248,7 @@ function computeView() {
   const key = JSON.stringify([mix, x, y]);
   if (heat.key !== key) {
     // The density on the visible rectangle (cell centres), recomputed after a drag, pan or zoom.
-    const h = [(x[1] - x[0]) / (2 * GRID_COUNT), (y[1] - y[0]) / (2 * GRID_COUNT)];
-    const values = fisst.mixtureDensityGrid({ mixture: mix, grid: { x: [x[0] + h[0], x[1] - h[0], GRID_COUNT], y: [y[0] + h[1], y[1] - h[1], GRID_COUNT] } });
+    const values = fisst.mixtureDensityGrid({ mixture: mix, grid: cellGrid(x, y, GRID_COUNT) });
     const vmax = values.reduce((a, b) => Math.max(a, b), 0);
     heat.image = heatImage(values, GRID_COUNT, GRID_COUNT, { map: 'blues', vmax, scale: 'sqrt' });
     heat.key = key;
@@ -366,21 +350,10 @@ const DRAW = { fig3: drawFig3, fig2: drawFig2, view: drawView };
 function update(...panels) {
   timer.time('total', () => {
     for (const panel of panels) timer.time(panel, DRAW[panel]);
-    publish();
+    if (results.fig3 && results.fig2) publish();
   });
   timer.show();
   url.save();
-}
-
-function costsHtml() {
-  const c = (ij) => `c<sub>${ij}</sub>`;
-  if (state.preset === 'mpe') {
-    return `${c('00')} = 0, ${c('01')} = 1 (missed target), ${c('10')} = 1 (false alarm), ${c('11')} = 0, c = 1 (reported point `
-      + 'farther than r<sub>0</sub>): the expected loss is the probability of error (Corollary IV.1).';
-  }
-  const [a, m] = [fmt(state.cA, 3), fmt(state.cM, 3)];
-  return `${c('00')} = 0, ${c('01')} = ${c('A')} = ${a} (asset lost), ${c('10')} = ${c('11')} = ${c('M')} = ${m} (countermeasure `
-    + `spent), c = ${c('A')} = ${a} (spent farther than r<sub>0</sub>: asset lost too); ${c('M')}/${c('A')} = ${fmt(state.cM / state.cA, 3)} (Corollary IV.2).`;
 }
 
 function showCosts() {
@@ -389,7 +362,10 @@ function showCosts() {
     $(id).disabled = !mmol;
     $(`${id}-label`).classList.toggle('disabled', !mmol);
   }
-  $('costs-text').innerHTML = costsHtml();
+  for (const el of document.querySelectorAll('#costs-text [data-preset]')) el.hidden = el.dataset.preset !== state.preset;
+  for (const [cls, v] of [['c-a', state.cA], ['c-m', state.cM], ['ratio', state.cM / state.cA]]) {
+    for (const el of document.querySelectorAll(`#costs-text .${cls}`)) el.textContent = fmt(v, 3);
+  }
 }
 
 const num = (v) => fmt(v, 3);
@@ -427,5 +403,7 @@ downloads($('view-figure'), {
 });
 
 showCosts();
-update('fig3', 'fig2', 'view');
+update('view');
+({ chart, markX } = await charts);
+update('fig3', 'fig2');
 pageReady();

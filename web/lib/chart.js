@@ -119,3 +119,29 @@ function breaksRefiner(breaks) {
     return out.sort((a, b) => a[0] - b[0]);
   };
 }
+
+/**
+ * For an overlay: a dashed vertical line at x = v across the plot area, with `text` at its
+ * top (to the `align` side of it), in `colour`; `line: false` writes the text alone.
+ */
+export function markX({ ctx, x, box }, v, { colour = '#52606d', text = '', align = 'left', dash = [4, 3], width = 1.2, line = true } = {}) {
+  ctx.strokeStyle = line ? colour : 'transparent';
+  ctx.lineWidth = width;
+  ctx.setLineDash(dash);
+  ctx.beginPath();
+  ctx.moveTo(x(v), 0);
+  ctx.lineTo(x(v), box.height);
+  ctx.stroke();
+  ctx.setLineDash([]);
+  if (!text) return;
+  ctx.font = '11px system-ui, sans-serif';
+  ctx.textBaseline = 'top';
+  ctx.textAlign = align;
+  ctx.lineJoin = 'round';
+  ctx.lineWidth = 3.5;
+  ctx.strokeStyle = 'rgba(255,255,255,0.92)';
+  const px = x(v) + (align === 'left' ? 4 : -4);
+  ctx.strokeText(text, px, 3);
+  ctx.fillStyle = colour;
+  ctx.fillText(text, px, 3);
+}

@@ -115,3 +115,23 @@ export function colorbar(container, { map = 'viridis', label = '', min = 0, max 
   update();
   return { element: el, update };
 }
+
+/**
+ * The `grid` option of `mixtureDensityGrid` whose nx × ny cells tile the rectangle x × y
+ * (values at the cell centres), so that heatImage's pixels cover it exactly.
+ */
+export function cellGrid([x0, x1], [y0, y1], nx, ny = nx) {
+  const [hx, hy] = [(x1 - x0) / nx, (y1 - y0) / ny];
+  return { x: [x0 + hx / 2, x1 - hx / 2, nx], y: [y0 + hy / 2, y1 - hy / 2, ny] };
+}
+
+/**
+ * Cells [nx, ny] for a density image of the rectangle x × y (square cells) that costs at
+ * most `budget` evaluations of `terms` terms each (e.g. mixture components): at most
+ * `maxCells` and at least 24 across.
+ */
+export function cellCounts([x0, x1], [y0, y1], { maxCells = 125, budget = 1e6, terms = 1 } = {}) {
+  const aspect = (y1 - y0) / (x1 - x0);
+  const nx = Math.max(24, Math.min(maxCells, Math.floor(Math.sqrt(budget / Math.max(terms, 1) / aspect))));
+  return [nx, Math.max(1, Math.round(nx * aspect))];
+}

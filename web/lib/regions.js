@@ -88,3 +88,23 @@ export function validRegions(regions) {
     return Array.isArray(r.polygon) && r.polygon.length >= 3 && r.polygon.every(pt);
   });
 }
+
+/** Draws a region's handles (white squares, 8 px) with an outline in `colour`. */
+export function drawHandles(ctx, view, region, colour) {
+  ctx.fillStyle = '#ffffff';
+  ctx.strokeStyle = colour;
+  ctx.lineWidth = 1.5;
+  for (const [x, y] of handles(region)) {
+    ctx.fillRect(view.px(x) - 4, view.py(y) - 4, 8, 8);
+    ctx.strokeRect(view.px(x) - 4, view.py(y) - 4, 8, 8);
+  }
+}
+
+/** Where to write a region's name (data coordinates): its top-left handle, or above a disc's left rim. */
+export function labelAnchor(region) {
+  if (kindOf(region) === 'disc') {
+    const { center, radius } = region.disc;
+    return [center[0] - radius * 0.7, center[1] + radius * 0.75];
+  }
+  return handles(region).reduce(([ax, ay], [x, y]) => (y > ay || (y === ay && x < ax) ? [x, y] : [ax, ay]));
+}

@@ -120,6 +120,14 @@ export async function pixelOf(page, sel, view, [x, y]) {
   return [left + box.left + ((x - x0) / (x1 - x0)) * box.width, top + box.top + ((y1 - y) / (y1 - y0)) * box.height];
 }
 
+/** A mouse drag from viewport point `from` to `to` in `steps` moves, then release. */
+export async function mouseDrag(page, [x0, y0], [x1, y1], steps = 4) {
+  await page.mouse.move(x0, y0);
+  await page.mouse.down();
+  await page.mouse.move(x1, y1, { steps });
+  await page.mouse.up();
+}
+
 /** Data units per CSS pixel of a published view (along x). */
 export const unitsPerPixel = (view) => (view.x[1] - view.x[0]) / view.box.width;
 

@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as fisst from 'fisst';
 import { fmt } from '../../../web/lib/format.js';
-import { json, median, pixelOf as viewPixel, reopen, text, unitsPerPixel as upp, useBrowser } from './harness.mjs';
+import { json, median, mouseDrag, pixelOf as viewPixel, reopen, text, unitsPerPixel as upp, useBrowser } from './harness.mjs';
 
 const browser = useBrowser();
 const pageState = (page) => json(page, '#split-state');
@@ -96,10 +96,7 @@ test('splitting: dragging and reshaping S, and the sliders, update the split rea
 
   // Reshape: drag S's top-right corner handle up and right.
   const [cx, cy] = await pixelOf(page, s2, b2.max);
-  await page.mouse.move(cx, cy);
-  await page.mouse.down();
-  await page.mouse.move(cx + 40, cy - 25, { steps: 3 });
-  await page.mouse.up();
+  await mouseDrag(page, [cx, cy], [cx + 40, cy - 25], 3);
   const s3 = await pageState(page);
   near(s3.regions[0].box.max[0], b2.max[0] + 40 * k, 0.02, 'resized max x');
   near(s3.regions[0].box.max[1], b2.max[1] + 25 * k, 0.02, 'resized max y');
@@ -143,10 +140,7 @@ test('splitting: dragging and reshaping S, and the sliders, update the split rea
   // A drag on the p_S layer (its density image is recomputed on every move).
   const b7 = s7.regions[0].box;
   const [x7, y7] = await pixelOf(page, s7, [(b7.min[0] + b7.max[0]) / 2, (b7.min[1] + b7.max[1]) / 2]);
-  await page.mouse.move(x7, y7);
-  await page.mouse.down();
-  await page.mouse.move(x7 + 70, y7 - 20, { steps: 8 });
-  await page.mouse.up();
+  await mouseDrag(page, [x7, y7], [x7 + 70, y7 - 20], 8);
   const s8 = await pageState(page);
   near(s8.regions[0].box.min[0], b7.min[0] + 70 * k, 0.02, 'min x on the p_S layer');
   await checkSplit(page, s8);
@@ -199,20 +193,14 @@ test('splitting: several regions, a component drag and the choice of S', async (
   const { center, radius } = s.regions[0].disc;
   const k = unitsPerPixel(s);
   const [hx, hy] = await pixelOf(page, s, [center[0] + radius, center[1]]);
-  await page.mouse.move(hx, hy);
-  await page.mouse.down();
-  await page.mouse.move(hx + 30, hy, { steps: 3 });
-  await page.mouse.up();
+  await mouseDrag(page, [hx, hy], [hx + 30, hy], 3);
   s = await pageState(page);
   near(s.regions[0].disc.radius, radius + 30 * k, 0.02, 'radius');
   await checkSplit(page, s);
 
   const mean = s.mixture[1].mean;
   const [mx, my] = await pixelOf(page, s, mean);
-  await page.mouse.move(mx, my);
-  await page.mouse.down();
-  await page.mouse.move(mx - 60, my - 40, { steps: 4 });
-  await page.mouse.up();
+  await mouseDrag(page, [mx, my], [mx - 60, my - 40]);
   const moved = await pageState(page);
   assert.equal(moved.selected.component, 1);
   near(moved.mixture[1].mean[0], mean[0] - 60 * k, 0.02, 'mean x');

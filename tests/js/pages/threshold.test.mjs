@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as fisst from 'fisst';
 import { fmt } from '../../../web/lib/format.js';
-import { json, pixelOf as viewPixel, reopen, text, timeLine, touchDrag, unitsPerPixel as upp, useBrowser } from './harness.mjs';
+import { json, mouseDrag, pixelOf as viewPixel, reopen, text, timeLine, touchDrag, unitsPerPixel as upp, useBrowser } from './harness.mjs';
 
 const browser = useBrowser();
 const pageState = (page) => json(page, '#threshold-state');
@@ -215,10 +215,7 @@ test('threshold: dragging a component with the mouse moves a*, q(a*) and the dec
   assert.deepEqual((await pageState(page)).view.mixture, s1.view.mixture);
   // A press away from every component grabs nothing.
   const [xe, ye] = await pixelOf(page, s1, [4, -4]);
-  await page.mouse.move(xe, ye);
-  await page.mouse.down();
-  await page.mouse.move(xe - 50, ye - 50, { steps: 2 });
-  await page.mouse.up();
+  await mouseDrag(page, [xe, ye], [xe - 50, ye - 50], 2);
   assert.deepEqual((await pageState(page)).view.mixture, s1.view.mixture);
 
   // p: below Γ nothing is reported.
@@ -313,10 +310,7 @@ test('threshold: the settings and the dragged means are in the URL', async () =>
   await checkView(page, s);
   // Drag a component, change p: the reopened URL shows the same view.
   const [x0, y0] = await pixelOf(page, s, s.view.mixture[0].mean);
-  await page.mouse.move(x0, y0);
-  await page.mouse.down();
-  await page.mouse.move(x0 - 60, y0 + 40, { steps: 3 });
-  await page.mouse.up();
+  await mouseDrag(page, [x0, y0], [x0 - 60, y0 + 40], 3);
   await page.locator('#p').fill('0.35');
   const moved = await pageState(page);
   const again = await reopen(browser, page);
