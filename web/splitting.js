@@ -6,7 +6,7 @@
 import init, * as fisst from 'fisst';
 import { sceneView } from './lib/view.js';
 import { cellCounts, cellGrid, colorbar, heatImage } from './lib/colormap.js';
-import { clipTo, ellipsePath } from './lib/draw.js';
+import { clipTo, drawMixture, ellipsePath } from './lib/draw.js';
 import { drawHandles, handles, insideRegion, kindOf, labelAnchor, regionPath, reshape, translate, validRegions } from './lib/regions.js';
 import { $, choice, select, slider } from './lib/controls.js';
 import { urlState } from './lib/url-state.js';
@@ -141,28 +141,8 @@ function drawScene(ctx, v) {
     ctx.stroke(path);
   });
   ctx.setLineDash([]);
-  // Split components: 1σ ellipses, one path per (side, opacity class) so thousands stay cheap.
-  const wmax = r.mixture.reduce((a, c) => Math.max(a, c.weight), 0);
-  for (const side of [false, true]) {
-    for (const [lo, hi, alpha] of [[0, 0.05, 0.3], [0.05, 0.3, 0.55], [0.3, 1.01, 0.9]]) {
-      ctx.beginPath();
-      const some = r.mixture.filter((c, i) => r.insideMask[i] === side && c.weight / wmax >= lo && c.weight / wmax < hi);
-      for (const c of some) ellipsePath(ctx, px, py, c.mean, c.cov);
-      ctx.globalAlpha = alpha;
-      ctx.strokeStyle = side ? COLOUR.inside : COLOUR.outside;
-      ctx.lineWidth = 1.2;
-      if (some.length) ctx.stroke();
-    }
-    ctx.globalAlpha = 1;
-    ctx.fillStyle = side ? COLOUR.inside : COLOUR.outside; // the split means: small dots
-    ctx.beginPath();
-    r.mixture.forEach((c, i) => {
-      if (r.insideMask[i] !== side) return;
-      ctx.moveTo(px(c.mean[0]) + 1.6, py(c.mean[1]));
-      ctx.arc(px(c.mean[0]), py(c.mean[1]), 1.6, 0, 2 * Math.PI);
-    });
-    ctx.fill();
-  }
+  // Split components: 1σ ellipses and means, coloured by the side of S of their mean.
+  drawMixture(ctx, px, py, r.mixture, { colourOf: (i) => (r.insideMask[i] ? COLOUR.inside : COLOUR.outside) });
   // Input components: dashed 1σ ellipses and ✚ handles at the means.
   ctx.strokeStyle = COLOUR.input;
   ctx.setLineDash([5, 4]);
@@ -362,17 +342,8 @@ function fig5Panel(key) {
       ctx.lineWidth = 2;
       ctx.stroke(fov);
       if (key === 'split' || state.ellipses) {
-        const mixture = s[key];
-        const wmax = mixture.reduce((a, c) => Math.max(a, c.weight), 0);
-        mixture.forEach((c, i) => {
-          ctx.beginPath();
-          ellipsePath(ctx, v.px, v.py, c.mean, c.cov);
-          ctx.globalAlpha = 0.25 + 0.65 * Math.sqrt(c.weight / wmax);
-          ctx.strokeStyle = key === 'predicted' ? COLOUR.input : key === 'posterior' || !mask[i] ? COLOUR.outside : COLOUR.inside;
-          ctx.lineWidth = 1;
-          ctx.stroke();
-        });
-        ctx.globalAlpha = 1;
+        const colourOf = (i) => (key === 'predicted' ? COLOUR.input : key === 'posterior' || !mask[i] ? COLOUR.outside : COLOUR.inside);
+        drawMixture(ctx, v.px, v.py, s[key], { colourOf, dots: false, lineWidth: 1 });
       }
       ctx.font = '600 12px system-ui, sans-serif';
       ctx.fillStyle = COLOUR.first;

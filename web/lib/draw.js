@@ -138,3 +138,43 @@ export function labelPlacer(box) {
     return null;
   };
 }
+
+/**
+ * Draws a Gaussian mixture's components (`{ weight, mean, cov }`, position in the first two
+ * coordinates) as k-σ ellipses, more opaque the heavier they are (three classes of weight
+ * relative to the heaviest), and their means as dots (`dots`); `colourOf(i)` colours
+ * component i. One path per colour and class, so thousands of components stay cheap.
+ */
+export function drawMixture(ctx, px, py, mixture, { colourOf = () => '#0072b2', k = 1, dots = true, lineWidth = 1.2 } = {}) {
+  const wmax = mixture.reduce((a, c) => Math.max(a, c.weight), 0);
+  const groups = new Map(); // colour → [light, medium, heavy] index lists
+  mixture.forEach((c, i) => {
+    const colour = colourOf(i);
+    if (!groups.has(colour)) groups.set(colour, [[], [], []]);
+    const t = wmax > 0 ? c.weight / wmax : 1;
+    groups.get(colour)[t < 0.05 ? 0 : t < 0.3 ? 1 : 2].push(i);
+  });
+  ctx.save();
+  ctx.lineWidth = lineWidth;
+  for (const [colour, classes] of groups) {
+    ctx.strokeStyle = colour;
+    ctx.fillStyle = colour;
+    classes.forEach((members, j) => {
+      if (members.length === 0) return;
+      ctx.globalAlpha = [0.3, 0.55, 0.9][j];
+      ctx.beginPath();
+      for (const i of members) ellipsePath(ctx, px, py, mixture[i].mean, mixture[i].cov, k);
+      ctx.stroke();
+    });
+    if (!dots) continue;
+    ctx.globalAlpha = 1;
+    ctx.beginPath();
+    for (const i of classes.flat()) {
+      const [x, y] = [px(mixture[i].mean[0]), py(mixture[i].mean[1])];
+      ctx.moveTo(x + 1.6, y);
+      ctx.arc(x, y, 1.6, 0, 2 * Math.PI);
+    }
+    ctx.fill();
+  }
+  ctx.restore();
+}
