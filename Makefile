@@ -50,7 +50,7 @@ test-wasm:
 
 test-js: web-pkg
 	scripts/npm-deps.sh
-	cd tests/js && node --test contract.test.mjs readme.test.mjs types.test.mjs
+	cd tests/js && node --test contract.test.mjs readme.test.mjs types.test.mjs lib.test.mjs
 	cd tests/js && node --test --test-concurrency=1 pages/
 
 ## make bench: criterion benches and the side-by-side scripts (not part of `make test`)

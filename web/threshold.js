@@ -109,6 +109,7 @@ function fig3Labels({ ctx, x, y, box }) {
   const place = labelPlacer(box);
   ctx.font = '11px system-ui, sans-serif';
   ctx.textBaseline = 'bottom';
+  ctx.textAlign = 'left';
   place(box.width * 0.55, y(0.5) - 3, ctx.measureText('conventional 0.5').width, 13);
   haloText(ctx, 'conventional 0.5', box.width * 0.55, y(0.5) - 3, RED);
   if (f.gammaAt1 <= 1.2 && f.gammaAt1 >= 0) {
