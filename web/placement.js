@@ -34,6 +34,7 @@ const url = urlState(
 const state = url.values;
 const result = { scene: null, phd: null, map: null, card: null, images: {} };
 const timer = timings('placement');
+timer.badge($('redraw-ms'), { phd: 'PHD', map: 'variance map', total: 'whole update' });
 
 /** The FoV side snapped to a whole number of grid steps, computed as k · STEP like the grid. */
 const snap = (side) => Math.min(Math.max(Math.round(side / STEP), 1), 2 * (GRID_COUNT - 1)) * STEP;
@@ -178,6 +179,7 @@ function update(what) {
     if (what !== 'layer') computeFov();
     render();
   });
+  timer.show();
 }
 
 function moveFov(x, y) {

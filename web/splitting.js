@@ -65,6 +65,7 @@ state.component = Math.min(Math.max(Math.trunc(state.component), 0), state.compo
 state.region = Math.min(Math.max(Math.trunc(state.region), 0), state.regions.length - 1);
 const result = { split: null, unsplit: null, library: null, options: null };
 const timer = timings('splitting');
+timer.badge($('redraw-ms'), { split: 'splitForRegions', redraw: 'whole update', fig5: 'Fig. 5 scenario' });
 const mixtureOf = () => state.components.map((c) => ({ weight: c.weight, mean: [...c.mean], cov: covOf(c) }));
 
 // ---------------------------------------------------------------- density images (display only)
@@ -256,6 +257,7 @@ function update({ library = false } = {}) {
     syncControls();
     publish();
   });
+  timer.show();
   url.save();
 }
 

@@ -22,6 +22,7 @@ const url = urlState(
 );
 const state = url.values;
 const timer = timings('spooky');
+timer.badge($('redraw-ms'), { maps: 'six decision maps (first load)', fig3: 'Fig. 3 counts' });
 
 // ---------------------------------------------------------------- Fig. 1 and Fig. 2 maps
 const ESTIMATORS = ['gospa', 'ospa', 'uospa', 'mam', 'jom', 'map-cardinality'];
@@ -50,7 +51,7 @@ function renderMapImage(estimator) {
 /** A decision map: click or drag on it to set (r1, r2). */
 function mapView(estimator) {
   const view = sceneView($(`map-${estimator}`), {
-    width: 240, height: 240, box: { left: 48, top: 8, width: 182, height: 188 }, x: [0, 1], y: [0, 1],
+    width: 240, height: 240, box: { left: 48, top: 8, width: 176, height: 188 }, x: [0, 1], y: [0, 1],
     draw(ctx, v) {
       ctx.imageSmoothingEnabled = false;
       ctx.drawImage(maps.get(estimator).image, v.box.left, v.box.top, v.box.width, v.box.height);
@@ -140,7 +141,8 @@ function updateFig3(recompute) {
   $('fig3-ospa').textContent = counts.ospa[state.n - 1];
   $('fig3-uospa').textContent = counts.uospa[state.n - 1];
   $('fig3-map').textContent = counts.mapCardinality[state.n - 1];
-  fig3.update([counts.gospa.map((_, i) => i + 1), ...SERIES.map((s) => counts[s.key])]);
+  fig3.update([counts.n, ...SERIES.map((s) => counts[s.key])]);
+  timer.show();
   url.save();
 }
 
@@ -272,6 +274,7 @@ const mapViews = timer.time('maps', () => ESTIMATORS.map((e) => {
 }));
 updateTwoTargets();
 updateFig3(true);
+timer.show();
 if (state.truth === null) randomScene(7);
 updatePlayground();
 pageReady();

@@ -20,7 +20,7 @@ let chart = null;
 let markX = null;
 
 const [BLUE, RED, GREY, AMBER, GREEN] = ['#0072b2', '#d55e00', '#7b8794', '#e69f00', '#009e73'];
-const COMPONENT_COLOURS = ['#cc79a7', '#b45309', '#1f2933', '#56b4e9'];
+const COMPONENT_COLOURS = ['#7c3aed', '#cc79a7', '#0e7490', '#4d7c0f'];
 
 const SCENES = {
   three: [

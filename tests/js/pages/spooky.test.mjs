@@ -29,7 +29,7 @@ test('spooky: sliders move the decisions to the package values', async () => {
   await page.locator('#story-case2').click();
   assert.equal(await text(page, '#decision-ospa'), 'report nothing');
   // A click on a decision map sets (r1, r2) to the point clicked.
-  const map = { box: { left: 48, top: 8, width: 182, height: 188 }, x: [0, 1], y: [0, 1] };
+  const map = { box: { left: 48, top: 8, width: 176, height: 188 }, x: [0, 1], y: [0, 1] };
   const [mx, my] = await pixelOf(page, '#map-ospa', map, [0.7, 0.2]);
   await page.mouse.click(mx, my);
   const [r1, r2] = [Number(await page.locator('#r1').inputValue()), Number(await page.locator('#r2').inputValue())];

@@ -339,3 +339,41 @@ test('threshold: download buttons give the figures as PNG and CSV', async () => 
   }
   await browser.done(page);
 });
+
+test('threshold: the 2D view zooms (Ctrl + wheel), pans (drag on empty space) and resets (double-click)', async () => {
+  const page = await browser.open('threshold.html');
+  const s0 = await pageState(page);
+  const width = (v) => v.x[1] - v.x[0];
+  // Zoom in about the middle of the view.
+  const [cx, cy] = await pixelOf(page, s0, [0, 0]);
+  await page.mouse.move(cx, cy);
+  await page.keyboard.down('Control');
+  await page.mouse.wheel(0, -100);
+  await page.keyboard.up('Control');
+  await page.waitForFunction((w) => {
+    const v = JSON.parse(document.getElementById('threshold-state').textContent).view;
+    return v.x[1] - v.x[0] < w;
+  }, width(s0.view));
+  const s1 = await pageState(page);
+  assert.ok(width(s1.view) < 0.9 * width(s0.view), `${width(s1.view)}`);
+  assert.ok(Math.abs((s1.view.x[0] + s1.view.x[1]) / 2) < 0.05, 'zoomed about the pointer');
+  // A component is still dragged in data coordinates.
+  const m = s1.view.mixture[0].mean;
+  const [x0, y0] = await pixelOf(page, s1, m);
+  await mouseDrag(page, [x0, y0], [x0 + 40, y0]);
+  const s2 = await pageState(page);
+  assert.ok(Math.abs(s2.view.mixture[0].mean[0] - (m[0] + 40 * unitsPerPixel(s1))) < 0.02, `${s2.view.mixture[0].mean}`);
+  await checkView(page, s2);
+  // Pan: a drag on empty space moves the view, not the mixture.
+  const [ex, ey] = await pixelOf(page, s2, [s2.view.x[1] - 0.3, s2.view.y[0] + 0.3]);
+  await mouseDrag(page, [ex, ey], [ex - 50, ey - 30]);
+  const s3 = await pageState(page);
+  assert.deepEqual(s3.view.mixture, s2.view.mixture);
+  assert.ok(Math.abs(s3.view.x[0] - (s2.view.x[0] + 50 * unitsPerPixel(s2))) < 0.02, `${s3.view.x}`);
+  assert.ok(Math.abs(width(s3.view) - width(s2.view)) < 1e-9);
+  // Double-click: back to the initial view.
+  await page.mouse.dblclick(ex, ey);
+  const s4 = await pageState(page);
+  assert.deepEqual([s4.view.x, s4.view.y], [s0.view.x, s0.view.y]);
+  await browser.done(page, 'threshold-zoom');
+});
