@@ -3,14 +3,9 @@
 // argmax, and the count pmf of the dragged FoV. This file only says what to compute and draw.
 import init, * as fisst from 'fisst';
 import { chart, markX } from './lib/chart.js';
-import { sceneView } from './lib/view.js';
+import { clipTo, sceneView, starPath } from './lib/scene.js';
 import { colorbar, heatImage } from './lib/colormap.js';
-import { clipTo, starPath } from './lib/draw.js';
-import { $, choice, slider } from './lib/controls.js';
-import { urlState } from './lib/url-state.js';
-import { pageReady, timings } from './lib/timing.js';
-import { downloads, toCSV } from './lib/download.js';
-import { fmt, msText, pointText } from './lib/format.js';
+import { $, choice, downloads, fmt, msText, pageReady, pointText, slider, timings, toCSV, urlState } from './lib/page.js';
 
 await init();
 
@@ -34,7 +29,7 @@ const url = urlState(
 const state = url.values;
 const result = { scene: null, phd: null, map: null, card: null, images: {} };
 const timer = timings('placement');
-timer.badge($('redraw-ms'), { phd: 'PHD', map: 'variance map', total: 'whole update' });
+timer.badge($('redraw-ms'), { phd: 'PHD (last new scene)', map: 'variance map (last new size)', total: 'last update' });
 
 /** The FoV side snapped to a whole number of grid steps, computed as k · STEP like the grid. */
 const snap = (side) => Math.min(Math.max(Math.round(side / STEP), 1), 2 * (GRID_COUNT - 1)) * STEP;
@@ -109,7 +104,9 @@ function drawScene(ctx, v) {
 
 // ---------------------------------------------------------------- the pmf bar chart
 let pmfMax = 4;
-const pmfChart = chart($('pmf'), {
+let pmfChart = null;
+/** The pmf chart, made on its first draw (after the scene: the first figure comes sooner). */
+const makePmfChart = () => chart($('pmf'), {
   height: 220,
   x: { label: 'n objects in your FoV', range: () => [-0.5, pmfMax + 0.5], integer: true, format: String },
   y: { label: 'probability', range: (lo, hi) => [0, Math.max(0.1, Math.ceil(hi * 10) / 10)], format: (v) => fmt(v, 3) },
@@ -125,6 +122,7 @@ function drawPmf() {
   const nMax = Math.min(pmf.length - 1, Math.max(last, Math.ceil(mean + 4 * Math.sqrt(variance)), 4));
   const ns = Array.from({ length: nMax + 1 }, (_, n) => n);
   pmfMax = nMax;
+  pmfChart ??= makePmfChart();
   pmfChart.update([ns, ns.map((n) => pmf[n])]);
 }
 

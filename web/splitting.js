@@ -4,15 +4,10 @@
 // mass, the split library, the density images and the Fig. 5 filter. This file only builds
 // inputs from the controls and says what to draw.
 import init, * as fisst from 'fisst';
-import { sceneView } from './lib/view.js';
+import { clipTo, drawMixture, ellipsePath, sceneView } from './lib/scene.js';
 import { cellCounts, cellGrid, colorbar, heatImage } from './lib/colormap.js';
-import { clipTo, drawMixture, ellipsePath } from './lib/draw.js';
 import { drawHandles, handles, insideRegion, kindOf, labelAnchor, regionPath, reshape, translate, validRegions } from './lib/regions.js';
-import { $, choice, select, slider } from './lib/controls.js';
-import { urlState } from './lib/url-state.js';
-import { pageReady, timings } from './lib/timing.js';
-import { downloads, toCSV } from './lib/download.js';
-import { fmt, msText } from './lib/format.js';
+import { $, choice, downloads, fmt, msText, pageReady, select, slider, timings, toCSV, urlState } from './lib/page.js';
 
 await init();
 

@@ -1,13 +1,8 @@
 // The spooky effect made visible (paper 003). Every number comes from the fisst package.
 import init, * as fisst from 'fisst';
 import { chart, markX } from './lib/chart.js';
-import { sceneView } from './lib/view.js';
-import { cross, dot } from './lib/draw.js';
-import { $, choice, slider } from './lib/controls.js';
-import { urlState } from './lib/url-state.js';
-import { pageReady, timings } from './lib/timing.js';
-import { downloads, toCSV } from './lib/download.js';
-import { fmt } from './lib/format.js';
+import { cross, dot, sceneView } from './lib/scene.js';
+import { $, choice, downloads, fmt, pageReady, slider, timings, toCSV, urlState } from './lib/page.js';
 
 await init();
 
@@ -125,7 +120,9 @@ const SERIES = [
   { key: 'mapCardinality', label: 'max cardinality', colour: '#cc79a7', dash: [2, 3] },
 ];
 let counts = null;
-const fig3 = chart($('fig3'), {
+let fig3 = null;
+/** Fig. 3's chart, made on its first draw (after the maps: the first figure comes sooner). */
+const makeFig3 = () => chart($('fig3'), {
   height: 280,
   x: { label: 'number of Bernoulli components n', range: () => [0, state.nmax], integer: true, format: String },
   y: { label: 'targets reported', range: () => [0, state.nmax], integer: true, format: String },
@@ -141,6 +138,7 @@ function updateFig3(recompute) {
   $('fig3-ospa').textContent = counts.ospa[state.n - 1];
   $('fig3-uospa').textContent = counts.uospa[state.n - 1];
   $('fig3-map').textContent = counts.mapCardinality[state.n - 1];
+  fig3 ??= makeFig3();
   fig3.update([counts.n, ...SERIES.map((s) => counts[s.key])]);
   timer.show();
   url.save();

@@ -3,21 +3,12 @@
 // bernoulliEstimate, bernoulliLossCurve, probabilityOutsideBall, mixtureDensityGrid); this
 // file only says what to compute and draw (the drawing, controls and timing are in lib/).
 import init, * as fisst from 'fisst';
-import { sceneView } from './lib/view.js';
+import { chart, markX } from './lib/chart.js';
+import { clipTo, cross, dot, ellipsePath, haloText, labelPlacer, richText, richTextWidth, sceneView, starPath, thresholdGauge } from './lib/scene.js';
 import { cellGrid, colorbar, heatImage } from './lib/colormap.js';
-import { thresholdGauge } from './lib/gauge.js';
-import { clipTo, cross, dot, ellipsePath, haloText, labelPlacer, richText, richTextWidth, starPath } from './lib/draw.js';
-import { $, choice, slider } from './lib/controls.js';
-import { urlState } from './lib/url-state.js';
-import { pageReady, timings } from './lib/timing.js';
-import { downloads, toCSV } from './lib/download.js';
-import { fmt, pointText } from './lib/format.js';
+import { $, choice, downloads, fmt, pageReady, pointText, slider, timings, toCSV, urlState } from './lib/page.js';
 
-// The charts (uPlot) load while the wasm compiles and the 2D view, the first figure, is drawn.
-const charts = import('./lib/chart.js');
 await init();
-let chart = null;
-let markX = null;
 
 const [BLUE, RED, GREY, AMBER, GREEN] = ['#0072b2', '#d55e00', '#7b8794', '#e69f00', '#009e73'];
 const COMPONENT_COLOURS = ['#7c3aed', '#cc79a7', '#0e7490', '#4d7c0f'];
@@ -404,7 +395,5 @@ downloads($('view-figure'), {
 });
 
 showCosts();
-update('view');
-({ chart, markX } = await charts);
-update('fig3', 'fig2');
+update('fig3', 'fig2', 'view');
 pageReady();

@@ -4,15 +4,14 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { cellCounts, cellGrid, colormap } from '../../web/lib/colormap.js';
 import { handles, reshape, translate, validRegions } from '../../web/lib/regions.js';
-import { fmt, median } from '../../web/lib/format.js';
-import { toCSV } from '../../web/lib/download.js';
+import { fmt, median, toCSV } from '../../web/lib/page.js';
 
 /** Loads url-state.js against a fake location/history holding `search`. */
 async function urlStateAt(search) {
   const written = [];
   globalThis.location = { pathname: '/page.html', search, hash: '' };
   globalThis.history = { replaceState: (_, __, url) => written.push(url) };
-  const { urlState } = await import('../../web/lib/url-state.js');
+  const { urlState } = await import('../../web/lib/page.js');
   return { urlState, written };
 }
 

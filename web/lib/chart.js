@@ -1,9 +1,8 @@
 // Line, area and bar charts on uPlot (web/vendor/uplot, copied from node_modules by the
 // build): axes, ticks, the legend with its hover read-outs, drag-to-zoom (double-click
 // resets) and resizing come from uPlot; this wrapper only maps the pages' options onto it.
-import uPlot from '../vendor/uplot/uPlot.esm.js';
-import { markFigure } from './timing.js';
-import { toCSV } from './download.js';
+import uPlot from '../vendor/uplot/uPlot.esm.min.js';
+import { markFigure, toCSV } from './page.js';
 
 const AXIS = { stroke: '#52606d', grid: { stroke: '#e4e7eb', width: 1 }, ticks: { stroke: '#cbd2d9', width: 1 } };
 

@@ -38,7 +38,7 @@ export function useBrowser() {
   let profile;
   const loads = new Map(); // page file → [{ firstFigure, ready }]
   before(async () => {
-    for (const need of ['web/pkg/fisst_wasm.js', 'web/vendor/uplot/uPlot.esm.js']) {
+    for (const need of ['web/pkg/fisst_wasm.js', 'web/vendor/uplot/uPlot.esm.min.js']) {
       assert.ok(existsSync(path.join(ROOT, need)), `${need} is missing: run \`make web-pkg\``);
     }
     ({ server, url } = await serve({ root: path.join(ROOT, 'web'), port: 0 }));
@@ -149,7 +149,7 @@ export async function touchDrag(page, sel, path) {
   return page.evaluate(() => window.pointerTypes);
 }
 
-export { median } from '../../../web/lib/format.js';
+export { median } from '../../../web/lib/page.js';
 
 /** Count, median and maximum of a list of times. */
 export function stats(xs) {

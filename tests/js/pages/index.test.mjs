@@ -28,6 +28,34 @@ test('index lists the demos and every page loads cleanly', async () => {
   }
 });
 
+/** The modules a page's script imports, transitively and statically (`fisst` through the import map). */
+function moduleGraph(entry) {
+  const seen = new Set();
+  const todo = [entry];
+  while (todo.length) {
+    const file = todo.shift();
+    if (seen.has(file)) continue;
+    seen.add(file);
+    const src = readFileSync(path.join(ROOT, 'web', file), 'utf8');
+    for (const [, a, b] of src.matchAll(/^import\s[^;]*?from\s+'([^']+)';|^import\s+'([^']+)';/gm)) {
+      const spec = a ?? b;
+      todo.push(spec === 'fisst' ? 'pkg/fisst_wasm.js' : path.posix.normalize(path.posix.join(path.posix.dirname(file), spec)));
+    }
+  }
+  seen.delete(entry);
+  return [...seen].sort();
+}
+
+test('every page preloads its wasm and modulepreloads its whole module graph (the first figure needs them)', () => {
+  for (const rel of demoPages()) {
+    const html = readFileSync(path.join(ROOT, 'web', rel), 'utf8');
+    const entry = html.match(/<script type="module" src="([^"]+)"/)[1];
+    const preloaded = [...html.matchAll(/<link rel="modulepreload" href="([^"]+)">/g)].map((m) => m[1]).sort();
+    assert.deepEqual(preloaded, moduleGraph(entry), `${rel}: the modulepreload links and the imports differ`);
+    assert.match(html, /<link rel="preload" href="pkg\/fisst_wasm_bg.wasm" as="fetch" type="application\/wasm" crossorigin>/, rel);
+  }
+});
+
 test('every page loads five times: its load time (first figure drawn)', async () => {
   for (const rel of demoPages()) {
     for (let k = 0; k < 5; k++) await browser.done(await browser.open(rel));

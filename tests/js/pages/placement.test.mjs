@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as fisst from 'fisst';
-import { fmt } from '../../../web/lib/format.js';
+import { fmt } from '../../../web/lib/page.js';
 import { json, pixelOf as viewPixel, reopen, text, touchDrag, unitsPerPixel as upp, useBrowser } from './harness.mjs';
 
 const browser = useBrowser();

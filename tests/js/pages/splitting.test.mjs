@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as fisst from 'fisst';
-import { fmt } from '../../../web/lib/format.js';
+import { fmt } from '../../../web/lib/page.js';
 import { json, median, mouseDrag, pixelOf as viewPixel, reopen, text, unitsPerPixel as upp, useBrowser } from './harness.mjs';
 
 const browser = useBrowser();
