@@ -6,7 +6,7 @@ import { cellCounts, cellGrid, colormap } from '../../web/lib/colormap.js';
 import { handles, reshape, translate, validRegions } from '../../web/lib/regions.js';
 import { fmt, median, toCSV } from '../../web/lib/page.js';
 
-/** Loads url-state.js against a fake location/history holding `search`. */
+/** Loads page.js (its urlState) against a fake location/history holding `search`. */
 async function urlStateAt(search) {
   const written = [];
   globalThis.location = { pathname: '/page.html', search, hash: '' };

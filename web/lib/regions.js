@@ -1,6 +1,6 @@
 // Regions (fields of view) as the fisst package takes them — { box: { min, max } },
 // { polygon: [[x, y], …] }, { disc: { center, radius } } — drawn, hit-tested and edited in a
-// scene view (see view.js).
+// scene view (see scene.js).
 
 /** 'box', 'polygon' or 'disc'. */
 export const kindOf = (region) => Object.keys(region)[0];

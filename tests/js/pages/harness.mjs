@@ -6,7 +6,7 @@
 // - `await browser.open('page.html')` opens a page (a query string is fine), waits until it
 //   says it is ready (body[data-ready]), collects its console errors, page errors, failed
 //   requests and HTTP errors in `page.errors`, and records its load time (first figure drawn,
-//   ready: web/lib/timing.js);
+//   ready: the timing section of web/lib/page.js);
 // - `await browser.done(page, 'name')` requires no error, saves a full-page screenshot in
 //   tests/browser/screenshots/<name>.png (when a name is given) and closes the page;
 // - `browser.timing(page)` is the page's window.fisstTiming (redraw times by panel);
@@ -164,7 +164,7 @@ export function timeLine(name, xs) {
 }
 
 /**
- * Reopens the page at its current URL (where web/lib/url-state.js keeps its settings) and
+ * Reopens the page at its current URL (where web/lib/page.js's urlState keeps its settings) and
  * returns the new page: a shared or reloaded link must show the same view.
  */
 export async function reopen(browser, page) {
