@@ -18,9 +18,11 @@ test: setup-test lint test-native test-nostd test-wasm test-js
 pkg: setup
 	scripts/build-pkg.sh
 
+## make web-pkg: the served folder web/: the npm package in web/pkg/, uPlot in web/vendor/
 web-pkg: pkg
 	rm -rf web/pkg
 	cp -r wasm/pkg web/pkg
+	scripts/web-deps.sh
 
 setup:
 	scripts/setup.sh
@@ -49,7 +51,7 @@ test-wasm:
 
 test-js: web-pkg
 	scripts/npm-deps.sh
-	cd tests/js && node --test contract.test.mjs readme.test.mjs types.test.mjs
+	cd tests/js && node --test contract.test.mjs readme.test.mjs types.test.mjs lib.test.mjs
 	cd tests/js && node --expose-gc --test soak/
 	cd tests/js && node --test --test-concurrency=1 pages/
 
@@ -73,4 +75,4 @@ bench: pkg
 
 clean:
 	cargo clean
-	rm -rf wasm/pkg web/pkg tests/js/node_modules tests/browser/screenshots
+	rm -rf wasm/pkg web/pkg web/vendor web/node_modules tests/js/node_modules tests/browser/screenshots

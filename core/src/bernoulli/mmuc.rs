@@ -3,8 +3,8 @@
 
 use alloc::vec::Vec;
 
-use crate::bernoulli::ball::{DEFAULT_TOLERANCE, GaussianBall};
-use crate::bernoulli::density::{ParticleSet, Repr, SpatialDensity, dist2, mixture_outside};
+use crate::bernoulli::ball::{DEFAULT_TOLERANCE, GaussianBall, dist2};
+use crate::bernoulli::density::{ParticleSet, Repr, SpatialDensity, mixture_outside};
 use crate::bernoulli::loss::check_radius;
 use crate::error::Result;
 use crate::math::fns;
