@@ -53,12 +53,14 @@ pub mod bernoulli;
 pub mod cardinality;
 pub mod error;
 pub mod estimators;
+pub mod filters;
 pub mod fov;
 pub mod gaussian;
 pub mod math;
 pub mod metrics;
 pub mod mixture;
 pub mod regions;
+pub mod sim;
 pub mod splitting;
 
 pub use error::{Error, Result};

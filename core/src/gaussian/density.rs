@@ -155,17 +155,24 @@ impl Gaussian {
     pub fn mahalanobis_sq(&self, x: &[f64]) -> f64 {
         debug_assert_eq!(x.len(), self.dim());
         let n = self.dim();
-        // Forward substitution L y = x − m.
-        let mut y: Vec<f64> = Vec::with_capacity(n);
+        // Forward substitution L y = x − m (on the stack for small n).
+        let mut small = [0.0f64; 8];
+        let mut large: Vec<f64> = Vec::new();
+        let y: &mut [f64] = if n <= small.len() {
+            &mut small[..n]
+        } else {
+            large.resize(n, 0.0);
+            &mut large
+        };
         let mut total = 0.0;
         for (i, (&xi, &mi)) in x.iter().zip(self.mean.iter()).enumerate().take(n) {
             let mut s = xi - mi;
-            for (j, yj) in y.iter().enumerate() {
-                s -= self.chol[(i, j)] * yj;
+            for j in 0..i {
+                s -= self.chol[(i, j)] * y[j];
             }
             let yi = s / self.chol[(i, i)];
             total += yi * yi;
-            y.push(yi);
+            y[i] = yi;
         }
         total
     }
