@@ -58,6 +58,7 @@ bench: pkg
 	python3 benches/pmf_vs_scipy.py
 	python3 benches/map_vs_numpy.py
 	python3 benches/bernoulli_vs_scipy.py
+	python3 benches/bernoulli_vs_stonesoup.py
 
 clean:
 	cargo clean

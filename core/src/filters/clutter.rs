@@ -9,7 +9,10 @@ use crate::error::{Error, Result};
 /// A clutter density given as a function of a vector measurement z (its intensity is
 /// λ_c · c(z)). Cloning shares the function.
 #[derive(Clone)]
-pub struct ClutterFunction(pub Arc<dyn Fn(&[f64]) -> f64 + Send + Sync>);
+pub struct ClutterFunction(pub Arc<ClutterFn>);
+
+/// The function type behind [`ClutterFunction`]: c(z) of a vector measurement.
+pub type ClutterFn = dyn Fn(&[f64]) -> f64 + Send + Sync;
 
 impl fmt::Debug for ClutterFunction {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

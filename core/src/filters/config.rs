@@ -25,7 +25,7 @@ pub(crate) fn density_total(mixture: &GaussianMixture, what: &str) -> Result<f64
         });
     }
     let total = mixture.total_weight();
-    if !(fns::abs(total - 1.0) <= DENSITY_TOL) {
+    if total.is_nan() || fns::abs(total - 1.0) > DENSITY_TOL {
         return Err(Error::parameter(
             alloc::format!("{what}[].weight"),
             total,
@@ -148,11 +148,7 @@ impl PredictConfig {
         if let Some(d) = self.birth.mixture.dim()
             && d != self.transition.dim()
         {
-            return Err(Error::dimension(
-                "birth.mixture",
-                self.transition.dim(),
-                d,
-            ));
+            return Err(Error::dimension("birth.mixture", self.transition.dim(), d));
         }
         Ok(())
     }
@@ -182,14 +178,37 @@ impl Default for Splitting {
     }
 }
 
-/// The filters' default split library: the variance-preserving R = 4, λ = 0.001 split
-/// ([`SplitLibrary::variance_preserving`]). Against the exact update (53)–(55) its posterior
-/// means and covariances are closer than Table I's (R = 4, λ = 0.001), which loses 5 % of
-/// the variance along the split direction at every split; see the module documentation of
-/// [`crate::filters`] for the measured errors.
+/// The filters' default split library: Table I of `001_…` (R = 4, λ = 0.001,
+/// [`SplitLibrary::table_i`]), chosen against the variance-preserving split of the
+/// authors' `pyest` ([`SplitLibrary::variance_preserving`], R = 4, λ = 0.001) by which one's
+/// posterior moments come closer to the exact update (53)–(55) (the test
+/// `the_default_library_is_closer_to_the_exact_update`, 2D and 4D states, a small report
+/// disc, a wide one and a miss, filter defaults and fine splitting; 10⁶ importance-weighted
+/// draws for the exact moments).
+///
+/// Measured (max over entries; means in posterior σ, covariances relative to σ_i σ_j):
+///
+/// ```text
+///                       Table I                      variance-preserving
+///  case (defaults)   |dr|    mean    cov          |dr|    mean    cov
+///  2d small report   0.018   0.065   0.48         0.019   0.030   0.52
+///  2d wide report    0.0026  0.020   0.12         0.0020  0.038   0.11
+///  2d miss           0.0097  0.079   0.13         0.0033  0.100   0.12
+///  4d small report   0.020   0.117   0.46         0.022   0.049   0.59
+///  4d wide report    0.0034  0.043   0.15         0.0023  0.043   0.13
+///  4d miss           0.013   0.090   0.13         0.0033  0.109   0.11
+///  sum of mean + cov over these and the fine settings:   2.63   (Table I)   2.77   (VP)
+/// ```
+///
+/// The variance-preserving split gives the better Δ and r in every case (Δ errors 30–65 %
+/// lower), and the better covariance after a miss, but a worse covariance after a report:
+/// the mean-based partition over-counts a report disc whose boundary curves on the scale of
+/// the components, which over-disperses the posterior, and Table I's 5 % variance loss per
+/// split happens to offset part of it. On the airport example (20 runs) the two are
+/// indistinguishable (mean position error 9.64 against 9.59, 3σ coverage 99.4 % against
+/// 99.8 %).
 pub fn default_split_library() -> SplitLibrary {
-    // Optimised once per call: about 2 ms; the filters build it once.
-    SplitLibrary::variance_preserving(4, 0.001).unwrap_or_else(|_| SplitLibrary::table_i())
+    SplitLibrary::table_i()
 }
 
 /// The filters' default reduction after an update (`reduction`): the two-pass strategy of

@@ -118,9 +118,10 @@ pub(crate) fn particle_estimate(
             }
         }
     }
-    for i in 0..dim {
-        for j in 0..i {
-            cov[j][i] = cov[i][j];
+    let lower = cov.clone();
+    for (i, row) in lower.iter().enumerate() {
+        for (j, v) in row.iter().enumerate().take(i) {
+            cov[j][i] = *v;
         }
     }
     let report = match &options.loss {

@@ -5,9 +5,7 @@ use alloc::vec::Vec;
 
 use nalgebra::{DMatrix, DVector};
 
-use super::config::{
-    BernoulliFilterConfig, GmBernoulli, PredictConfig, UpdateConfig, check_state,
-};
+use super::config::{BernoulliFilterConfig, GmBernoulli, PredictConfig, UpdateConfig, check_state};
 use super::estimate::{EstimateOptions, FilterEstimate, gm_estimate};
 use super::likelihood::{GeneralizedLikelihood, LinearGaussianLikelihood, RegionReports};
 use crate::error::{Error, Result};
@@ -71,7 +69,10 @@ pub fn gm_bernoulli_predict(state: &GmBernoulli, config: &PredictConfig) -> Resu
             let m = f * g.mean();
             let p = f * g.cov() * f.transpose() + config.transition.q();
             let p = (&p + p.transpose()) * 0.5;
-            out.push((w / total, Gaussian::new(m, p, &alloc::format!("mixture[{i}]"))?));
+            out.push((
+                w / total,
+                Gaussian::new(m, p, &alloc::format!("mixture[{i}]"))?,
+            ));
         }
         Ok(out)
     };
@@ -263,7 +264,11 @@ pub(crate) struct Term {
 }
 
 /// r_{k|k}, the posterior weights of the terms and Δ_k, eqs. (54), (57)–(58).
-pub(crate) fn bernoulli_weights(r: f64, terms: &[Term], zero_kappa: usize) -> Result<(f64, Vec<f64>, f64)> {
+pub(crate) fn bernoulli_weights(
+    r: f64,
+    terms: &[Term],
+    zero_kappa: usize,
+) -> Result<(f64, Vec<f64>, f64)> {
     if zero_kappa >= 2 {
         return Err(Error::parameter(
             "clutter.rate",
@@ -277,7 +282,7 @@ pub(crate) fn bernoulli_weights(r: f64, terms: &[Term], zero_kappa: usize) -> Re
             .map(|t| t.certain)
             .collect::<NeumaierSum>()
             .total();
-        if !(total > 0.0) || r == 0.0 {
+        if total.is_nan() || total <= 0.0 || r == 0.0 {
             return Err(Error::parameter(
                 "reports",
                 total,
@@ -368,8 +373,12 @@ fn constrain<'a>(
         })
         .map(|(w, g)| (*w, g))
         .collect();
-    let total: f64 = kept.iter().map(|(w, _)| *w).collect::<NeumaierSum>().total();
-    if !(total > 0.0) {
+    let total: f64 = kept
+        .iter()
+        .map(|(w, _)| *w)
+        .collect::<NeumaierSum>()
+        .total();
+    if total.is_nan() || total <= 0.0 {
         return Err(Error::parameter(
             "exclusions",
             total,
@@ -421,7 +430,7 @@ fn finish(
 
 /// The GM Bernoulli update for vector measurements z with the linear-Gaussian likelihood
 /// N(z; H x, R) (`gmBernoulliUpdate` with `measurements` and `likelihood: { H, R }`): the
-/// Bernoulli filter update of [Ristic, Vo, Vo & Farina 2013, eqs. (57)–(58)] in Gaussian-
+/// Bernoulli filter update of Ristic, Vo, Vo & Farina (2013), eqs. (57)–(58), in Gaussian-
 /// mixture form, written on the same types as the imprecise update. With q_ℓ(z) =
 /// N(z; H m_ℓ, S_ℓ), S_ℓ = H P_ℓ Hᵀ + R, κ(z) = λ_c c(z) and p_D,ℓ = p_D(m_ℓ; S) (51):
 ///
@@ -495,17 +504,11 @@ pub fn gm_bernoulli_update_vector<M: AsRef<[f64]>>(
             let s = h * p * &ht + likelihood.r();
             let s = (&s + s.transpose()) * 0.5;
             let hm = h * g.mean();
-            let innov = Gaussian::new(hm.clone(), s, &what).map_err(|_| {
-                Error::NotPositiveDefinite {
-                    what: what.clone(),
-                }
-            })?;
+            let innov = Gaussian::new(hm.clone(), s, &what)
+                .map_err(|_| Error::NotPositiveDefinite { what: what.clone() })?;
             // K = P Hᵀ S⁻¹ via the Cholesky factor of S.
-            let chol = nalgebra::Cholesky::new(innov.cov().clone()).ok_or_else(|| {
-                Error::NotPositiveDefinite {
-                    what: what.clone(),
-                }
-            })?;
+            let chol = nalgebra::Cholesky::new(innov.cov().clone())
+                .ok_or_else(|| Error::NotPositiveDefinite { what: what.clone() })?;
             let pht = p * &ht;
             let k = chol.solve(&pht.transpose()).transpose();
             let ikh = DMatrix::identity(n, n) - &k * h;
@@ -670,7 +673,10 @@ impl GmBernoulliFilter {
     /// # Errors
     /// [`Error::Unsupported`] naming `likelihood` when the config has none; as
     /// [`gm_bernoulli_update_vector`].
-    pub fn update_measurements<M: AsRef<[f64]>>(&mut self, measurements: &[M]) -> Result<UpdateInfo> {
+    pub fn update_measurements<M: AsRef<[f64]>>(
+        &mut self,
+        measurements: &[M],
+    ) -> Result<UpdateInfo> {
         let Some(l) = &self.likelihood else {
             return Err(Error::Unsupported {
                 what: "likelihood".into(),

@@ -131,8 +131,8 @@ impl LinearGaussianLikelihood {
             let found = if r.nrows() != m { r.nrows() } else { r.ncols() };
             return Err(Error::dimension("likelihood.R", m, found));
         }
-        let noise = Gaussian::new(nalgebra::DVector::zeros(m), r, "likelihood.R").map_err(
-            |e| match e {
+        let noise =
+            Gaussian::new(nalgebra::DVector::zeros(m), r, "likelihood.R").map_err(|e| match e {
                 Error::NotPositiveDefinite { .. } => Error::NotPositiveDefinite {
                     what: "likelihood.R".into(),
                 },
@@ -146,9 +146,28 @@ impl LinearGaussianLikelihood {
                     expected,
                 },
                 other => other,
-            },
-        )?;
+            })?;
         Ok(Self { h, noise })
+    }
+
+    /// [`LinearGaussianLikelihood::new`] from row-major slices: H with `measurement_dim`
+    /// rows (`h.len() / measurement_dim` columns) and R (m² numbers).
+    ///
+    /// # Errors
+    /// [`Error::DimensionMismatch`] naming `likelihood.H` (empty, or its length not a
+    /// multiple of m) or `likelihood.R` (length not m²); as [`LinearGaussianLikelihood::new`].
+    pub fn from_row_slices(h: &[f64], measurement_dim: usize, r: &[f64]) -> Result<Self> {
+        let m = measurement_dim;
+        if m == 0 || h.is_empty() || !h.len().is_multiple_of(m) {
+            return Err(Error::dimension("likelihood.H", m.max(1), h.len()));
+        }
+        if r.len() != m * m {
+            return Err(Error::dimension("likelihood.R", m * m, r.len()));
+        }
+        Self::new(
+            DMatrix::from_row_slice(m, h.len() / m, h),
+            DMatrix::from_row_slice(m, m, r),
+        )
     }
 
     /// H.
@@ -175,12 +194,12 @@ impl LinearGaussianLikelihood {
     pub fn density(&self, z: &[f64], x: &[f64]) -> f64 {
         let m = self.measurement_dim();
         let mut r: Vec<f64> = Vec::with_capacity(m);
-        for i in 0..m {
+        for (i, zi) in z.iter().enumerate().take(m) {
             let mut hx = 0.0;
             for (j, xj) in x.iter().enumerate().take(self.state_dim()) {
                 hx += self.h[(i, j)] * xj;
             }
-            r.push(z[i] - hx);
+            r.push(zi - hx);
         }
         self.noise.pdf(&r)
     }

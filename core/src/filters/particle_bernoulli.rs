@@ -60,7 +60,7 @@ enum Origin {
 
 /// The Bernoulli particle filter of B. Ristic, B.-T. Vo, B.-N. Vo, A. Farina, "A tutorial on
 /// Bernoulli filters: theory, implementation and applications," IEEE Trans. Signal Process.
-/// 61(13):3406–3430, 2013, doi:10.1109/TSP.2013.2257765 (reference [23] of `001_…`), with the
+/// 61(13):3406–3430, 2013, doi:10.1109/TSP.2013.2257765 (reference \[23\] of `001_…`), with the
 /// models of a [`BernoulliFilterConfig`] (`ParticleBernoulliFilter`):
 ///
 /// - **Prediction** (their eqs. (34)–(35), with a known birth density instead of the
@@ -235,9 +235,7 @@ impl ParticleBernoulliFilter {
                 *w *= scale;
             }
             let b = if born > 0.0 && !cfg.birth.mixture.is_empty() {
-                self.options
-                    .birth_particles
-                    .unwrap_or((n / 10).max(1))
+                self.options.birth_particles.unwrap_or((n / 10).max(1))
             } else {
                 0
             };
@@ -281,7 +279,10 @@ impl ParticleBernoulliFilter {
     /// non-finite value, `exclusions` when every particle lies in an exclusion region,
     /// `reports` or `clutter.rate` as [`gm_bernoulli_update_with`](super::gm_bernoulli_update_with);
     /// those of [`crate::filters::Clutter`].
-    pub fn update_with<L: GeneralizedLikelihood + ?Sized>(&mut self, likelihood: &L) -> Result<UpdateInfo> {
+    pub fn update_with<L: GeneralizedLikelihood + ?Sized>(
+        &mut self,
+        likelihood: &L,
+    ) -> Result<UpdateInfo> {
         let m = likelihood.reports();
         let kappa = self.update.clutter.intensities(m, |_| None)?;
         let eval = |x: &[f64]| -> (f64, f64) {
@@ -309,7 +310,10 @@ impl ParticleBernoulliFilter {
     /// [`Error::Unsupported`] naming `likelihood` when the config has none;
     /// [`Error::DimensionMismatch`] naming `measurements[j]`; [`Error::InvalidParameter`]
     /// naming `measurements[j][i]`; as [`ParticleBernoulliFilter::update_with`].
-    pub fn update_measurements<M: AsRef<[f64]>>(&mut self, measurements: &[M]) -> Result<UpdateInfo> {
+    pub fn update_measurements<M: AsRef<[f64]>>(
+        &mut self,
+        measurements: &[M],
+    ) -> Result<UpdateInfo> {
         let Some(lik) = self.likelihood.clone() else {
             return Err(Error::Unsupported {
                 what: "likelihood".into(),
@@ -355,7 +359,12 @@ impl ParticleBernoulliFilter {
     }
 
     /// L(x) of the update (0 in an exclusion region).
-    fn target_likelihood(&self, x: &[f64], eval: &dyn Fn(&[f64]) -> (f64, f64), zero_kappa: usize) -> f64 {
+    fn target_likelihood(
+        &self,
+        x: &[f64],
+        eval: &dyn Fn(&[f64]) -> (f64, f64),
+        zero_kappa: usize,
+    ) -> f64 {
         if self.update.exclusions.iter().any(|e| e.contains(x)) {
             return 0.0;
         }
@@ -390,7 +399,7 @@ impl ParticleBernoulliFilter {
             }
         }
         let kept = kept.total();
-        if !(kept > 0.0) {
+        if kept.is_nan() || kept <= 0.0 {
             return Err(Error::parameter(
                 "exclusions",
                 kept,
@@ -460,14 +469,18 @@ impl ParticleBernoulliFilter {
         zero_kappa: usize,
     ) -> f64 {
         let l = self.target_likelihood(x, eval, zero_kappa);
-        if !(l > 0.0) {
+        if l.is_nan() || l <= 0.0 {
             return f64::NEG_INFINITY;
         }
         let prior = match origin {
             Origin::Survived => self.predict.transition.ln_density(x, parent),
             Origin::Born => {
                 let p = self.predict.birth.mixture.pdf(x);
-                if p > 0.0 { fns::ln(p) } else { f64::NEG_INFINITY }
+                if p > 0.0 {
+                    fns::ln(p)
+                } else {
+                    f64::NEG_INFINITY
+                }
             }
             Origin::Fixed => return f64::NEG_INFINITY,
         };
@@ -507,7 +520,10 @@ impl ParticleBernoulliFilter {
         let Some(chol) = cov.cholesky() else {
             return; // degenerate cloud (e.g. one distinct particle): no move
         };
-        let h = fns::pow(4.0 / ((dim as f64 + 2.0) * n as f64), 1.0 / (dim as f64 + 4.0));
+        let h = fns::pow(
+            4.0 / ((dim as f64 + 2.0) * n as f64),
+            1.0 / (dim as f64 + 4.0),
+        );
         let l = chol.unpack() * h;
         let mut proposal = alloc::vec![0.0; dim];
         let mut eps = alloc::vec![0.0; dim];

@@ -71,8 +71,8 @@ impl LinearGaussianTransition {
                 (l.clone(), Some(l), ln_det)
             }
             None => {
-                let eig = SymmetricEigen::try_new(q.clone(), f64::EPSILON, 10_000)
-                    .ok_or_else(not_psd)?;
+                let eig =
+                    SymmetricEigen::try_new(q.clone(), f64::EPSILON, 10_000).ok_or_else(not_psd)?;
                 let top = eig.eigenvalues.iter().fold(0.0f64, |a, v| a.max(*v));
                 if eig.eigenvalues.iter().any(|v| *v < -TOL * top.max(0.0)) {
                     return Err(not_psd());

@@ -167,8 +167,8 @@ impl Gaussian {
         let mut total = 0.0;
         for (i, (&xi, &mi)) in x.iter().zip(self.mean.iter()).enumerate().take(n) {
             let mut s = xi - mi;
-            for j in 0..i {
-                s -= self.chol[(i, j)] * y[j];
+            for (j, yj) in y.iter().enumerate().take(i) {
+                s -= self.chol[(i, j)] * yj;
             }
             let yi = s / self.chol[(i, i)];
             total += yi * yi;

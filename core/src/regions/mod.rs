@@ -228,11 +228,7 @@ impl Region {
             }
             Node::Ball(b) => {
                 let c = b.center();
-                let d2: f64 = c
-                    .iter()
-                    .zip(center)
-                    .map(|(a, x)| (a - x) * (a - x))
-                    .sum();
+                let d2: f64 = c.iter().zip(center).map(|(a, x)| (a - x) * (a - x)).sum();
                 let d = crate::math::fns::sqrt(d2);
                 if d > b.radius() + radius {
                     Some(false)

@@ -301,7 +301,11 @@ pub fn airport_scenario(seed: u64, steps: usize) -> Result<AirportScenario> {
         for _ in 0..substeps {
             let w = route[target];
             if sq(w[0] - pos[0]) + sq(w[1] - pos[1]) < 9.0 {
-                target = if target + 1 == route.len() { 1 } else { target + 1 };
+                target = if target + 1 == route.len() {
+                    1
+                } else {
+                    target + 1
+                };
             }
             let d = dir(pos, route[target]);
             for i in 0..2 {

@@ -72,4 +72,6 @@ pub use recursive::{
     split_for_regions,
 };
 #[cfg(test)]
+pub(crate) use variance_preserving::optimise as variance_preserving_optimise;
+#[cfg(test)]
 mod tests;

@@ -502,7 +502,10 @@ fn split_direction(
     // misses that whole ball agrees on every point, so it changes neither test (24)/(34)
     // nor (25)/(35) and is skipped: the result is the same bit for bit, only faster.
     let lambda_max = pos.values.first().copied().unwrap_or(0.0);
-    let scale = mean.iter().take(ns).fold(1.0f64, |a, m| a.max(fns::abs(*m)));
+    let scale = mean
+        .iter()
+        .take(ns)
+        .fold(1.0f64, |a, m| a.max(fns::abs(*m)));
     let reach = grid.zeta * fns::sqrt(lambda_max) * (1.0 + 1e-8) + 1e-12 * scale;
     let undecided: Vec<alloc::borrow::Cow<'_, Region>> = regions
         .iter()
