@@ -105,7 +105,9 @@ pub struct TruthPoint {
 /// # Filter configuration
 /// `config` (for both filters): the NCV model (70)–(71) with T = 15, ϖ = 0.004; p_S = 0.99;
 /// r_{0|0} = 0.5 and p_{0|0} = N((5, 15, 0.5, 0), diag(25, 25, 0.25, 0.25)), the west
-/// entrance; birth p_b = 0.05 with the same density; p_D = 0.9 on S; λ_c = 0.25,
+/// entrance; birth p_b = 0.05 with b(x) anywhere on the concourse (equal weights, one
+/// component per anchor: N((r_a, 0, 0), diag(ρ_a², ρ_a², 0.5, 0.5)), ρ_a the disc radius), so
+/// that a filter that has lost the person re-acquires them; p_D = 0.9 on S; λ_c = 0.25,
 /// c̃ = 1/10; the four exclusions; the default splitting and reduction.
 #[derive(Clone, Debug)]
 pub struct AirportScenario {
@@ -358,7 +360,7 @@ pub fn airport_scenario(seed: u64, steps: usize) -> Result<AirportScenario> {
         true_reports.push(true_report);
     }
 
-    let config = airport_config(fov.clone(), exclusions.clone(), anchors.len())?;
+    let config = airport_config(fov.clone(), exclusions.clone(), &anchors)?;
     Ok(AirportScenario {
         anchors,
         exclusion_boxes,
@@ -378,14 +380,31 @@ pub fn airport_scenario(seed: u64, steps: usize) -> Result<AirportScenario> {
 fn airport_config(
     fov: Region,
     exclusions: Vec<Region>,
-    anchors: usize,
+    anchor_list: &[Anchor],
 ) -> Result<BernoulliFilterConfig> {
+    let anchors = anchor_list.len();
     let entrance = Gaussian::new(
         DVector::from_column_slice(&[5.0, 15.0, 0.5, 0.0]),
         DMatrix::from_diagonal(&DVector::from_column_slice(&[25.0, 25.0, 0.25, 0.25])),
         "mixture[0]",
     )?;
     let mixture = GaussianMixture::new(alloc::vec![(1.0, entrance)], "mixture")?;
+    // Birth anywhere on the concourse: one component per anchor, the disc's spread in
+    // position and walking speeds in velocity, so that a filter that has lost the person
+    // re-acquires them from the next reports.
+    let mut birth = Vec::with_capacity(anchor_list.len());
+    for (a, anchor) in anchor_list.iter().enumerate() {
+        let r2 = anchor.radius * anchor.radius;
+        birth.push((
+            1.0 / anchor_list.len() as f64,
+            Gaussian::new(
+                DVector::from_column_slice(&[anchor.position[0], anchor.position[1], 0.0, 0.0]),
+                DMatrix::from_diagonal(&DVector::from_column_slice(&[r2, r2, 0.5, 0.5])),
+                &alloc::format!("birth.mixture[{a}]"),
+            )?,
+        ));
+    }
+    let birth = GaussianMixture::new(birth, "birth.mixture")?;
     Ok(BernoulliFilterConfig {
         existence: 0.5,
         mixture: mixture.clone(),
@@ -395,7 +414,7 @@ fn airport_config(
             AIRPORT_NOISE,
         )?,
         survival: 0.99,
-        birth: Birth::new(0.05, mixture)?,
+        birth: Birth::new(0.05, birth)?,
         position_dims: 2,
         detection: Detection::new(0.9, Some(fov))?,
         clutter: Clutter::new(0.25, ClutterDensity::Constant(1.0 / anchors as f64))?,
