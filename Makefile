@@ -4,7 +4,7 @@ SHELL := /bin/bash
 PORT ?= 8000
 export CHROMEDRIVER ?= /usr/bin/chromedriver
 
-.PHONY: demo test pkg web-pkg setup setup-test check lint test-native test-nostd test-wasm test-js bench clean
+.PHONY: demo test pkg web-pkg setup setup-test check lint test-native test-nostd test-wasm test-js fuzz soak bench clean
 
 ## make demo: install what is missing, build the npm package, serve web/ on 127.0.0.1:$(PORT)
 demo: setup web-pkg
@@ -18,9 +18,11 @@ test: setup-test lint test-native test-nostd test-wasm test-js
 pkg: setup
 	scripts/build-pkg.sh
 
+## make web-pkg: the served folder web/: the npm package in web/pkg/, uPlot in web/vendor/
 web-pkg: pkg
 	rm -rf web/pkg
 	cp -r wasm/pkg web/pkg
+	scripts/web-deps.sh
 
 setup:
 	scripts/setup.sh
@@ -37,6 +39,7 @@ lint:
 
 test-native:
 	cargo test --locked
+	cargo test --locked -p fisst-wasm --lib
 
 test-nostd:
 	cargo test --locked -p fisst --no-default-features
@@ -48,8 +51,19 @@ test-wasm:
 
 test-js: web-pkg
 	scripts/npm-deps.sh
-	cd tests/js && node --test contract.test.mjs readme.test.mjs types.test.mjs
+	cd tests/js && node --test contract.test.mjs readme.test.mjs types.test.mjs lib.test.mjs
+	cd tests/js && node --expose-gc --test soak/
 	cd tests/js && node --test --test-concurrency=1 pages/
+
+## make fuzz: the boundary fuzzer at full size (1,000,000 cases, fresh seed; FUZZ_CASES, FUZZ_SEED)
+fuzz: web-pkg
+	scripts/npm-deps.sh
+	cd tests/js && node fuzz/run.mjs --cases $${FUZZ_CASES:-1000000} $${FUZZ_SEED:+--seed $$FUZZ_SEED}
+
+## make soak: every function 100,000 times in Node; fails if wasm memory or the JS heap keeps growing
+soak: web-pkg
+	scripts/npm-deps.sh
+	cd tests/js && node --expose-gc soak/soak.mjs --calls 100000
 
 ## make bench: criterion benches and the side-by-side scripts (not part of `make test`)
 bench: pkg
@@ -62,4 +76,4 @@ bench: pkg
 
 clean:
 	cargo clean
-	rm -rf wasm/pkg web/pkg tests/js/node_modules tests/browser/screenshots
+	rm -rf wasm/pkg web/pkg web/vendor web/node_modules tests/js/node_modules tests/browser/screenshots

@@ -1,20 +1,31 @@
 // The spooky effect made visible (paper 003). Every number comes from the fisst package.
 import init, * as fisst from 'fisst';
-import { setupCanvas, scale, drawAxes, ticks, fmt } from './lib/plot.js';
+import { chart, markX } from './lib/chart.js';
+import { cross, dot, sceneView } from './lib/scene.js';
+import { $, choice, downloads, fmt, pageReady, slider, timings, toCSV, urlState } from './lib/page.js';
 
 await init();
 
-const $ = (id) => document.getElementById(id);
-const COLORS = ['#e4e7eb', '#60a5fa', '#f59e0b', '#34d399']; // code u1 + 2·u2
+const css = getComputedStyle(document.documentElement);
+// The decision codes u1 + 2·u2: nothing, 1 only, 2 only, both (colour-blind-safe colours in style.css).
+const COLOURS = ['--none', '--first', '--second', '--both'].map((v) => css.getPropertyValue(v).trim());
 const MAP_RES = 200;
-const MAP_SIZE = 240;
+const points = (v) => Array.isArray(v) && v.every((p) => Array.isArray(p) && p.length === 2 && p.every(Number.isFinite));
+const url = urlState(
+  { r1: 0.4, r2: 0.4, r: 0.3, nmax: 40, n: 10, c: 2, p: 2, mode: 'truth', truth: null, estimate: null },
+  { check: { truth: (v) => v === null || points(v), estimate: (v) => v === null || points(v) } },
+);
+const state = url.values;
+const timer = timings('spooky');
+timer.badge($('redraw-ms'), { maps: 'six decision maps (first load)', fig3: 'Fig. 3 counts' });
 
 // ---------------------------------------------------------------- Fig. 1 and Fig. 2 maps
-const estimators = ['gospa', 'ospa', 'uospa', 'mam', 'jom', 'map-cardinality'];
-const mapImages = new Map();
+const ESTIMATORS = ['gospa', 'ospa', 'uospa', 'mam', 'jom', 'map-cardinality'];
+const maps = new Map();
 
 function renderMapImage(estimator) {
   const { decisions, resolution } = fisst.mbDecisionMap({ estimator, resolution: MAP_RES });
+  const rgb = COLOURS.map((hex) => [1, 3, 5].map((k) => parseInt(hex.slice(k, k + 2), 16)));
   const image = document.createElement('canvas');
   image.width = resolution;
   image.height = resolution;
@@ -24,54 +35,57 @@ function renderMapImage(estimator) {
     // decisions: row index grows with r2; the canvas y axis grows downwards.
     const y = resolution - 1 - row;
     for (let col = 0; col < resolution; col++) {
-      const hex = COLORS[decisions[row * resolution + col]];
       const k = 4 * (y * resolution + col);
-      data.data[k] = parseInt(hex.slice(1, 3), 16);
-      data.data[k + 1] = parseInt(hex.slice(3, 5), 16);
-      data.data[k + 2] = parseInt(hex.slice(5, 7), 16);
-      data.data[k + 3] = 255;
+      data.data.set([...rgb[decisions[row * resolution + col]], 255], k);
     }
   }
   ctx.putImageData(data, 0, 0);
-  return image;
+  return { image, decisions, resolution };
 }
 
-const MAP_BOX = { left: 48, top: 8, width: MAP_SIZE - 58, height: MAP_SIZE - 52 };
-
-function drawMap(estimator, r1, r2) {
-  const canvas = $(`map-${estimator}`);
-  const ctx = setupCanvas(canvas, MAP_SIZE, MAP_SIZE);
-  ctx.clearRect(0, 0, MAP_SIZE, MAP_SIZE);
-  ctx.imageSmoothingEnabled = false;
-  ctx.drawImage(mapImages.get(estimator), MAP_BOX.left, MAP_BOX.top, MAP_BOX.width, MAP_BOX.height);
-  const x = scale(0, 1, MAP_BOX.left, MAP_BOX.left + MAP_BOX.width);
-  const y = scale(0, 1, MAP_BOX.top + MAP_BOX.height, MAP_BOX.top);
-  drawAxes(ctx, MAP_BOX, x, y, {
-    xTicks: ticks(0, 1, 4), yTicks: ticks(0, 1, 4), xLabel: 'r₁', yLabel: 'r₂', fmt: (v) => v.toFixed(2),
+/** A decision map: click or drag on it to set (r1, r2). */
+function mapView(estimator) {
+  const view = sceneView($(`map-${estimator}`), {
+    width: 240, height: 240, box: { left: 48, top: 8, width: 176, height: 188 }, x: [0, 1], y: [0, 1],
+    draw(ctx, v) {
+      ctx.imageSmoothingEnabled = false;
+      ctx.drawImage(maps.get(estimator).image, v.box.left, v.box.top, v.box.width, v.box.height);
+      v.axes({ xLabel: 'r₁', yLabel: 'r₂', ticks: 4, format: (t) => t.toFixed(2) });
+      ctx.strokeStyle = '#111';
+      ctx.lineWidth = 2;
+      cross(ctx, v.px(state.r1), v.py(state.r2), 7, false);
+    },
+    drag: {
+      hit: () => 'point',
+      start: (_, point) => setExistence(point),
+      move: (_, { point }) => setExistence(point),
+    },
   });
-  // the current point
-  ctx.strokeStyle = '#111';
-  ctx.lineWidth = 2;
-  ctx.beginPath();
-  ctx.moveTo(x(r1) - 7, y(r2));
-  ctx.lineTo(x(r1) + 7, y(r2));
-  ctx.moveTo(x(r1), y(r2) - 7);
-  ctx.lineTo(x(r1), y(r2) + 7);
-  ctx.stroke();
+  downloads($(`map-${estimator}`).parentElement, {
+    name: `spooky-${estimator}`,
+    png: () => view.canvas,
+    csv: () => {
+      const { decisions, resolution: n } = maps.get(estimator);
+      // Cell centres of the grid the package evaluates.
+      return toCSV(['r1', 'r2', 'report1', 'report2'], Array.from(decisions, (d, k) => [((k % n) + 0.5) / n, (Math.floor(k / n) + 0.5) / n, d & 1, d >> 1]));
+    },
+  });
+  return view;
 }
 
-function describe(report) {
+const describe = (report) => {
   const on = report.map((u, i) => (u ? i + 1 : 0)).filter(Boolean);
-  if (on.length === 0) return 'report nothing';
-  return `report ${on.join(' and ')}`;
+  return on.length === 0 ? 'report nothing' : `report ${on.join(' and ')}`;
+};
+
+function setExistence([r1, r2]) {
+  state.r1 = r1Slider.set(Math.min(Math.max(r1, 0), 1));
+  state.r2 = r2Slider.set(Math.min(Math.max(r2, 0), 1));
+  updateTwoTargets();
 }
 
 function updateTwoTargets() {
-  const r1 = Number($('r1').value);
-  const r2 = Number($('r2').value);
-  $('r1-out').value = r1.toFixed(3);
-  $('r2-out').value = r2.toFixed(3);
-  const existence = [r1, r2];
+  const existence = [state.r1, state.r2];
   for (const metric of ['gospa', 'ospa', 'uospa']) {
     const { report, meanSquareError } = fisst.mbOptimalEstimate({ existence, metric });
     $(`decision-${metric}`).textContent = describe(report);
@@ -80,7 +94,8 @@ function updateTwoTargets() {
   for (const method of ['mam', 'jom', 'map-cardinality']) {
     $(`decision-${method}`).textContent = describe(fisst.mbAlternativeEstimate({ existence, method }).report);
   }
-  for (const e of estimators) drawMap(e, r1, r2);
+  for (const v of mapViews) v.redraw();
+  url.save();
 }
 
 // ---------------------------------------------------------------- Example 5
@@ -91,92 +106,49 @@ const STORY = {
 };
 
 function story(step) {
-  const { r2, text } = STORY[step];
-  $('r1').value = '0.4';
-  $('r2').value = String(r2);
-  updateTwoTargets();
-  $('story').textContent = text
+  setExistence([0.4, STORY[step].r2]);
+  $('story').textContent = STORY[step].text
     .replace('{ospa}', $('decision-ospa').textContent)
     .replace('{gospa}', $('decision-gospa').textContent);
 }
 
 // ---------------------------------------------------------------- Fig. 3
-const FIG3 = { width: 720, height: 300, box: { left: 56, top: 12, width: 640, height: 240 } };
 const SERIES = [
-  { key: 'gospa', label: 'GOSPA', color: '#16a34a', dash: [] },
-  { key: 'ospa', label: 'OSPA', color: '#dc2626', dash: [] },
-  { key: 'uospa', label: 'UOSPA', color: '#2563eb', dash: [6, 3] },
-  { key: 'mapCardinality', label: 'max cardinality', color: '#7c3aed', dash: [2, 3] },
+  { key: 'gospa', label: 'GOSPA', colour: '#009e73' },
+  { key: 'ospa', label: 'OSPA', colour: '#d55e00' },
+  { key: 'uospa', label: 'UOSPA', colour: '#0072b2', dash: [6, 3] },
+  { key: 'mapCardinality', label: 'max cardinality', colour: '#cc79a7', dash: [2, 3] },
 ];
-let fig3Counts = null;
+let counts = null;
+let fig3 = null;
+/** Fig. 3's chart, made on its first draw (after the maps: the first figure comes sooner). */
+const makeFig3 = () => chart($('fig3'), {
+  height: 280,
+  x: { label: 'number of Bernoulli components n', range: () => [0, state.nmax], integer: true, format: String },
+  y: { label: 'targets reported', range: () => [0, state.nmax], integer: true, format: String },
+  series: SERIES.map((s) => ({ label: s.label, colour: s.colour, dash: s.dash, value: String })),
+  overlay: (o) => markX(o, state.n, { colour: '#9aa5b1', dash: [1, 3], width: 1 }),
+});
 
 function updateFig3(recompute) {
-  const r = Number($('fig3-r').value);
-  const nMax = Number($('fig3-nmax').value);
-  $('fig3-r-out').value = r.toFixed(2);
-  $('fig3-nmax-out').value = nMax;
-  const nInput = $('fig3-n');
-  nInput.max = String(nMax);
-  if (Number(nInput.value) > nMax) nInput.value = String(nMax);
-  const n = Number(nInput.value);
-  $('fig3-n-out').value = n;
-  if (recompute || !fig3Counts) {
-    fig3Counts = fisst.mbIdenticalComponentCounts({ existence: r, maxComponents: nMax });
-  }
-  $('fig3-gospa').textContent = fig3Counts.gospa[n - 1];
-  $('fig3-ospa').textContent = fig3Counts.ospa[n - 1];
-  $('fig3-uospa').textContent = fig3Counts.uospa[n - 1];
-  $('fig3-map').textContent = fig3Counts.mapCardinality[n - 1];
-
-  const ctx = setupCanvas($('fig3'), FIG3.width, FIG3.height);
-  ctx.clearRect(0, 0, FIG3.width, FIG3.height);
-  const { box } = FIG3;
-  const x = scale(0, nMax, box.left, box.left + box.width);
-  const y = scale(0, nMax, box.top + box.height, box.top);
-  drawAxes(ctx, box, x, y, {
-    xTicks: ticks(0, nMax, 5).map(Math.round), yTicks: ticks(0, nMax, 5).map(Math.round),
-    xLabel: 'number of Bernoulli components n', yLabel: 'targets reported',
-  });
-  ctx.save();
-  ctx.strokeStyle = '#9aa5b1';
-  ctx.setLineDash([1, 3]);
-  ctx.beginPath();
-  ctx.moveTo(x(n), box.top);
-  ctx.lineTo(x(n), box.top + box.height);
-  ctx.stroke();
-  ctx.restore();
-  SERIES.forEach((s, k) => {
-    ctx.save();
-    ctx.strokeStyle = s.color;
-    ctx.fillStyle = s.color;
-    ctx.setLineDash(s.dash);
-    ctx.lineWidth = 2;
-    ctx.beginPath();
-    fig3Counts[s.key].forEach((count, i) => {
-      const px = x(i + 1);
-      const py = y(count);
-      if (i === 0) ctx.moveTo(px, py); else ctx.lineTo(px, py);
-    });
-    ctx.stroke();
-    ctx.setLineDash([]);
-    ctx.font = '12px system-ui, sans-serif';
-    ctx.fillRect(box.left + 12, box.top + 8 + 16 * k, 14, 3);
-    ctx.fillText(s.label, box.left + 32, box.top + 13 + 16 * k);
-    ctx.restore();
-  });
+  nSlider.input.max = String(state.nmax);
+  state.n = nSlider.set(Math.min(state.n, state.nmax));
+  if (recompute || !counts) counts = timer.time('fig3', () => fisst.mbIdenticalComponentCounts({ existence: state.r, maxComponents: state.nmax }));
+  $('fig3-gospa').textContent = counts.gospa[state.n - 1];
+  $('fig3-ospa').textContent = counts.ospa[state.n - 1];
+  $('fig3-uospa').textContent = counts.uospa[state.n - 1];
+  $('fig3-map').textContent = counts.mapCardinality[state.n - 1];
+  fig3 ??= makeFig3();
+  fig3.update([counts.n, ...SERIES.map((s) => counts[s.key])]);
+  timer.show();
+  url.save();
 }
 
 // ---------------------------------------------------------------- GOSPA playground
-const PG = { size: 480, world: 10 };
-const pg = { truth: [], estimate: [], mode: 'truth' };
-const toPx = scale(0, PG.world, 0, PG.size);
-const toPy = scale(0, PG.world, PG.size, 0);
-
-function setMode(mode) {
-  pg.mode = mode;
-  $('mode-truth').setAttribute('aria-pressed', String(mode === 'truth'));
-  $('mode-estimate').setAttribute('aria-pressed', String(mode === 'estimate'));
-}
+const pg = { truth: state.truth ?? [], estimate: state.estimate ?? [] };
+const playground = sceneView($('playground'), {
+  width: 480, height: 480, box: { left: 0, top: 0, width: 480, height: 480 }, x: [0, 10], y: [0, 10], draw: drawPlayground,
+});
 
 function randomScene(seed) {
   // mulberry32, so the scene is the same every time for a seed
@@ -189,91 +161,77 @@ function randomScene(seed) {
     return ((t ^ (t >>> 14)) >>> 0) / 2 ** 32;
   };
   pg.truth = Array.from({ length: 5 }, () => [1 + 8 * rand(), 1 + 8 * rand()]);
-  pg.estimate = pg.truth
-    .filter(() => rand() > 0.25)
-    .map(([a, b]) => [a + (rand() - 0.5) * 1.6, b + (rand() - 0.5) * 1.6]);
+  pg.estimate = pg.truth.filter(() => rand() > 0.25).map(([a, b]) => [a + (rand() - 0.5) * 1.6, b + (rand() - 0.5) * 1.6]);
   pg.estimate.push([1 + 8 * rand(), 1 + 8 * rand()]);
 }
 
+let gospa = null;
 function updatePlayground() {
-  const c = Number($('pg-c').value);
-  const p = Number($('pg-p').value);
-  $('pg-c-out').value = c.toFixed(2);
-  $('pg-p-out').value = p.toFixed(1);
-  const g = fisst.gospa(pg.truth, pg.estimate, { c, p });
+  const { c, p } = state;
+  gospa = fisst.gospa(pg.truth, pg.estimate, { c, p });
   const o = fisst.ospa(pg.truth, pg.estimate, { c, p });
-  $('gospa-distance').textContent = fmt(g.distance, 4);
-  $('gospa-localisation').textContent = fmt(g.localisation, 4);
-  $('gospa-missed').textContent = g.missed;
-  $('gospa-false').textContent = g.falseTargets;
+  $('gospa-distance').textContent = fmt(gospa.distance, 4);
+  $('gospa-localisation').textContent = fmt(gospa.localisation, 4);
+  $('gospa-missed').textContent = gospa.missed;
+  $('gospa-false').textContent = gospa.falseTargets;
   $('ospa-distance').textContent = `${fmt(o.distance, 4)} (${fmt(o.localisation, 3)}, ${fmt(o.cardinality, 3)})`;
   $('pg-points').textContent = JSON.stringify({ truth: pg.truth, estimate: pg.estimate, c, p });
+  [state.truth, state.estimate] = [pg.truth, pg.estimate];
+  playground.redraw();
+  url.save();
+}
 
-  const ctx = setupCanvas($('playground'), PG.size, PG.size);
-  ctx.clearRect(0, 0, PG.size, PG.size);
-  const assignedTruth = new Set(g.assignment.map(([i]) => i));
-  const assignedEstimate = new Set(g.assignment.map(([, j]) => j));
-  // cut-off discs around the truth
-  ctx.fillStyle = 'rgba(37, 99, 235, 0.05)';
+function drawPlayground(ctx, { px, py }) {
+  const assignedTruth = new Set(gospa.assignment.map(([i]) => i));
+  const assignedEstimate = new Set(gospa.assignment.map(([, j]) => j));
+  ctx.fillStyle = 'rgba(0, 114, 178, 0.05)'; // cut-off discs around the truth
   for (const [a, b] of pg.truth) {
     ctx.beginPath();
-    ctx.arc(toPx(a), toPy(b), toPx(c), 0, 2 * Math.PI);
+    ctx.arc(px(a), py(b), px(state.c) - px(0), 0, 2 * Math.PI);
     ctx.fill();
   }
   ctx.strokeStyle = '#52606d';
   ctx.lineWidth = 1.5;
-  for (const [i, j] of g.assignment) {
+  for (const [i, j] of gospa.assignment) {
     ctx.beginPath();
-    ctx.moveTo(toPx(pg.truth[i][0]), toPy(pg.truth[i][1]));
-    ctx.lineTo(toPx(pg.estimate[j][0]), toPy(pg.estimate[j][1]));
+    ctx.moveTo(px(pg.truth[i][0]), py(pg.truth[i][1]));
+    ctx.lineTo(px(pg.estimate[j][0]), py(pg.estimate[j][1]));
     ctx.stroke();
   }
   pg.truth.forEach(([a, b], i) => {
-    ctx.fillStyle = '#1f2933';
-    ctx.beginPath();
-    ctx.arc(toPx(a), toPy(b), 5, 0, 2 * Math.PI);
-    ctx.fill();
+    dot(ctx, px(a), py(b), 5, '#1f2933');
     if (!assignedTruth.has(i)) {
-      ctx.strokeStyle = '#dc2626';
-      ctx.lineWidth = 2;
       ctx.beginPath();
-      ctx.arc(toPx(a), toPy(b), 10, 0, 2 * Math.PI);
+      ctx.arc(px(a), py(b), 10, 0, 2 * Math.PI);
+      ctx.strokeStyle = '#d55e00';
+      ctx.lineWidth = 2;
       ctx.stroke();
     }
   });
   pg.estimate.forEach(([a, b], j) => {
-    ctx.strokeStyle = assignedEstimate.has(j) ? '#2563eb' : '#f59e0b';
+    ctx.strokeStyle = assignedEstimate.has(j) ? '#0072b2' : '#e69f00';
     ctx.lineWidth = assignedEstimate.has(j) ? 2 : 3;
-    const px = toPx(a);
-    const py = toPy(b);
-    ctx.beginPath();
-    ctx.moveTo(px - 6, py - 6);
-    ctx.lineTo(px + 6, py + 6);
-    ctx.moveTo(px + 6, py - 6);
-    ctx.lineTo(px - 6, py + 6);
-    ctx.stroke();
+    cross(ctx, px(a), py(b), 6);
   });
   ctx.fillStyle = '#616e7c';
   ctx.font = '12px system-ui, sans-serif';
-  ctx.fillText('● truth  ✕ estimate  ○ missed (red)  ✕ false (orange)  — assigned', 8, 16);
-}
-
-function worldPoint(event) {
-  const rect = $('playground').getBoundingClientRect();
-  return [toPx.invert(event.clientX - rect.left), toPy.invert(event.clientY - rect.top)];
+  ctx.textAlign = 'left';
+  ctx.textBaseline = 'alphabetic';
+  ctx.fillText('● truth  ✕ estimate  ○ missed (vermillion)  ✕ false (orange)  — assigned', 8, 16);
 }
 
 // ---------------------------------------------------------------- wiring
-$('r1').addEventListener('input', updateTwoTargets);
-$('r2').addEventListener('input', updateTwoTargets);
-$('story-before').addEventListener('click', () => story('before'));
-$('story-case1').addEventListener('click', () => story('case1'));
-$('story-case2').addEventListener('click', () => story('case2'));
-$('fig3-r').addEventListener('input', () => updateFig3(true));
-$('fig3-nmax').addEventListener('input', () => updateFig3(true));
-$('fig3-n').addEventListener('input', () => updateFig3(false));
-$('mode-truth').addEventListener('click', () => setMode('truth'));
-$('mode-estimate').addEventListener('click', () => setMode('estimate'));
+const f3 = (digits) => (v) => v.toFixed(digits);
+const r1Slider = slider('r1', { value: state.r1, format: f3(3), onInput: (v) => { state.r1 = v; updateTwoTargets(); } });
+const r2Slider = slider('r2', { value: state.r2, format: f3(3), onInput: (v) => { state.r2 = v; updateTwoTargets(); } });
+[state.r1, state.r2] = [r1Slider.value, r2Slider.value];
+for (const step of Object.keys(STORY)) $(`story-${step}`).addEventListener('click', () => story(step));
+state.r = slider('fig3-r', { value: state.r, format: f3(2), onInput: (v) => { state.r = v; updateFig3(true); } }).value;
+state.nmax = slider('fig3-nmax', { value: state.nmax, onInput: (v) => { state.nmax = v; updateFig3(true); } }).value;
+const nSlider = slider('fig3-n', { value: state.n, onInput: (v) => { state.n = v; updateFig3(false); } });
+state.c = slider('pg-c', { value: state.c, format: f3(2), onInput: (v) => { state.c = v; updatePlayground(); } }).value;
+state.p = slider('pg-p', { value: state.p, format: f3(1), onInput: (v) => { state.p = v; updatePlayground(); } }).value;
+state.mode = choice('mode', ['truth', 'estimate'], { value: state.mode, onChange: (m) => { state.mode = m; url.save(); } }).value;
 $('pg-random').addEventListener('click', () => {
   randomScene(Date.now() % 100000);
   updatePlayground();
@@ -283,16 +241,14 @@ $('pg-clear').addEventListener('click', () => {
   pg.estimate = [];
   updatePlayground();
 });
-$('pg-c').addEventListener('input', updatePlayground);
-$('pg-p').addEventListener('input', updatePlayground);
 $('playground').addEventListener('click', (event) => {
-  const kind = event.shiftKey ? (pg.mode === 'truth' ? 'estimate' : 'truth') : pg.mode;
-  pg[kind].push(worldPoint(event));
+  const kind = event.shiftKey ? (state.mode === 'truth' ? 'estimate' : 'truth') : state.mode;
+  pg[kind].push(playground.toData(event));
   updatePlayground();
 });
 $('playground').addEventListener('contextmenu', (event) => {
   event.preventDefault();
-  const [a, b] = worldPoint(event);
+  const [a, b] = playground.toData(event);
   let best = null;
   for (const kind of ['truth', 'estimate']) {
     pg[kind].forEach(([x, y], i) => {
@@ -303,10 +259,20 @@ $('playground').addEventListener('contextmenu', (event) => {
   if (best) pg[best.kind].splice(best.i, 1);
   updatePlayground();
 });
+downloads($('fig3-figure'), { name: 'spooky-fig3', png: () => fig3.canvas(), csv: () => fig3.csv() });
+downloads($('playground-figure'), {
+  name: 'spooky-gospa',
+  png: () => playground.canvas,
+  csv: () => toCSV(['kind', 'x', 'y'], [...pg.truth.map((q) => ['truth', ...q]), ...pg.estimate.map((q) => ['estimate', ...q])]),
+});
 
-for (const e of estimators) mapImages.set(e, renderMapImage(e));
+const mapViews = timer.time('maps', () => ESTIMATORS.map((e) => {
+  maps.set(e, renderMapImage(e));
+  return mapView(e);
+}));
 updateTwoTargets();
 updateFig3(true);
-randomScene(7);
+timer.show();
+if (state.truth === null) randomScene(7);
 updatePlayground();
-document.body.dataset.ready = 'true';
+pageReady();

@@ -1,4 +1,7 @@
-//! Shared inputs for the benchmarks: seeded point sets like a tracker's output.
+//! Shared inputs and timers for the benchmarks and the timing programs in `src/bin/`: seeded
+//! point sets like a tracker's output, a 4D mixture, median wall times.
+
+use fisst::gaussian::{Gaussian, GaussianMixture};
 
 /// SplitMix64: a portable seeded generator.
 pub struct SplitMix(u64);
@@ -39,4 +42,62 @@ pub fn scene(n: usize, seed: u64) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
         estimate.push([side * rng.uniform(), side * rng.uniform()]);
     }
     (truth, estimate)
+}
+
+/// The median wall time in seconds of `reps` calls of `f` (`reps` ≥ 1), and the last result.
+pub fn median_time<T>(reps: usize, mut f: impl FnMut() -> T) -> (f64, T) {
+    let (seconds, out) = times(reps, &mut f);
+    (seconds[seconds.len() / 2], out)
+}
+
+/// The median and the minimum wall time in microseconds of `reps` calls of `f` (`reps` ≥ 1;
+/// the minimum is the robust figure on a shared machine).
+pub fn median_min_us(reps: usize, mut f: impl FnMut()) -> (f64, f64) {
+    let (seconds, ()) = times(reps, &mut f);
+    (seconds[seconds.len() / 2] * 1e6, seconds[0] * 1e6)
+}
+
+/// The sorted wall times in seconds of `reps` calls of `f`, and the last result.
+fn times<T>(reps: usize, f: &mut impl FnMut() -> T) -> (Vec<f64>, T) {
+    assert!(reps >= 1, "at least one repetition");
+    let mut seconds = Vec::with_capacity(reps);
+    let mut out = None;
+    for _ in 0..reps {
+        let t0 = std::time::Instant::now();
+        out = Some(f());
+        seconds.push(t0.elapsed().as_secs_f64());
+    }
+    seconds.sort_by(f64::total_cmp);
+    (seconds, out.expect("reps >= 1"))
+}
+
+/// A deterministic 4D mixture of `n` components (a Weyl sequence, no RNG): the input of the
+/// Runnalls benchmarks.
+pub fn cloud(n: usize) -> GaussianMixture {
+    let frac = |x: f64| x - x.floor();
+    let comps = (0..n)
+        .map(|i| {
+            let t = i as f64;
+            let m = [
+                10.0 * frac(t * 0.618_033_988_75),
+                10.0 * frac(t * 0.414_213_562_37),
+                frac(t * 0.732_050_807_57) - 0.5,
+                frac(t * 0.236_067_977_5) - 0.5,
+            ];
+            let s = 0.2 + 0.3 * frac(t * 0.302_775_637_73);
+            let c = 0.3 * s * s * (frac(t * 0.577_215_664_9) - 0.5);
+            #[rustfmt::skip]
+            let p = [
+                s * s, c, 0.0, 0.0,
+                c, s * s, 0.0, 0.0,
+                0.0, 0.0, 0.04, 0.0,
+                0.0, 0.0, 0.0, 0.04,
+            ];
+            (
+                0.5 + frac(t * 0.141_421_356_2),
+                Gaussian::from_slices(&m, &p, "cloud").unwrap(),
+            )
+        })
+        .collect();
+    GaussianMixture::new(comps, "cloud").unwrap()
 }

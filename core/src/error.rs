@@ -81,6 +81,30 @@ impl Error {
         }
     }
 
+    /// The same error about the field `prefix.field` (or `prefix[i]…` when the field starts
+    /// with an index): how the bindings give a core error the full path of an argument, e.g.
+    /// `c` → `options.c`, `[2].mean` → `options.mixture[2].mean`.
+    pub fn within(mut self, prefix: &str) -> Self {
+        let what = match &mut self {
+            Error::InvalidParameter { what, .. }
+            | Error::InvalidProbability { what, .. }
+            | Error::DimensionMismatch { what, .. }
+            | Error::NotPositiveDefinite { what }
+            | Error::Unsupported { what, .. } => what,
+        };
+        if prefix.is_empty() {
+            return self;
+        }
+        *what = if what.is_empty() {
+            prefix.into()
+        } else if what.starts_with('[') {
+            alloc::format!("{prefix}{what}")
+        } else {
+            alloc::format!("{prefix}.{what}")
+        };
+        self
+    }
+
     /// The field this error is about.
     pub fn field(&self) -> &str {
         match self {
@@ -153,6 +177,15 @@ mod tests {
         );
         let e = Error::dimension("estimate[1]", 2, 3);
         assert_eq!(e.to_string(), "estimate[1] has length 3, expected 2");
+    }
+
+    #[test]
+    fn within_prefixes_the_field() {
+        let e = Error::parameter("c", 0.0, "finite and > 0").within("options");
+        assert_eq!(e.to_string(), "options.c must be finite and > 0, got 0");
+        let e = Error::dimension("[2].mean", 2, 3).within("options.mixture");
+        assert_eq!(e.field(), "options.mixture[2].mean");
+        assert_eq!(Error::probability("r", 2.0).within("").field(), "r");
     }
 
     #[test]

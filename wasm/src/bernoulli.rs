@@ -1,280 +1,335 @@
 //! Optimal Bernoulli point estimation (paper `000_…`): the estimate of Theorem III.3, q(a),
 //! the MMUC estimate and the threshold curves of Fig. 3.
 
+use serde::de::{self, Deserializer, MapAccess, Visitor};
+use serde::{Deserialize, Serialize};
+use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::convert::{
-    JsResult, Options, OrThrow, array, core_error, number, number_array, numbers, object, points,
-    range_error, type_error,
-};
+use crate::boundary::{JsResult, OrThrow, check_range, read, type_error, write};
+use crate::types::{self, Covariance, Numbers, Point, WeightedGaussian};
 use fisst::bernoulli::{
     self, ApplicationLoss, BernoulliEstimate, Costs, Direction, MmucMethod, ParticleSet,
     SpatialDensity,
 };
-use fisst::gaussian::{Gaussian, GaussianMixture};
-use js_sys::Array;
+use fisst::gaussian::Gaussian as CoreGaussian;
 
-#[wasm_bindgen(typescript_custom_section)]
-const TS_BERNOULLI: &'static str = r#"
-/**
- * A covariance: a nested row-major array `[[…], …]` (n rows of n), a flat row-major array of
- * n·n numbers, or, in 1D only, the variance as a bare number.
- */
-export type BernoulliCovariance = number[][] | number[] | Float64Array | number;
-
-/**
- * The spatial density of a Bernoulli: one Gaussian (any dimension, full covariance), a
- * Gaussian mixture (weights ≥ 0 with a positive sum; normalised), or weighted particles
- * (weights ≥ 0 with a positive sum, default equal; normalised).
- */
-export type BernoulliDensity =
-  | { mean: number[] | Float64Array; cov: BernoulliCovariance }
-  | { mixture: { weight: number; mean: number[] | Float64Array; cov: BernoulliCovariance }[] }
-  | { particles: (number[] | Float64Array)[]; weights?: number[] | Float64Array };
-
-/**
- * Costs of the loss (7): the MPE preset `'mpe'` (0, 1, 1, 0, 1), the MMOL preset
- * `{ mmol: { asset: c_A, countermeasure: c_M } }` (c00 = 0, c01 = c_A, c10 = c_M,
- * c11 = c_M, c = c_A), or the five costs (finite, ≥ 0).
- */
-export type BernoulliCosts =
-  | 'mpe'
-  | { mmol: { asset: number; countermeasure: number } }
-  | { c00: number; c01: number; c10: number; c11: number; c: number };
-
-export interface BernoulliEstimateOptions {
-  /** p, in [0, 1]. */
-  existence: number;
-  density: BernoulliDensity;
-  /** r0 > 0. */
-  radius: number;
-  costs: BernoulliCosts;
+/// The spatial density of a Bernoulli: one Gaussian (any dimension, full covariance), a
+/// Gaussian mixture (weights ≥ 0 with a positive sum; normalised), or weighted particles
+/// (weights ≥ 0 with a positive sum, default equal; normalised). Exactly one form.
+#[derive(Deserialize, Tsify)]
+#[tsify(
+    type = "{ mean: Point; cov: Covariance } | { mixture: WeightedGaussian[] } | { particles: Point[]; weights?: Numbers }"
+)]
+pub struct BernoulliDensity {
+    mean: Option<Point>,
+    cov: Option<Covariance>,
+    mixture: Option<Vec<WeightedGaussian>>,
+    particles: Option<Vec<Point>>,
+    weights: Option<Numbers>,
 }
 
-/**
- * Theorem III.3. `declare` is the optimal decision (ties p = Γ report nothing); `estimate` is
- * `mmuc` when declared, else `null`; `threshold` is Γ of eq. (11) (p > Γ reports for every
- * cost matrix with c11 + c·q < c01 + c10 − c00, which includes MPE and MMOL; ±Infinity when
- * the decision does not depend on p); `missProbability` is q(a*); the expected losses are
- * ρ_∅ (14) and ρ_{a*} (13).
- */
-export interface BernoulliEstimateResult {
-  declare: boolean;
-  estimate: number[] | null;
-  mmuc: number[];
-  threshold: number;
-  missProbability: number;
-  expectedLossEmpty: number;
-  expectedLossSingleton: number;
-}
+const DENSITY_FORMS: &str = "{ mean, cov }, { mixture: [...] } or { particles: [...], weights }";
 
-export interface ProbabilityOutsideBallOptions {
-  density: BernoulliDensity;
-  center: number[] | Float64Array;
-  radius: number;
-}
-
-export interface BernoulliThresholdCurveOptions {
-  /** Standard deviations σ > 0 of the isotropic Gaussian N(a*, σ² I). */
-  sigmas: number[] | Float64Array;
-  radius: number;
-  costs: BernoulliCosts;
-  /** Dimension, an integer in [1, 10000] (default 1, as in Fig. 3). */
-  dim?: number;
-}
-
-export interface MmucEstimateOptions { density: BernoulliDensity; radius: number; }
-
-export interface MmucEstimateResult {
-  center: number[];
-  missProbability: number;
-  method: 'gaussian-mean' | 'shared-mean' | 'mixture-search' | 'particles-exact' | 'particles-heuristic';
-}
-
-export interface MultiBernoulliPointEstimateOptions {
-  components: { existence: number; density: BernoulliDensity }[];
-  radius: number;
-  costs: BernoulliCosts;
-}
-
-export interface MultiBernoulliPointEstimateResult {
-  /** Indices of the declared components, increasing. */
-  reported: number[];
-  /** Their estimates, in the same order. */
-  estimates: number[][];
-  components: BernoulliEstimateResult[];
-}
-
-export interface BernoulliLossCurveOptions {
-  /** The existence probabilities p at which to evaluate. */
-  existences: number[] | Float64Array;
-  /** q(a*) in [0, 1]. */
-  missProbability: number;
-  costs: BernoulliCosts;
-  /** Report when p > threshold; default: the optimal rule of Theorem III.3. */
-  threshold?: number;
-}
-
-/** ρ_∅(p) (14), ρ_{a*}(p) (13), and the expected loss of the rule, for each p. */
-export interface BernoulliLossCurveResult {
-  empty: number[];
-  singleton: number[];
-  rule: number[];
-  threshold: number;
-}
-"#;
-
-/// Maps a core error whose field starts with `density` to the JS path `field`.
-fn renamed(e: fisst::Error, field: &str) -> JsValue {
-    if field == "density" {
-        return core_error(e);
-    }
-    range_error(e.to_string().replacen("density", field, 1))
-}
-
-/// A required number at `path.key`.
-fn required_number(opts: &Options, path: &str, key: &str) -> JsResult<f64> {
-    let full = format!("{path}.{key}");
-    match opts.get(key)? {
-        Some(v) => number(&v, &full),
-        None => Err(type_error(format!("{full} is required"))),
-    }
-}
-
-/// A required value at `path.key`.
-fn required(opts: &Options, path: &str, key: &str) -> JsResult<JsValue> {
-    opts.get(key)?
-        .ok_or_else(|| type_error(format!("{path}.{key} is required")))
-}
-
-/// A covariance for a mean of length n, as a row-major n·n vector.
-fn covariance(v: &JsValue, n: usize, field: &str) -> JsResult<Vec<f64>> {
-    if v.as_f64().is_some() {
-        let x = number(v, field)?;
-        if n != 1 {
+impl BernoulliDensity {
+    /// The core density; errors name `path` (`options.density`, `options.components[2].density`).
+    fn into_core(self, path: &str) -> JsResult<SpatialDensity> {
+        let gaussian_keys = self.mean.is_some() || self.cov.is_some();
+        let forms = usize::from(gaussian_keys)
+            + usize::from(self.mixture.is_some())
+            + usize::from(self.particles.is_some());
+        if forms != 1 || (self.weights.is_some() && self.particles.is_none()) {
             return Err(type_error(format!(
-                "{field} must be a nested {n}×{n} array (a bare number is a 1D variance)"
+                "{path} must be exactly one of {DENSITY_FORMS}"
             )));
         }
-        return Ok(vec![x]);
+        // The core names density errors `density…`; `within` puts them under `path`'s parent.
+        let parent = path
+            .strip_suffix("density")
+            .map_or(path, |p| p.trim_end_matches('.'));
+        if let Some(items) = self.mixture {
+            let m = types::mixture(items, &format!("{path}.mixture"))?;
+            return SpatialDensity::mixture(&m).or_throw_in(parent);
+        }
+        if let Some(points) = self.particles {
+            let pts: Vec<Vec<f64>> = points.into_iter().map(|p| p.0).collect();
+            let w = self.weights.map(|w| w.0);
+            let p = ParticleSet::new(&pts, w.as_deref()).or_throw_in(parent)?;
+            return Ok(SpatialDensity::particles(p));
+        }
+        let Some(mean) = self.mean else {
+            return Err(type_error(format!("{path}.mean is required")));
+        };
+        let Some(cov) = self.cov else {
+            return Err(type_error(format!("{path}.cov is required")));
+        };
+        let n = mean.0.len();
+        let cov = cov.row_major(n, &format!("{path}.cov"))?;
+        let g = CoreGaussian::from_slices(&mean.0, &cov, path).or_throw()?;
+        SpatialDensity::gaussian(g).or_throw_in(parent)
     }
-    if Array::is_array(v) {
-        let rows: Array = v.clone().unchecked_into();
-        if Array::is_array(&rows.get(0)) {
-            if rows.length() as usize != n {
-                return Err(core_error(fisst::Error::dimension(
-                    field,
-                    n,
-                    rows.length() as usize,
-                )));
+}
+
+/// Costs of the loss (7): the MPE preset `'mpe'` (0, 1, 1, 0, 1), the MMOL preset
+/// `{ mmol: { asset: c_A, countermeasure: c_M } }` (c00 = 0, c01 = c_A, c10 = c_M,
+/// c11 = c_M, c = c_A), or the five costs (finite, ≥ 0).
+#[derive(Clone, Copy, Debug, Tsify)]
+#[tsify(
+    type = "'mpe' | { mmol: { asset: number; countermeasure: number } } | { c00: number; c01: number; c10: number; c11: number; c: number }"
+)]
+pub enum BernoulliCosts {
+    /// `'mpe'`.
+    Mpe,
+    /// `{ mmol: { asset, countermeasure } }`.
+    Mmol(Mmol),
+    /// `{ c00, c01, c10, c11, c }`.
+    Explicit([f64; 5]),
+}
+
+/// The MMOL preset's two costs.
+#[derive(Clone, Copy, Debug, Deserialize, Tsify)]
+pub struct Mmol {
+    /// c_A, the cost of missing the asset.
+    pub asset: f64,
+    /// c_M, the cost of a countermeasure.
+    pub countermeasure: f64,
+}
+
+const COST_KEYS: [&str; 5] = ["c00", "c01", "c10", "c11", "c"];
+const COST_FIELDS: &[&str] = &["mmol", "c00", "c01", "c10", "c11", "c"];
+const COST_FORMS: &str = "'mpe', { mmol: { asset, countermeasure } } or { c00, c01, c10, c11, c }";
+
+impl<'de> Deserialize<'de> for BernoulliCosts {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = BernoulliCosts;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str(COST_FORMS)
             }
-            let mut flat = Vec::with_capacity(n * n);
-            for (i, row) in rows.iter().enumerate() {
-                let name = format!("{field}[{i}]");
-                let r = numbers(&row, &name)?;
-                if r.len() != n {
-                    return Err(core_error(fisst::Error::dimension(name, n, r.len())));
+            fn visit_str<E: de::Error>(self, s: &str) -> Result<BernoulliCosts, E> {
+                match s {
+                    "mpe" => Ok(BernoulliCosts::Mpe),
+                    other => Err(E::custom(format!("must be {COST_FORMS}, got {other:?}"))),
                 }
-                flat.extend(r);
             }
-            return Ok(flat);
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<BernoulliCosts, A::Error> {
+                let mut values = [None; 5];
+                let mut mmol = None;
+                while let Some(key) = map.next_key::<String>()? {
+                    if key == "mmol" {
+                        mmol = Some(map.next_value::<Mmol>()?);
+                    } else if let Some(i) = COST_KEYS.iter().position(|k| *k == key) {
+                        values[i] = Some(map.next_value::<f64>()?);
+                    } else {
+                        return Err(de::Error::unknown_field(&key, COST_FIELDS));
+                    }
+                }
+                if let Some(m) = mmol {
+                    if values.iter().any(Option::is_some) {
+                        return Err(de::Error::invalid_type(
+                            de::Unexpected::Other("mmol together with c00…c"),
+                            &COST_FORMS,
+                        ));
+                    }
+                    return Ok(BernoulliCosts::Mmol(m));
+                }
+                let mut c = [0.0; 5];
+                for (i, v) in values.iter().enumerate() {
+                    c[i] = v.ok_or_else(|| de::Error::missing_field(COST_KEYS[i]))?;
+                }
+                Ok(BernoulliCosts::Explicit(c))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+impl BernoulliCosts {
+    /// The core costs; errors name `path` (`options.costs`).
+    fn into_core(self, path: &str) -> JsResult<Costs> {
+        match self {
+            BernoulliCosts::Mpe => Ok(Costs::mpe()),
+            BernoulliCosts::Mmol(m) => {
+                Costs::mmol(m.asset, m.countermeasure).or_throw_in(&format!("{path}.mmol"))
+            }
+            BernoulliCosts::Explicit([c00, c01, c10, c11, c]) => {
+                Costs::new(c00, c01, c10, c11, c).or_throw_in(path)
+            }
         }
     }
-    numbers(v, field)
 }
 
-/// A Gaussian `{ mean, cov }` named `path` (`path.mean`, `path.cov`).
-fn gaussian(opts: &Options, path: &str) -> JsResult<Gaussian> {
-    let mean = numbers(&required(opts, path, "mean")?, &format!("{path}.mean"))?;
-    let cov = covariance(
-        &required(opts, path, "cov")?,
-        mean.len(),
-        &format!("{path}.cov"),
-    )?;
-    Gaussian::from_slices(&mean, &cov, path).or_throw()
+/// Options of `bernoulliEstimate`.
+#[derive(Deserialize, Tsify)]
+pub struct BernoulliEstimateOptions {
+    /// p, the existence probability, in [0, 1].
+    pub existence: f64,
+    /// The spatial density of the object when it exists.
+    pub density: BernoulliDensity,
+    /// r0 > 0, the radius of the tolerance ball of the loss (7), in state units.
+    pub radius: f64,
+    /// The costs of the loss (7).
+    pub costs: BernoulliCosts,
 }
 
-/// A [`SpatialDensity`] from its JS form, errors named under `field` (`density` or
-/// `components[i].density`).
-pub(crate) fn density(v: &JsValue, field: &str) -> JsResult<SpatialDensity> {
-    let opts = Options::new(v, field, true)?;
-    if let Some(mixture) = opts.get("mixture")? {
-        let name = format!("{field}.mixture");
-        let items = array(&mixture, &name, "an array of { weight, mean, cov }")?;
-        let mut comps = Vec::with_capacity(items.length() as usize);
-        for (j, item) in items.iter().enumerate() {
-            let path = format!("{name}[{j}]");
-            let o = Options::new(&item, &path, true)?;
-            let w = required_number(&o, &path, "weight")?;
-            comps.push((w, gaussian(&o, &path)?));
-        }
-        let m = GaussianMixture::new(comps, &name).or_throw()?;
-        return SpatialDensity::mixture(&m).map_err(|e| renamed(e, field));
-    }
-    if let Some(pts) = opts.get("particles")? {
-        let pts = points(&pts, &format!("{field}.particles"))?;
-        let weights = match opts.get("weights")? {
-            Some(w) => Some(numbers(&w, &format!("{field}.weights"))?),
-            None => None,
-        };
-        let p = ParticleSet::new(&pts, weights.as_deref()).map_err(|e| renamed(e, field))?;
-        return Ok(SpatialDensity::particles(p));
-    }
-    if opts.get("mean")?.is_some() || opts.get("cov")?.is_some() {
-        let g = gaussian(&opts, field)?;
-        return SpatialDensity::gaussian(g).map_err(|e| renamed(e, field));
-    }
-    Err(type_error(format!(
-        "{field} must be {{ mean, cov }}, {{ mixture: [...] }} or {{ particles: [...], weights }}"
-    )))
+/// Theorem III.3.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct BernoulliEstimateResult {
+    /// The optimal decision (ties p = Γ report nothing).
+    pub declare: bool,
+    /// `mmuc` when declared, else null.
+    #[tsify(type = "number[] | null")]
+    pub estimate: Option<Vec<f64>>,
+    /// The MMUC point a* (12).
+    pub mmuc: Vec<f64>,
+    /// Γ of eq. (11) (p > Γ reports for every cost matrix with c11 + c·q < c01 + c10 − c00,
+    /// which includes MPE and MMOL; ±Infinity when the decision does not depend on p).
+    pub threshold: f64,
+    /// q(a*).
+    pub miss_probability: f64,
+    /// ρ_∅ (14).
+    pub expected_loss_empty: f64,
+    /// ρ_{a*} (13).
+    pub expected_loss_singleton: f64,
 }
 
-/// [`Costs`] from `'mpe'`, `{ mmol: { asset, countermeasure } }` or the five costs.
-pub(crate) fn costs(v: &JsValue) -> JsResult<Costs> {
-    const EXPECTED: &str =
-        "'mpe', { mmol: { asset, countermeasure } } or { c00, c01, c10, c11, c }";
-    if let Some(s) = v.as_string() {
-        return match s.as_str() {
-            "mpe" => Ok(Costs::mpe()),
-            other => Err(range_error(format!(
-                "costs must be {EXPECTED}, got {other:?}"
-            ))),
-        };
-    }
-    let opts = Options::new(v, "costs", true)?;
-    if let Some(m) = opts.get("mmol")? {
-        let o = Options::new(&m, "costs.mmol", true)?;
-        let asset = required_number(&o, "costs.mmol", "asset")?;
-        let countermeasure = required_number(&o, "costs.mmol", "countermeasure")?;
-        return Costs::mmol(asset, countermeasure).or_throw();
-    }
-    let mut c = [0.0; 5];
-    for (x, key) in c.iter_mut().zip(["c00", "c01", "c10", "c11", "c"]) {
-        *x = required_number(&opts, "costs", key)?;
-    }
-    Costs::new(c[0], c[1], c[2], c[3], c[4]).or_throw()
+/// Options of `probabilityOutsideBall`.
+#[derive(Deserialize, Tsify)]
+pub struct ProbabilityOutsideBallOptions {
+    /// The density.
+    pub density: BernoulliDensity,
+    /// The ball's centre (the density's dimension).
+    pub center: Point,
+    /// The ball's radius, > 0.
+    pub radius: f64,
 }
 
-fn required_costs(opts: &Options) -> JsResult<Costs> {
-    match opts.get("costs")? {
-        Some(v) => costs(&v),
-        None => Err(type_error("costs is required")),
-    }
+fn dim_one() -> usize {
+    1
 }
 
-fn estimate_object(e: &BernoulliEstimate) -> JsValue {
-    object(&[
-        ("declare", e.declare.into()),
-        (
-            "estimate",
-            e.estimate.as_deref().map_or(JsValue::NULL, number_array),
-        ),
-        ("mmuc", number_array(&e.mmuc.center)),
-        ("threshold", e.threshold.gamma.into()),
-        ("missProbability", e.mmuc.miss_probability.into()),
-        ("expectedLossEmpty", e.expected_loss_empty.into()),
-        ("expectedLossSingleton", e.expected_loss_singleton.into()),
-    ])
+/// Options of `bernoulliThresholdCurve`.
+#[derive(Deserialize, Tsify)]
+pub struct BernoulliThresholdCurveOptions {
+    /// Standard deviations σ > 0 of the isotropic Gaussian N(a*, σ² I).
+    pub sigmas: Numbers,
+    /// r0 > 0.
+    pub radius: f64,
+    /// The costs of the loss (7).
+    pub costs: BernoulliCosts,
+    /// Dimension, an integer in [1, 10000] (default 1, as in Fig. 3).
+    #[serde(default = "dim_one")]
+    pub dim: usize,
+}
+
+/// Options of `mmucEstimate`.
+#[derive(Deserialize, Tsify)]
+pub struct MmucEstimateOptions {
+    /// The density.
+    pub density: BernoulliDensity,
+    /// r0 > 0.
+    pub radius: f64,
+}
+
+/// How the MMUC point was found.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "kebab-case")]
+pub enum MmucMethodName {
+    /// A Gaussian's mean (exact).
+    GaussianMean,
+    /// The common mean of a mixture (exact).
+    SharedMean,
+    /// A multi-start local search over a mixture.
+    MixtureSearch,
+    /// Exhaustive over particles.
+    ParticlesExact,
+    /// A heuristic over many particles.
+    ParticlesHeuristic,
+}
+
+/// Result of `mmucEstimate`.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct MmucEstimateResult {
+    /// a*.
+    pub center: Vec<f64>,
+    /// q(a*).
+    pub miss_probability: f64,
+    /// How a* was found.
+    pub method: MmucMethodName,
+}
+
+/// One component of `multiBernoulliPointEstimate`.
+#[derive(Deserialize, Tsify)]
+pub struct BernoulliComponent {
+    /// Existence probability in [0, 1].
+    pub existence: f64,
+    /// Spatial density.
+    pub density: BernoulliDensity,
+}
+
+/// Options of `multiBernoulliPointEstimate`.
+#[derive(Deserialize, Tsify)]
+pub struct MultiBernoulliPointEstimateOptions {
+    /// The components (at most 10,000).
+    pub components: Vec<BernoulliComponent>,
+    /// r0 > 0.
+    pub radius: f64,
+    /// The costs of the loss (7).
+    pub costs: BernoulliCosts,
+}
+
+/// Result of `multiBernoulliPointEstimate`.
+#[derive(Serialize, Tsify)]
+pub struct MultiBernoulliPointEstimateResult {
+    /// Indices of the declared components, increasing.
+    pub reported: Vec<usize>,
+    /// Their estimates, in the same order.
+    pub estimates: Vec<Vec<f64>>,
+    /// Theorem III.3 for each component.
+    pub components: Vec<BernoulliEstimateResult>,
+}
+
+/// Options of `bernoulliLossCurve`.
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct BernoulliLossCurveOptions {
+    /// The existence probabilities p at which to evaluate.
+    pub existences: Numbers,
+    /// q(a*) in [0, 1].
+    pub miss_probability: f64,
+    /// The costs of the loss (7).
+    pub costs: BernoulliCosts,
+    /// Report when p > threshold; default: the optimal rule of Theorem III.3.
+    #[tsify(optional)]
+    pub threshold: Option<f64>,
+}
+
+/// ρ_∅(p) (14), ρ_{a*}(p) (13), and the expected loss of the rule, for each p.
+#[derive(Serialize, Tsify)]
+pub struct BernoulliLossCurveResult {
+    /// ρ_∅(p).
+    pub empty: Vec<f64>,
+    /// ρ_{a*}(p).
+    pub singleton: Vec<f64>,
+    /// The loss of the rule.
+    pub rule: Vec<f64>,
+    /// The rule's threshold.
+    pub threshold: f64,
+}
+
+fn estimate_out(e: &BernoulliEstimate) -> BernoulliEstimateResult {
+    BernoulliEstimateResult {
+        declare: e.declare,
+        estimate: e.estimate.clone(),
+        mmuc: e.mmuc.center.clone(),
+        threshold: e.threshold.gamma,
+        miss_probability: e.mmuc.miss_probability,
+        expected_loss_empty: e.expected_loss_empty,
+        expected_loss_singleton: e.expected_loss_singleton,
+    }
 }
 
 /// The Bayes-optimal point estimate of a Bernoulli (Theorem III.3 of the optimal Bernoulli
@@ -286,13 +341,12 @@ fn estimate_object(e: &BernoulliEstimate) -> JsValue {
 pub fn bernoulli_estimate(
     #[wasm_bindgen(unchecked_param_type = "BernoulliEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let opts = Options::new(&options, "options", true)?;
-    let existence = opts.number("existence")?;
-    let s = density(&opts.require("density")?, "density")?;
-    let radius = opts.number("radius")?;
-    let loss = ApplicationLoss::new(required_costs(&opts)?, radius).or_throw()?;
-    let e = bernoulli::estimate(existence, &s, &loss).or_throw()?;
-    Ok(estimate_object(&e))
+    let o: BernoulliEstimateOptions = read(options, "options")?;
+    let s = o.density.into_core("options.density")?;
+    let costs = o.costs.into_core("options.costs")?;
+    let loss = ApplicationLoss::new(costs, o.radius).or_throw_in("options")?;
+    let e = bernoulli::estimate(o.existence, &s, &loss).or_throw_in("options")?;
+    write(&estimate_out(&e))
 }
 
 /// q(center) = P(‖x − center‖ > radius) for x drawn from `density`: exact in 1D, to 1e-10
@@ -302,11 +356,10 @@ pub fn bernoulli_estimate(
 pub fn probability_outside_ball(
     #[wasm_bindgen(unchecked_param_type = "ProbabilityOutsideBallOptions")] options: JsValue,
 ) -> JsResult<f64> {
-    let opts = Options::new(&options, "options", true)?;
-    let s = density(&opts.require("density")?, "density")?;
-    let center = numbers(&opts.require("center")?, "center")?;
-    let radius = opts.number("radius")?;
-    s.prob_outside_ball(&center, radius).or_throw()
+    let o: ProbabilityOutsideBallOptions = read(options, "options")?;
+    let s = o.density.into_core("options.density")?;
+    s.prob_outside_ball(&o.center.0, o.radius)
+        .or_throw_in("options")
 }
 
 /// Γ (11) for each σ of an isotropic Gaussian N(a*, σ² I_dim) — Fig. 3 of the paper — from
@@ -315,13 +368,12 @@ pub fn probability_outside_ball(
 pub fn bernoulli_threshold_curve(
     #[wasm_bindgen(unchecked_param_type = "BernoulliThresholdCurveOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let opts = Options::new(&options, "options", true)?;
-    let sigmas = numbers(&opts.require("sigmas")?, "sigmas")?;
-    let radius = opts.number("radius")?;
-    let costs = required_costs(&opts)?;
-    let dim = opts.integer_or("dim", 1, 1, 10_000)?;
-    let curve = bernoulli::isotropic_threshold_curve(&sigmas, radius, &costs, dim).or_throw()?;
-    Ok(number_array(&curve))
+    let o: BernoulliThresholdCurveOptions = read(options, "options")?;
+    let dim = check_range("options.dim", o.dim, 1, 10_000)?;
+    let costs = o.costs.into_core("options.costs")?;
+    let curve = bernoulli::isotropic_threshold_curve(&o.sigmas.0, o.radius, &costs, dim)
+        .or_throw_in("options")?;
+    write(&curve)
 }
 
 /// The MMUC estimate a* = argmin_a q(a) (eq. (12)) alone. Options `{ density, radius }`;
@@ -330,22 +382,20 @@ pub fn bernoulli_threshold_curve(
 pub fn mmuc_estimate(
     #[wasm_bindgen(unchecked_param_type = "MmucEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let opts = Options::new(&options, "options", true)?;
-    let s = density(&opts.require("density")?, "density")?;
-    let radius = opts.number("radius")?;
-    let m = s.mmuc(radius).or_throw()?;
-    let method = match m.method {
-        MmucMethod::GaussianMean => "gaussian-mean",
-        MmucMethod::SharedMean => "shared-mean",
-        MmucMethod::MixtureSearch => "mixture-search",
-        MmucMethod::ParticlesExact => "particles-exact",
-        MmucMethod::ParticlesHeuristic => "particles-heuristic",
-    };
-    Ok(object(&[
-        ("center", number_array(&m.center)),
-        ("missProbability", m.miss_probability.into()),
-        ("method", method.into()),
-    ]))
+    let o: MmucEstimateOptions = read(options, "options")?;
+    let s = o.density.into_core("options.density")?;
+    let m = s.mmuc(o.radius).or_throw_in("options")?;
+    write(&MmucEstimateResult {
+        center: m.center,
+        miss_probability: m.miss_probability,
+        method: match m.method {
+            MmucMethod::GaussianMean => MmucMethodName::GaussianMean,
+            MmucMethod::SharedMean => MmucMethodName::SharedMean,
+            MmucMethod::MixtureSearch => MmucMethodName::MixtureSearch,
+            MmucMethod::ParticlesExact => MmucMethodName::ParticlesExact,
+            MmucMethod::ParticlesHeuristic => MmucMethodName::ParticlesHeuristic,
+        },
+    })
 }
 
 /// Theorem III.3 applied to each component of a multi-Bernoulli. Options
@@ -358,31 +408,22 @@ pub fn mmuc_estimate(
 pub fn multi_bernoulli_point_estimate(
     #[wasm_bindgen(unchecked_param_type = "MultiBernoulliPointEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let opts = Options::new(&options, "options", true)?;
-    let items = array(
-        &opts.require("components")?,
-        "components",
-        "an array of { existence, density }",
-    )?;
-    let mut comps = Vec::with_capacity(items.length() as usize);
-    for (i, item) in items.iter().enumerate() {
-        let path = format!("components[{i}]");
-        let o = Options::new(&item, &path, true)?;
-        let p = required_number(&o, &path, "existence")?;
-        let s = density(&required(&o, &path, "density")?, &format!("{path}.density"))?;
-        comps.push((p, s));
+    let o: MultiBernoulliPointEstimateOptions = read(options, "options")?;
+    types::check_gaussian_count(o.components.len(), "options.components")?;
+    let mut comps = Vec::with_capacity(o.components.len());
+    for (i, c) in o.components.into_iter().enumerate() {
+        let path = format!("options.components[{i}]");
+        let s = c.density.into_core(&format!("{path}.density"))?;
+        comps.push((c.existence, s));
     }
-    let radius = opts.number("radius")?;
-    let loss = ApplicationLoss::new(required_costs(&opts)?, radius).or_throw()?;
-    let m = bernoulli::multi_bernoulli_estimate(&comps, &loss).or_throw()?;
-    let reported: Vec<f64> = m.reported.iter().map(|&i| i as f64).collect();
-    let estimates: Array = m.points().into_iter().map(number_array).collect();
-    let components: Array = m.components.iter().map(estimate_object).collect();
-    Ok(object(&[
-        ("reported", number_array(&reported)),
-        ("estimates", estimates.into()),
-        ("components", components.into()),
-    ]))
+    let costs = o.costs.into_core("options.costs")?;
+    let loss = ApplicationLoss::new(costs, o.radius).or_throw_in("options")?;
+    let m = bernoulli::multi_bernoulli_estimate(&comps, &loss).or_throw_in("options")?;
+    write(&MultiBernoulliPointEstimateResult {
+        reported: m.reported.clone(),
+        estimates: m.points().into_iter().map(<[f64]>::to_vec).collect(),
+        components: m.components.iter().map(estimate_out).collect(),
+    })
 }
 
 /// The expected losses against p for Fig. 2: ρ_∅ (14), ρ_{a*} (13), and the loss of the rule
@@ -393,37 +434,41 @@ pub fn multi_bernoulli_point_estimate(
 pub fn bernoulli_loss_curve(
     #[wasm_bindgen(unchecked_param_type = "BernoulliLossCurveOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let opts = Options::new(&options, "options", true)?;
-    let ps = numbers(&opts.require("existences")?, "existences")?;
-    let q = opts.number("missProbability")?;
-    let costs = required_costs(&opts)?;
-    let optimal = bernoulli::threshold(&costs, q).or_throw()?;
-    let rule = match opts.get("threshold")? {
-        Some(v) => bernoulli::Threshold {
-            gamma: number(&v, "threshold")?,
+    let o: BernoulliLossCurveOptions = read(options, "options")?;
+    let q = o.miss_probability;
+    let costs = o.costs.into_core("options.costs")?;
+    let optimal = bernoulli::threshold(&costs, q).or_throw_in("options")?;
+    let rule = match o.threshold {
+        Some(gamma) => bernoulli::Threshold {
+            gamma,
             direction: Direction::Above,
         },
         None => optimal,
     };
-    let (mut empty, mut singleton, mut chosen) = (vec![], vec![], vec![]);
-    for (i, &p) in ps.iter().enumerate() {
-        let name = || format!("existences[{i}]");
-        let e = bernoulli::expected_loss_empty(&costs, p).map_err(|e| renamed_field(e, &name()))?;
+    let n = o.existences.0.len();
+    let mut out = BernoulliLossCurveResult {
+        empty: Vec::with_capacity(n),
+        singleton: Vec::with_capacity(n),
+        rule: Vec::with_capacity(n),
+        threshold: rule.gamma,
+    };
+    for (i, &p) in o.existences.0.iter().enumerate() {
+        let name = || format!("options.existences[{i}]");
+        let rename = |e: fisst::Error| match e {
+            fisst::Error::InvalidProbability { what, value } if what == "existence" => {
+                fisst::Error::probability(name(), value)
+            }
+            other => other.within("options"),
+        };
+        let e = bernoulli::expected_loss_empty(&costs, p)
+            .map_err(rename)
+            .or_throw()?;
         let a = bernoulli::expected_loss_singleton(&costs, p, q)
-            .map_err(|e| renamed_field(e, &name()))?;
-        empty.push(e);
-        singleton.push(a);
-        chosen.push(if rule.declares(p) { a } else { e });
+            .map_err(rename)
+            .or_throw()?;
+        out.empty.push(e);
+        out.singleton.push(a);
+        out.rule.push(if rule.declares(p) { a } else { e });
     }
-    Ok(object(&[
-        ("empty", number_array(&empty)),
-        ("singleton", number_array(&singleton)),
-        ("rule", number_array(&chosen)),
-        ("threshold", rule.gamma.into()),
-    ]))
-}
-
-/// Maps a core `existence` error to the JS field `name`.
-fn renamed_field(e: fisst::Error, name: &str) -> JsValue {
-    range_error(e.to_string().replacen("existence", name, 1))
+    write(&out)
 }

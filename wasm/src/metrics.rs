@@ -1,9 +1,100 @@
 //! `gospa`, `ospa`, `uospa`, `linearAssignment`.
 
+use serde::{Deserialize, Serialize};
+use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::convert::{JsResult, Options, OrThrow, array, numbers, object, pair_array, points};
+use crate::boundary::{JsResult, OrThrow, read, write};
+use crate::types::PointSet;
 use fisst::metrics::{Gospa, Ospa};
+
+fn two() -> f64 {
+    2.0
+}
+
+/// Options of `gospa`.
+#[derive(Deserialize, Tsify)]
+pub struct GospaOptions {
+    /// The cut-off c > 0, in the units of the points.
+    pub c: f64,
+    /// The order p ≥ 1 (finite; default 2).
+    #[serde(default = "two")]
+    pub p: f64,
+    /// α in (0, 2], the weight of cardinality mismatch (default 2; the decomposition into
+    /// localisation, missed and false targets exists for α = 2 only).
+    #[serde(default = "two")]
+    pub alpha: f64,
+}
+
+/// Result of `gospa`. `localisation` is Σ d^p over the assigned pairs (not rooted); `missed`
+/// and `falseTargets` count unassigned truth and estimate points; `assignment` lists
+/// `[truthIndex, estimateIndex]` pairs. Only `distance` is present when `alpha` ≠ 2.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct GospaResult {
+    /// The GOSPA distance.
+    pub distance: f64,
+    /// Σ d^p over the assigned pairs (α = 2 only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub localisation: Option<f64>,
+    /// Unassigned truth points (α = 2 only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub missed: Option<usize>,
+    /// Unassigned estimate points (α = 2 only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub false_targets: Option<usize>,
+    /// `[truthIndex, estimateIndex]` pairs of the optimal assignment (α = 2 only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub assignment: Option<Vec<(usize, usize)>>,
+}
+
+/// Options of `ospa` and `uospa`.
+#[derive(Deserialize, Tsify)]
+pub struct OspaOptions {
+    /// The cut-off c > 0, in the units of the points.
+    pub c: f64,
+    /// The order p ≥ 1 (finite; default 2).
+    #[serde(default = "two")]
+    pub p: f64,
+}
+
+/// Result of `ospa`: rooted parts with distance^p = localisation^p + cardinality^p.
+#[derive(Serialize, Tsify)]
+pub struct OspaResult {
+    /// The OSPA distance, in [0, c].
+    pub distance: f64,
+    /// The localisation part (rooted).
+    pub localisation: f64,
+    /// The cardinality part (rooted).
+    pub cardinality: f64,
+    /// `[truthIndex, estimateIndex]` pairs of the optimal permutation.
+    pub assignment: Vec<(usize, usize)>,
+}
+
+/// Result of `uospa`.
+#[derive(Serialize, Tsify)]
+pub struct UospaResult {
+    /// The UOSPA distance (GOSPA with α = 1).
+    pub distance: f64,
+}
+
+/// A cost matrix: an array of rows of equal length.
+#[derive(Deserialize, Tsify)]
+#[tsify(type = "(number[] | Float64Array)[]")]
+pub struct CostMatrix(pub Vec<Vec<f64>>);
+
+/// Result of `linearAssignment`.
+#[derive(Serialize, Tsify)]
+pub struct LinearAssignmentResult {
+    /// `[row, column]` pairs of the optimal assignment.
+    pub pairs: Vec<(usize, usize)>,
+    /// Their total cost.
+    pub cost: f64,
+}
 
 /// GOSPA between two point sets (García-Fernández & Svensson 2019, Def. 2 and Prop. 3).
 ///
@@ -14,29 +105,32 @@ use fisst::metrics::{Gospa, Ospa};
 /// `alpha ≠ 2` only `distance` is defined (the decomposition exists for α = 2 only).
 #[wasm_bindgen(unchecked_return_type = "GospaResult")]
 pub fn gospa(
-    #[wasm_bindgen(unchecked_param_type = "Point[]")] truth: JsValue,
-    #[wasm_bindgen(unchecked_param_type = "Point[]")] estimate: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "PointSet")] truth: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "PointSet")] estimate: JsValue,
     #[wasm_bindgen(unchecked_param_type = "GospaOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let truth = points(&truth, "truth")?;
-    let estimate = points(&estimate, "estimate")?;
-    let opts = Options::new(&options, "options", true)?;
-    let c = opts.number("c")?;
-    let p = opts.number_or("p", 2.0)?;
-    let alpha = opts.number_or("alpha", 2.0)?;
-    let g = Gospa::new(c, p, alpha).or_throw()?;
-    if alpha != 2.0 {
+    let truth = read::<PointSet>(truth, "truth")?.into_rows();
+    let estimate = read::<PointSet>(estimate, "estimate")?.into_rows();
+    let o: GospaOptions = read(options, "options")?;
+    let g = Gospa::new(o.c, o.p, o.alpha).or_throw_in("options")?;
+    if o.alpha != 2.0 {
         let distance = g.distance(&truth, &estimate).or_throw()?;
-        return Ok(object(&[("distance", distance.into())]));
+        return write(&GospaResult {
+            distance,
+            localisation: None,
+            missed: None,
+            false_targets: None,
+            assignment: None,
+        });
     }
     let d = g.decompose(&truth, &estimate).or_throw()?;
-    Ok(object(&[
-        ("distance", d.distance.into()),
-        ("localisation", d.localisation.into()),
-        ("missed", (d.missed as f64).into()),
-        ("falseTargets", (d.false_targets as f64).into()),
-        ("assignment", pair_array(&d.assignment)),
-    ]))
+    write(&GospaResult {
+        distance: d.distance,
+        localisation: Some(d.localisation),
+        missed: Some(d.missed),
+        false_targets: Some(d.false_targets),
+        assignment: Some(d.assignment),
+    })
 }
 
 /// OSPA between two point sets with its rooted localisation and cardinality parts
@@ -45,64 +139,63 @@ pub fn gospa(
 /// optimal permutation's pairs as `assignment`.
 #[wasm_bindgen(unchecked_return_type = "OspaResult")]
 pub fn ospa(
-    #[wasm_bindgen(unchecked_param_type = "Point[]")] truth: JsValue,
-    #[wasm_bindgen(unchecked_param_type = "Point[]")] estimate: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "PointSet")] truth: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "PointSet")] estimate: JsValue,
     #[wasm_bindgen(unchecked_param_type = "OspaOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let truth = points(&truth, "truth")?;
-    let estimate = points(&estimate, "estimate")?;
-    let opts = Options::new(&options, "options", true)?;
-    let o = Ospa::new(opts.number("c")?, opts.number_or("p", 2.0)?).or_throw()?;
-    let d = o.decompose(&truth, &estimate).or_throw()?;
-    Ok(object(&[
-        ("distance", d.distance.into()),
-        ("localisation", d.localisation.into()),
-        ("cardinality", d.cardinality.into()),
-        ("assignment", pair_array(&d.assignment)),
-    ]))
+    let truth = read::<PointSet>(truth, "truth")?.into_rows();
+    let estimate = read::<PointSet>(estimate, "estimate")?.into_rows();
+    let o: OspaOptions = read(options, "options")?;
+    let metric = Ospa::new(o.c, o.p).or_throw_in("options")?;
+    let d = metric.decompose(&truth, &estimate).or_throw()?;
+    write(&OspaResult {
+        distance: d.distance,
+        localisation: d.localisation,
+        cardinality: d.cardinality,
+        assignment: d.assignment,
+    })
 }
 
 /// UOSPA (GOSPA with α = 1) between two point sets. Options `{ c, p = 2 }`; returns
 /// `{ distance }`.
-#[wasm_bindgen(unchecked_return_type = "{ distance: number }")]
+#[wasm_bindgen(unchecked_return_type = "UospaResult")]
 pub fn uospa(
-    #[wasm_bindgen(unchecked_param_type = "Point[]")] truth: JsValue,
-    #[wasm_bindgen(unchecked_param_type = "Point[]")] estimate: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "PointSet")] truth: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "PointSet")] estimate: JsValue,
     #[wasm_bindgen(unchecked_param_type = "OspaOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let truth = points(&truth, "truth")?;
-    let estimate = points(&estimate, "estimate")?;
-    let opts = Options::new(&options, "options", true)?;
-    let g = Gospa::uospa(opts.number("c")?, opts.number_or("p", 2.0)?).or_throw()?;
+    let truth = read::<PointSet>(truth, "truth")?.into_rows();
+    let estimate = read::<PointSet>(estimate, "estimate")?.into_rows();
+    let o: OspaOptions = read(options, "options")?;
+    let g = Gospa::uospa(o.c, o.p).or_throw_in("options")?;
     let distance = g.distance(&truth, &estimate).or_throw()?;
-    Ok(object(&[("distance", distance.into())]))
+    write(&UospaResult { distance })
 }
 
 /// Exact rectangular linear assignment: `cost` is an array of rows (equal lengths). Returns
 /// `{ pairs: [row, column][], cost }` minimising the total cost, covering every row when
 /// there are no more rows than columns, every column otherwise.
-#[wasm_bindgen(js_name = linearAssignment, unchecked_return_type = "{ pairs: [number, number][]; cost: number }")]
+#[wasm_bindgen(js_name = linearAssignment, unchecked_return_type = "LinearAssignmentResult")]
 pub fn linear_assignment(
-    #[wasm_bindgen(unchecked_param_type = "number[][]")] cost: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "CostMatrix")] cost: JsValue,
 ) -> JsResult<JsValue> {
-    let rows = array(&cost, "cost", "an array of rows")?;
-    let mut flat = Vec::new();
-    let mut cols = None;
+    let rows = read::<CostMatrix>(cost, "cost")?.0;
+    let cols = rows.first().map_or(0, Vec::len);
+    let mut flat = Vec::with_capacity(rows.len() * cols);
     for (i, row) in rows.iter().enumerate() {
-        let row = numbers(&row, &format!("cost[{i}]"))?;
-        match cols {
-            None => cols = Some(row.len()),
-            Some(c) if c != row.len() => {
-                return Err(fisst::Error::dimension(format!("cost[{i}]"), c, row.len())).or_throw();
-            }
-            _ => {}
+        if row.len() != cols {
+            return Err(fisst::Error::dimension(
+                format!("cost[{i}]"),
+                cols,
+                row.len(),
+            ))
+            .or_throw();
         }
-        flat.extend(row);
+        flat.extend_from_slice(row);
     }
-    let n_rows = rows.length() as usize;
-    let a = fisst::math::linear_assignment(&flat, n_rows, cols.unwrap_or(0)).or_throw()?;
-    Ok(object(&[
-        ("pairs", pair_array(&a.pairs)),
-        ("cost", a.cost.into()),
-    ]))
+    let a = fisst::math::linear_assignment(&flat, rows.len(), cols).or_throw()?;
+    write(&LinearAssignmentResult {
+        pairs: a.pairs,
+        cost: a.cost,
+    })
 }

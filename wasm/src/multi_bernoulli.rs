@@ -1,77 +1,229 @@
 //! Multi-Bernoulli cardinality and optimal estimation (Section III of the spooky-effect
 //! paper).
 
+use js_sys::Uint8Array;
+use serde::{Deserialize, Serialize};
+use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::convert::{
-    JsResult, Options, OrThrow, boolean_array, booleans, number_array, numbers, object,
-    range_error, string,
-};
+use crate::boundary::{JsResult, OrThrow, check_range, read, write};
+use crate::types::Numbers;
 use fisst::cardinality::{leave_one_out_cardinalities, multi_bernoulli_cardinality};
 use fisst::estimators::alternatives::{jom_estimate, mam_estimate, map_cardinality_estimate};
 use fisst::estimators::multi_bernoulli::{SetMetric, mean_error, optimal_estimate};
-use js_sys::{Array, Uint8Array};
+
+fn one() -> f64 {
+    1.0
+}
+
+fn two() -> f64 {
+    2.0
+}
+
+/// A set metric of Section III.
+#[derive(Clone, Copy, Debug, Deserialize, Tsify)]
+#[serde(rename_all = "lowercase")]
+pub enum SetMetricName {
+    /// GOSPA with the given `alpha`.
+    Gospa,
+    /// OSPA.
+    Ospa,
+    /// UOSPA (GOSPA with α = 1).
+    Uospa,
+}
+
+impl SetMetricName {
+    fn metric(self, alpha: f64) -> SetMetric {
+        match self {
+            SetMetricName::Gospa => SetMetric::Gospa { alpha },
+            SetMetricName::Ospa => SetMetric::Ospa,
+            SetMetricName::Uospa => SetMetric::Uospa,
+        }
+    }
+}
+
+/// Options of `mbOptimalEstimate`.
+#[derive(Deserialize, Tsify)]
+pub struct MbOptimalEstimateOptions {
+    /// Existence probability r_i in [0, 1] of each far-apart component.
+    pub existence: Numbers,
+    /// The metric whose mean error is minimised.
+    pub metric: SetMetricName,
+    /// Cut-off c > 0 (default 1).
+    #[serde(default = "one")]
+    pub c: f64,
+    /// Order p ≥ 1 (default 2). The error minimised is E[d^p], the mean square error for
+    /// p = 2.
+    #[serde(default = "two")]
+    pub p: f64,
+    /// GOSPA's α in (0, 2] (default 2; ignored by OSPA and UOSPA).
+    #[serde(default = "two")]
+    pub alpha: f64,
+}
+
+/// Result of `mbOptimalEstimate`.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct MbOptimalEstimateResult {
+    /// `report[i]`: whether component i is in the optimal estimate.
+    pub report: Vec<bool>,
+    /// Its mean error E[d^p] (the mean square error for p = 2).
+    pub mean_square_error: f64,
+}
+
+/// Options of `mbMeanSquareError`.
+#[derive(Deserialize, Tsify)]
+pub struct MbMeanSquareErrorOptions {
+    /// Existence probability r_i in [0, 1] of each far-apart component.
+    pub existence: Numbers,
+    /// The estimate: `report[i]` says whether component i is reported (one per component).
+    pub report: Vec<bool>,
+    /// The metric.
+    pub metric: SetMetricName,
+    /// Cut-off c > 0 (default 1).
+    #[serde(default = "one")]
+    pub c: f64,
+    /// Order p ≥ 1 (default 2).
+    #[serde(default = "two")]
+    pub p: f64,
+    /// GOSPA's α in (0, 2] (default 2).
+    #[serde(default = "two")]
+    pub alpha: f64,
+}
+
+/// A classical multi-object estimator of Fig. 2.
+#[derive(Clone, Copy, Debug, Deserialize, Tsify)]
+#[serde(rename_all = "kebab-case")]
+pub enum AlternativeMethod {
+    /// Marginal multi-target.
+    Mam,
+    /// Joint multi-target.
+    Jom,
+    /// Maximise the cardinality pmf, then report the most probable components.
+    MapCardinality,
+}
+
+/// Options of `mbAlternativeEstimate`.
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct MbAlternativeEstimateOptions {
+    /// Existence probability r_i in [0, 1] of each component.
+    pub existence: Numbers,
+    /// The estimator.
+    pub method: AlternativeMethod,
+    /// `lnPeak[i]` = −½ ln det(2π P_i) of component i's Gaussian (default 0 for all: equal
+    /// covariances); one per component.
+    #[tsify(optional)]
+    pub ln_peak: Option<Numbers>,
+    /// ln of JoM's constant (default 0, i.e. c = (2πε)^(d/2) for P = εI).
+    #[serde(default)]
+    pub ln_c: f64,
+}
+
+/// Result of `mbAlternativeEstimate`.
+#[derive(Serialize, Tsify)]
+pub struct MbAlternativeEstimateResult {
+    /// `report[i]`: whether component i is reported.
+    pub report: Vec<bool>,
+}
+
+/// An estimator of the decision maps.
+#[derive(Clone, Copy, Debug, Deserialize, Tsify)]
+#[serde(rename_all = "kebab-case")]
+pub enum DecisionEstimator {
+    /// Optimal GOSPA estimate.
+    Gospa,
+    /// Optimal OSPA estimate.
+    Ospa,
+    /// Optimal UOSPA estimate.
+    Uospa,
+    /// Marginal multi-target.
+    Mam,
+    /// Joint multi-target.
+    Jom,
+    /// MAP cardinality, then the most probable components.
+    MapCardinality,
+}
+
+fn hundred() -> usize {
+    100
+}
+
+/// Options of `mbDecisionMap`.
+#[derive(Deserialize, Tsify)]
+pub struct MbDecisionMapOptions {
+    /// The estimator whose decisions are mapped.
+    pub estimator: DecisionEstimator,
+    /// Cells per axis, an integer in [1, 2000] (default 100).
+    #[serde(default = "hundred")]
+    pub resolution: usize,
+    /// Cut-off c > 0 (default 1).
+    #[serde(default = "one")]
+    pub c: f64,
+    /// Order p ≥ 1 (default 2).
+    #[serde(default = "two")]
+    pub p: f64,
+    /// GOSPA's α in (0, 2] (default 2).
+    #[serde(default = "two")]
+    pub alpha: f64,
+}
+
+/// Result of `mbDecisionMap`.
+#[derive(Serialize, Tsify)]
+pub struct MbDecisionMapResult {
+    /// Cells per axis.
+    pub resolution: usize,
+    /// `decisions[row * resolution + col]` = u1 + 2·u2 at r1 = (col + ½)/resolution,
+    /// r2 = (row + ½)/resolution.
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Uint8Array")]
+    pub decisions: Uint8Array,
+}
+
+/// Options of `mbIdenticalComponentCounts`.
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct MbIdenticalComponentCountsOptions {
+    /// The common existence probability r in [0, 1].
+    pub existence: f64,
+    /// n runs over 1 … maxComponents, an integer in [1, 1000].
+    pub max_components: usize,
+}
+
+/// Result of `mbIdenticalComponentCounts`: for each n, the number of targets each rule
+/// reports.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct MbIdenticalComponentCountsResult {
+    /// n = 1 … maxComponents.
+    pub n: Vec<usize>,
+    /// Optimal GOSPA estimate (α = 2).
+    pub gospa: Vec<usize>,
+    /// Optimal OSPA estimate.
+    pub ospa: Vec<usize>,
+    /// Optimal UOSPA estimate.
+    pub uospa: Vec<usize>,
+    /// MAP cardinality rule.
+    pub map_cardinality: Vec<usize>,
+}
 
 /// The cardinality pmf of a multi-Bernoulli (Poisson-binomial): `pmf[n] = P(N = n)`,
 /// n = 0 … existence.length. Exact, nonnegative, sums to 1.
 #[wasm_bindgen(js_name = multiBernoulliCardinality, unchecked_return_type = "number[]")]
 pub fn multi_bernoulli_cardinality_js(
-    #[wasm_bindgen(unchecked_param_type = "number[] | Float64Array")] existence: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Numbers")] existence: JsValue,
 ) -> JsResult<JsValue> {
-    let r = numbers(&existence, "existence")?;
-    Ok(number_array(&multi_bernoulli_cardinality(&r).or_throw()?))
+    let r = read::<Numbers>(existence, "existence")?.0;
+    write(&multi_bernoulli_cardinality(&r).or_throw()?)
 }
 
 /// The leave-one-out cardinality pmfs ρ₋ᵢ: element i is the pmf without component i.
 #[wasm_bindgen(js_name = multiBernoulliLeaveOneOut, unchecked_return_type = "number[][]")]
 pub fn multi_bernoulli_leave_one_out(
-    #[wasm_bindgen(unchecked_param_type = "number[] | Float64Array")] existence: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Numbers")] existence: JsValue,
 ) -> JsResult<JsValue> {
-    let r = numbers(&existence, "existence")?;
-    let all = leave_one_out_cardinalities(&r).or_throw()?;
-    Ok(all
-        .iter()
-        .map(|p| number_array(p))
-        .collect::<Array>()
-        .into())
-}
-
-fn set_metric(opts: &Options) -> JsResult<SetMetric> {
-    let name = string(&opts.require("metric")?, "metric")?;
-    match name.as_str() {
-        "gospa" => Ok(SetMetric::Gospa {
-            alpha: opts.number_or("alpha", 2.0)?,
-        }),
-        "ospa" => Ok(SetMetric::Ospa),
-        "uospa" => Ok(SetMetric::Uospa),
-        other => Err(range_error(format!(
-            "metric must be one of 'gospa', 'ospa', 'uospa', got {other:?}"
-        ))),
-    }
-}
-
-struct MbInputs {
-    existence: Vec<f64>,
-    metric: SetMetric,
-    c: f64,
-    p: f64,
-}
-
-fn mb_inputs(options: &JsValue) -> JsResult<(Options, MbInputs)> {
-    let opts = Options::new(options, "options", true)?;
-    let existence = numbers(&opts.require("existence")?, "existence")?;
-    let metric = set_metric(&opts)?;
-    let c = opts.number_or("c", 1.0)?;
-    let p = opts.number_or("p", 2.0)?;
-    Ok((
-        opts,
-        MbInputs {
-            existence,
-            metric,
-            c,
-            p,
-        },
-    ))
+    let r = read::<Numbers>(existence, "existence")?.0;
+    write(&leave_one_out_cardinalities(&r).or_throw()?)
 }
 
 /// The estimate of a multi-Bernoulli with far-apart Dirac components that minimises the mean
@@ -82,12 +234,13 @@ fn mb_inputs(options: &JsValue) -> JsResult<(Options, MbInputs)> {
 pub fn mb_optimal_estimate(
     #[wasm_bindgen(unchecked_param_type = "MbOptimalEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let (_, m) = mb_inputs(&options)?;
-    let e = optimal_estimate(&m.existence, m.metric, m.c, m.p).or_throw()?;
-    Ok(object(&[
-        ("report", boolean_array(&e.report)),
-        ("meanSquareError", e.mean_error.into()),
-    ]))
+    let o: MbOptimalEstimateOptions = read(options, "options")?;
+    let e = optimal_estimate(&o.existence.0, o.metric.metric(o.alpha), o.c, o.p)
+        .or_throw_in("options")?;
+    write(&MbOptimalEstimateResult {
+        report: e.report,
+        mean_square_error: e.mean_error,
+    })
 }
 
 /// The mean error E[d^p] (mean square for p = 2) of the estimate `report` (a boolean per
@@ -97,9 +250,28 @@ pub fn mb_optimal_estimate(
 pub fn mb_mean_square_error(
     #[wasm_bindgen(unchecked_param_type = "MbMeanSquareErrorOptions")] options: JsValue,
 ) -> JsResult<f64> {
-    let (opts, m) = mb_inputs(&options)?;
-    let report = booleans(&opts.require("report")?, "report")?;
-    mean_error(&m.existence, &report, m.metric, m.c, m.p).or_throw()
+    let o: MbMeanSquareErrorOptions = read(options, "options")?;
+    mean_error(
+        &o.existence.0,
+        &o.report,
+        o.metric.metric(o.alpha),
+        o.c,
+        o.p,
+    )
+    .or_throw_in("options")
+}
+
+fn alternative(
+    existence: &[f64],
+    method: AlternativeMethod,
+    ln_peak: &[f64],
+    ln_c: f64,
+) -> fisst::Result<Vec<bool>> {
+    match method {
+        AlternativeMethod::Mam => mam_estimate(existence, ln_peak),
+        AlternativeMethod::Jom => jom_estimate(existence, ln_peak, ln_c),
+        AlternativeMethod::MapCardinality => map_cardinality_estimate(existence),
+    }
 }
 
 /// The classical estimators of Fig. 2: `method` is `'mam'` (marginal multi-target),
@@ -107,31 +279,17 @@ pub fn mb_mean_square_error(
 /// report the most probable components). `lnPeak[i]` is `−½ ln det(2π P_i)` for component i's
 /// Gaussian (default 0: equal covariances), `lnC` the log of JoM's constant (default 0, i.e.
 /// c = (2πε)^(d/2) for P = εI). Returns `{ report }`.
-#[wasm_bindgen(js_name = mbAlternativeEstimate, unchecked_return_type = "{ report: boolean[] }")]
+#[wasm_bindgen(js_name = mbAlternativeEstimate, unchecked_return_type = "MbAlternativeEstimateResult")]
 pub fn mb_alternative_estimate(
     #[wasm_bindgen(unchecked_param_type = "MbAlternativeEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let opts = Options::new(&options, "options", true)?;
-    let existence = numbers(&opts.require("existence")?, "existence")?;
-    let method = string(&opts.require("method")?, "method")?;
-    let ln_peak = match opts.get("lnPeak")? {
-        Some(v) => numbers(&v, "lnPeak")?,
-        None => vec![0.0; existence.len()],
-    };
-    let ln_c = opts.number_or("lnC", 0.0)?;
-    let report = alternative(&existence, &method, &ln_peak, ln_c)?;
-    Ok(object(&[("report", boolean_array(&report))]))
-}
-
-fn alternative(existence: &[f64], method: &str, ln_peak: &[f64], ln_c: f64) -> JsResult<Vec<bool>> {
-    match method {
-        "mam" => mam_estimate(existence, ln_peak).or_throw(),
-        "jom" => jom_estimate(existence, ln_peak, ln_c).or_throw(),
-        "map-cardinality" => map_cardinality_estimate(existence).or_throw(),
-        other => Err(range_error(format!(
-            "method must be one of 'mam', 'jom', 'map-cardinality', got {other:?}"
-        ))),
-    }
+    let o: MbAlternativeEstimateOptions = read(options, "options")?;
+    let existence = o.existence.0;
+    let ln_peak = o
+        .ln_peak
+        .map_or_else(|| vec![0.0; existence.len()], |n| n.0);
+    let report = alternative(&existence, o.method, &ln_peak, o.ln_c).or_throw_in("options")?;
+    write(&MbAlternativeEstimateResult { report })
 }
 
 /// Fig. 1 / Fig. 2 decision maps for two far-apart components: for every cell of a
@@ -139,31 +297,22 @@ fn alternative(existence: &[f64], method: &str, ln_peak: &[f64], ln_c: f64) -> J
 /// optimal decision coded as `u1 + 2·u2`. Row-major with r2 as the outer (row) index and r1
 /// the inner. `estimator` is `'gospa'`, `'ospa'`, `'uospa'`, `'mam'`, `'jom'` or
 /// `'map-cardinality'`. Returns `{ resolution, decisions: Uint8Array }`.
-#[wasm_bindgen(js_name = mbDecisionMap, unchecked_return_type = "{ resolution: number; decisions: Uint8Array }")]
+#[wasm_bindgen(js_name = mbDecisionMap, unchecked_return_type = "MbDecisionMapResult")]
 pub fn mb_decision_map(
-    #[wasm_bindgen(
-        unchecked_param_type = "{ estimator: string; resolution?: number; c?: number; p?: number; alpha?: number }"
-    )]
-    options: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "MbDecisionMapOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let opts = Options::new(&options, "options", true)?;
-    let estimator = string(&opts.require("estimator")?, "estimator")?;
-    let res = opts.integer_or("resolution", 100, 1, 2000)?;
-    let c = opts.number_or("c", 1.0)?;
-    let p = opts.number_or("p", 2.0)?;
-    let metric = match estimator.as_str() {
-        "gospa" => Some(SetMetric::Gospa {
-            alpha: opts.number_or("alpha", 2.0)?,
-        }),
-        "ospa" => Some(SetMetric::Ospa),
-        "uospa" => Some(SetMetric::Uospa),
-        "mam" | "jom" | "map-cardinality" => None,
-        other => {
-            return Err(range_error(format!(
-                "estimator must be one of 'gospa', 'ospa', 'uospa', 'mam', 'jom', \
-                 'map-cardinality', got {other:?}"
-            )));
-        }
+    let o: MbDecisionMapOptions = read(options, "options")?;
+    let res = check_range("options.resolution", o.resolution, 1, 2000)?;
+    let metric = match o.estimator {
+        DecisionEstimator::Gospa => Some(SetMetric::Gospa { alpha: o.alpha }),
+        DecisionEstimator::Ospa => Some(SetMetric::Ospa),
+        DecisionEstimator::Uospa => Some(SetMetric::Uospa),
+        _ => None,
+    };
+    let method = match o.estimator {
+        DecisionEstimator::Jom => AlternativeMethod::Jom,
+        DecisionEstimator::MapCardinality => AlternativeMethod::MapCardinality,
+        _ => AlternativeMethod::Mam,
     };
     let mut codes = vec![0u8; res * res];
     for row in 0..res {
@@ -173,58 +322,56 @@ pub fn mb_decision_map(
                 (row as f64 + 0.5) / res as f64,
             ];
             let u = match metric {
-                Some(m) => optimal_estimate(&r, m, c, p).or_throw()?.report,
-                None => alternative(&r, &estimator, &[0.0, 0.0], 0.0)?,
+                Some(m) => {
+                    optimal_estimate(&r, m, o.c, o.p)
+                        .or_throw_in("options")?
+                        .report
+                }
+                None => alternative(&r, method, &[0.0, 0.0], 0.0).or_throw_in("options")?,
             };
             codes[row * res + col] = u8::from(u[0]) + 2 * u8::from(u[1]);
         }
     }
-    let decisions = Uint8Array::from(codes.as_slice());
-    Ok(object(&[
-        ("resolution", (res as f64).into()),
-        ("decisions", decisions.into()),
-    ]))
+    write(&MbDecisionMapResult {
+        resolution: res,
+        decisions: Uint8Array::from(codes.as_slice()),
+    })
 }
 
 /// Fig. 3: the optimal number of reported targets for n = 1 … maxComponents identical
 /// far-apart components of existence `existence`, under GOSPA, OSPA, UOSPA and the
 /// MAP-cardinality rule. Returns `{ n, gospa, ospa, uospa, mapCardinality }` (arrays).
-#[wasm_bindgen(js_name = mbIdenticalComponentCounts, unchecked_return_type = "{ n: number[]; gospa: number[]; ospa: number[]; uospa: number[]; mapCardinality: number[] }")]
+#[wasm_bindgen(js_name = mbIdenticalComponentCounts, unchecked_return_type = "MbIdenticalComponentCountsResult")]
 pub fn mb_identical_component_counts(
-    #[wasm_bindgen(unchecked_param_type = "{ existence: number; maxComponents: number }")]
-    options: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "MbIdenticalComponentCountsOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let opts = Options::new(&options, "options", true)?;
-    let r = opts.number("existence")?;
-    opts.require("maxComponents")?;
-    let max_n = opts.integer_or("maxComponents", 1, 1, 1000)?;
-    let count = |u: &[bool]| u.iter().filter(|&&b| b).count() as f64;
-    let (mut ns, mut g, mut o, mut u, mut m) = (vec![], vec![], vec![], vec![], vec![]);
-    for n in 1..=max_n {
-        let rs = vec![r; n];
-        ns.push(n as f64);
-        g.push(count(
-            &optimal_estimate(&rs, SetMetric::GOSPA, 1.0, 2.0)
-                .or_throw()?
-                .report,
-        ));
-        o.push(count(
-            &optimal_estimate(&rs, SetMetric::Ospa, 1.0, 2.0)
-                .or_throw()?
-                .report,
-        ));
-        u.push(count(
-            &optimal_estimate(&rs, SetMetric::Uospa, 1.0, 2.0)
-                .or_throw()?
-                .report,
-        ));
-        m.push(count(&map_cardinality_estimate(&rs).or_throw()?));
+    let o: MbIdenticalComponentCountsOptions = read(options, "options")?;
+    let max_n = check_range("options.maxComponents", o.max_components, 1, 1000)?;
+    if !(0.0..=1.0).contains(&o.existence) {
+        return Err(fisst::Error::probability("options.existence", o.existence)).or_throw();
     }
-    Ok(object(&[
-        ("n", number_array(&ns)),
-        ("gospa", number_array(&g)),
-        ("ospa", number_array(&o)),
-        ("uospa", number_array(&u)),
-        ("mapCardinality", number_array(&m)),
-    ]))
+    let count = |u: &[bool]| u.iter().filter(|&&b| b).count();
+    let mut out = MbIdenticalComponentCountsResult {
+        n: Vec::with_capacity(max_n),
+        gospa: Vec::with_capacity(max_n),
+        ospa: Vec::with_capacity(max_n),
+        uospa: Vec::with_capacity(max_n),
+        map_cardinality: Vec::with_capacity(max_n),
+    };
+    for n in 1..=max_n {
+        let rs = vec![o.existence; n];
+        let best = |m| {
+            optimal_estimate(&rs, m, 1.0, 2.0)
+                .map(|e| count(&e.report))
+                .or_throw_in("options")
+        };
+        out.n.push(n);
+        out.gospa.push(best(SetMetric::GOSPA)?);
+        out.ospa.push(best(SetMetric::Ospa)?);
+        out.uospa.push(best(SetMetric::Uospa)?);
+        out.map_cardinality.push(count(
+            &map_cardinality_estimate(&rs).or_throw_in("options")?,
+        ));
+    }
+    write(&out)
 }

@@ -1,20 +1,18 @@
 //! Recursive Gaussian splitting along region boundaries and mixture reduction (Section IV of
 //! `001_0f0df91eee9b30d5.txt`, "Split happens!").
 
+use serde::{Deserialize, Serialize};
+use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::convert::{
-    JsResult, Options, OrThrow, array, boolean_array, number_array, object, range_error, string,
-};
-use crate::fov::{mixture as mixture_from_js, region as region_from_js};
-use fisst::gaussian::GaussianMixture;
+use crate::boundary::{JsResult, OrThrow, check_range, range_error, read, write};
+use crate::types::{self, BoxRegion, MixtureComponent, Region, WeightedGaussian, mixture_out};
 use fisst::mixture::{merge_close, prune, runnalls};
-use fisst::regions::Region;
+use fisst::regions::Region as CoreRegion;
 use fisst::splitting::{
-    NegativeInformationScenario, NegativeInformationStep, Spacing, SplitLibrary, SplitOptions,
-    SplitStop, partition, split_for_regions,
+    NegativeInformationScenario as Fig5Scenario, NegativeInformationStep as Fig5Step, Spacing,
+    SplitLibrary, SplitOptions, SplitStop, partition, split_for_regions,
 };
-use js_sys::Array;
 
 /// At most this many regions in one `splitForRegions` call.
 const MAX_REGIONS: usize = 32;
@@ -30,162 +28,232 @@ const EXACT_MASS_BUDGET_US: f64 = 5e5;
 /// At most this many components enter Runnalls' reduction (O(L²) bound evaluations).
 const MAX_RUNNALLS_INPUT: usize = 5_000;
 
-#[wasm_bindgen(typescript_custom_section)]
-const TS_SPLITTING: &'static str = r#"
-export interface SplitLibraryOptions {
-  /** R, the number of components: an integer in [2, 16]. */
-  components: number;
-  /** λ of eq. (13), in [1e-6, 10]. */
-  lambda: number;
-  /** 'equal' (default): symmetric, equally spaced means (Table I's family); 'free': symmetric free means (lower J). */
-  spacing?: 'equal' | 'free';
+/// The family of a split library.
+#[derive(Clone, Copy, Debug, Default, Deserialize, Tsify)]
+#[serde(rename_all = "lowercase")]
+pub enum SpacingName {
+    /// Symmetric, equally spaced means (Table I's family).
+    #[default]
+    Equal,
+    /// Symmetric free means (lower J).
+    Free,
 }
 
-/**
- * An R-component split of N(0, 1): weights (sum 1), ascending symmetric means, the common σ̃,
- * `objective` = J of eq. (13), and `variance` = σ̃² + Σ w m² (Table I: 0.9503).
- * `components: 4, lambda: 0.001, spacing: 'equal'` returns Table I verbatim.
- */
-export interface SplitLibraryResult {
-  weights: number[];
-  means: number[];
-  sigma: number;
-  objective: number;
-  variance: number;
-}
-
-export interface SplitForRegionsOptions {
-  /** The mixture to split: weights ≥ 0, means of length n, covariances n × n. */
-  mixture: FovWeightedGaussian[];
-  /** One or more regions (at most 32) of dimension `positionDims`. */
-  regions: FovRegion[];
-  /** n_s: the first `positionDims` state components are positions (default 2). */
-  positionDims?: number;
-  /** w_min: lighter components are not split (default 0.01; absolute weight). */
-  minWeight?: number;
-  /** R (default 3), an integer in [2, 16]. */
-  components?: number;
-  /** λ of the split library (default 0.001). */
-  lambda?: number;
-  /** Split library family (default 'equal'). */
-  spacing?: 'equal' | 'free';
-  /** ζ, the collocation grid's Mahalanobis radius (default 2, as the authors' pyest).
-   *  Components whose boundary lies beyond ζ are not split, which floors the partition error
-   *  at a few 1e-3 to 1e-2 of mass; 3 lowers that part to about 1e-4, with more components. */
-  gridBound?: number;
-  /** N_g, grid points per axis (default 15; N_g^positionDims ≤ 20000). */
-  gridPoints?: number;
-  /** Recursion depth cap (default 16, at most 64); 0 splits nothing: the result is the mean-based partition of `mixture` itself. */
-  maxDepth?: number;
-  /** Component count cap (default 10000, at most 50000). */
-  maxComponents?: number;
-}
-
-/**
- * `mixture`: the split mixture (same shape as the input; each input component replaced in
- * place by its descendants). `inside` / `outside`: the mean-based partition (11)–(12) of it
- * for the first region (sums of weights); `insideMask[i]`: whether component i of `mixture` is
- * in p_S, i.e. its mean (position part) lies in the first region (`inside` is the sum of the
- * weights it selects). `exactInside`: ⟨1_S, p⟩ of the first region under
- * the input mixture (null when too costly: more than ~0.5 s of masses, or positionDims > 4).
- * `depth`: recursion levels used; `splits`: split operations; `stop`: null, or the cap that
- * stopped the recursion.
- */
-export interface SplitForRegionsResult {
-  mixture: FovWeightedGaussian[];
-  inside: number;
-  outside: number;
-  insideMask: boolean[];
-  exactInside: number | null;
-  depth: number;
-  splits: number;
-  stop: null | 'maxDepth' | 'maxComponents';
-}
-
-export interface ReduceMixtureOptions {
-  mixture: FovWeightedGaussian[];
-  /** Drop components lighter than this, renormalising the rest (default 0: keep all). */
-  pruneBelow?: number;
-  /** Vo & Ma merge within this Mahalanobis distance (U = distance²); omitted: no merging. */
-  mergeDistance?: number;
-  /** Runnalls' reduction to at most this many components; omitted: no cap. */
-  maxComponents?: number;
-}
-
-/** One predict → split → non-detection update cycle of the Fig. 5 scenario. */
-export interface NegativeInformationStep {
-  step: number;
-  /** p_{k|k−1}. */
-  predicted: FovWeightedGaussian[];
-  /** Algorithm 1 applied to it (R = 3, λ = 0.001, w_min = 0.01). */
-  split: FovWeightedGaussian[];
-  /** p_{k|k}: the mean-based partition's outside part, normalised. */
-  posterior: FovWeightedGaussian[];
-  /** 1 − Δ_k, the predicted probability of the non-detection. */
-  nonDetectionProb: number;
-  /** ⟨1_S, p_{k|k−1}⟩ and ⟨1_S, p_{k|k}⟩, exact. */
-  predictedInside: number;
-  posteriorInside: number;
-  depth: number;
-  splits: number;
-}
-
-/** The Fig. 5 scenario: FoV, initial mixture (state x, y, ẋ, ẏ) and the three steps. */
-export interface NegativeInformationScenario {
-  fov: FovRegion;
-  initial: FovWeightedGaussian[];
-  steps: NegativeInformationStep[];
-}
-"#;
-
-/// A mixture as `[{ weight, mean, cov }]` with `cov` nested row arrays.
-fn mixture_to_js(m: &GaussianMixture) -> JsValue {
-    m.components()
-        .iter()
-        .map(|(w, g)| -> JsValue {
-            let n = g.dim();
-            let cov: Array = (0..n)
-                .map(|i| -> JsValue {
-                    let row: Vec<f64> = (0..n).map(|j| g.cov()[(i, j)]).collect();
-                    number_array(&row)
-                })
-                .collect();
-            object(&[
-                ("weight", (*w).into()),
-                ("mean", number_array(g.mean().as_slice())),
-                ("cov", cov.into()),
-            ])
-        })
-        .collect::<Array>()
-        .into()
-}
-
-fn spacing(opts: &Options) -> JsResult<Spacing> {
-    match opts.get("spacing")? {
-        None => Ok(Spacing::Equal),
-        Some(v) => match string(&v, "spacing")?.as_str() {
-            "equal" => Ok(Spacing::Equal),
-            "free" => Ok(Spacing::Free),
-            other => Err(range_error(format!(
-                "spacing must be 'equal' or 'free', got {other:?}"
-            ))),
-        },
+impl From<SpacingName> for Spacing {
+    fn from(s: SpacingName) -> Self {
+        match s {
+            SpacingName::Equal => Spacing::Equal,
+            SpacingName::Free => Spacing::Free,
+        }
     }
 }
 
-/// The optimal R-component split of N(0, 1) of eqs. (13)–(14): options
-/// `{ components, lambda, spacing = 'equal' }`; returns `{ weights, means, sigma, objective,
-/// variance }`. `components: 4, lambda: 0.001` with equal spacing is Table I verbatim.
-#[wasm_bindgen(js_name = splitLibrary, unchecked_return_type = "SplitLibraryResult")]
-pub fn split_library_js(
-    #[wasm_bindgen(unchecked_param_type = "SplitLibraryOptions")] options: JsValue,
-) -> JsResult<JsValue> {
-    let opts = Options::new(&options, "options", true)?;
-    opts.require("components")?;
-    let r = opts.integer_or("components", 3, 2, 16)?;
-    let lambda = opts.number("lambda")?;
-    let lib = library(r, lambda, spacing(&opts)?)?;
-    Ok(library_to_js(&lib))
+/// Options of `splitLibrary`.
+#[derive(Deserialize, Tsify)]
+pub struct SplitLibraryOptions {
+    /// R, the number of components: an integer in [2, 16].
+    pub components: usize,
+    /// λ of eq. (13), in [1e-6, 10].
+    pub lambda: f64,
+    /// `'equal'` (default): symmetric, equally spaced means (Table I's family); `'free'`:
+    /// symmetric free means (lower J).
+    #[serde(default)]
+    pub spacing: SpacingName,
+}
+
+/// An R-component split of N(0, 1). `components: 4, lambda: 0.001, spacing: 'equal'`
+/// returns Table I verbatim.
+#[derive(Serialize, Tsify)]
+pub struct SplitLibraryResult {
+    /// The weights (sum 1).
+    pub weights: Vec<f64>,
+    /// Ascending symmetric means.
+    pub means: Vec<f64>,
+    /// The common σ̃.
+    pub sigma: f64,
+    /// J of eq. (13).
+    pub objective: f64,
+    /// The mixture variance σ̃² + Σ w m² (Table I: 0.9503).
+    pub variance: f64,
+}
+
+fn two_dims() -> usize {
+    2
+}
+
+fn min_weight() -> f64 {
+    0.01
+}
+
+fn three() -> usize {
+    3
+}
+
+fn lambda() -> f64 {
+    0.001
+}
+
+fn grid_bound() -> f64 {
+    2.0
+}
+
+fn grid_points() -> usize {
+    15
+}
+
+fn max_depth() -> usize {
+    16
+}
+
+fn max_components() -> usize {
+    10_000
+}
+
+/// Options of `splitForRegions`.
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct SplitForRegionsOptions {
+    /// The mixture to split: weights ≥ 0, means of length n, covariances n × n.
+    pub mixture: Vec<WeightedGaussian>,
+    /// One or more regions (at most 32) of dimension `positionDims`.
+    pub regions: Vec<Region>,
+    /// n_s: the first `positionDims` state components are positions (default 2; in [1, 8]).
+    #[serde(default = "two_dims")]
+    pub position_dims: usize,
+    /// w_min: lighter components are not split (default 0.01; absolute weight).
+    #[serde(default = "min_weight")]
+    pub min_weight: f64,
+    /// R (default 3), an integer in [2, 16].
+    #[serde(default = "three")]
+    pub components: usize,
+    /// λ of the split library (default 0.001).
+    #[serde(default = "lambda")]
+    pub lambda: f64,
+    /// Split library family (default `'equal'`).
+    #[serde(default)]
+    pub spacing: SpacingName,
+    /// ζ, the collocation grid's Mahalanobis radius (default 2, as the authors' pyest).
+    /// Components whose boundary lies beyond ζ are not split, which floors the partition
+    /// error at a few 1e-3 to 1e-2 of mass; 3 lowers that part to about 1e-4, with more
+    /// components.
+    #[serde(default = "grid_bound")]
+    pub grid_bound: f64,
+    /// N_g, grid points per axis (default 15; N_g^positionDims ≤ 20000).
+    #[serde(default = "grid_points")]
+    pub grid_points: usize,
+    /// Recursion depth cap (default 16, at most 64); 0 splits nothing: the result is the
+    /// mean-based partition of `mixture` itself.
+    #[serde(default = "max_depth")]
+    pub max_depth: usize,
+    /// Component count cap (default 10000, at most 50000).
+    #[serde(default = "max_components")]
+    pub max_components: usize,
+}
+
+/// The cap that stopped a recursion.
+#[derive(Clone, Copy, Debug, Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub enum StopName {
+    /// `maxDepth` was reached.
+    MaxDepth,
+    /// `maxComponents` was reached.
+    MaxComponents,
+}
+
+/// Result of `splitForRegions`.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct SplitForRegionsResult {
+    /// The split mixture (each input component replaced in place by its descendants).
+    pub mixture: Vec<MixtureComponent>,
+    /// The mean-based partition (11)–(12) for the first region: the inside weight.
+    pub inside: f64,
+    /// The outside weight.
+    pub outside: f64,
+    /// `insideMask[i]`: whether component i of `mixture` is in p_S, i.e. its mean (position
+    /// part) lies in the first region (`inside` is the sum of the weights it selects).
+    pub inside_mask: Vec<bool>,
+    /// ⟨1_S, p⟩ of the first region under the input mixture (null when too costly: more than
+    /// ~0.5 s of masses, or positionDims > 4).
+    #[tsify(type = "number | null")]
+    pub exact_inside: Option<f64>,
+    /// Recursion levels used.
+    pub depth: usize,
+    /// Split operations.
+    pub splits: usize,
+    /// null, or the cap that stopped the recursion.
+    #[tsify(type = "null | 'maxDepth' | 'maxComponents'")]
+    pub stop: Option<StopName>,
+}
+
+/// Options of `reduceMixture`.
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct ReduceMixtureOptions {
+    /// The mixture to reduce.
+    pub mixture: Vec<WeightedGaussian>,
+    /// Drop components lighter than this, renormalising the rest (default 0: keep all).
+    #[serde(default)]
+    pub prune_below: f64,
+    /// Vo & Ma merge within this Mahalanobis distance (U = distance²); omitted: no merging.
+    #[tsify(optional)]
+    pub merge_distance: Option<f64>,
+    /// Runnalls' reduction to at most this many components, an integer in [1, 1e6];
+    /// omitted: no cap.
+    #[tsify(optional)]
+    pub max_components: Option<usize>,
+}
+
+/// Options of `negativeInformationScenario`.
+#[derive(Deserialize, Tsify)]
+pub struct NegativeInformationOptions {
+    /// One step, 1–3; omitted: the whole scenario.
+    #[tsify(optional)]
+    pub step: Option<usize>,
+}
+
+/// One predict → split → non-detection update cycle of the Fig. 5 scenario.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct NegativeInformationStep {
+    /// 1, 2 or 3.
+    pub step: usize,
+    /// p_{k|k−1}.
+    pub predicted: Vec<MixtureComponent>,
+    /// Algorithm 1 applied to it (R = 3, λ = 0.001, w_min = 0.01).
+    pub split: Vec<MixtureComponent>,
+    /// p_{k|k}: the mean-based partition's outside part, normalised.
+    pub posterior: Vec<MixtureComponent>,
+    /// 1 − Δ_k, the predicted probability of the non-detection.
+    pub non_detection_prob: f64,
+    /// ⟨1_S, p_{k|k−1}⟩, exact.
+    pub predicted_inside: f64,
+    /// ⟨1_S, p_{k|k}⟩, exact.
+    pub posterior_inside: f64,
+    /// Recursion levels used by the split.
+    pub depth: usize,
+    /// Split operations.
+    pub splits: usize,
+}
+
+/// The Fig. 5 scenario: FoV, initial mixture (state x, y, ẋ, ẏ) and the three steps.
+#[derive(Serialize, Tsify)]
+pub struct NegativeInformationScenario {
+    /// The field of view.
+    pub fov: FovBox,
+    /// The initial mixture.
+    pub initial: Vec<MixtureComponent>,
+    /// The three steps.
+    pub steps: Vec<NegativeInformationStep>,
+}
+
+/// A box region as results give it: `{ box: { min, max } }`.
+#[derive(Serialize, Tsify)]
+#[tsify(type = "Region")]
+pub struct FovBox {
+    /// The box.
+    #[serde(rename = "box")]
+    pub region: BoxRegion,
 }
 
 /// A split library's key: (R, λ as bits, spacing).
@@ -198,8 +266,9 @@ thread_local! {
         const { std::cell::RefCell::new(None) };
 }
 
-/// [`SplitLibrary::for_components`], memoised on the last (R, λ, spacing).
-fn library(r: usize, lambda: f64, spacing: Spacing) -> JsResult<SplitLibrary> {
+/// [`SplitLibrary::for_components`], memoised on the last (R, λ, spacing); errors name the
+/// fields under `prefix`.
+fn library(r: usize, lambda: f64, spacing: Spacing, prefix: &str) -> JsResult<SplitLibrary> {
     let key = (r, lambda.to_bits(), spacing);
     if let Some(lib) = LAST_LIBRARY.with(|c| {
         c.borrow()
@@ -209,42 +278,28 @@ fn library(r: usize, lambda: f64, spacing: Spacing) -> JsResult<SplitLibrary> {
     }) {
         return Ok(lib);
     }
-    let lib = SplitLibrary::for_components(r, lambda, spacing).or_throw()?;
+    let lib = SplitLibrary::for_components(r, lambda, spacing).or_throw_in(prefix)?;
     LAST_LIBRARY.with(|c| *c.borrow_mut() = Some((key, lib.clone())));
     Ok(lib)
 }
 
-fn library_to_js(lib: &SplitLibrary) -> JsValue {
-    object(&[
-        ("weights", number_array(lib.weights())),
-        ("means", number_array(lib.means())),
-        ("sigma", lib.sigma().into()),
-        ("objective", lib.objective().into()),
-        ("variance", lib.variance().into()),
-    ])
-}
-
-/// `regions`: a non-empty array of fov-shaped regions; with each region's mass-cost estimate.
-fn regions_from_js(v: &JsValue) -> JsResult<Vec<(Region, f64)>> {
-    let arr = array(v, "regions", "an array of regions")?;
-    let len = arr.length() as usize;
-    if len == 0 || len > MAX_REGIONS {
-        return Err(range_error(format!(
-            "regions must have 1 to {MAX_REGIONS} entries, got {len}"
-        )));
-    }
-    arr.iter()
-        .enumerate()
-        .map(|(i, r)| region_from_js(&r, &format!("regions[{i}]")))
-        .collect()
-}
-
-fn stop_to_js(stop: Option<SplitStop>) -> JsValue {
-    match stop {
-        None => JsValue::NULL,
-        Some(SplitStop::MaxDepth) => "maxDepth".into(),
-        Some(SplitStop::MaxComponents) => "maxComponents".into(),
-    }
+/// The optimal R-component split of N(0, 1) of eqs. (13)–(14): options
+/// `{ components, lambda, spacing = 'equal' }`; returns `{ weights, means, sigma, objective,
+/// variance }`. `components: 4, lambda: 0.001` with equal spacing is Table I verbatim.
+#[wasm_bindgen(js_name = splitLibrary, unchecked_return_type = "SplitLibraryResult")]
+pub fn split_library_js(
+    #[wasm_bindgen(unchecked_param_type = "SplitLibraryOptions")] options: JsValue,
+) -> JsResult<JsValue> {
+    let o: SplitLibraryOptions = read(options, "options")?;
+    let r = check_range("options.components", o.components, 2, 16)?;
+    let lib = library(r, o.lambda, o.spacing.into(), "options")?;
+    write(&SplitLibraryResult {
+        weights: lib.weights().to_vec(),
+        means: lib.means().to_vec(),
+        sigma: lib.sigma(),
+        objective: lib.objective(),
+        variance: lib.variance(),
+    })
 }
 
 /// Algorithm 2 (Algorithm 1 for one region) of the "Split happens!" paper: recursively
@@ -258,24 +313,36 @@ fn stop_to_js(stop: Option<SplitStop>) -> JsValue {
 pub fn split_for_regions_js(
     #[wasm_bindgen(unchecked_param_type = "SplitForRegionsOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let opts = Options::new(&options, "options", true)?;
-    let mixture = mixture_from_js(&opts.require("mixture")?, "mixture")?;
-    let regions = regions_from_js(&opts.require("regions")?)?;
-    let position_dims = opts.integer_or("positionDims", 2, 1, 8)?;
-    let min_weight = opts.number_or("minWeight", 0.01)?;
-    let r = opts.integer_or("components", 3, 2, 16)?;
-    let lambda = opts.number_or("lambda", 0.001)?;
-    let spacing = spacing(&opts)?;
-    let grid_bound = opts.number_or("gridBound", 2.0)?;
-    let grid_points = opts.integer_or("gridPoints", 15, 2, MAX_GRID)?;
-    let max_depth = opts.integer_or("maxDepth", 16, 0, 64)?;
-    let max_components = opts.integer_or("maxComponents", 10_000, 1, MAX_SPLIT_COMPONENTS)?;
+    let o: SplitForRegionsOptions = read(options, "options")?;
+    let mixture = types::mixture(o.mixture, "options.mixture")?;
+    if o.regions.is_empty() || o.regions.len() > MAX_REGIONS {
+        return Err(range_error(format!(
+            "options.regions must have 1 to {MAX_REGIONS} entries, got {}",
+            o.regions.len()
+        )));
+    }
+    let regions = o
+        .regions
+        .into_iter()
+        .enumerate()
+        .map(|(i, r)| r.into_core(&format!("options.regions[{i}]")))
+        .collect::<JsResult<Vec<(CoreRegion, f64)>>>()?;
+    let position_dims = check_range("options.positionDims", o.position_dims, 1, 8)?;
+    let r = check_range("options.components", o.components, 2, 16)?;
+    let grid_points = check_range("options.gridPoints", o.grid_points, 2, MAX_GRID)?;
+    let max_depth = check_range("options.maxDepth", o.max_depth, 0, 64)?;
+    let max_components = check_range(
+        "options.maxComponents",
+        o.max_components,
+        1,
+        MAX_SPLIT_COMPONENTS,
+    )?;
     let grid_size = (0..position_dims)
         .try_fold(1usize, |acc, _| acc.checked_mul(grid_points))
         .filter(|&g| g <= MAX_GRID)
         .ok_or_else(|| {
             range_error(format!(
-                "gridPoints^positionDims must be at most {MAX_GRID}, got \
+                "options.gridPoints^positionDims must be at most {MAX_GRID}, got \
                  {grid_points}^{position_dims}"
             ))
         })?;
@@ -285,26 +352,24 @@ pub fn split_for_regions_js(
     let work = max_components as f64 * grid_size as f64 * region_work;
     if work > SPLIT_WORK_BUDGET {
         return Err(range_error(format!(
-            "maxComponents × gridPoints^positionDims × regions is {work:.2e} inclusion tests in \
-             the worst case, at most {SPLIT_WORK_BUDGET:e} are allowed; lower maxComponents, \
-             gridPoints or the number of regions"
+            "options.maxComponents × gridPoints^positionDims × regions is {work:.2e} inclusion \
+             tests in the worst case, at most {SPLIT_WORK_BUDGET:e} are allowed; lower \
+             maxComponents, gridPoints or the number of regions"
         )));
     }
-    let library = library(r, lambda, spacing)?;
+    let library = library(r, o.lambda, o.spacing.into(), "options")?;
     let split_opts = SplitOptions {
         position_dims,
-        min_weight,
-        grid_bound,
+        min_weight: o.min_weight,
+        grid_bound: o.grid_bound,
         grid_points,
         max_depth,
         max_components,
     };
-    let only: Vec<Region> = regions.iter().map(|(reg, _)| reg.clone()).collect();
-    let out = split_for_regions(&mixture, &only, &library, &split_opts).or_throw()?;
-    let Some((first, cost)) = regions.first() else {
-        return Err(range_error("regions must not be empty"));
-    };
-    let part = partition(&out.mixture, first).or_throw()?;
+    let only: Vec<CoreRegion> = regions.iter().map(|(reg, _)| reg.clone()).collect();
+    let out = split_for_regions(&mixture, &only, &library, &split_opts).or_throw_in("options")?;
+    let (first, cost) = &regions[0];
+    let part = partition(&out.mixture, first).or_throw_in("options")?;
     // The same inclusion test as the partition (11)–(12), per component.
     let inside_mask: Vec<bool> = out
         .mixture
@@ -317,75 +382,93 @@ pub fn split_for_regions_js(
         let mut total = 0.0;
         for (i, (w, g)) in mixture.components().iter().enumerate() {
             total += w * first
-                .gaussian_mass(g, &format!("mixture[{i}]"))
+                .gaussian_mass(g, &format!("options.mixture[{i}]"))
                 .or_throw()?
                 .value;
         }
-        JsValue::from_f64(total)
+        Some(total)
     } else {
-        JsValue::NULL
+        None
     };
-    Ok(object(&[
-        ("mixture", mixture_to_js(&out.mixture)),
-        ("inside", part.inside_weight.into()),
-        ("outside", part.outside_weight.into()),
-        ("insideMask", boolean_array(&inside_mask)),
-        ("exactInside", exact_inside),
-        ("depth", (out.depth as f64).into()),
-        ("splits", (out.splits as f64).into()),
-        ("stop", stop_to_js(out.stop)),
-    ]))
+    write(&SplitForRegionsResult {
+        mixture: mixture_out(&out.mixture),
+        inside: part.inside_weight,
+        outside: part.outside_weight,
+        inside_mask,
+        exact_inside,
+        depth: out.depth,
+        splits: out.splits,
+        stop: out.stop.map(|s| match s {
+            SplitStop::MaxDepth => StopName::MaxDepth,
+            SplitStop::MaxComponents => StopName::MaxComponents,
+        }),
+    })
 }
 
 /// Mixture reduction: prune (renormalising), Vo & Ma's Mahalanobis merge, then Runnalls'
 /// KL-based reduction, each pass only when asked. Options `{ mixture, pruneBelow = 0,
 /// mergeDistance, maxComponents }`; returns the reduced mixture (same shape). The total
 /// weight is preserved; merges preserve the mixture's mean and covariance.
-#[wasm_bindgen(js_name = reduceMixture, unchecked_return_type = "FovWeightedGaussian[]")]
+#[wasm_bindgen(js_name = reduceMixture, unchecked_return_type = "MixtureComponent[]")]
 pub fn reduce_mixture_js(
     #[wasm_bindgen(unchecked_param_type = "ReduceMixtureOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let opts = Options::new(&options, "options", true)?;
-    let mixture = mixture_from_js(&opts.require("mixture")?, "mixture")?;
-    let prune_below = opts.number_or("pruneBelow", 0.0)?;
-    let merge_distance = match opts.get("mergeDistance")? {
-        Some(_) => Some(opts.number("mergeDistance")?),
-        None => None,
-    };
-    let max_components = match opts.get("maxComponents")? {
-        Some(_) => Some(opts.integer_or("maxComponents", 1, 1, 1_000_000)?),
-        None => None,
-    };
-    let mut out = prune(&mixture, prune_below).or_throw()?;
-    if let Some(d) = merge_distance {
-        out = merge_close(&out, d).or_throw()?;
+    let o: ReduceMixtureOptions = read(options, "options")?;
+    let mixture = types::mixture(o.mixture, "options.mixture")?;
+    let max_components = o
+        .max_components
+        .map(|m| check_range("options.maxComponents", m, 1, 1_000_000))
+        .transpose()?;
+    let mut out = prune(&mixture, o.prune_below).or_throw_in("options")?;
+    if let Some(d) = o.merge_distance {
+        out = merge_close(&out, d).or_throw_in("options")?;
     }
     if let Some(max) = max_components {
         if out.len() > max && out.len() > MAX_RUNNALLS_INPUT {
             return Err(range_error(format!(
-                "maxComponents: Runnalls' reduction takes at most {MAX_RUNNALLS_INPUT} \
+                "options.maxComponents: Runnalls' reduction takes at most {MAX_RUNNALLS_INPUT} \
                  components, {} remain after pruning and merging; raise pruneBelow or \
                  mergeDistance",
                 out.len()
             )));
         }
-        out = runnalls(&out, max).or_throw()?;
+        out = runnalls(&out, max).or_throw_in("options")?;
     }
-    Ok(mixture_to_js(&out))
+    write(&mixture_out(&out))
 }
 
-fn step_to_js(s: &NegativeInformationStep) -> JsValue {
-    object(&[
-        ("step", (s.step as f64).into()),
-        ("predicted", mixture_to_js(&s.predicted)),
-        ("split", mixture_to_js(&s.split.mixture)),
-        ("posterior", mixture_to_js(&s.posterior)),
-        ("nonDetectionProb", s.non_detection_prob.into()),
-        ("predictedInside", s.predicted_inside.into()),
-        ("posteriorInside", s.posterior_inside.into()),
-        ("depth", (s.split.depth as f64).into()),
-        ("splits", (s.split.splits as f64).into()),
-    ])
+thread_local! {
+    /// The Fig. 5 scenario and its steps: deterministic, so computed once (about 8 ms in
+    /// wasm) and shared by every later call.
+    static FIG5: std::cell::OnceCell<(Fig5Scenario, Vec<Fig5Step>)> =
+        const { std::cell::OnceCell::new() };
+}
+
+/// The Fig. 5 scenario and its three steps (cached).
+fn fig5() -> JsResult<(Fig5Scenario, Vec<Fig5Step>)> {
+    if let Some(v) = FIG5.with(|c| c.get().cloned()) {
+        return Ok(v);
+    }
+    let sc = Fig5Scenario::fig5().or_throw()?;
+    let steps = sc.run().or_throw()?;
+    FIG5.with(|c| {
+        let _ = c.set((sc.clone(), steps.clone()));
+    });
+    Ok((sc, steps))
+}
+
+fn step_out(s: &Fig5Step) -> NegativeInformationStep {
+    NegativeInformationStep {
+        step: s.step,
+        predicted: mixture_out(&s.predicted),
+        split: mixture_out(&s.split.mixture),
+        posterior: mixture_out(&s.posterior),
+        non_detection_prob: s.non_detection_prob,
+        predicted_inside: s.predicted_inside,
+        posterior_inside: s.posterior_inside,
+        depth: s.split.depth,
+        splits: s.split.splits,
+    }
 }
 
 /// The negative-information example of Fig. 5 (Section IV-G): a constant-velocity object
@@ -398,40 +481,32 @@ fn step_to_js(s: &NegativeInformationStep) -> JsValue {
     unchecked_return_type = "NegativeInformationScenario | NegativeInformationStep"
 )]
 pub fn negative_information_scenario_js(
-    #[wasm_bindgen(unchecked_optional_param_type = "{ step?: number }")] options: Option<JsValue>,
+    #[wasm_bindgen(unchecked_optional_param_type = "NegativeInformationOptions")] options: Option<
+        JsValue,
+    >,
 ) -> JsResult<JsValue> {
-    let opts = Options::new(&options.unwrap_or(JsValue::UNDEFINED), "options", false)?;
-    let step = match opts.get("step")? {
-        Some(_) => Some(opts.integer_or("step", 1, 1, 3)?),
-        None => None,
-    };
-    let sc = NegativeInformationScenario::fig5().or_throw()?;
-    let steps = sc.run().or_throw()?;
+    let o: Option<NegativeInformationOptions> =
+        read(options.unwrap_or(JsValue::UNDEFINED), "options")?;
+    let step = o
+        .and_then(|o| o.step)
+        .map(|k| check_range("options.step", k, 1, 3))
+        .transpose()?;
+    let (sc, steps) = fig5()?;
     if let Some(k) = step {
-        return steps
+        let s = steps
             .get(k - 1)
-            .map(step_to_js)
-            .ok_or_else(|| range_error(format!("step must be in [1, {}]", steps.len())));
+            .ok_or_else(|| range_error(format!("options.step must be in [1, {}]", steps.len())))?;
+        return write(&step_out(s));
     }
-    let fov = object(&[(
-        "box",
-        object(&[
-            (
-                "min",
-                number_array(&NegativeInformationScenario::FIG5_FOV[0]),
-            ),
-            (
-                "max",
-                number_array(&NegativeInformationScenario::FIG5_FOV[1]),
-            ),
-        ]),
-    )]);
-    Ok(object(&[
-        ("fov", fov),
-        ("initial", mixture_to_js(&sc.initial)),
-        (
-            "steps",
-            steps.iter().map(step_to_js).collect::<Array>().into(),
-        ),
-    ]))
+    let [min, max] = Fig5Scenario::FIG5_FOV;
+    write(&NegativeInformationScenario {
+        fov: FovBox {
+            region: BoxRegion {
+                min: min.to_vec(),
+                max: max.to_vec(),
+            },
+        },
+        initial: mixture_out(&sc.initial),
+        steps: steps.iter().map(step_out).collect(),
+    })
 }

@@ -1,14 +1,127 @@
-//! Times fisst's Bernoulli functions natively, for `benches/bernoulli_vs_scipy.py`:
-//! `bernoulli_timing <in.json> <out.json>`. The input is `{"cases": [{"mode": "q" | "mmuc",
-//! "density": {"mean", "cov"} | {"mixture": [{"weight", "mean", "cov"}]}, "centers": [[…]],
-//! "radius", "reps"}]}` (covariances nested row-major), the densities as the npm package takes
-//! them. Mode `q` times `prob_outside_ball` at every centre (tolerance 1e-10), `mmuc` times
-//! `mmuc`. Writes `{"results": [{"seconds": median seconds per call, "q": [...],
-//! "center": [...]}]}`.
-use fisst::bernoulli::SpatialDensity;
+//! Native timings of optimal Bernoulli point estimation (paper `000_…`). Not a test: run it
+//! in release mode, from `benches/`.
+//!
+//! - `cargo run --release --bin bernoulli_timing` prints a fixed table (CSV: what, median and
+//!   minimum microseconds, value): q(a) for 2D–6D Gaussians, a* for Gaussian mixtures of 2–10
+//!   components in 1D–3D, particles, and a 200-point threshold curve. The inputs are fixed,
+//!   so the printed values (q, q(a*)) can be compared with another implementation.
+//! - `bernoulli_timing <in.json> <out.json>` times a job for `benches/bernoulli_vs_scipy.py`.
+//!   The input is `{"cases": [{"mode": "q" | "mmuc", "density": {"mean", "cov"} |
+//!   {"mixture": [{"weight", "mean", "cov"}]}, "centers": [[…]], "radius", "reps"}]}`
+//!   (covariances nested row-major), the densities as the npm package takes them. Mode `q`
+//!   times `prob_outside_ball` at every centre (tolerance 1e-10), `mmuc` times `mmuc`.
+//!   Writes `{"results": [{"seconds": median seconds per call, "q": [...], "center": [...]}]}`.
+use fisst::bernoulli::{Costs, ParticleSet, SpatialDensity, isotropic_threshold_curve};
 use fisst::gaussian::{Gaussian, GaussianMixture};
+use fisst_benches::{median_min_us as time_us, median_time};
 use serde_json::{Value, json};
-use std::time::Instant;
+
+fn main() -> Result<(), fisst::Error> {
+    let args: Vec<String> = std::env::args().collect();
+    match args.as_slice() {
+        [_] => table(),
+        [_, input, output] => {
+            job(input, output);
+            Ok(())
+        }
+        _ => panic!("usage: bernoulli_timing [<in.json> <out.json>]"),
+    }
+}
+
+/// The fixed table.
+fn table() -> Result<(), fisst::Error> {
+    println!("what,median_us,min_us,value");
+    for d in 2..=6usize {
+        let eig: Vec<f64> = (0..d).map(|k| 0.3 + 0.25 * k as f64).collect();
+        let mean = vec![0.0; d];
+        let s = SpatialDensity::gaussian_from_slices(&mean, &rotated(&eig))?;
+        let center: Vec<f64> = (0..d).map(|k| 0.2 - 0.1 * k as f64).collect();
+        let mut q = 0.0;
+        let (med, min) = time_us(21, || q = s.prob_outside_ball(&center, 1.2).unwrap());
+        println!("q gaussian d={d},{med:.1},{min:.1},{q:.12}");
+    }
+    let mut rng = Lcg(12345);
+    for d in 1..=3usize {
+        for n in [2usize, 10] {
+            let comps: Vec<(f64, Gaussian)> = (0..n)
+                .map(|j| {
+                    let w = rng.next() + 0.1;
+                    let m: Vec<f64> = (0..d).map(|_| 4.0 * rng.next()).collect();
+                    let eig: Vec<f64> = (0..d).map(|_| 0.05 + 0.4 * rng.next()).collect();
+                    let cov = if d == 1 { eig.clone() } else { rotated(&eig) };
+                    let name = format!("density.mixture[{j}]");
+                    (w, Gaussian::from_slices(&m, &cov, &name).unwrap())
+                })
+                .collect();
+            let s = SpatialDensity::mixture(&GaussianMixture::new(comps, "density.mixture")?)?;
+            let mut q = 0.0;
+            let runs = if d == 3 { 3 } else { 11 };
+            let (med, min) = time_us(runs, || q = s.mmuc(1.0).unwrap().miss_probability);
+            println!("mmuc mixture d={d} n={n},{med:.1},{min:.1},{q:.12}");
+        }
+    }
+    for (d, n) in [(1usize, 100_000usize), (2, 1000), (3, 100)] {
+        let pts: Vec<Vec<f64>> = (0..n)
+            .map(|_| (0..d).map(|_| 3.0 * rng.next()).collect())
+            .collect();
+        let s = SpatialDensity::particles(ParticleSet::new(&pts, None)?);
+        let mut q = 0.0;
+        let (med, min) = time_us(5, || q = s.mmuc(0.5).unwrap().miss_probability);
+        println!("mmuc particles d={d} n={n},{med:.1},{min:.1},{q:.12}");
+    }
+    let sigmas: Vec<f64> = (1..=200).map(|i| 0.05 * i as f64).collect();
+    let mut last = 0.0;
+    let (med, min) = time_us(101, || {
+        last = isotropic_threshold_curve(&sigmas, 1.0, &Costs::mpe(), 1).unwrap()[199];
+    });
+    println!("threshold curve 200 points d=1,{med:.1},{min:.1},{last:.12}");
+    Ok(())
+}
+
+/// A fixed pseudo-random stream in [0, 1) (Park–Miller), so the inputs are reproducible in
+/// any language.
+struct Lcg(u64);
+
+impl Lcg {
+    fn next(&mut self) -> f64 {
+        self.0 = (self.0 * 16807) % 2_147_483_647;
+        self.0 as f64 / 2_147_483_647.0
+    }
+}
+
+/// A covariance with eigenvalues `eig` rotated by a fixed angle in each coordinate plane.
+fn rotated(eig: &[f64]) -> Vec<f64> {
+    let d = eig.len();
+    let mut u = vec![0.0; d * d];
+    for i in 0..d {
+        u[i * d + i] = 1.0;
+    }
+    for i in 0..d {
+        for j in i + 1..d {
+            let a: f64 = 0.3 + 0.7 * (i as f64 + 2.0 * j as f64);
+            let (c, s) = (a.cos(), a.sin());
+            for row in 0..d {
+                let (x, y) = (u[row * d + i], u[row * d + j]);
+                u[row * d + i] = c * x + s * y;
+                u[row * d + j] = -s * x + c * y;
+            }
+        }
+    }
+    let mut p = vec![0.0; d * d];
+    for r in 0..d {
+        for c in 0..d {
+            p[r * d + c] = (0..d).map(|k| u[r * d + k] * eig[k] * u[c * d + k]).sum();
+        }
+    }
+    for r in 0..d {
+        for c in 0..r {
+            let m = 0.5 * (p[r * d + c] + p[c * d + r]);
+            p[r * d + c] = m;
+            p[c * d + r] = m;
+        }
+    }
+    p
+}
 
 fn vector(v: &Value) -> Vec<f64> {
     serde_json::from_value(v.clone()).expect("numbers")
@@ -35,22 +148,8 @@ fn density(v: &Value) -> SpatialDensity {
     }
 }
 
-/// The median over `reps` runs of `f`, and its last result.
-fn median_time<T>(reps: usize, mut f: impl FnMut() -> T) -> (f64, T) {
-    let mut times = Vec::with_capacity(reps);
-    let mut out = None;
-    for _ in 0..reps {
-        let t0 = Instant::now();
-        out = Some(f());
-        times.push(t0.elapsed().as_secs_f64());
-    }
-    times.sort_by(f64::total_cmp);
-    (times[reps / 2], out.expect("reps >= 1"))
-}
-
-fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let (input, output) = (&args[1], &args[2]);
+/// The JSON job of `benches/bernoulli_vs_scipy.py`.
+fn job(input: &str, output: &str) {
     let v: Value =
         serde_json::from_str(&std::fs::read_to_string(input).expect("input file")).expect("json");
     let mut results = Vec::new();

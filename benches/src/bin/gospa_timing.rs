@@ -2,7 +2,7 @@
 //! `gospa_timing <file.json> <repetitions>`; the file is `{"truth": [[x, y], …],
 //! "estimate": […], "c": …, "p": …}`. Prints `median_seconds distance`.
 use fisst::metrics::Gospa;
-use std::time::Instant;
+use fisst_benches::median_time;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -12,13 +12,7 @@ fn main() {
     let pts = |k: &str| -> Vec<Vec<f64>> { serde_json::from_value(v[k].clone()).expect("points") };
     let (truth, estimate) = (pts("truth"), pts("estimate"));
     let g = Gospa::new(v["c"].as_f64().unwrap(), v["p"].as_f64().unwrap(), 2.0).unwrap();
-    let mut times = Vec::with_capacity(reps);
-    let mut distance = 0.0;
-    for _ in 0..reps {
-        let t0 = Instant::now();
-        distance = g.decompose(&truth, &estimate).unwrap().distance;
-        times.push(t0.elapsed().as_secs_f64());
-    }
-    times.sort_by(f64::total_cmp);
-    println!("{} {}", times[reps / 2], distance);
+    let (seconds, distance) =
+        median_time(reps, || g.decompose(&truth, &estimate).unwrap().distance);
+    println!("{seconds} {distance}");
 }

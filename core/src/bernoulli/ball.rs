@@ -67,8 +67,8 @@ use core::cell::Cell;
 
 use nalgebra::SymmetricEigen;
 
+use crate::bernoulli::chi_square::chi_square_sf;
 use crate::bernoulli::inversion;
-use crate::bernoulli::isotropic::chi_square_sf;
 use crate::bernoulli::quadrature::{Estimate, integrate, integrate_vec};
 use crate::error::{Error, Result};
 use crate::gaussian::{Gaussian, normal};
@@ -250,10 +250,7 @@ impl GaussianBall {
     /// The rigorous shortcuts of the module docs: q = 1 or q = 0 within 1e-3 `tol`.
     fn shortcut(&self, center: &[f64], radius: f64, tol: f64) -> Option<BallProbability> {
         let d = self.dim();
-        let dist = fns::sqrt(crate::bernoulli::density::dist2(
-            self.gaussian.mean().as_slice(),
-            center,
-        ));
+        let dist = fns::sqrt(dist2(self.gaussian.mean().as_slice(), center));
         let smax = self.max_sd();
         let limit = 1e-3 * tol;
         if dist > radius {
@@ -351,6 +348,11 @@ impl GaussianBall {
             error: inside.error + (d as f64) * TRUNCATION_MASS,
         }
     }
+}
+
+/// ‖x − y‖², the squared distance of a point to a ball's centre.
+pub(crate) fn dist2(x: &[f64], y: &[f64]) -> f64 {
+    x.iter().zip(y).map(|(a, b)| (a - b) * (a - b)).sum()
 }
 
 fn sq(x: f64) -> f64 {

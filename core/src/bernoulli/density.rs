@@ -7,7 +7,7 @@ use alloc::vec::Vec;
 
 use rand::{Rng, RngExt};
 
-use crate::bernoulli::ball::{BallProbability, DEFAULT_TOLERANCE, GaussianBall};
+use crate::bernoulli::ball::{BallProbability, DEFAULT_TOLERANCE, GaussianBall, dist2};
 use crate::bernoulli::loss::check_radius;
 use crate::error::{Error, Result};
 use crate::gaussian::{Gaussian, GaussianMixture};
@@ -126,11 +126,6 @@ impl ParticleSet {
         }
         s.total().clamp(0.0, 1.0)
     }
-}
-
-/// ‖x − y‖².
-pub(crate) fn dist2(x: &[f64], y: &[f64]) -> f64 {
-    x.iter().zip(y).map(|(a, b)| (a - b) * (a - b)).sum()
 }
 
 fn normalised_weights(

@@ -173,7 +173,7 @@ fn chernoff_quantile(lambda: &[f64], mu: &[f64], eps: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bernoulli::isotropic::chi_square_sf;
+    use crate::bernoulli::chi_square::chi_square_sf;
 
     #[test]
     fn matches_central_chi_square() {

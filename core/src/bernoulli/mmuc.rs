@@ -3,8 +3,8 @@
 
 use alloc::vec::Vec;
 
-use crate::bernoulli::ball::{DEFAULT_TOLERANCE, GaussianBall};
-use crate::bernoulli::density::{ParticleSet, Repr, SpatialDensity, dist2, mixture_outside};
+use crate::bernoulli::ball::{DEFAULT_TOLERANCE, GaussianBall, dist2};
+use crate::bernoulli::density::{ParticleSet, Repr, SpatialDensity, mixture_outside};
 use crate::bernoulli::loss::check_radius;
 use crate::error::Result;
 use crate::math::fns;
@@ -125,12 +125,15 @@ fn mixture_mmuc(components: &[(f64, GaussianBall)], mean: &[f64], radius: f64) -
     {
         return finish(first.clone(), MmucMethod::SharedMean);
     }
-    // The smallest length scale on which q(a) can change.
+    // The smallest length scale on which q(a) can change, floored at 1e-6 r0: a component
+    // far narrower than the ball is a point mass for q (a step at the ball's edge that no
+    // local search resolves), and resolving the centre below 1e-13 r0 only multiplies the
+    // line-search halvings (a 1e-75-wide component once made one estimate take 15 s).
     let min_sd = live
         .iter()
         .map(|(_, g)| g.min_sd())
         .fold(f64::INFINITY, f64::min);
-    let length = radius.min(min_sd).max(f64::MIN_POSITIVE);
+    let length = radius.min(min_sd).max(1e-6 * radius).max(f64::MIN_POSITIVE);
     let typical_sd = live.iter().map(|(w, g)| w * g.max_sd()).sum::<f64>();
     let step = 0.25 * (radius + typical_sd);
     let q_start = |a: &[f64]| mixture_outside(components, a, radius, 1e-8).outside;
@@ -260,6 +263,7 @@ fn bfgs<F: FnMut(&[f64]) -> (f64, Vec<f64>)>(
         }
         let plen = norm(&p);
         let mut alpha = 1.0;
+        let mut halvings = 0;
         let accepted = loop {
             let xn: Vec<f64> = x.iter().zip(&p).map(|(xi, pi)| xi + alpha * pi).collect();
             let (fnew, gnew) = f(&xn);
@@ -267,7 +271,10 @@ fn bfgs<F: FnMut(&[f64]) -> (f64, Vec<f64>)>(
                 break Some((xn, fnew, gnew));
             }
             alpha *= 0.5;
-            if alpha * plen < o.xtol {
+            halvings += 1;
+            // At most 60 halvings (a step 1e-18 of the first): a bound on the work of one
+            // line search whatever the tolerance.
+            if alpha * plen < o.xtol || halvings > 60 {
                 break None;
             }
         };

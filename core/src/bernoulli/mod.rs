@@ -34,7 +34,17 @@
 //! # Ok::<(), fisst::Error>(())
 //! ```
 
+// Layers, each file using only those above it:
+//   quadrature, loss, chi_square      numerics, the costs (7)–(9), P(χ²_d > t)
+//   inversion                         Gil-Pelaez inversion (quadrature)
+//   ball                              q(a) for one Gaussian (inversion, quadrature, chi_square)
+//   density                           s and q(a) for every kind of density (ball, loss)
+//   mmuc                              a*, eq. (12) (density, ball, loss)
+//   threshold                         Γ (11), ρ (13)–(14) (loss)
+//   estimate                          Theorem III.3 (density, mmuc, threshold, loss)
+//   isotropic                         Fig. 3 in closed form (chi_square, threshold, loss)
 pub mod ball;
+mod chi_square;
 mod density;
 mod estimate;
 pub mod inversion;
@@ -42,16 +52,18 @@ mod isotropic;
 mod loss;
 mod mmuc;
 mod quadrature;
+mod threshold;
 
 pub use ball::{BallProbability, DEFAULT_TOLERANCE};
+pub use chi_square::chi_square_sf;
 pub use density::{DensityKind, MIN_TOLERANCE, ParticleSet, SpatialDensity};
-pub use estimate::{
-    BernoulliEstimate, Direction, MultiBernoulliEstimate, Threshold, estimate, expected_loss_empty,
-    expected_loss_singleton, multi_bernoulli_estimate, threshold,
-};
-pub use isotropic::{chi_square_sf, isotropic_miss_probability, isotropic_threshold_curve};
+pub use estimate::{BernoulliEstimate, MultiBernoulliEstimate, estimate, multi_bernoulli_estimate};
+pub use isotropic::{isotropic_miss_probability, isotropic_threshold_curve};
 pub use loss::{ApplicationLoss, Costs};
 pub use mmuc::{Mmuc, MmucMethod};
+pub use threshold::{
+    Direction, Threshold, expected_loss_empty, expected_loss_singleton, threshold,
+};
 
 #[cfg(test)]
 mod tests;

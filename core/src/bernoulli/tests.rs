@@ -1099,3 +1099,39 @@ fn nearly_singular_covariances_reduce_to_lower_dimensions() {
         .unwrap();
     assert!((q6 - q5).abs() < 1e-9, "{q6} vs {q5}");
 }
+
+#[test]
+fn mmuc_of_a_mixture_with_a_point_like_component() {
+    // Found by the boundary fuzzer: a 3D component 1e-75 wide made the search's tolerance
+    // 1e-82 and one estimate took 15 s. With the length scale floored at 1e-6 r0 the search
+    // still finds the point that covers the wide component (weight 0.83): its mean, to well
+    // within the ball.
+    let a = gaussian(
+        &[0.0, 0.0, -0.018],
+        &[1e-4, 0.0, 0.0, 0.0, 1e-4, 0.0, 0.0, 0.0, 1e-4],
+    );
+    let b_g = Gaussian::from_slices(
+        &[0.0, 1.0, 2.0],
+        &[1e-150, 0.0, 0.0, 0.0, 1e-150, 0.0, 0.0, 0.0, 1e-150],
+        "b",
+    )
+    .unwrap();
+    let a_g = a.as_gaussian().unwrap().clone();
+    let m = GaussianMixture::new(vec![(5.7e-200, a_g), (1.14e-200, b_g)], "m").unwrap();
+    let s = SpatialDensity::mixture(&m).unwrap();
+    let r = 0.0648;
+    let best = s.mmuc(r).unwrap();
+    let at_a = s.prob_outside_ball(&[0.0, 0.0, -0.018], r).unwrap();
+    assert!(
+        best.miss_probability <= at_a + 1e-9,
+        "{} vs {at_a}",
+        best.miss_probability
+    );
+    let off: f64 = best
+        .center
+        .iter()
+        .zip([0.0, 0.0, -0.018])
+        .map(|(x, y)| (x - y) * (x - y))
+        .sum();
+    assert!(off.sqrt() < 1e-3, "{:?}", best.center);
+}

@@ -207,7 +207,13 @@ pub fn mean_error(
             }
         }
     };
-    Ok(cp * units)
+    Ok(scaled(cp, units))
+}
+
+/// c^p · `units`, with an error-free estimate giving 0 even when c^p overflows to +∞ (a huge c
+/// or p makes every nonzero error +∞, but never NaN).
+fn scaled(cp: f64, units: f64) -> f64 {
+    if units == 0.0 { 0.0 } else { cp * units }
 }
 
 /// The OSPA error (units of c^p) of an estimate with k ≥ 1 reported components is
@@ -292,7 +298,7 @@ pub fn optimal_estimate(
     }
     Ok(MbEstimate {
         report,
-        mean_error: fns::powp(c, p) * best,
+        mean_error: scaled(fns::powp(c, p), best),
     })
 }
 
@@ -356,6 +362,22 @@ fn best_ospa_count(sorted: &[f64], rho: &[f64]) -> (usize, f64) {
     match best {
         Some((k, a, t)) if a + t < empty => (k, a + t),
         _ => (0, empty),
+    }
+}
+
+#[cfg(test)]
+mod overflow_tests {
+    use super::*;
+
+    #[test]
+    fn huge_orders_give_zero_or_infinity_never_nan() {
+        // Found by the boundary fuzzer: c^p overflows for p = 1e308.
+        let e = optimal_estimate(&[], SetMetric::GOSPA, 1.0000000000000002, 1e308).unwrap();
+        assert_eq!(e.mean_error, 0.0);
+        let m = mean_error(&[0.5], &[true], SetMetric::Ospa, 2.0, 1e308).unwrap();
+        assert_eq!(m, f64::INFINITY);
+        let m = mean_error(&[1.0], &[true], SetMetric::Uospa, 2.0, 1e308).unwrap();
+        assert_eq!(m, 0.0);
     }
 }
 

@@ -152,6 +152,10 @@ impl Gaussian {
     }
 
     /// (x − m)ᵀ P⁻¹ (x − m), by a triangular solve. `x` must have length n.
+    ///
+    /// A point so far away that a whitened coordinate overflows gives +∞ (never NaN: the
+    /// substitution stops as soon as the sum of squares is infinite, before an `∞ · 0` or
+    /// `∞ − ∞` could appear), so the density there is 0.
     pub fn mahalanobis_sq(&self, x: &[f64]) -> f64 {
         debug_assert_eq!(x.len(), self.dim());
         let n = self.dim();
@@ -172,6 +176,9 @@ impl Gaussian {
             }
             let yi = s / self.chol[(i, i)];
             total += yi * yi;
+            if total == f64::INFINITY {
+                return f64::INFINITY;
+            }
             y[i] = yi;
         }
         total
@@ -201,6 +208,15 @@ impl Gaussian {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn astronomically_far_points_have_zero_density_not_nan() {
+        let g = Gaussian::from_slices(&[-1e308, 1.6e-215], &[0.002, 0.0, 0.0, 0.002], "p").unwrap();
+        assert_eq!(g.mahalanobis_sq(&[0.0, 0.0]), f64::INFINITY);
+        assert_eq!(g.pdf(&[0.0, 0.0]), 0.0);
+        let h = Gaussian::from_slices(&[1e308, 0.0], &[1.0, 0.5, 0.5, 1.0], "p").unwrap();
+        assert_eq!(h.mahalanobis_sq(&[-1e308, 0.0]), f64::INFINITY);
+    }
 
     #[test]
     fn validates_and_evaluates() {

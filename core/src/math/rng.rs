@@ -53,6 +53,24 @@ pub fn js_safe_seed<R: Rng + ?Sized>(rng: &mut R) -> u64 {
     rng.next_u64() >> 11
 }
 
+/// A fresh seed from the platform's entropy: the operating system natively, and
+/// `crypto.getRandomValues` in a browser or Node (getrandom's JavaScript backend, which the
+/// wasm bindings select). The seed has 53 bits, so it is exactly representable as a JavaScript
+/// number: a caller that records it reproduces the run by passing it back.
+///
+/// # Errors
+/// [`Error::Unsupported`](crate::Error::Unsupported) naming `seed` when the platform has no
+/// entropy source (then pass a seed).
+#[cfg(feature = "std")]
+pub fn entropy_seed() -> crate::Result<u64> {
+    getrandom::u64()
+        .map(|x| x >> 11)
+        .map_err(|_| crate::Error::Unsupported {
+            what: "seed".into(),
+            reason: "no entropy source is available on this platform; pass a seed",
+        })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -82,5 +100,14 @@ mod tests {
             assert!((c as f64 - 10_000.0).abs() < 560.0, "{counts:?}");
         }
         assert!(js_safe_seed(&mut r) < 1u64 << 53);
+    }
+
+    #[cfg(feature = "std")]
+    #[test]
+    fn entropy_seeds_are_js_safe_and_vary() {
+        let a = entropy_seed().unwrap();
+        let b = entropy_seed().unwrap();
+        assert!(a < 1u64 << 53 && b < 1u64 << 53);
+        assert_ne!(a, b, "two 53-bit entropy draws collided");
     }
 }

@@ -201,7 +201,7 @@ const MATRIX_LIMIT: usize = RUNNALLS_CACHE_LIMIT;
 /// cached (O(L²) memory) up to [`RUNNALLS_CACHE_LIMIT`] components; beyond it memory is
 /// O(L) and a rescan recomputes its row. For n ≤ 4 the determinants come from the
 /// division-free Laplace expansion (Cholesky when nearly singular). Measured natively: 1000
-/// 4D components to 100 in about 60 ms (`examples/splitting_timing.rs`).
+/// 4D components to 100 in about 60 ms (`benches/src/bin/splitting_timing.rs`).
 /// Ties go to the lowest indices. Surviving components keep the order of the input (a
 /// merged pair takes the place of its first member).
 ///

@@ -1,27 +1,14 @@
 // web/placement.html in headless Chromium: dragging the FoV (mouse and touch) moves its
 // readouts to the values the npm package computes for the FoV the page reports, the sliders
 // move the variance map's argmax to the package's, and the map recompute time is printed.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { existsSync } from 'node:fs';
-import path from 'node:path';
 import * as fisst from 'fisst';
-import { fmt } from '../../../web/lib/plot.js';
-import { startBrowser, ROOT } from '../lib/browser.mjs';
+import { fmt } from '../../../web/lib/page.js';
+import { json, pixelOf as viewPixel, reopen, text, touchDrag, unitsPerPixel as upp, useBrowser } from './harness.mjs';
 
-let browser;
-
-before(async () => {
-  assert.ok(existsSync(path.join(ROOT, 'web/pkg/fisst_wasm.js')), 'web/pkg is missing: run `make web-pkg`');
-  browser = await startBrowser();
-});
-
-after(async () => {
-  await browser?.close();
-});
-
-const text = (page, sel) => page.locator(sel).textContent();
-const pageState = async (page) => JSON.parse(await text(page, '#placement-state'));
+const browser = useBrowser();
+const pageState = (page) => json(page, '#placement-state');
 
 /** The scene the page reports, rebuilt in Node. */
 const sceneOf = (s) => fisst.placementScene(s.scene).multiBernoulli;
@@ -54,17 +41,8 @@ async function checkMap(page, s) {
 }
 
 /** Page pixel of a world point, from the view the page reports and the canvas position. */
-async function pixelOf(page, s, [x, y]) {
-  const rect = await page.locator('#scene').boundingBox();
-  const { box, domain: [lo, hi] } = s.view;
-  return [
-    rect.x + box.left + ((x - lo) / (hi - lo)) * box.width,
-    rect.y + box.top + ((hi - y) / (hi - lo)) * box.height,
-  ];
-}
-
-/** World units per page pixel along x (and −y). */
-const unitsPerPixel = (s) => (s.view.domain[1] - s.view.domain[0]) / s.view.box.width;
+const pixelOf = (page, s, point) => viewPixel(page, '#scene', s.view, point);
+const unitsPerPixel = (s) => upp(s.view);
 
 test('placement: dragging the FoV with the mouse updates its pmf readouts', async () => {
   const page = await browser.open('placement.html');
@@ -118,9 +96,7 @@ test('placement: dragging the FoV with the mouse updates its pmf readouts', asyn
   const w5 = await checkFovReadouts(page, s5);
   assert.ok(Math.abs(w5.variance - s5.map.max) < 1e-12, `${w5.variance} vs ${s5.map.max}`);
 
-  assert.deepEqual(page.errors, []);
-  await browser.screenshot(page, 'placement-drag');
-  await page.close();
+  await browser.done(page, 'placement-drag');
 });
 
 test('placement: a touch drag moves the FoV too', async () => {
@@ -128,27 +104,13 @@ test('placement: a touch drag moves the FoV too', async () => {
   const s0 = await pageState(page);
   const k = unitsPerPixel(s0);
   const [x0, y0] = await pixelOf(page, s0, s0.fov.center);
-  // Chromium turns CDP touch input into pointer events of pointerType "touch".
-  const cdp = await page.context().newCDPSession(page);
-  const touch = (type, x, y) => cdp.send('Input.dispatchTouchEvent', {
-    type, touchPoints: type === 'touchEnd' ? [] : [{ x, y, id: 1 }],
-  });
-  const types = [];
-  await page.evaluate(() => {
-    window.pointerTypes = [];
-    document.getElementById('scene').addEventListener('pointermove', (e) => window.pointerTypes.push(e.pointerType));
-  });
-  await touch('touchStart', x0, y0);
-  for (let i = 1; i <= 5; i++) await touch('touchMove', x0 - 20 * i, y0 + 12 * i);
-  await touch('touchEnd');
-  types.push(...await page.evaluate(() => window.pointerTypes));
+  const types = await touchDrag(page, '#scene', Array.from({ length: 6 }, (_, i) => [x0 - 20 * i, y0 + 12 * i]));
   assert.ok(types.includes('touch'), `pointer types seen: ${types}`);
   const s1 = await pageState(page);
   assert.ok(Math.abs(s1.fov.center[0] - (s0.fov.center[0] - 100 * k)) < 0.02, `x ${s1.fov.center}`);
   assert.ok(Math.abs(s1.fov.center[1] - (s0.fov.center[1] - 60 * k)) < 0.02, `y ${s1.fov.center}`);
   await checkFovReadouts(page, s1);
-  assert.deepEqual(page.errors, []);
-  await page.close();
+  await browser.done(page);
 });
 
 test('placement: sliders move the map argmax to the package value; map recompute time', async () => {
@@ -163,7 +125,7 @@ test('placement: sliders move the map argmax to the package value; map recompute
     assert.equal(s.scene.count, 100);
     await checkMap(page, s);
     await checkFovReadouts(page, s);
-    const ms = await page.evaluate(() => window.fisstPlacement.lastMapMs);
+    const ms = await page.evaluate(() => window.fisstTiming.last.map);
     assert.equal(await text(page, '#map-time'), `${ms.toFixed(1)} ms`);
     times.push(ms);
   }
@@ -176,7 +138,7 @@ test('placement: sliders move the map argmax to the package value; map recompute
   const phdTimes = [];
   for (const count of ['100', '99']) {
     await page.locator('#count').fill(count);
-    phdTimes.push(await page.evaluate(() => window.fisstPlacement.lastPhdMs));
+    phdTimes.push(await page.evaluate(() => window.fisstTiming.last.phd));
   }
   await page.locator('#count').fill('60');
   s = await pageState(page);
@@ -195,6 +157,11 @@ test('placement: sliders move the map argmax to the package value; map recompute
   assert.ok(want.max > 0);
   assert.deepEqual(page.errors, []);
   await browser.screenshot(page, 'placement-variance');
+  const again = await reopen(browser, page);
+  const [s1, s2] = [await pageState(again), await pageState(page)];
+  for (const st of [s1, s2]) delete st.map.ms;
+  assert.deepEqual(s1, s2, 'the URL keeps the scene, FoV and layer');
+  await browser.done(again);
 
   const sorted = [...times].sort((a, b) => a - b);
   const median = sorted[Math.floor(sorted.length / 2)];

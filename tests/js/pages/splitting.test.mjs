@@ -2,27 +2,14 @@
 // component mean and moving the sliders set the split readouts to the values the npm package
 // computes in Node for the state the page reports; the Fig. 5 buttons step through
 // negativeInformationScenario.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { existsSync } from 'node:fs';
-import path from 'node:path';
 import * as fisst from 'fisst';
-import { fmt } from '../../../web/lib/plot.js';
-import { startBrowser, ROOT } from '../lib/browser.mjs';
+import { fmt } from '../../../web/lib/page.js';
+import { json, median, mouseDrag, pixelOf as viewPixel, reopen, text, unitsPerPixel as upp, useBrowser } from './harness.mjs';
 
-let browser;
-
-before(async () => {
-  assert.ok(existsSync(path.join(ROOT, 'web/pkg/fisst_wasm.js')), 'web/pkg is missing: run `make web-pkg`');
-  browser = await startBrowser();
-});
-
-after(async () => {
-  await browser?.close();
-});
-
-const text = (page, sel) => page.locator(sel).textContent();
-const pageState = async (page) => JSON.parse(await text(page, '#split-state'));
+const browser = useBrowser();
+const pageState = (page) => json(page, '#split-state');
 
 /**
  * The page's split readouts equal splitForRegions of the mixture, regions and options the
@@ -60,17 +47,9 @@ async function checkSplit(page, s) {
 }
 
 /** Page pixel of a world point, from the view the page reports and the canvas position. */
-async function pixelOf(page, s, [x, y]) {
-  const rect = await page.locator('#scene').boundingBox();
-  const { box, x: [x0, x1], y: [y0, y1] } = s.view;
-  return [
-    rect.x + box.left + ((x - x0) / (x1 - x0)) * box.width,
-    rect.y + box.top + ((y1 - y) / (y1 - y0)) * box.height,
-  ];
-}
-
+const pixelOf = (page, s, point) => viewPixel(page, '#scene', s.view, point);
 /** World units per page pixel (equal on both axes). */
-const unitsPerPixel = (s) => (s.view.x[1] - s.view.x[0]) / s.view.box.width;
+const unitsPerPixel = (s) => upp(s.view);
 
 const near = (a, b, tol, what) => assert.ok(Math.abs(a - b) < tol, `${what}: ${a} vs ${b}`);
 
@@ -117,10 +96,7 @@ test('splitting: dragging and reshaping S, and the sliders, update the split rea
 
   // Reshape: drag S's top-right corner handle up and right.
   const [cx, cy] = await pixelOf(page, s2, b2.max);
-  await page.mouse.move(cx, cy);
-  await page.mouse.down();
-  await page.mouse.move(cx + 40, cy - 25, { steps: 3 });
-  await page.mouse.up();
+  await mouseDrag(page, [cx, cy], [cx + 40, cy - 25], 3);
   const s3 = await pageState(page);
   near(s3.regions[0].box.max[0], b2.max[0] + 40 * k, 0.02, 'resized max x');
   near(s3.regions[0].box.max[1], b2.max[1] + 25 * k, 0.02, 'resized max y');
@@ -158,31 +134,33 @@ test('splitting: dragging and reshaping S, and the sliders, update the split rea
   assert.equal(await page.locator('#layer-inside').getAttribute('aria-pressed'), 'true');
   const s7 = await pageState(page);
   assert.equal(s7.layer, 'inside');
-  const times = await page.evaluate(() => window.fisstSplitting);
-  const firstDragRedraws = times.redrawTimes.length;
+  const times = structuredClone((await browser.timing(page)).history);
+  const firstDragRedraws = times.redraw.length;
 
   // A drag on the p_S layer (its density image is recomputed on every move).
   const b7 = s7.regions[0].box;
   const [x7, y7] = await pixelOf(page, s7, [(b7.min[0] + b7.max[0]) / 2, (b7.min[1] + b7.max[1]) / 2]);
-  await page.mouse.move(x7, y7);
-  await page.mouse.down();
-  await page.mouse.move(x7 + 70, y7 - 20, { steps: 8 });
-  await page.mouse.up();
+  await mouseDrag(page, [x7, y7], [x7 + 70, y7 - 20], 8);
   const s8 = await pageState(page);
   near(s8.regions[0].box.min[0], b7.min[0] + 70 * k, 0.02, 'min x on the p_S layer');
   await checkSplit(page, s8);
 
   assert.deepEqual(page.errors, []);
   await browser.screenshot(page, 'splitting');
-  const all = await page.evaluate(() => window.fisstSplitting);
-  const median = (v) => [...v].sort((a, b) => a - b)[Math.floor(v.length / 2)];
-  const layerDrag = all.redrawTimes.slice(firstDragRedraws);
-  console.log(`splitting page (Chromium): splitForRegions ${median(times.splitTimes).toFixed(1)} ms, whole `
-    + `redraw ${median(times.redrawTimes.slice(1)).toFixed(1)} ms (medians of ${times.redrawTimes.length - 1} `
+  const all = (await browser.timing(page)).history;
+  const layerDrag = all.redraw.slice(firstDragRedraws);
+  console.log(`splitting page (Chromium): splitForRegions ${median(times.split).toFixed(1)} ms, whole `
+    + `redraw ${median(times.redraw.slice(1)).toFixed(1)} ms (medians of ${times.redraw.length - 1} `
     + `drags and slider moves on the p layer, ${w0.mixture.length}–${s7.result.count} split components; first load `
-    + `${times.redrawTimes[0].toFixed(1)} ms); redraw while dragging on the p_S layer `
+    + `${times.redraw[0].toFixed(1)} ms); redraw while dragging on the p_S layer `
     + `${median(layerDrag).toFixed(1)} ms (median of ${layerDrag.length}, ${s8.result.count} components)`);
-  await page.close();
+  // The mixture, the regions, the options and the layer are in the URL.
+  const again = await reopen(browser, page);
+  const [a, b] = [await pageState(again), await pageState(page)];
+  for (const st of [a, b]) delete st.result.ms;
+  assert.deepEqual(a, b);
+  await browser.done(page);
+  await browser.done(again);
 });
 
 test('splitting: several regions, a component drag and the choice of S', async () => {
@@ -215,20 +193,14 @@ test('splitting: several regions, a component drag and the choice of S', async (
   const { center, radius } = s.regions[0].disc;
   const k = unitsPerPixel(s);
   const [hx, hy] = await pixelOf(page, s, [center[0] + radius, center[1]]);
-  await page.mouse.move(hx, hy);
-  await page.mouse.down();
-  await page.mouse.move(hx + 30, hy, { steps: 3 });
-  await page.mouse.up();
+  await mouseDrag(page, [hx, hy], [hx + 30, hy], 3);
   s = await pageState(page);
   near(s.regions[0].disc.radius, radius + 30 * k, 0.02, 'radius');
   await checkSplit(page, s);
 
   const mean = s.mixture[1].mean;
   const [mx, my] = await pixelOf(page, s, mean);
-  await page.mouse.move(mx, my);
-  await page.mouse.down();
-  await page.mouse.move(mx - 60, my - 40, { steps: 4 });
-  await page.mouse.up();
+  await mouseDrag(page, [mx, my], [mx - 60, my - 40]);
   const moved = await pageState(page);
   assert.equal(moved.selected.component, 1);
   near(moved.mixture[1].mean[0], mean[0] - 60 * k, 0.02, 'mean x');
@@ -251,9 +223,7 @@ test('splitting: several regions, a component drag and the choice of S', async (
   assert.equal(s.regions.length, 3);
   assert.ok('box' in s.regions[0]);
   await checkSplit(page, s);
-  assert.deepEqual(page.errors, []);
-  await browser.screenshot(page, 'splitting-regions');
-  await page.close();
+  await browser.done(page, 'splitting-regions');
 });
 
 test('splitting: the Fig. 5 buttons step through negativeInformationScenario', async () => {
@@ -288,6 +258,8 @@ test('splitting: the Fig. 5 buttons step through negativeInformationScenario', a
   assert.deepEqual(page.errors, []);
   await page.locator('#fig5-next').click();
   await check(3);
-  await browser.screenshot(page, 'splitting-fig5');
-  await page.close();
+  const again = await reopen(browser, page);
+  assert.equal(JSON.parse(await text(again, '#fig5-state')).step, 3, 'the scan is in the URL');
+  await browser.done(again);
+  await browser.done(page, 'splitting-fig5');
 });

@@ -1,24 +1,11 @@
 // web/spooky.html in headless Chromium: its controls move its readouts to the values the npm
 // package computes.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { existsSync } from 'node:fs';
-import path from 'node:path';
 import * as fisst from 'fisst';
-import { startBrowser, ROOT } from '../lib/browser.mjs';
+import { pixelOf, reopen, text, useBrowser } from './harness.mjs';
 
-let browser;
-
-before(async () => {
-  assert.ok(existsSync(path.join(ROOT, 'web/pkg/fisst_wasm.js')), 'web/pkg is missing: run `make web-pkg`');
-  browser = await startBrowser();
-});
-
-after(async () => {
-  await browser?.close();
-});
-
-const text = (page, sel) => page.locator(sel).textContent();
+const browser = useBrowser();
 
 function describe(report) {
   const on = report.map((u, i) => (u ? i + 1 : 0)).filter(Boolean);
@@ -41,8 +28,15 @@ test('spooky: sliders move the decisions to the package values', async () => {
   assert.match(await text(page, '#story'), /OSPA now report 2/);
   await page.locator('#story-case2').click();
   assert.equal(await text(page, '#decision-ospa'), 'report nothing');
-  assert.deepEqual(page.errors, []);
-  await page.close();
+  // A click on a decision map sets (r1, r2) to the point clicked.
+  const map = { box: { left: 48, top: 8, width: 176, height: 188 }, x: [0, 1], y: [0, 1] };
+  const [mx, my] = await pixelOf(page, '#map-ospa', map, [0.7, 0.2]);
+  await page.mouse.click(mx, my);
+  const [r1, r2] = [Number(await page.locator('#r1').inputValue()), Number(await page.locator('#r2').inputValue())];
+  assert.ok(Math.abs(r1 - 0.7) < 0.01 && Math.abs(r2 - 0.2) < 0.01, `${r1}, ${r2}`);
+  const expected = fisst.mbOptimalEstimate({ existence: [r1, r2], metric: 'ospa' });
+  assert.equal(await text(page, '#decision-ospa'), describe(expected.report));
+  await browser.done(page);
 });
 
 test('spooky: Fig. 3 readout follows eq. (11)', async () => {
@@ -55,7 +49,7 @@ test('spooky: Fig. 3 readout follows eq. (11)', async () => {
     assert.equal(Number(await text(page, '#fig3-ospa')), expected, `n=${n}`);
     assert.equal(Number(await text(page, '#fig3-gospa')), 0);
   }
-  await page.close();
+  await browser.done(page);
 });
 
 test('spooky: clicking points updates the GOSPA decomposition', async () => {
@@ -84,5 +78,12 @@ test('spooky: clicking points updates the GOSPA decomposition', async () => {
   assert.ok(Math.abs(Number(await text(page, '#gospa-distance')) - g4.distance) < 1e-4);
   assert.deepEqual(page.errors, []);
   await browser.screenshot(page, 'spooky-playground');
-  await page.close();
+  // The points, c and the sliders are in the URL: the reopened page shows the same.
+  await page.locator('#r1').fill('0.7');
+  const again = await reopen(browser, page);
+  assert.deepEqual(JSON.parse(await text(again, '#pg-points')), { ...state, c: 4 });
+  assert.equal(await again.locator('#r1').inputValue(), '0.7');
+  assert.equal(await text(again, '#gospa-distance'), await text(page, '#gospa-distance'));
+  await browser.done(page);
+  await browser.done(again);
 });

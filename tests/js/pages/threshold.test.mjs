@@ -2,27 +2,14 @@
 // to the values the npm package computes in Node; dragging a mixture component (mouse and
 // touch) and moving p move a*, q(a*), q(mean) and the decision to bernoulliEstimate of the
 // state the page reports; the redraw times of every panel are printed.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { existsSync } from 'node:fs';
-import path from 'node:path';
 import * as fisst from 'fisst';
-import { fmt } from '../../../web/lib/plot.js';
-import { startBrowser, ROOT } from '../lib/browser.mjs';
+import { fmt } from '../../../web/lib/page.js';
+import { json, mouseDrag, pixelOf as viewPixel, reopen, text, timeLine, touchDrag, unitsPerPixel as upp, useBrowser } from './harness.mjs';
 
-let browser;
-
-before(async () => {
-  assert.ok(existsSync(path.join(ROOT, 'web/pkg/fisst_wasm.js')), 'web/pkg is missing: run `make web-pkg`');
-  browser = await startBrowser();
-});
-
-after(async () => {
-  await browser?.close();
-});
-
-const text = (page, sel) => page.locator(sel).textContent();
-const pageState = async (page) => JSON.parse(await text(page, '#threshold-state'));
+const browser = useBrowser();
+const pageState = (page) => json(page, '#threshold-state');
 
 /** Γ as the page prints it. */
 const gammaText = (g) => (g === Infinity ? '∞ (never reports)' : g === -Infinity ? '−∞ (always reports)' : fmt(g, 4));
@@ -105,18 +92,9 @@ async function checkView(page, s) {
   return e;
 }
 
-/** Viewport pixel of a world point of the 2D view (scrolled into view: touches off-screen are dropped). */
-async function pixelOf(page, s, [x, y]) {
-  await page.locator('#view').scrollIntoViewIfNeeded();
-  const rect = await page.locator('#view').boundingBox();
-  const { box, domain: [lo, hi] } = s.view;
-  return [
-    rect.x + box.left + ((x - lo) / (hi - lo)) * box.width,
-    rect.y + box.top + ((hi - y) / (hi - lo)) * box.height,
-  ];
-}
-
-const unitsPerPixel = (s) => (s.view.domain[1] - s.view.domain[0]) / s.view.box.width;
+/** Viewport pixel of a world point of the 2D view. */
+const pixelOf = (page, s, point) => viewPixel(page, '#view', s.view, point);
+const unitsPerPixel = (s) => upp(s.view);
 const near = (a, b, tol = 0.02) => Math.abs(a[0] - b[0]) < tol && Math.abs(a[1] - b[1]) < tol;
 
 test('threshold: r0, c_M and the preset move Γ to the package value (Figs 2 and 3)', async () => {
@@ -191,8 +169,7 @@ test('threshold: r0, c_M and the preset move Γ to the package value (Figs 2 and
   const e2 = await checkFig2(page, s);
   assert.ok(e2.threshold > 0.5943, 'a wider density needs a higher threshold');
   await checkView(page, s);
-  assert.deepEqual(page.errors, []);
-  await page.close();
+  await browser.done(page);
 });
 
 test('threshold: dragging a component with the mouse moves a*, q(a*) and the decision', async () => {
@@ -238,10 +215,7 @@ test('threshold: dragging a component with the mouse moves a*, q(a*) and the dec
   assert.deepEqual((await pageState(page)).view.mixture, s1.view.mixture);
   // A press away from every component grabs nothing.
   const [xe, ye] = await pixelOf(page, s1, [4, -4]);
-  await page.mouse.move(xe, ye);
-  await page.mouse.down();
-  await page.mouse.move(xe - 50, ye - 50, { steps: 2 });
-  await page.mouse.up();
+  await mouseDrag(page, [xe, ye], [xe - 50, ye - 50], 2);
   assert.deepEqual((await pageState(page)).view.mixture, s1.view.mixture);
 
   // p: below Γ nothing is reported.
@@ -270,9 +244,7 @@ test('threshold: dragging a component with the mouse moves a*, q(a*) and the dec
   assert.equal(s.view.qMean, e3.missProbability);
   await page.locator('#scene-three').click();
   await checkView(page, await pageState(page));
-  assert.deepEqual(page.errors, []);
-  await browser.screenshot(page, 'threshold-drag');
-  await page.close();
+  await browser.done(page, 'threshold-drag');
 });
 
 test('threshold: a touch drag moves a component too', async () => {
@@ -281,26 +253,13 @@ test('threshold: a touch drag moves a component too', async () => {
   const k = unitsPerPixel(s0);
   const m2 = s0.view.mixture[2].mean;
   const [x0, y0] = await pixelOf(page, s0, m2);
-  // Chromium turns CDP touch input into pointer events of pointerType "touch".
-  const cdp = await page.context().newCDPSession(page);
-  const touch = (type, x, y) => cdp.send('Input.dispatchTouchEvent', {
-    type, touchPoints: type === 'touchEnd' ? [] : [{ x, y, id: 1 }],
-  });
-  await page.evaluate(() => {
-    window.pointerTypes = [];
-    document.getElementById('view').addEventListener('pointermove', (e) => window.pointerTypes.push(e.pointerType));
-  });
-  await touch('touchStart', x0, y0);
-  for (let i = 1; i <= 5; i++) await touch('touchMove', x0 - 24 * i, y0 + 20 * i);
-  await touch('touchEnd');
-  const types = await page.evaluate(() => window.pointerTypes);
+  const types = await touchDrag(page, '#view', Array.from({ length: 6 }, (_, i) => [x0 - 24 * i, y0 + 20 * i]));
   assert.ok(types.includes('touch'), `pointer types seen: ${types}`);
   const s1 = await pageState(page);
   const want = [m2[0] - 120 * k, m2[1] - 100 * k];
   assert.ok(near(s1.view.mixture[2].mean, want), `${s1.view.mixture[2].mean} vs ${want}`);
   await checkView(page, s1);
-  assert.deepEqual(page.errors, []);
-  await page.close();
+  await browser.done(page);
 });
 
 test('threshold: redraw time of every panel', async () => {
@@ -308,7 +267,7 @@ test('threshold: redraw time of every panel', async () => {
   // Warm up (the first calls compile and allocate), then clear the history.
   for (const v of ['1.5', '1']) await page.locator('#r0').fill(v);
   await page.evaluate(() => {
-    for (const h of Object.values(window.fisstThreshold.history)) h.length = 0;
+    for (const h of Object.values(window.fisstTiming.history)) h.length = 0;
   });
   const sweep = async (id, values) => {
     for (const v of values) await page.locator(id).fill(String(v));
@@ -331,22 +290,90 @@ test('threshold: redraw time of every panel', async () => {
   await page.mouse.move(x0 + 160, y0 - 60, { steps: 20 });
   await page.mouse.up();
   await checkView(page, await pageState(page));
-  const timing = await page.evaluate(() => window.fisstThreshold);
+  const timing = await browser.timing(page);
   const last = timing.last;
   assert.equal(await text(page, '#redraw-view'), `${last.view.toFixed(1)} ms`);
   assert.equal(await text(page, '#redraw-total'), `${last.total.toFixed(1)} ms`);
-  const stats = (xs) => {
-    const sorted = [...xs].sort((a, b) => a - b);
-    return { n: xs.length, median: sorted[Math.floor(xs.length / 2)], max: sorted.at(-1) };
-  };
-  const line = (name, xs) => {
-    const { n, median, max } = stats(xs);
-    return `${name} ${median.toFixed(1)} ms median (max ${max.toFixed(1)}, n = ${n})`;
-  };
+  const line = timeLine;
   for (const panel of ['fig3', 'fig2', 'view', 'total']) assert.ok(timing.history[panel].length > 10, panel);
   console.log(`redraw (Chromium): ${line('Fig. 3', timing.history.fig3)}; ${line('Fig. 2', timing.history.fig2)}; `
     + `${line('2D view', timing.history.view)}; ${line('whole update', timing.history.total)}`);
-  assert.deepEqual(page.errors, []);
-  await browser.screenshot(page, 'threshold');
-  await page.close();
+  await browser.done(page, 'threshold');
+});
+
+test('threshold: the settings and the dragged means are in the URL', async () => {
+  const page = await browser.open('threshold.html?preset=mmol&r0=2&cM=0.3&sigma=1.5&p=0.8&spread=1.5&scene=two');
+  const s = await pageState(page);
+  assert.deepEqual([s.preset, s.r0, s.cM, s.fig2.sigma, s.view.p, s.view.spread, s.view.scene], ['mmol', 2, 0.3, 1.5, 0.8, 1.5, 'two']);
+  await checkFig3(page, s, mmol(0.9, 0.3), 2);
+  await checkFig2(page, s);
+  await checkView(page, s);
+  // Drag a component, change p: the reopened URL shows the same view.
+  const [x0, y0] = await pixelOf(page, s, s.view.mixture[0].mean);
+  await mouseDrag(page, [x0, y0], [x0 - 60, y0 + 40], 3);
+  await page.locator('#p').fill('0.35');
+  const moved = await pageState(page);
+  const again = await reopen(browser, page);
+  const s2 = await pageState(again);
+  assert.deepEqual(s2.view.mixture, moved.view.mixture);
+  assert.deepEqual(s2.view.estimate, moved.view.estimate);
+  assert.equal(s2.view.p, 0.35);
+  // A malformed URL value falls back to the default without an error.
+  const bad = await browser.open('threshold.html?r0=abc&means=[[1,2]]&preset=nope');
+  const s3 = await pageState(bad);
+  assert.deepEqual([s3.r0, s3.preset, s3.view.scene], [1, 'mpe', 'three']);
+  await Promise.all([browser.done(page), browser.done(again, 'threshold-url'), browser.done(bad)]);
+});
+
+test('threshold: download buttons give the figures as PNG and CSV', async () => {
+  const page = await browser.open('threshold.html');
+  for (const [figure, rows] of [['#fig3-figure', 402], ['#fig2-figure', 1002], ['#view-figure', 6]]) {
+    const csv = page.waitForEvent('download');
+    await page.locator(`${figure} [data-download="csv"]`).click();
+    const body = await (await csv).createReadStream().then((st) => st.toArray());
+    const lines = Buffer.concat(body).toString('utf8').trim().split('\n');
+    assert.equal(lines.length, rows, figure);
+    const png = page.waitForEvent('download');
+    await page.locator(`${figure} [data-download="png"]`).click();
+    assert.match((await png).suggestedFilename(), /^threshold-.*\.png$/);
+  }
+  await browser.done(page);
+});
+
+test('threshold: the 2D view zooms (Ctrl + wheel), pans (drag on empty space) and resets (double-click)', async () => {
+  const page = await browser.open('threshold.html');
+  const s0 = await pageState(page);
+  const width = (v) => v.x[1] - v.x[0];
+  // Zoom in about the middle of the view.
+  const [cx, cy] = await pixelOf(page, s0, [0, 0]);
+  await page.mouse.move(cx, cy);
+  await page.keyboard.down('Control');
+  await page.mouse.wheel(0, -100);
+  await page.keyboard.up('Control');
+  await page.waitForFunction((w) => {
+    const v = JSON.parse(document.getElementById('threshold-state').textContent).view;
+    return v.x[1] - v.x[0] < w;
+  }, width(s0.view));
+  const s1 = await pageState(page);
+  assert.ok(width(s1.view) < 0.9 * width(s0.view), `${width(s1.view)}`);
+  assert.ok(Math.abs((s1.view.x[0] + s1.view.x[1]) / 2) < 0.05, 'zoomed about the pointer');
+  // A component is still dragged in data coordinates.
+  const m = s1.view.mixture[0].mean;
+  const [x0, y0] = await pixelOf(page, s1, m);
+  await mouseDrag(page, [x0, y0], [x0 + 40, y0]);
+  const s2 = await pageState(page);
+  assert.ok(Math.abs(s2.view.mixture[0].mean[0] - (m[0] + 40 * unitsPerPixel(s1))) < 0.02, `${s2.view.mixture[0].mean}`);
+  await checkView(page, s2);
+  // Pan: a drag on empty space moves the view, not the mixture.
+  const [ex, ey] = await pixelOf(page, s2, [s2.view.x[1] - 0.3, s2.view.y[0] + 0.3]);
+  await mouseDrag(page, [ex, ey], [ex - 50, ey - 30]);
+  const s3 = await pageState(page);
+  assert.deepEqual(s3.view.mixture, s2.view.mixture);
+  assert.ok(Math.abs(s3.view.x[0] - (s2.view.x[0] + 50 * unitsPerPixel(s2))) < 0.02, `${s3.view.x}`);
+  assert.ok(Math.abs(width(s3.view) - width(s2.view)) < 1e-9);
+  // Double-click: back to the initial view.
+  await page.mouse.dblclick(ex, ey);
+  const s4 = await pageState(page);
+  assert.deepEqual([s4.view.x, s4.view.y], [s0.view.x, s0.view.y]);
+  await browser.done(page, 'threshold-zoom');
 });

@@ -18,9 +18,50 @@ const best: fisst.MbOptimalEstimateResult = fisst.mbOptimalEstimate({ existence:
 const report: boolean[] = best.report;
 const mse: number = fisst.mbMeanSquareError({ existence: [0.4, 0.4], report, metric: 'uospa' });
 
+// Every other export, with the shared shapes (Point, Gaussian, WeightedGaussian, Bernoulli,
+// Region, MultiObjectDensity) and the generated option and result types.
+const box: fisst.Region = { box: { min: [-1, -1], max: [1, 1] } };
+const disc: fisst.Region = { disc: { center: new Float64Array([0, 0]), radius: 1 } };
+const poly: fisst.Region = { polygon: [[0, 0], [1, 0], [0, 1]] };
+const g2: fisst.Gaussian = { mean: [0, 0], cov: [[1, 0], [0, 1]] };
+const comp: fisst.WeightedGaussian = { weight: 1, ...g2 };
+const mb: fisst.Bernoulli[] = [{ existence: 0.5, ...g2 }];
+const rfs: fisst.MultiObjectDensity = { multiBernoulli: mb };
+const grid: fisst.Grid = { x: [-1, 1, 5], y: [-1, 1, 5] };
+
+const la: fisst.LinearAssignmentResult = fisst.linearAssignment([[1, 2], [3, 4]]);
+const u: number = fisst.uospa(truth, truth, { c: 1 }).distance;
+const loo: number[][] = fisst.multiBernoulliLeaveOneOut(new Float64Array([0.2, 0.7]));
+const alt: boolean[] = fisst.mbAlternativeEstimate({ existence: [0.4, 0.6], method: 'jom', lnC: 0 }).report;
+const map: Uint8Array = fisst.mbDecisionMap({ estimator: 'map-cardinality', resolution: 4 }).decisions;
+const counts: number[] = fisst.mbIdenticalComponentCounts({ existence: 0.3, maxComponents: 5 }).mapCardinality;
+const fc: fisst.FovCardinalityResult = fisst.fovCardinality({ rfs, fov: poly, detectionProbability: 0.9 });
+const poisson: number = fisst.fovCardinality({ rfs: { poisson: [comp] }, fov: disc }).mean;
+const vmap: Float64Array = fisst.fovVarianceMap({ multiBernoulli: mb, fovSize: [1, 1], grid }).variance;
+const scene: fisst.PlacementSceneResult = fisst.placementScene({ count: 3, seed: 2 });
+const dens: Float64Array = fisst.mixtureDensityGrid({ mixture: [comp], grid });
+const lib: number[] = fisst.splitLibrary({ components: 4, lambda: 0.001, spacing: 'equal' }).weights;
+const split: fisst.SplitForRegionsResult = fisst.splitForRegions({ mixture: [comp], regions: [box, disc], gridBound: 3 });
+const exact: number | null = split.exactInside;
+const reduced: fisst.MixtureComponent[] = fisst.reduceMixture({ mixture: split.mixture, mergeDistance: 1, maxComponents: 3 });
+const fig5 = fisst.negativeInformationScenario();
+const step = fisst.negativeInformationScenario({ step: 2 });
+const est: fisst.BernoulliEstimateResult = fisst.bernoulliEstimate({ existence: 0.7, density: { mixture: [comp] }, radius: 1, costs: 'mpe' });
+const at: number[] | null = est.estimate;
+const q: number = fisst.probabilityOutsideBall({ density: { particles: [[0, 0], [1, 1]], weights: [1, 2] }, center: [0, 0], radius: 1 });
+const gamma: number[] = fisst.bernoulliThresholdCurve({ sigmas: [0.5, 1], radius: 1, costs: { mmol: { asset: 10, countermeasure: 1 } } });
+const mmuc: fisst.MmucEstimateResult = fisst.mmucEstimate({ density: { mean: [0], cov: 1 }, radius: 0.5 });
+const mbp: number[] = fisst.multiBernoulliPointEstimate({ components: [{ existence: 0.9, density: g2 }], radius: 1, costs: { c00: 0, c01: 1, c10: 1, c11: 0, c: 1 } }).reported;
+const loss: number[] = fisst.bernoulliLossCurve({ existences: [0.1, 0.9], missProbability: 0.2, costs: 'mpe' }).rule;
+const v: string = fisst.version();
+
+// @ts-expect-error: a misspelt option ('aplha') is not in GospaOptions
+fisst.gospa(truth, truth, { c: 1, aplha: 1 });
+// @ts-expect-error: a Region has exactly one of box, polygon, disc
+const badRegion: fisst.Region = { circle: { center: [0, 0], radius: 1 } };
 // @ts-expect-error: 'hausdorff' is not a SetMetricName
 fisst.mbOptimalEstimate({ existence: [0.4], metric: 'hausdorff' });
 // @ts-expect-error: the cut-off c is required
 fisst.gospa(truth, truth, { p: 2 });
 
-export const used = [distance, missed, pairs, parts, pmf, mse];
+export const used = [distance, missed, pairs, parts, pmf, mse, la, u, loo, alt, map, counts, fc, poisson, vmap, scene, dens, lib, exact, reduced, fig5, step, at, q, gamma, mmuc, mbp, loss, v, badRegion];

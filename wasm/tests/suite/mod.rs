@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 mod bernoulli;
+mod boundary;
 mod fov;
 mod metrics;
 mod multi_bernoulli;

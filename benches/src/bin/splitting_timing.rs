@@ -1,63 +1,19 @@
 //! Native timings of the splitting and reduction code (issue 5): Algorithm 1 per time step of
 //! the Fig. 5 scenario of `001_…`, Runnalls' reduction of 1000 components to 100, and the
-//! split-library optimiser. Not a test: run it in release mode,
+//! split-library optimiser. Not a test: run it in release mode, from `benches/`,
 //!
 //! ```text
-//! cargo run --release -p fisst --example splitting_timing
+//! cargo run --release --bin splitting_timing
 //! ```
 //!
 //! and read the medians and minima it prints.
 
-use std::time::Instant;
-
-use fisst::gaussian::{Gaussian, GaussianMixture};
 use fisst::mixture::runnalls;
 use fisst::splitting::{
     NegativeInformationScenario, Spacing, SplitLibrary, non_detection_update, predict,
     split_for_region,
 };
-
-/// Median and minimum wall time in microseconds of `runs` calls of `f` (the minimum is the
-/// robust figure on a shared machine).
-fn time_us(runs: usize, mut f: impl FnMut()) -> (f64, f64) {
-    let mut t: Vec<f64> = (0..runs)
-        .map(|_| {
-            let start = Instant::now();
-            f();
-            start.elapsed().as_secs_f64() * 1e6
-        })
-        .collect();
-    t.sort_by(|a, b| a.partial_cmp(b).unwrap());
-    (t[t.len() / 2], t[0])
-}
-
-/// A deterministic 4D mixture of `n` components (a Weyl sequence, no RNG).
-fn cloud(n: usize) -> GaussianMixture {
-    let frac = |x: f64| x - x.floor();
-    let comps = (0..n)
-        .map(|i| {
-            let t = i as f64;
-            let m = [
-                10.0 * frac(t * 0.618_033_988_75),
-                10.0 * frac(t * 0.414_213_562_37),
-                frac(t * 0.732_050_807_57) - 0.5,
-                frac(t * 0.236_067_977_5) - 0.5,
-            ];
-            let s = 0.2 + 0.3 * frac(t * 0.302_775_637_73);
-            let c = 0.3 * s * s * (frac(t * 0.577_215_664_9) - 0.5);
-            #[rustfmt::skip]
-            let p = [
-                s * s, c, 0.0, 0.0,
-                c, s * s, 0.0, 0.0,
-                0.0, 0.0, 0.04, 0.0,
-                0.0, 0.0, 0.0, 0.04,
-            ];
-            let w = 0.5 + frac(t * 0.141_421_356_2);
-            (w, Gaussian::from_slices(&m, &p, "cloud").unwrap())
-        })
-        .collect();
-    GaussianMixture::new(comps, "cloud").unwrap()
-}
+use fisst_benches::{cloud, median_min_us as time_us};
 
 fn main() {
     let sc = NegativeInformationScenario::fig5().unwrap();

@@ -1,0 +1,349 @@
+// What the boundary fuzzer drives: every exported function of the npm package, with a
+// fast-check arbitrary of valid arguments at the edges (empty sets, one point, 0 and 1
+// probabilities, huge and tiny scales, singular and near-singular covariances, coincident
+// points, sizes up to the documented caps) and the names of its arguments (every error message
+// must start with one of them). `harness.mjs` mutates these arguments into malformed ones.
+import fc from 'fast-check';
+
+// ------------------------------------------------------------------ numbers and points
+/** A coordinate: mostly moderate, sometimes at the edges of the scale. */
+const coord = fc.oneof(
+  { weight: 12, arbitrary: fc.double({ min: -50, max: 50, noNaN: true, noDefaultInfinity: true }) },
+  { weight: 1, arbitrary: fc.constantFrom(0, -0, 1e-300, -1e-300, 1e150, -1e150, 1e300, 5e-324) },
+  { weight: 1, arbitrary: fc.integer({ min: -3, max: 3 }) },
+);
+
+const scale = fc.constantFrom(1, 1, 1, 0.1, 10, 1e-6, 1e6, 1e-150, 1e150);
+
+const asTyped = (arr) => fc.boolean().map((t) => (t ? Float64Array.from(arr) : arr));
+
+const point = (d) => fc.array(coord, { minLength: d, maxLength: d }).chain(asTyped);
+
+/** A set of points of dimension d: empty, one, coincident copies, or random. */
+const pointSet = (d, max = 8) =>
+  fc.oneof(
+    { weight: 1, arbitrary: fc.constant([]) },
+    { weight: 2, arbitrary: point(d).map((p) => [p]) },
+    { weight: 1, arbitrary: fc.tuple(point(d), fc.integer({ min: 2, max: 4 })).map(([p, k]) => Array.from({ length: k }, () => Array.from(p))) },
+    { weight: 6, arbitrary: fc.array(point(d), { maxLength: max }) },
+  );
+
+const dim = fc.constantFrom(1, 2, 2, 2, 3);
+
+const probability = fc.oneof(
+  { weight: 6, arbitrary: fc.double({ min: 0, max: 1, noNaN: true }) },
+  { weight: 2, arbitrary: fc.constantFrom(0, 1, 0.5, 1e-300, 1 - 1e-16) },
+);
+
+const probabilities = (max = 10) => fc.array(probability, { maxLength: max }).chain(asTyped);
+
+// ------------------------------------------------------------------ covariances and densities
+/** A symmetric positive definite n × n matrix (nested rows): A Aᵀ + εI at a random scale, sometimes
+ * near-singular or exactly singular, sometimes diagonal. */
+const covRows = (n) =>
+  fc
+    .tuple(
+      fc.array(fc.double({ min: -2, max: 2, noNaN: true }), { minLength: n * n, maxLength: n * n }),
+      fc.constantFrom(1, 1, 1e-3, 1e-9, 0),
+      scale,
+      fc.boolean(),
+    )
+    .map(([a, eps, s, diagonal]) => {
+      const rows = [];
+      for (let i = 0; i < n; i++) {
+        rows.push([]);
+        for (let j = 0; j < n; j++) {
+          let v = 0;
+          if (diagonal) v = i === j ? a[i * n + i] ** 2 + eps + 1e-3 : 0;
+          else for (let k = 0; k < n; k++) v += a[i * n + k] * a[j * n + k];
+          if (!diagonal && i === j) v += eps;
+          rows[i].push(v * s);
+        }
+      }
+      return rows;
+    });
+
+/** A covariance in any accepted form: nested rows, flat row-major, or (1D) a bare number. */
+const cov = (n) =>
+  covRows(n).chain((rows) =>
+    fc.constantFrom('rows', 'rows', 'flat', 'typed').map((form) => {
+      if (n === 1 && form === 'typed') return rows[0][0];
+      if (form === 'flat') return rows.flat();
+      if (form === 'typed') return rows.map((r) => Float64Array.from(r));
+      return rows;
+    }),
+  );
+
+const nestedCov = (n) => covRows(n);
+
+const gaussian = (n, anyCov = false) => fc.record({ mean: point(n), cov: anyCov ? cov(n) : nestedCov(n) });
+
+const weight = fc.oneof(fc.double({ min: 0, max: 5, noNaN: true }), fc.constantFrom(0, 1, 1e-300));
+
+const weighted = (n, anyCov = false) => fc.record({ weight, mean: point(n), cov: anyCov ? cov(n) : nestedCov(n) });
+
+/** A mixture whose weights sum to 1 (unless `free`). */
+const mixture = (n, max = 4, free = false) =>
+  fc.array(weighted(n), { minLength: 1, maxLength: max }).map((comps) => {
+    if (free) return comps;
+    const total = comps.reduce((a, c) => a + c.weight, 0);
+    return comps.map((c) => ({ ...c, weight: total > 0 ? c.weight / total : 1 / comps.length }));
+  });
+
+const bernoulli = (n) => fc.record({ existence: probability, mean: point(n), cov: nestedCov(n) });
+
+// ------------------------------------------------------------------ regions
+const box = (n) =>
+  fc.tuple(point(n), fc.array(fc.double({ min: 0, max: 20, noNaN: true }), { minLength: n, maxLength: n })).map(([lo, w]) => ({
+    box: { min: Array.from(lo), max: Array.from(lo, (v, i) => v + w[i]) },
+  }));
+
+const disc = (n) => fc.record({ center: point(n), radius: fc.oneof(fc.double({ min: 1e-3, max: 20, noNaN: true }), fc.constantFrom(1e-9, 1e9)) }).map((d) => ({ disc: d }));
+
+const polygon = fc
+  .tuple(fc.integer({ min: 3, max: 8 }), fc.double({ min: -10, max: 10, noNaN: true }), fc.double({ min: -10, max: 10, noNaN: true }), fc.array(fc.double({ min: 0.1, max: 5, noNaN: true }), { minLength: 8, maxLength: 8 }))
+  .map(([k, cx, cy, radii]) => ({
+    polygon: Array.from({ length: k }, (_, i) => [cx + radii[i] * Math.cos((2 * Math.PI * i) / k), cy + radii[i] * Math.sin((2 * Math.PI * i) / k)]),
+  }));
+
+const region2 = fc.oneof(box(2), disc(2), polygon);
+
+// ------------------------------------------------------------------ options pieces
+const costs = fc.oneof(
+  fc.constant('mpe'),
+  fc.record({ mmol: fc.record({ asset: fc.double({ min: 0.1, max: 100, noNaN: true }), countermeasure: fc.double({ min: 0.01, max: 10, noNaN: true }) }) }),
+  fc.record({ c00: fc.constant(0), c01: fc.double({ min: 0, max: 5, noNaN: true }), c10: fc.double({ min: 0, max: 5, noNaN: true }), c11: fc.double({ min: 0, max: 5, noNaN: true }), c: fc.double({ min: 0, max: 5, noNaN: true }) }),
+);
+
+const radius = fc.oneof(fc.double({ min: 0.01, max: 10, noNaN: true }), fc.constantFrom(1e-6, 1e6));
+
+/** A Bernoulli spatial density in dimension n: a Gaussian, a mixture, or particles. */
+const density = (n) =>
+  fc.oneof(
+    { weight: 3, arbitrary: gaussian(n, true) },
+    { weight: 2, arbitrary: fc.array(weighted(n, true), { minLength: 1, maxLength: n >= 3 ? 2 : 3 }).map((m) => ({ mixture: m })) },
+    {
+      weight: 2,
+      arbitrary: fc
+        .tuple(fc.array(point(n), { minLength: 1, maxLength: 30 }), fc.boolean())
+        .chain(([pts, withWeights]) =>
+          withWeights
+            ? fc.array(weight, { minLength: pts.length, maxLength: pts.length }).map((w) => ({ particles: pts, weights: w }))
+            : fc.constant({ particles: pts }),
+        ),
+    },
+  );
+
+const metricOpts = fc.record(
+  { c: fc.oneof(fc.double({ min: 0.01, max: 100, noNaN: true }), fc.constantFrom(1e-300, 1e300)), p: fc.oneof(fc.constantFrom(1, 2, 3), fc.double({ min: 1, max: 10, noNaN: true })) },
+  { requiredKeys: ['c'] },
+);
+
+const gospaOpts = fc.record(
+  { c: metricOpts.map((o) => o.c), p: fc.constantFrom(1, 1.5, 2, 3), alpha: fc.oneof(fc.constantFrom(2, 1, 0.5), fc.double({ min: 0.01, max: 2, noNaN: true })) },
+  { requiredKeys: ['c'] },
+);
+
+const multiObjectDensity = (n) =>
+  fc.oneof(
+    fc.array(bernoulli(n), { maxLength: 6 }).map((c) => ({ multiBernoulli: c })),
+    mixture(n, 5, true).map((m) => ({ poisson: m })),
+    fc.tuple(probabilities(6), mixture(n, 3)).map(([p, m]) => {
+      const total = Array.from(p).reduce((a, b) => a + b, 0);
+      const pmf = total > 0 ? Array.from(p, (v) => v / total) : [1];
+      return { iidCluster: { cardinality: pmf, density: m } };
+    }),
+    fc.array(fc.array(gaussian(n), { maxLength: 3 }), { minLength: 1, maxLength: 3 }).map((hyps) => ({
+      glmb: hyps.map((components) => ({ weight: 1 / hyps.length, components })),
+    })),
+  );
+
+const axis = fc.tuple(fc.double({ min: -5, max: 0, noNaN: true }), fc.double({ min: 0, max: 5, noNaN: true }), fc.integer({ min: 1, max: 12 }));
+const grid = fc.record({ x: axis, y: axis });
+
+// ------------------------------------------------------------------ the specs
+/**
+ * Each spec: `name` (the export), `roots` (its argument names, which begin every error
+ * message), `args` (an arbitrary of the argument list), `weight` (share of the runs),
+ * `maxMs`, the bound on one call (work that would take longer is refused by a documented cap),
+ * and optionally `call(fisst, args)` to drive a class (construct, call methods, `free()`)
+ * instead of calling `fisst[name](...args)`.
+ */
+export const specs = [
+  {
+    name: 'gospa',
+    roots: ['truth', 'estimate', 'options'],
+    args: dim.chain((d) => fc.tuple(pointSet(d), pointSet(d), gospaOpts)),
+  },
+  {
+    name: 'ospa',
+    roots: ['truth', 'estimate', 'options'],
+    args: dim.chain((d) => fc.tuple(pointSet(d), pointSet(d), metricOpts)),
+  },
+  {
+    name: 'uospa',
+    roots: ['truth', 'estimate', 'options'],
+    args: dim.chain((d) => fc.tuple(pointSet(d), pointSet(d), metricOpts)),
+  },
+  {
+    name: 'linearAssignment',
+    roots: ['cost'],
+    args: fc
+      .tuple(fc.integer({ min: 0, max: 6 }), fc.integer({ min: 0, max: 6 }))
+      .chain(([r, c]) => fc.array(fc.array(fc.oneof(coord, fc.constant(0)), { minLength: c, maxLength: c }), { minLength: r, maxLength: r }))
+      .map((m) => [m]),
+  },
+  { name: 'multiBernoulliCardinality', roots: ['existence'], args: probabilities(40).map((r) => [r]) },
+  { name: 'multiBernoulliLeaveOneOut', roots: ['existence'], args: probabilities(12).map((r) => [r]) },
+  {
+    name: 'mbOptimalEstimate',
+    roots: ['options'],
+    args: fc
+      .record({ existence: probabilities(12), metric: fc.constantFrom('gospa', 'ospa', 'uospa'), c: fc.double({ min: 0.1, max: 10, noNaN: true }), p: fc.constantFrom(1, 2, 3), alpha: fc.constantFrom(2, 1, 0.5) }, { requiredKeys: ['existence', 'metric'] })
+      .map((o) => [o]),
+  },
+  {
+    name: 'mbMeanSquareError',
+    roots: ['options'],
+    args: probabilities(8)
+      .chain((r) => fc.tuple(fc.constant(r), fc.array(fc.boolean(), { minLength: r.length, maxLength: r.length }), fc.constantFrom('gospa', 'ospa', 'uospa')))
+      .map(([existence, report, metric]) => [{ existence, report, metric }]),
+  },
+  {
+    name: 'mbAlternativeEstimate',
+    roots: ['options'],
+    args: probabilities(8)
+      .chain((r) =>
+        fc.record(
+          { existence: fc.constant(r), method: fc.constantFrom('mam', 'jom', 'map-cardinality'), lnPeak: fc.array(fc.double({ min: -5, max: 5, noNaN: true }), { minLength: r.length, maxLength: r.length }), lnC: fc.double({ min: -3, max: 3, noNaN: true }) },
+          { requiredKeys: ['existence', 'method'] },
+        ),
+      )
+      .map((o) => [o]),
+  },
+  {
+    name: 'mbDecisionMap',
+    roots: ['options'],
+    args: fc
+      .record({ estimator: fc.constantFrom('gospa', 'ospa', 'uospa', 'mam', 'jom', 'map-cardinality'), resolution: fc.integer({ min: 1, max: 12 }), c: fc.double({ min: 0.1, max: 5, noNaN: true }), p: fc.constantFrom(1, 2) }, { requiredKeys: ['estimator'] })
+      .map((o) => [o]),
+  },
+  {
+    name: 'mbIdenticalComponentCounts',
+    roots: ['options'],
+    args: fc.record({ existence: probability, maxComponents: fc.integer({ min: 1, max: 30 }) }).map((o) => [o]),
+  },
+  {
+    name: 'fovCardinality',
+    roots: ['options'],
+    args: fc.oneof(
+      fc.record({ rfs: multiObjectDensity(2), fov: region2, detectionProbability: probability }, { requiredKeys: ['rfs', 'fov'] }),
+      fc.record({ rfs: multiObjectDensity(4), fov: box(2) }),
+      fc.record({ rfs: multiObjectDensity(1), fov: fc.oneof(box(1), disc(1)) }),
+    ).map((o) => [o]),
+  },
+  {
+    name: 'fovVarianceMap',
+    roots: ['options'],
+    args: fc
+      .record({ multiBernoulli: fc.array(bernoulli(2), { maxLength: 5 }), fovSize: fc.tuple(fc.double({ min: 0.01, max: 5, noNaN: true }), fc.double({ min: 0.01, max: 5, noNaN: true })), grid })
+      .map((o) => [o]),
+  },
+  {
+    name: 'placementScene',
+    roots: ['options'],
+    args: fc.oneof(
+      fc.constant([]),
+      fc
+        .record({ count: fc.integer({ min: 0, max: 50 }), seed: fc.oneof(fc.nat(), fc.constant(2 ** 53 - 1)), extent: fc.double({ min: 0.01, max: 10, noNaN: true }), sigma: fc.constant([0.1, 0.5]) }, { requiredKeys: [] })
+        .map((o) => [o]),
+    ),
+  },
+  {
+    name: 'mixtureDensityGrid',
+    roots: ['options'],
+    args: fc.record({ mixture: mixture(2, 4, true), grid }).map((o) => [o]),
+  },
+  {
+    name: 'splitLibrary',
+    roots: ['options'],
+    args: fc
+      .record({ components: fc.integer({ min: 2, max: 6 }), lambda: fc.constantFrom(0.001, 0.01, 0.1, 1e-6, 10), spacing: fc.constantFrom('equal', 'free') }, { requiredKeys: ['components', 'lambda'] })
+      .map((o) => [o]),
+  },
+  {
+    name: 'splitForRegions',
+    roots: ['options'],
+    args: fc
+      .record(
+        { mixture: mixture(2, 3), regions: fc.array(region2, { minLength: 1, maxLength: 2 }), minWeight: fc.constantFrom(0.01, 0.1, 0.5), components: fc.constantFrom(3, 4), maxDepth: fc.integer({ min: 0, max: 4 }), gridPoints: fc.constantFrom(5, 9, 15), maxComponents: fc.integer({ min: 1, max: 300 }) },
+        { requiredKeys: ['mixture', 'regions'] },
+      )
+      .map((o) => [o]),
+  },
+  {
+    name: 'reduceMixture',
+    roots: ['options'],
+    args: dim
+      .chain((d) => fc.record({ mixture: mixture(d, 8), pruneBelow: fc.constantFrom(0, 0.01, 0.2), mergeDistance: fc.double({ min: 0, max: 5, noNaN: true }), maxComponents: fc.integer({ min: 1, max: 6 }) }, { requiredKeys: ['mixture'] }))
+      .map((o) => [o]),
+  },
+  {
+    name: 'negativeInformationScenario',
+    roots: ['options'],
+    weight: 0.2,
+    args: fc.oneof(fc.constant([]), fc.integer({ min: 1, max: 3 }).map((step) => [{ step }])),
+  },
+  {
+    name: 'bernoulliEstimate',
+    roots: ['options'],
+    args: dim.chain((d) => fc.record({ existence: probability, density: density(d), radius, costs })).map((o) => [o]),
+  },
+  {
+    name: 'probabilityOutsideBall',
+    roots: ['options'],
+    args: dim.chain((d) => fc.record({ density: density(d), center: point(d), radius })).map((o) => [o]),
+  },
+  {
+    name: 'bernoulliThresholdCurve',
+    roots: ['options'],
+    args: fc
+      .record({ sigmas: fc.array(fc.double({ min: 1e-3, max: 100, noNaN: true }), { maxLength: 20 }), radius, costs, dim: fc.integer({ min: 1, max: 50 }) }, { requiredKeys: ['sigmas', 'radius', 'costs'] })
+      .map((o) => [o]),
+  },
+  {
+    name: 'mmucEstimate',
+    roots: ['options'],
+    args: dim.chain((d) => fc.record({ density: density(d), radius })).map((o) => [o]),
+  },
+  {
+    name: 'multiBernoulliPointEstimate',
+    roots: ['options'],
+    args: fc.constantFrom(1, 2).chain((d) => fc.record({ components: fc.array(fc.record({ existence: probability, density: density(d) }), { maxLength: 3 }), radius, costs })).map((o) => [o]),
+  },
+  {
+    name: 'bernoulliLossCurve',
+    roots: ['options'],
+    args: fc
+      .record({ existences: probabilities(20), missProbability: probability, costs, threshold: fc.double({ min: 0, max: 1, noNaN: true }) }, { requiredKeys: ['existences', 'missProbability', 'costs'] })
+      .map((o) => [o]),
+  },
+  { name: 'version', roots: [], weight: 0.05, args: fc.constant([]) },
+];
+
+/**
+ * Values past a documented cap, per function: each entry is `[path, value]`, applied to the
+ * first argument (the options object) or, for positional functions, to the named argument.
+ */
+export const pastCaps = {
+  mbDecisionMap: [['0.resolution', 2001]],
+  mbIdenticalComponentCounts: [['0.maxComponents', 1001]],
+  placementScene: [['0.count', 10001], ['0.seed', 2 ** 53]],
+  splitLibrary: [['0.components', 17], ['0.components', 1]],
+  splitForRegions: [['0.maxComponents', 50001], ['0.gridPoints', 20001], ['0.maxDepth', 65], ['0.positionDims', 9]],
+  reduceMixture: [['0.maxComponents', 1e6 + 1]],
+  bernoulliThresholdCurve: [['0.dim', 10001]],
+  negativeInformationScenario: [['0.step', 4], ['0.step', 0]],
+  fovVarianceMap: [['0.grid.x.2', 4097]],
+  mixtureDensityGrid: [['0.grid.y.2', 4097]],
+};

@@ -1,0 +1,98 @@
+//! The boundary itself: reading options ([`read`]), writing results ([`write()`]), turning core
+//! errors into JS exceptions, and seeds.
+//!
+//! Every exported function follows one shape:
+//!
+//! ```text
+//! let opts: GospaOptions = read(options, "options")?;        // TypeError/RangeError with a path
+//! let g = Gospa::new(opts.c, opts.p, opts.alpha).or_throw_in("options")?;   // core checks
+//! write(&GospaResult { … })                                  // serde-wasm-bindgen
+//! ```
+
+use std::string::ToString;
+
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+use wasm_bindgen::JsValue;
+
+use crate::de::{self, ErrorClass};
+
+/// Result of a binding: the error is the JS exception to throw.
+pub type JsResult<T> = Result<T, JsValue>;
+
+/// A `TypeError` with `message`.
+pub fn type_error(message: impl AsRef<str>) -> JsValue {
+    js_sys::TypeError::new(message.as_ref()).into()
+}
+
+/// A `RangeError` with `message`.
+pub fn range_error(message: impl AsRef<str>) -> JsValue {
+    js_sys::RangeError::new(message.as_ref()).into()
+}
+
+/// The JS exception for a deserialization error.
+pub fn de_error(e: de::Error) -> JsValue {
+    match e.class {
+        ErrorClass::Type => type_error(&e.message),
+        ErrorClass::Range => range_error(&e.message),
+    }
+}
+
+/// Reads the argument `value`, named `root` in errors, as a `T` (see [`crate::de`]).
+pub fn read<T: DeserializeOwned>(value: JsValue, root: &str) -> JsResult<T> {
+    de::from_js(value, root).map_err(de_error)
+}
+
+/// Writes `value` as a plain JS value: structs become objects, `Vec`s arrays, `None` `null`
+/// (fields that are absent when unset say so with `skip_serializing_if`).
+pub fn write<T: Serialize + ?Sized>(value: &T) -> JsResult<JsValue> {
+    let serializer = serde_wasm_bindgen::Serializer::new()
+        .serialize_missing_as_null(true)
+        .serialize_maps_as_objects(true);
+    value
+        .serialize(&serializer)
+        .map_err(|e| js_sys::Error::new(&e.to_string()).into())
+}
+
+/// The JS exception for a `fisst` error: a `RangeError` carrying its message.
+pub fn core_error(e: fisst::Error) -> JsValue {
+    range_error(e.to_string())
+}
+
+/// `?`-friendly conversion of `fisst` results.
+pub trait OrThrow<T> {
+    /// Maps the error to [`core_error`]; its field is already a full path.
+    fn or_throw(self) -> JsResult<T>;
+    /// Maps the error to [`core_error`] with its field under `prefix` (`c` → `options.c`).
+    fn or_throw_in(self, prefix: &str) -> JsResult<T>;
+}
+
+impl<T> OrThrow<T> for fisst::Result<T> {
+    fn or_throw(self) -> JsResult<T> {
+        self.map_err(core_error)
+    }
+
+    fn or_throw_in(self, prefix: &str) -> JsResult<T> {
+        self.map_err(|e| core_error(e.within(prefix)))
+    }
+}
+
+/// The seed of a seeded function: the caller's, or fresh platform entropy when omitted
+/// (`crypto.getRandomValues` through getrandom). Either way the result reports the seed
+/// used, so every run can be reproduced exactly.
+pub fn seed_or_entropy(seed: Option<u64>) -> JsResult<u64> {
+    match seed {
+        Some(s) => Ok(s),
+        None => fisst::math::rng::entropy_seed().or_throw_in("options"),
+    }
+}
+
+/// Checks that an integer option lies in `[min, max]`, naming it by `path`.
+pub fn check_range(path: &str, value: usize, min: usize, max: usize) -> JsResult<usize> {
+    if value < min || value > max {
+        return Err(range_error(std::format!(
+            "{path} must be an integer in [{min}, {max}], got {value}"
+        )));
+    }
+    Ok(value)
+}
