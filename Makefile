@@ -51,7 +51,7 @@ test-wasm:
 
 test-js: web-pkg
 	scripts/npm-deps.sh
-	cd tests/js && node --test contract.test.mjs readme.test.mjs types.test.mjs lib.test.mjs
+	cd tests/js && node --test contract.test.mjs readme.test.mjs types.test.mjs lib.test.mjs bernoulli_filters.test.mjs
 	cd tests/js && node --expose-gc --test soak/
 	cd tests/js && node --test --test-concurrency=1 pages/
 
@@ -72,6 +72,7 @@ bench: pkg
 	python3 benches/pmf_vs_scipy.py
 	python3 benches/map_vs_numpy.py
 	python3 benches/bernoulli_vs_scipy.py
+	python3 benches/bernoulli_vs_stonesoup.py
 
 clean:
 	cargo clean

@@ -24,6 +24,11 @@
 //! # Ok::<(), fisst::Error>(())
 //! ```
 //!
+//! ## Bernoulli filters
+//! [`filters`] has the Gaussian-mixture Bernoulli filter for imprecise (region) reports,
+//! negative information and vector measurements (Algorithm 3 of `001`), the Bernoulli
+//! particle filter it is compared with, and [`sim::airport`] the paper's airport example.
+//!
 //! ## Features
 //! | feature | default | what it does |
 //! |---|---|---|
@@ -53,12 +58,14 @@ pub mod bernoulli;
 pub mod cardinality;
 pub mod error;
 pub mod estimators;
+pub mod filters;
 pub mod fov;
 pub mod gaussian;
 pub mod math;
 pub mod metrics;
 pub mod mixture;
 pub mod regions;
+pub mod sim;
 pub mod splitting;
 
 pub use error::{Error, Result};

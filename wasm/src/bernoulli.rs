@@ -147,7 +147,7 @@ impl<'de> Deserialize<'de> for BernoulliCosts {
 
 impl BernoulliCosts {
     /// The core costs; errors name `path` (`options.costs`).
-    fn into_core(self, path: &str) -> JsResult<Costs> {
+    pub(crate) fn into_core(self, path: &str) -> JsResult<Costs> {
         match self {
             BernoulliCosts::Mpe => Ok(Costs::mpe()),
             BernoulliCosts::Mmol(m) => {
@@ -320,7 +320,7 @@ pub struct BernoulliLossCurveResult {
     pub threshold: f64,
 }
 
-fn estimate_out(e: &BernoulliEstimate) -> BernoulliEstimateResult {
+pub(crate) fn estimate_out(e: &BernoulliEstimate) -> BernoulliEstimateResult {
     BernoulliEstimateResult {
         declare: e.declare,
         estimate: e.estimate.clone(),

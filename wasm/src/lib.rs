@@ -22,6 +22,7 @@ pub mod de;
 pub mod types;
 
 mod bernoulli;
+mod bernoulli_filters;
 mod fov;
 mod metrics;
 mod multi_bernoulli;
@@ -30,6 +31,10 @@ mod splitting;
 pub use bernoulli::{
     bernoulli_estimate, bernoulli_loss_curve, bernoulli_threshold_curve, mmuc_estimate,
     multi_bernoulli_point_estimate, probability_outside_ball,
+};
+pub use bernoulli_filters::{
+    GmBernoulliFilterJs, ParticleBernoulliFilterJs, airport_scenario, gm_bernoulli_predict,
+    gm_bernoulli_update,
 };
 pub use fov::{fov_cardinality_js, fov_variance_map, mixture_density_grid_js, placement_scene_js};
 pub use metrics::{gospa, linear_assignment, ospa, uospa};

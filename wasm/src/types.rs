@@ -318,6 +318,10 @@ pub enum Region {
     Polygon(Vec<[f64; 2]>),
     /// `{ disc: { center, radius } }`.
     Disc(DiscRegion),
+    /// `{ union: [region, …] }`: inside any member (at least one, all of one dimension).
+    Union(Vec<Region>),
+    /// `{ complement: region }`: outside the region (open).
+    Complement(Box<Region>),
 }
 
 /// An estimate of the native cost of one Gaussian mass in a region of `kind`, in
@@ -331,6 +335,8 @@ fn mass_cost_us(region: &Region) -> f64 {
         Region::Polygon(v) => 150.0 + 10.0 * v.len() as f64,
         Region::Disc(d) if d.center.len() <= 1 => 1.0,
         Region::Disc(d) => 150.0 * nested(d.center.len()),
+        Region::Union(m) => m.iter().map(mass_cost_us).sum::<f64>().max(150.0),
+        Region::Complement(r) => mass_cost_us(r),
     }
 }
 
@@ -352,6 +358,24 @@ impl Region {
                 CoreRegion::polygon(&v, &name)
             }
             Region::Disc(d) => CoreRegion::ball(&d.center, d.radius, &format!("{path}.disc")),
+            Region::Union(m) => {
+                let name = format!("{path}.union");
+                if m.len() > MAX_VERTICES {
+                    return Err(range_error(format!(
+                        "{name} has {} members, at most {MAX_VERTICES} are supported",
+                        m.len()
+                    )));
+                }
+                let members = m
+                    .into_iter()
+                    .enumerate()
+                    .map(|(i, r)| Ok(r.into_core(&format!("{name}[{i}]"))?.0))
+                    .collect::<JsResult<Vec<_>>>()?;
+                CoreRegion::union(members, &name)
+            }
+            Region::Complement(r) => Ok(CoreRegion::complement(
+                r.into_core(&format!("{path}.complement"))?.0,
+            )),
         };
         Ok((region.or_throw()?, cost))
     }

@@ -159,12 +159,19 @@ impl Gaussian {
     pub fn mahalanobis_sq(&self, x: &[f64]) -> f64 {
         debug_assert_eq!(x.len(), self.dim());
         let n = self.dim();
-        // Forward substitution L y = x − m.
-        let mut y: Vec<f64> = Vec::with_capacity(n);
+        // Forward substitution L y = x − m (on the stack for small n).
+        let mut small = [0.0f64; 8];
+        let mut large: Vec<f64> = Vec::new();
+        let y: &mut [f64] = if n <= small.len() {
+            &mut small[..n]
+        } else {
+            large.resize(n, 0.0);
+            &mut large
+        };
         let mut total = 0.0;
         for (i, (&xi, &mi)) in x.iter().zip(self.mean.iter()).enumerate().take(n) {
             let mut s = xi - mi;
-            for (j, yj) in y.iter().enumerate() {
+            for (j, yj) in y.iter().enumerate().take(i) {
                 s -= self.chol[(i, j)] * yj;
             }
             let yi = s / self.chol[(i, i)];
@@ -172,7 +179,7 @@ impl Gaussian {
             if total == f64::INFINITY {
                 return f64::INFINITY;
             }
-            y.push(yi);
+            y[i] = yi;
         }
         total
     }

@@ -192,4 +192,163 @@ impl Region {
             Node::Complement(r) => !r.contains(s),
         }
     }
+
+    /// A conservative classification of the closed ball of `radius` about the first
+    /// `dim()` components of `center`: `Some(true)` when the whole ball is inside the
+    /// region, `Some(false)` when it is wholly outside, `None` when undecided (the ball may
+    /// straddle the boundary). Never wrong when it decides; used to skip regions far from a
+    /// component in the splitting test.
+    pub(crate) fn ball_relation(&self, center: &[f64], radius: f64) -> Option<bool> {
+        match &self.node {
+            Node::Box(b) => {
+                let (lo, hi) = (b.min(), b.max());
+                let mut d2 = 0.0;
+                let mut inside = true;
+                for i in 0..lo.len() {
+                    let c = center[i];
+                    let gap = if c < lo[i] {
+                        lo[i] - c
+                    } else if c > hi[i] {
+                        c - hi[i]
+                    } else {
+                        0.0
+                    };
+                    d2 += gap * gap;
+                    if !(c - radius >= lo[i] && c + radius <= hi[i]) {
+                        inside = false;
+                    }
+                }
+                if d2 > radius * radius {
+                    Some(false)
+                } else if inside {
+                    Some(true)
+                } else {
+                    None
+                }
+            }
+            Node::Ball(b) => {
+                let c = b.center();
+                let d2: f64 = c.iter().zip(center).map(|(a, x)| (a - x) * (a - x)).sum();
+                let d = crate::math::fns::sqrt(d2);
+                if d > b.radius() + radius {
+                    Some(false)
+                } else if d + radius < b.radius() {
+                    Some(true)
+                } else {
+                    None
+                }
+            }
+            Node::Polygon(p) => {
+                let v = p.vertices();
+                let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+                for q in v {
+                    for k in 0..2 {
+                        lo[k] = lo[k].min(q[k]);
+                        hi[k] = hi[k].max(q[k]);
+                    }
+                }
+                let mut d2 = 0.0;
+                for k in 0..2 {
+                    let c = center[k];
+                    let gap = if c < lo[k] {
+                        lo[k] - c
+                    } else if c > hi[k] {
+                        c - hi[k]
+                    } else {
+                        0.0
+                    };
+                    d2 += gap * gap;
+                }
+                if d2 > radius * radius {
+                    Some(false)
+                } else {
+                    None
+                }
+            }
+            Node::Union(m) => {
+                let mut all_out = true;
+                for r in m {
+                    match r.ball_relation(center, radius) {
+                        Some(true) => return Some(true),
+                        Some(false) => {}
+                        None => all_out = false,
+                    }
+                }
+                if all_out { Some(false) } else { None }
+            }
+            Node::Intersection(m) => {
+                let mut all_in = true;
+                for r in m {
+                    match r.ball_relation(center, radius) {
+                        Some(false) => return Some(false),
+                        Some(true) => {}
+                        None => all_in = false,
+                    }
+                }
+                if all_in { Some(true) } else { None }
+            }
+            Node::Complement(r) => r.ball_relation(center, radius).map(|b| !b),
+        }
+    }
+
+    /// The region as seen by the closed ball of `radius` about `center`: decided (the whole
+    /// ball inside or outside, as [`Region::ball_relation`]), or a simpler region that
+    /// agrees with this one on the ball (union and intersection members decided on the ball
+    /// are dropped), or unchanged. Used by the splitting test, which evaluates the region
+    /// at many points of one ball.
+    pub(crate) fn on_ball(&self, center: &[f64], radius: f64) -> OnBall {
+        match &self.node {
+            Node::Union(m) | Node::Intersection(m) => {
+                let union = matches!(self.node, Node::Union(_));
+                let mut kept: Vec<Region> = Vec::new();
+                let mut changed = false;
+                for r in m {
+                    match r.on_ball(center, radius) {
+                        OnBall::Decided(b) if b == union => return OnBall::Decided(union),
+                        OnBall::Decided(_) => changed = true,
+                        OnBall::Same => kept.push(r.clone()),
+                        OnBall::Reduced(x) => {
+                            changed = true;
+                            kept.push(x);
+                        }
+                    }
+                }
+                if kept.is_empty() {
+                    return OnBall::Decided(!union);
+                }
+                if !changed {
+                    return OnBall::Same;
+                }
+                if kept.len() == 1 {
+                    return OnBall::Reduced(kept.pop().unwrap_or_else(|| unreachable!()));
+                }
+                OnBall::Reduced(Region {
+                    node: if union {
+                        Node::Union(kept)
+                    } else {
+                        Node::Intersection(kept)
+                    },
+                })
+            }
+            Node::Complement(r) => match r.on_ball(center, radius) {
+                OnBall::Decided(b) => OnBall::Decided(!b),
+                OnBall::Same => OnBall::Same,
+                OnBall::Reduced(x) => OnBall::Reduced(Region::complement(x)),
+            },
+            _ => match self.ball_relation(center, radius) {
+                Some(b) => OnBall::Decided(b),
+                None => OnBall::Same,
+            },
+        }
+    }
+}
+
+/// What [`Region::on_ball`] found.
+pub(crate) enum OnBall {
+    /// The whole ball is inside (`true`) or outside (`false`).
+    Decided(bool),
+    /// No simplification.
+    Same,
+    /// A simpler region equal to this one on the ball.
+    Reduced(Region),
 }

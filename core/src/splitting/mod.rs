@@ -11,8 +11,9 @@
 //! split along its best direction with a precomputed univariate split ([`SplitLibrary`],
 //! eqs. (13)–(14), applied by [`split_component`], eqs. (27)–(31)), recursively.
 //!
-//! - [`SplitLibrary`]: Table I verbatim, and an optimiser for any R and λ with equally
-//!   spaced or free symmetric means.
+//! - [`SplitLibrary`]: Table I verbatim, an optimiser for any R and λ with equally
+//!   spaced or free symmetric means, and the variance-preserving library of the authors'
+//!   `pyest` ([`SplitLibrary::variance_preserving`]).
 //! - [`split_component`]: one split along an eigenvector; mean exact, covariance short by
 //!   (1 − [`SplitLibrary::variance`]) λ_k along that eigenvector.
 //! - [`split_for_regions`]: Algorithms 1–2 with w_min, the grid (ζ, N_g), the split
@@ -55,6 +56,7 @@ mod objective;
 mod optimise;
 mod partition;
 mod recursive;
+mod variance_preserving;
 
 pub use component::{Eigen, split_component};
 pub use library::{
@@ -69,5 +71,7 @@ pub use recursive::{
     MAX_DEPTH_LIMIT, MAX_GRID_POINTS, SplitOptions, SplitOutcome, SplitStop, split_for_region,
     split_for_regions,
 };
+#[cfg(test)]
+pub(crate) use variance_preserving::optimise as variance_preserving_optimise;
 #[cfg(test)]
 mod tests;

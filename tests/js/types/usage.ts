@@ -65,3 +65,31 @@ fisst.mbOptimalEstimate({ existence: [0.4], metric: 'hausdorff' });
 fisst.gospa(truth, truth, { p: 2 });
 
 export const used = [distance, missed, pairs, parts, pmf, mse, la, u, loo, alt, map, counts, fc, poisson, vmap, scene, dens, lib, exact, reduced, fig5, step, at, q, gamma, mmuc, mbp, loss, v, badRegion];
+
+// Bernoulli filters (issue 12).
+const airport: fisst.AirportScenarioResult = fisst.airportScenario({ seed: 1, steps: 3 });
+const predicted: fisst.GmBernoulliResult = fisst.gmBernoulliPredict({
+  existence: 0.5,
+  mixture: airport.config.mixture,
+  transition: airport.config.transition,
+});
+const updated: fisst.GmBernoulliUpdateResult = fisst.gmBernoulliUpdate({
+  existence: predicted.existence,
+  mixture: predicted.mixture,
+  detection: { probability: 0.9, fov: airport.fov },
+  reports: [{ disc: { center: [20, 8], radius: 19 } }],
+  clutter: { rate: 0.25, density: 0.1 },
+});
+const delta: number = updated.delta;
+const gmFilter = new fisst.GmBernoulliFilter(airport.config);
+gmFilter.predict();
+gmFilter.update([{ union: [{ disc: { center: [0, 0], radius: 1 } }] }]);
+const filterEstimate: fisst.FilterEstimateResult = gmFilter.estimate({ radius: 5, costs: 'mpe' });
+const existenceNow: number = gmFilter.existence;
+gmFilter.free();
+const pfFilter = new fisst.ParticleBernoulliFilter({ ...airport.config, particles: 100 });
+pfFilter.update({ measurements: [] });
+const cloud: number[][] = pfFilter.particles;
+pfFilter.free();
+// @ts-expect-error: a misspelt option ('existance') is not in GmBernoulliPredictOptions
+fisst.gmBernoulliPredict({ existance: 0.5, mixture: [], transition: airport.config.transition });

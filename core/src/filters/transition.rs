@@ -1,0 +1,243 @@
+//! The linear-Gaussian transition π(x | x′) = N(x; F x′, Q), eq. (44) of `001_…`, and the
+//! nearly-constant-velocity model (70)–(71).
+
+use alloc::vec::Vec;
+
+use nalgebra::{DMatrix, SymmetricEigen};
+
+use crate::error::{Error, Result};
+use crate::math::fns;
+
+/// π_{k|k−1}(x | x′) = N(x; F x′, Q), eq. (44) (and (69)) of `001_0f0df91eee9b30d5.txt`.
+///
+/// Q may be singular (positive semidefinite, e.g. ϖ = 0); the particle filter's MCMC move
+/// step evaluates the transition density and then needs Q positive definite.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LinearGaussianTransition {
+    f: DMatrix<f64>,
+    q: DMatrix<f64>,
+    /// A factor G with G Gᵀ = Q (Cholesky when Q is positive definite, V √Λ otherwise),
+    /// for sampling.
+    factor: DMatrix<f64>,
+    /// The Cholesky factor of Q when Q is positive definite.
+    chol: Option<DMatrix<f64>>,
+    /// ln det Q when Q is positive definite.
+    ln_det: f64,
+}
+
+/// Relative tolerance of the symmetry and semidefiniteness checks of Q.
+const TOL: f64 = 1e-9;
+
+impl LinearGaussianTransition {
+    /// F (`transition.F`, n × n) and Q (`transition.Q`, n × n, symmetric positive
+    /// semidefinite).
+    ///
+    /// # Errors
+    /// [`Error::DimensionMismatch`] naming `transition.F` (not square, or empty) or
+    /// `transition.Q` (not n × n); [`Error::InvalidParameter`] naming `transition.F[i][j]` or
+    /// `transition.Q[i][j]` for a non-finite entry; [`Error::NotPositiveDefinite`] naming
+    /// `transition.Q` if Q is not symmetric (to a relative 1e-9) or has a negative
+    /// eigenvalue (below −1e-9 of its largest).
+    pub fn new(f: DMatrix<f64>, q: DMatrix<f64>) -> Result<Self> {
+        let n = f.nrows();
+        if n == 0 {
+            return Err(Error::dimension("transition.F", 1, 0));
+        }
+        if f.ncols() != n {
+            return Err(Error::dimension("transition.F", n, f.ncols()));
+        }
+        if q.nrows() != n || q.ncols() != n {
+            let found = if q.nrows() != n { q.nrows() } else { q.ncols() };
+            return Err(Error::dimension("transition.Q", n, found));
+        }
+        check_finite(&f, "transition.F")?;
+        check_finite(&q, "transition.Q")?;
+        let not_psd = || Error::NotPositiveDefinite {
+            what: "transition.Q".into(),
+        };
+        let scale = (0..n).fold(0.0f64, |a, i| a.max(fns::abs(q[(i, i)])));
+        for i in 0..n {
+            for j in 0..i {
+                if fns::abs(q[(i, j)] - q[(j, i)]) > TOL * scale.max(f64::MIN_POSITIVE) {
+                    return Err(not_psd());
+                }
+            }
+        }
+        let q = (&q + q.transpose()) * 0.5;
+        let (factor, chol, ln_det) = match q.clone().cholesky() {
+            Some(c) => {
+                let l = c.unpack();
+                let ln_det = (0..n).map(|i| 2.0 * fns::ln(l[(i, i)])).sum();
+                (l.clone(), Some(l), ln_det)
+            }
+            None => {
+                let eig =
+                    SymmetricEigen::try_new(q.clone(), f64::EPSILON, 10_000).ok_or_else(not_psd)?;
+                let top = eig.eigenvalues.iter().fold(0.0f64, |a, v| a.max(*v));
+                if eig.eigenvalues.iter().any(|v| *v < -TOL * top.max(0.0)) {
+                    return Err(not_psd());
+                }
+                let mut g = eig.eigenvectors.clone();
+                for (k, v) in eig.eigenvalues.iter().enumerate() {
+                    let s = fns::sqrt(v.max(0.0));
+                    for r in 0..n {
+                        g[(r, k)] *= s;
+                    }
+                }
+                (g, None, f64::NEG_INFINITY)
+            }
+        };
+        Ok(Self {
+            f,
+            q,
+            factor,
+            chol,
+            ln_det,
+        })
+    }
+
+    /// [`LinearGaussianTransition::new`] from row-major slices of n² numbers each.
+    ///
+    /// # Errors
+    /// [`Error::DimensionMismatch`] naming `transition.F` if `f.len()` is not a square
+    /// number, `transition.Q` if `q.len() != f.len()`; as [`LinearGaussianTransition::new`].
+    pub fn from_row_slices(f: &[f64], q: &[f64]) -> Result<Self> {
+        let n = isqrt(f.len());
+        if n * n != f.len() || n == 0 {
+            return Err(Error::dimension("transition.F", (n + 1) * (n + 1), f.len()));
+        }
+        if q.len() != f.len() {
+            return Err(Error::dimension("transition.Q", f.len(), q.len()));
+        }
+        Self::new(
+            DMatrix::from_row_slice(n, n, f),
+            DMatrix::from_row_slice(n, n, q),
+        )
+    }
+
+    /// The nearly-constant-velocity (white-noise acceleration) model of eqs. (70)–(71) of
+    /// `001_…`, generalised to d = `position_dims` position coordinates: the state is
+    /// (s, v) = (s_1 … s_d, v_1 … v_d), positions first as in (61), and with T = `dt`,
+    /// ϖ = `intensity`,
+    ///
+    /// ```text
+    /// F = [ I  T·I ]        Q = ϖ [ T³/3·I  T²/2·I ]
+    ///     [ 0   I  ]              [ T²/2·I   T·I   ]      (70)–(71)
+    /// ```
+    ///
+    /// (d = 2 is the airport example's 4-state model; T = 15 s, ϖ = 0.004 there.)
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming `positionDims` (0 or above 64), `dt` (not finite
+    /// and > 0) or `intensity` (not finite and ≥ 0).
+    ///
+    /// # Examples
+    /// ```
+    /// use fisst::filters::LinearGaussianTransition;
+    /// let m = LinearGaussianTransition::nearly_constant_velocity(2, 15.0, 0.004)?;
+    /// assert_eq!(m.f()[(0, 2)], 15.0);
+    /// assert!((m.q()[(0, 0)] - 0.004 * 15f64.powi(3) / 3.0).abs() < 1e-12);
+    /// # Ok::<(), fisst::Error>(())
+    /// ```
+    pub fn nearly_constant_velocity(position_dims: usize, dt: f64, intensity: f64) -> Result<Self> {
+        if position_dims == 0 || position_dims > 64 {
+            return Err(Error::parameter(
+                "positionDims",
+                position_dims as f64,
+                "an integer in [1, 64]",
+            ));
+        }
+        if !(dt.is_finite() && dt > 0.0) {
+            return Err(Error::parameter("dt", dt, "finite and > 0"));
+        }
+        if !(intensity.is_finite() && intensity >= 0.0) {
+            return Err(Error::parameter("intensity", intensity, "finite and >= 0"));
+        }
+        let d = position_dims;
+        let n = 2 * d;
+        let mut f = DMatrix::identity(n, n);
+        let mut q = DMatrix::zeros(n, n);
+        let (a, b, c) = (
+            intensity * dt * dt * dt / 3.0,
+            intensity * dt * dt / 2.0,
+            intensity * dt,
+        );
+        for i in 0..d {
+            f[(i, d + i)] = dt;
+            q[(i, i)] = a;
+            q[(i, d + i)] = b;
+            q[(d + i, i)] = b;
+            q[(d + i, d + i)] = c;
+        }
+        Self::new(f, q)
+    }
+
+    /// The state dimension n.
+    pub fn dim(&self) -> usize {
+        self.f.nrows()
+    }
+
+    /// F.
+    pub fn f(&self) -> &DMatrix<f64> {
+        &self.f
+    }
+
+    /// Q (exactly symmetric).
+    pub fn q(&self) -> &DMatrix<f64> {
+        &self.q
+    }
+
+    /// True when Q is positive definite (the transition has a density).
+    pub fn has_density(&self) -> bool {
+        self.chol.is_some()
+    }
+
+    /// A factor G with G Gᵀ = Q.
+    pub(crate) fn factor(&self) -> &DMatrix<f64> {
+        &self.factor
+    }
+
+    /// ln N(x; F x′, Q) with `fx` = F x′ precomputed; −∞ when Q is singular.
+    pub(crate) fn ln_density(&self, x: &[f64], fx: &[f64]) -> f64 {
+        let Some(l) = &self.chol else {
+            return f64::NEG_INFINITY;
+        };
+        let n = x.len();
+        let mut y: Vec<f64> = Vec::with_capacity(n);
+        let mut m2 = 0.0;
+        for i in 0..n {
+            let mut s = x[i] - fx[i];
+            for (j, yj) in y.iter().enumerate() {
+                s -= l[(i, j)] * yj;
+            }
+            let yi = s / l[(i, i)];
+            m2 += yi * yi;
+            y.push(yi);
+        }
+        -0.5 * (n as f64 * fns::ln(2.0 * core::f64::consts::PI) + self.ln_det + m2)
+    }
+}
+
+fn check_finite(m: &DMatrix<f64>, what: &str) -> Result<()> {
+    let n = m.nrows();
+    if let Some(k) = m.iter().position(|v| !v.is_finite()) {
+        return Err(Error::parameter(
+            alloc::format!("{what}[{}][{}]", k % n, k / n),
+            m[k],
+            "finite",
+        ));
+    }
+    Ok(())
+}
+
+/// ⌊√n⌋ for small n.
+pub(crate) fn isqrt(n: usize) -> usize {
+    let mut r = fns::sqrt(n as f64) as usize;
+    while r * r > n {
+        r -= 1;
+    }
+    while (r + 1) * (r + 1) <= n {
+        r += 1;
+    }
+    r
+}

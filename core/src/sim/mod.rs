@@ -1,0 +1,3 @@
+//! Seeded scenarios shared by tests, benchmarks and demos.
+
+pub mod airport;

@@ -1,0 +1,1122 @@
+//! Bernoulli filters (paper 001, Section V): `gmBernoulliPredict`, `gmBernoulliUpdate`, the
+//! classes `GmBernoulliFilter` and `ParticleBernoulliFilter`, and `airportScenario`.
+
+use std::boxed::Box;
+use std::format;
+use std::string::String;
+use std::vec::Vec;
+
+use serde::de::{self, Deserializer, SeqAccess, Visitor};
+use serde::{Deserialize, Serialize};
+use tsify::Tsify;
+use wasm_bindgen::prelude::*;
+
+use crate::bernoulli::{BernoulliCosts, BernoulliEstimateResult, estimate_out};
+use crate::boundary::{JsResult, OrThrow, check_range, range_error, read, seed_or_entropy, write};
+use crate::types::{
+    self, BoxRegion, DiscRegion, MixtureComponent, Point, Region, WeightedGaussian,
+};
+use fisst::bernoulli::ApplicationLoss;
+use fisst::filters::{
+    self as core_filters, BernoulliFilterConfig as CoreConfig, Birth, Clutter, ClutterDensity,
+    Detection, EstimateOptions, FilterEstimate, GmBernoulli, LinearGaussianLikelihood,
+    LinearGaussianTransition, PredictConfig, Splitting, UpdateConfig,
+};
+use fisst::mixture::ReductionOptions;
+use fisst::regions::Region as CoreRegion;
+use fisst::splitting::{Spacing, SplitLibrary, SplitOptions};
+
+fn two() -> usize {
+    2
+}
+fn survival() -> f64 {
+    0.99
+}
+fn four() -> usize {
+    4
+}
+fn lambda() -> f64 {
+    0.001
+}
+fn min_weight() -> f64 {
+    0.01
+}
+fn grid_bound() -> f64 {
+    2.0
+}
+fn grid_points() -> usize {
+    15
+}
+fn max_depth() -> usize {
+    16
+}
+fn max_split() -> usize {
+    10_000
+}
+fn particles() -> usize {
+    5000
+}
+fn one() -> usize {
+    1
+}
+
+/// The linear-Gaussian transition N(x; F x′, Q) (eq. (44)): F and Q as n rows of n numbers
+/// (Q symmetric positive semidefinite).
+#[derive(Clone, Debug, Deserialize, Serialize, Tsify)]
+pub struct Transition {
+    /// F.
+    #[serde(rename = "F")]
+    pub f: Vec<Vec<f64>>,
+    /// Q.
+    #[serde(rename = "Q")]
+    pub q: Vec<Vec<f64>>,
+}
+
+fn square(rows: &[Vec<f64>], path: &str) -> JsResult<(Vec<f64>, usize)> {
+    let n = rows.len();
+    for (i, r) in rows.iter().enumerate() {
+        if r.len() != n {
+            return Err(range_error(format!(
+                "{path}[{i}] has length {}, expected {n}",
+                r.len()
+            )));
+        }
+    }
+    Ok((rows.concat(), n))
+}
+
+impl Transition {
+    fn into_core(self, path: &str) -> JsResult<LinearGaussianTransition> {
+        if self.f.len() > 64 {
+            return Err(range_error(format!(
+                "{path}.F: at most 64 states are supported"
+            )));
+        }
+        let (f, _) = square(&self.f, &format!("{path}.F"))?;
+        let (q, _) = square(&self.q, &format!("{path}.Q"))?;
+        LinearGaussianTransition::from_row_slices(&f, &q)
+            .or_throw_in(path.trim_end_matches(".transition"))
+    }
+}
+
+/// Object birth: p_b and the birth density b(x) (weights sum to 1; may be empty when
+/// p_b = 0).
+#[derive(Deserialize, Tsify)]
+pub struct BirthOptions {
+    /// p_b, in [0, 1].
+    pub probability: f64,
+    /// b(x).
+    #[serde(default)]
+    pub mixture: Vec<WeightedGaussian>,
+}
+
+/// p_D(x; S) = 1_S(x) p_D (51).
+#[derive(Deserialize, Tsify)]
+pub struct DetectionOptions {
+    /// p_D inside the field of view, in [0, 1].
+    pub probability: f64,
+    /// The field of view S; omitted: detection everywhere.
+    #[tsify(optional)]
+    pub fov: Option<Region>,
+}
+
+/// c̃(ζ): one number for every report, or one per report.
+#[derive(Clone, Debug, Tsify)]
+#[tsify(type = "number | number[]")]
+pub enum ClutterDensityOption {
+    /// One value.
+    One(f64),
+    /// One per report.
+    PerReport(Vec<f64>),
+}
+
+impl<'de> Deserialize<'de> for ClutterDensityOption {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = ClutterDensityOption;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("a number or an array of numbers")
+            }
+            fn visit_f64<E: de::Error>(self, x: f64) -> Result<Self::Value, E> {
+                Ok(ClutterDensityOption::One(x))
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+                let mut v = Vec::new();
+                while let Some(x) = seq.next_element::<f64>()? {
+                    v.push(x);
+                }
+                Ok(ClutterDensityOption::PerReport(v))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// Poisson false reports: rate λ_c and density c̃(ζ).
+#[derive(Deserialize, Tsify)]
+pub struct ClutterOptions {
+    /// λ_c ≥ 0, the mean number of false reports per scan.
+    pub rate: f64,
+    /// c̃(ζ) ≥ 0 (e.g. 1 / number of anchors, or 1 / area for vector measurements).
+    pub density: ClutterDensityOption,
+}
+
+impl ClutterOptions {
+    fn into_core(self) -> Clutter {
+        Clutter {
+            rate: self.rate,
+            density: match self.density {
+                ClutterDensityOption::One(c) => ClutterDensity::Constant(c),
+                ClutterDensityOption::PerReport(v) => ClutterDensity::PerReport(v),
+            },
+        }
+    }
+}
+
+/// The linear-Gaussian likelihood N(z; H x, R) of vector measurements.
+#[derive(Deserialize, Tsify)]
+pub struct LikelihoodOptions {
+    /// H, m rows of n numbers.
+    #[serde(rename = "H")]
+    pub h: Vec<Vec<f64>>,
+    /// R, m rows of m numbers, symmetric positive definite.
+    #[serde(rename = "R")]
+    pub r: Vec<Vec<f64>>,
+}
+
+impl LikelihoodOptions {
+    fn into_core(self, path: &str) -> JsResult<LinearGaussianLikelihood> {
+        let m = self.h.len();
+        if m == 0 || m > 64 {
+            return Err(range_error(format!(
+                "{path}.H must have 1 to 64 rows, got {m}"
+            )));
+        }
+        let n = self.h[0].len();
+        for (i, r) in self.h.iter().enumerate() {
+            if r.len() != n {
+                return Err(range_error(format!(
+                    "{path}.H[{i}] has length {}, expected {n}",
+                    r.len()
+                )));
+            }
+        }
+        let (r, _) = square(&self.r, &format!("{path}.R"))?;
+        LinearGaussianLikelihood::from_row_slices(&self.h.concat(), m, &r)
+            .or_throw_in(path.trim_end_matches(".likelihood"))
+    }
+}
+
+/// The splitting step (the options of `splitForRegions`, plus the library choice).
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct SplittingOptions {
+    /// false: no splitting (default true).
+    #[serde(default = "yes")]
+    pub enabled: bool,
+    /// w_min (default 0.01).
+    #[serde(default = "min_weight")]
+    pub min_weight: f64,
+    /// R (default 4: Table I), an integer in [2, 16].
+    #[serde(default = "four")]
+    pub components: usize,
+    /// λ (default 0.001).
+    #[serde(default = "lambda")]
+    pub lambda: f64,
+    /// true: the variance-preserving library of pyest (default false: Table I for R = 4,
+    /// λ = 0.001, the filters' default; see the core docs for the measured errors of both).
+    #[serde(default)]
+    pub variance_preserving: bool,
+    /// ζ (default 2).
+    #[serde(default = "grid_bound")]
+    pub grid_bound: f64,
+    /// N_g (default 15; N_g^positionDims ≤ 20000).
+    #[serde(default = "grid_points")]
+    pub grid_points: usize,
+    /// Depth cap (default 16, at most 64).
+    #[serde(default = "max_depth")]
+    pub max_depth: usize,
+    /// Component cap (default 10000, at most 50000).
+    #[serde(default = "max_split")]
+    pub max_components: usize,
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl SplittingOptions {
+    fn into_core(self, position_dims: usize, path: &str) -> JsResult<Splitting> {
+        let r = check_range(&format!("{path}.components"), self.components, 2, 16)?;
+        check_range(&format!("{path}.maxDepth"), self.max_depth, 0, 64)?;
+        check_range(
+            &format!("{path}.maxComponents"),
+            self.max_components,
+            1,
+            50_000,
+        )?;
+        let grid = (0..position_dims).try_fold(1usize, |a, _| a.checked_mul(self.grid_points));
+        if self.grid_points < 2 || grid.is_none_or(|g| g > 20_000) {
+            return Err(range_error(format!(
+                "{path}.gridPoints must be an integer >= 2 with gridPoints^positionDims <= 20000, got {}",
+                self.grid_points
+            )));
+        }
+        let library = if self.variance_preserving {
+            SplitLibrary::variance_preserving(r, self.lambda)
+        } else {
+            SplitLibrary::for_components(r, self.lambda, Spacing::Equal)
+        }
+        .or_throw_in(path)?;
+        Ok(Splitting {
+            enabled: self.enabled,
+            library,
+            options: SplitOptions {
+                position_dims,
+                min_weight: self.min_weight,
+                grid_bound: self.grid_bound,
+                grid_points: self.grid_points,
+                max_depth: self.max_depth,
+                max_components: self.max_components,
+            },
+        })
+    }
+}
+
+/// The reduction after the update (the options of `reduceMixture`). Omitted: prune 1e-6,
+/// merge within Mahalanobis distance 1, Runnalls to 100.
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct ReductionOptionsJs {
+    /// Drop lighter components (default 0).
+    #[serde(default)]
+    pub prune_below: f64,
+    /// Vo & Ma merge distance; omitted: no merging.
+    #[tsify(optional)]
+    pub merge_distance: Option<f64>,
+    /// Runnalls cap, in [1, 1e6]; omitted: no cap.
+    #[tsify(optional)]
+    pub max_components: Option<usize>,
+}
+
+fn reduction(r: Option<ReductionOptionsJs>, path: &str) -> JsResult<ReductionOptions> {
+    Ok(match r {
+        None => core_filters::default_reduction(),
+        Some(r) => {
+            if let Some(m) = r.max_components {
+                check_range(&format!("{path}.maxComponents"), m, 1, 1_000_000)?;
+            }
+            ReductionOptions {
+                prune_below: r.prune_below,
+                merge_distance: r.merge_distance,
+                max_components: r.max_components,
+            }
+        }
+    })
+}
+
+fn regions(items: Vec<Region>, path: &str) -> JsResult<Vec<CoreRegion>> {
+    if items.len() > 1000 {
+        return Err(range_error(format!(
+            "{path} has {} regions, at most 1000 are supported",
+            items.len()
+        )));
+    }
+    items
+        .into_iter()
+        .enumerate()
+        .map(|(i, r)| Ok(r.into_core(&format!("{path}[{i}]"))?.0))
+        .collect()
+}
+
+fn birth(b: Option<BirthOptions>, path: &str) -> JsResult<Birth> {
+    match b {
+        None => Ok(Birth::none()),
+        Some(b) => {
+            let m = types::mixture(b.mixture, &format!("{path}.mixture"))?;
+            Birth::new(b.probability, m).or_throw_in(path.trim_end_matches(".birth"))
+        }
+    }
+}
+
+fn density(items: Vec<WeightedGaussian>, path: &str) -> JsResult<fisst::gaussian::GaussianMixture> {
+    types::mixture(items, path)
+}
+
+/// Options of `gmBernoulliPredict`.
+#[derive(Deserialize, Tsify)]
+pub struct GmBernoulliPredictOptions {
+    /// r, in [0, 1].
+    pub existence: f64,
+    /// p(x): weights sum to 1 (at most 10,000 components).
+    pub mixture: Vec<WeightedGaussian>,
+    /// F, Q.
+    pub transition: Transition,
+    /// p_S in [0, 1] (default 0.99).
+    #[serde(default = "survival")]
+    pub survival: f64,
+    /// p_b and b(x); omitted: no birth.
+    #[tsify(optional)]
+    pub birth: Option<BirthOptions>,
+}
+
+/// A Bernoulli with a GM density.
+#[derive(Serialize, Tsify)]
+pub struct GmBernoulliResult {
+    /// r.
+    pub existence: f64,
+    /// p(x).
+    pub mixture: Vec<MixtureComponent>,
+}
+
+/// The GM Bernoulli prediction, eqs. (40)–(49) of paper 001. Options `{ existence, mixture,
+/// transition: { F, Q }, survival, birth: { probability, mixture } }`; returns `{ existence,
+/// mixture }`.
+#[wasm_bindgen(js_name = gmBernoulliPredict, unchecked_return_type = "GmBernoulliResult")]
+pub fn gm_bernoulli_predict(
+    #[wasm_bindgen(unchecked_param_type = "GmBernoulliPredictOptions")] options: JsValue,
+) -> JsResult<JsValue> {
+    let o: GmBernoulliPredictOptions = read(options, "options")?;
+    let state = GmBernoulli {
+        existence: o.existence,
+        mixture: density(o.mixture, "options.mixture")?,
+    };
+    let config = PredictConfig {
+        transition: o.transition.into_core("options.transition")?,
+        survival: o.survival,
+        birth: birth(o.birth, "options.birth")?,
+    };
+    let out = core_filters::gm_bernoulli_predict(&state, &config).or_throw_in("options")?;
+    write(&GmBernoulliResult {
+        existence: out.existence,
+        mixture: types::mixture_out(&out.mixture),
+    })
+}
+
+/// Options of `gmBernoulliUpdate`.
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct GmBernoulliUpdateOptions {
+    /// r_{k|k−1}, in [0, 1].
+    pub existence: f64,
+    /// p_{k|k−1}: weights sum to 1.
+    pub mixture: Vec<WeightedGaussian>,
+    /// n_s (default 2, in [1, 8]).
+    #[serde(default = "two")]
+    pub position_dims: usize,
+    /// p_D and the field of view.
+    pub detection: DetectionOptions,
+    /// The imprecise reports ζ (regions, g̃ = 1_ζ); omitted or empty with no `measurements`:
+    /// the non-detection update.
+    #[tsify(optional)]
+    pub reports: Option<Vec<Region>>,
+    /// Vector measurements (with `likelihood`): the vector-measurement update instead.
+    #[tsify(optional)]
+    pub measurements: Option<Vec<Point>>,
+    /// H, R of the vector measurements.
+    #[tsify(optional)]
+    pub likelihood: Option<LikelihoodOptions>,
+    /// λ_c, c̃.
+    pub clutter: ClutterOptions,
+    /// The splitting step; omitted: the defaults.
+    #[tsify(optional)]
+    pub splitting: Option<SplittingOptions>,
+    /// The reduction; omitted: prune 1e-6, merge within 1, Runnalls to 100.
+    #[tsify(optional)]
+    pub reduction: Option<ReductionOptionsJs>,
+    /// Regions the object cannot occupy (mass removed by the mean-based partition after
+    /// splitting; the existence is unchanged).
+    #[tsify(optional)]
+    pub exclusions: Option<Vec<Region>>,
+}
+
+/// Result of `gmBernoulliUpdate`.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct GmBernoulliUpdateResult {
+    /// r_{k|k}.
+    pub existence: f64,
+    /// p_{k|k} after the reduction.
+    pub mixture: Vec<MixtureComponent>,
+    /// Δ_k of eq. (58) (−Infinity when a report has zero clutter intensity).
+    pub delta: f64,
+    /// Components after splitting, before the update and the reduction.
+    pub split_components: usize,
+}
+
+fn update_config(
+    position_dims: usize,
+    detection: DetectionOptions,
+    clutter: ClutterOptions,
+    splitting: Option<SplittingOptions>,
+    red: Option<ReductionOptionsJs>,
+    exclusions: Option<Vec<Region>>,
+    root: &str,
+) -> JsResult<UpdateConfig> {
+    check_range(&format!("{root}.positionDims"), position_dims, 1, 8)?;
+    let fov = match detection.fov {
+        Some(r) => Some(r.into_core(&format!("{root}.detection.fov"))?.0),
+        None => None,
+    };
+    Ok(UpdateConfig {
+        position_dims,
+        detection: Detection {
+            probability: detection.probability,
+            fov,
+        },
+        clutter: clutter.into_core(),
+        splitting: match splitting {
+            Some(s) => s.into_core(position_dims, &format!("{root}.splitting"))?,
+            None => Splitting::default(),
+        },
+        reduction: reduction(red, &format!("{root}.reduction"))?,
+        exclusions: regions(
+            exclusions.unwrap_or_default(),
+            &format!("{root}.exclusions"),
+        )?,
+    })
+}
+
+fn measurements(points: Vec<Point>, path: &str) -> JsResult<Vec<Vec<f64>>> {
+    if points.len() > 10_000 {
+        return Err(range_error(format!(
+            "{path} has {} measurements, at most 10000 are supported",
+            points.len()
+        )));
+    }
+    Ok(points.into_iter().map(|p| p.0).collect())
+}
+
+/// The GM Bernoulli update (Algorithm 3 of paper 001: split about ∂S, every ∂ζ and every
+/// exclusion, zeroth-order weights (57)–(58), existence (54), two-pass reduction), or with
+/// `measurements` and `likelihood` the vector-measurement update. Returns `{ existence,
+/// mixture, delta, splitComponents }`.
+#[wasm_bindgen(js_name = gmBernoulliUpdate, unchecked_return_type = "GmBernoulliUpdateResult")]
+pub fn gm_bernoulli_update(
+    #[wasm_bindgen(unchecked_param_type = "GmBernoulliUpdateOptions")] options: JsValue,
+) -> JsResult<JsValue> {
+    let o: GmBernoulliUpdateOptions = read(options, "options")?;
+    let state = GmBernoulli {
+        existence: o.existence,
+        mixture: density(o.mixture, "options.mixture")?,
+    };
+    let config = update_config(
+        o.position_dims,
+        o.detection,
+        o.clutter,
+        o.splitting,
+        o.reduction,
+        o.exclusions,
+        "options",
+    )?;
+    let out = match (o.measurements, o.likelihood) {
+        (Some(z), Some(l)) => {
+            let lik = l.into_core("options.likelihood")?;
+            let z = measurements(z, "options.measurements")?;
+            core_filters::gm_bernoulli_update_vector(&state, &z, &lik, &config)
+                .or_throw_in("options")?
+        }
+        (Some(_), None) => {
+            return Err(range_error(
+                "options.likelihood is needed with options.measurements",
+            ));
+        }
+        (None, _) => {
+            let r = regions(o.reports.unwrap_or_default(), "options.reports")?;
+            core_filters::gm_bernoulli_update(&state, &r, &config).or_throw_in("options")?
+        }
+    };
+    write(&GmBernoulliUpdateResult {
+        existence: out.existence,
+        mixture: types::mixture_out(&out.mixture),
+        delta: out.delta,
+        split_components: out.split_components,
+    })
+}
+
+/// The configuration of `GmBernoulliFilter` and `ParticleBernoulliFilter` (the particle
+/// filter also reads `particles`, `birthParticles`, `mcmcMoves`, `seed`, and ignores
+/// `splitting` and `reduction`).
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct BernoulliFilterConfig {
+    /// r_{0|0}.
+    pub existence: f64,
+    /// p_{0|0} (weights sum to 1).
+    pub mixture: Vec<WeightedGaussian>,
+    /// F, Q.
+    pub transition: Transition,
+    /// p_S (default 0.99).
+    #[serde(default = "survival")]
+    pub survival: f64,
+    /// p_b, b(x); omitted: no birth.
+    #[tsify(optional)]
+    pub birth: Option<BirthOptions>,
+    /// n_s (default 2).
+    #[serde(default = "two")]
+    pub position_dims: usize,
+    /// p_D, fov.
+    pub detection: DetectionOptions,
+    /// λ_c, c̃.
+    pub clutter: ClutterOptions,
+    /// H, R for `update({ measurements })`.
+    #[tsify(optional)]
+    pub likelihood: Option<LikelihoodOptions>,
+    /// GM filter only.
+    #[tsify(optional)]
+    pub splitting: Option<SplittingOptions>,
+    /// GM filter only.
+    #[tsify(optional)]
+    pub reduction: Option<ReductionOptionsJs>,
+    /// Regions the object cannot occupy.
+    #[tsify(optional)]
+    pub exclusions: Option<Vec<Region>>,
+    /// Particle filter: N (default 5000, at most 200000).
+    #[serde(default = "particles")]
+    pub particles: usize,
+    /// Particle filter: birth particles per prediction (default N/10).
+    #[tsify(optional)]
+    pub birth_particles: Option<usize>,
+    /// Particle filter: MCMC moves per update (default 1, at most 10).
+    #[serde(default = "one")]
+    pub mcmc_moves: usize,
+    /// Particle filter: the seed; omitted: fresh entropy (the `seed` getter returns it).
+    #[tsify(optional)]
+    pub seed: Option<u64>,
+}
+
+struct Converted {
+    config: CoreConfig,
+    particles: usize,
+    birth_particles: Option<usize>,
+    mcmc_moves: usize,
+    seed: Option<u64>,
+}
+
+fn convert(c: BernoulliFilterConfig) -> JsResult<Converted> {
+    let update = update_config(
+        c.position_dims,
+        c.detection,
+        c.clutter,
+        c.splitting,
+        c.reduction,
+        c.exclusions,
+        "config",
+    )?;
+    let likelihood = match c.likelihood {
+        Some(l) => Some(l.into_core("config.likelihood")?),
+        None => None,
+    };
+    let config = CoreConfig {
+        existence: c.existence,
+        mixture: density(c.mixture, "config.mixture")?,
+        transition: c.transition.into_core("config.transition")?,
+        survival: c.survival,
+        birth: birth(c.birth, "config.birth")?,
+        position_dims: update.position_dims,
+        detection: update.detection,
+        clutter: update.clutter,
+        likelihood,
+        splitting: update.splitting,
+        reduction: update.reduction,
+        exclusions: update.exclusions,
+    };
+    config.validate().or_throw_in("config")?;
+    Ok(Converted {
+        config,
+        particles: check_range("config.particles", c.particles, 1, 200_000)?,
+        birth_particles: match c.birth_particles {
+            Some(b) => Some(check_range("config.birthParticles", b, 0, 200_000)?),
+            None => None,
+        },
+        mcmc_moves: check_range("config.mcmcMoves", c.mcmc_moves, 0, 10)?,
+        seed: c.seed,
+    })
+}
+
+/// The argument of `update`: `Region[]` or `{ measurements }`.
+enum Scan {
+    Reports(Vec<CoreRegion>),
+    Measurements(Vec<Vec<f64>>),
+}
+
+#[derive(Deserialize)]
+struct MeasurementsArg {
+    measurements: Vec<Point>,
+}
+
+fn scan(value: JsValue) -> JsResult<Scan> {
+    if js_sys::Array::is_array(&value) {
+        let r: Vec<Region> = read(value, "reports")?;
+        Ok(Scan::Reports(regions(r, "reports")?))
+    } else {
+        let m: MeasurementsArg = read(value, "reports")?;
+        Ok(Scan::Measurements(measurements(
+            m.measurements,
+            "reports.measurements",
+        )?))
+    }
+}
+
+/// Options of `estimate`: the loss (7) of the optimal Bernoulli estimate; omitted: no
+/// `report`.
+#[derive(Deserialize, Tsify, Default)]
+pub struct FilterEstimateOptions {
+    /// r0 > 0 (a position distance).
+    #[tsify(optional)]
+    pub radius: Option<f64>,
+    /// The costs.
+    #[tsify(optional)]
+    pub costs: Option<BernoulliCosts>,
+}
+
+/// `estimate()`'s result.
+#[derive(Serialize, Tsify)]
+pub struct FilterEstimateResult {
+    /// r.
+    pub existence: f64,
+    /// The MMSE state.
+    pub mean: Vec<f64>,
+    /// The posterior covariance, rows.
+    pub cov: Vec<Vec<f64>>,
+    /// The optimal Bernoulli point estimate (paper 000) on the position marginal; null
+    /// without a loss.
+    #[tsify(type = "BernoulliEstimateResult | null")]
+    pub report: Option<BernoulliEstimateResult>,
+}
+
+fn estimate_options(options: JsValue) -> JsResult<EstimateOptions> {
+    if options.is_undefined() || options.is_null() {
+        return Ok(EstimateOptions::default());
+    }
+    let o: FilterEstimateOptions = read(options, "options")?;
+    Ok(match (o.radius, o.costs) {
+        (Some(r), Some(c)) => EstimateOptions {
+            loss: Some(
+                ApplicationLoss::new(c.into_core("options.costs")?, r).or_throw_in("options")?,
+            ),
+        },
+        (None, None) => EstimateOptions::default(),
+        _ => return Err(range_error("options: radius and costs go together")),
+    })
+}
+
+fn estimate_result(e: FilterEstimate) -> FilterEstimateResult {
+    FilterEstimateResult {
+        existence: e.existence,
+        mean: e.mean,
+        cov: e.cov,
+        report: e.report.as_ref().map(estimate_out),
+    }
+}
+
+/// The GM Bernoulli filter (paper 001, Algorithm 3). Call `free()` when done.
+#[wasm_bindgen(js_name = GmBernoulliFilter)]
+pub struct GmBernoulliFilterJs {
+    inner: core_filters::GmBernoulliFilter,
+}
+
+#[wasm_bindgen(js_class = GmBernoulliFilter)]
+impl GmBernoulliFilterJs {
+    /// Validates `config`.
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "BernoulliFilterConfig")] config: JsValue,
+    ) -> JsResult<GmBernoulliFilterJs> {
+        let c: BernoulliFilterConfig = read(config, "config")?;
+        let c = convert(c)?;
+        Ok(Self {
+            inner: core_filters::GmBernoulliFilter::new(c.config).or_throw_in("config")?,
+        })
+    }
+
+    /// One prediction (40)–(49).
+    pub fn predict(&mut self) -> JsResult<()> {
+        let mut next = self.inner.clone();
+        next.predict().or_throw_in("config")?;
+        self.inner = next;
+        Ok(())
+    }
+
+    /// The update with `Region[]` (imprecise reports; `[]`: the non-detection update) or
+    /// `{ measurements }`. Returns `{ delta, splitComponents }`.
+    #[wasm_bindgen(unchecked_return_type = "{ delta: number; splitComponents: number }")]
+    pub fn update(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "Region[] | { measurements: Point[] }")]
+        reports: JsValue,
+    ) -> JsResult<JsValue> {
+        let s = scan(reports)?;
+        let mut next = self.inner.clone();
+        let info = match s {
+            Scan::Reports(r) => next.update(&r).or_throw_in("reports")?,
+            Scan::Measurements(z) => next.update_measurements(&z).or_throw_in("reports")?,
+        };
+        self.inner = next;
+        write(&UpdateInfoJs {
+            delta: info.delta,
+            split_components: info.split_components,
+        })
+    }
+
+    /// `{ existence, mean, cov, report }`; options `{ radius, costs }` for `report`.
+    #[wasm_bindgen(unchecked_return_type = "FilterEstimateResult")]
+    pub fn estimate(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "FilterEstimateOptions | undefined")]
+        options: JsValue,
+    ) -> JsResult<JsValue> {
+        let o = estimate_options(options)?;
+        write(&estimate_result(
+            self.inner.estimate(&o).or_throw_in("options")?,
+        ))
+    }
+
+    /// r.
+    #[wasm_bindgen(getter)]
+    pub fn existence(&self) -> f64 {
+        self.inner.existence()
+    }
+
+    /// p(x) (a copy).
+    #[wasm_bindgen(getter, unchecked_return_type = "MixtureComponent[]")]
+    pub fn mixture(&self) -> JsResult<JsValue> {
+        write(&types::mixture_out(self.inner.mixture()))
+    }
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct UpdateInfoJs {
+    delta: f64,
+    split_components: usize,
+}
+
+/// The Bernoulli particle filter (Ristic, Vo, Vo & Farina). Call `free()` when done.
+#[wasm_bindgen(js_name = ParticleBernoulliFilter)]
+pub struct ParticleBernoulliFilterJs {
+    inner: core_filters::ParticleBernoulliFilter,
+    seed: u64,
+}
+
+#[wasm_bindgen(js_class = ParticleBernoulliFilter)]
+impl ParticleBernoulliFilterJs {
+    /// Validates `config` (with `particles`, `mcmcMoves`, `seed`).
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "BernoulliFilterConfig")] config: JsValue,
+    ) -> JsResult<ParticleBernoulliFilterJs> {
+        let c: BernoulliFilterConfig = read(config, "config")?;
+        let c = convert(c)?;
+        let seed = seed_or_entropy(c.seed)?;
+        let options = core_filters::ParticleOptions {
+            particles: c.particles,
+            birth_particles: c.birth_particles,
+            mcmc_moves: c.mcmc_moves,
+            seed,
+        };
+        Ok(Self {
+            inner: core_filters::ParticleBernoulliFilter::new(c.config, options)
+                .or_throw_in("config")?,
+            seed,
+        })
+    }
+
+    /// One prediction.
+    pub fn predict(&mut self) {
+        self.inner.predict();
+    }
+
+    /// As `GmBernoulliFilter.update`.
+    #[wasm_bindgen(unchecked_return_type = "{ delta: number; splitComponents: number }")]
+    pub fn update(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "Region[] | { measurements: Point[] }")]
+        reports: JsValue,
+    ) -> JsResult<JsValue> {
+        let s = scan(reports)?;
+        let mut next = self.inner.clone();
+        let info = match s {
+            Scan::Reports(r) => next.update(&r).or_throw_in("reports")?,
+            Scan::Measurements(z) => next.update_measurements(&z).or_throw_in("reports")?,
+        };
+        self.inner = next;
+        write(&UpdateInfoJs {
+            delta: info.delta,
+            split_components: info.split_components,
+        })
+    }
+
+    /// `{ existence, mean, cov, report }`.
+    #[wasm_bindgen(unchecked_return_type = "FilterEstimateResult")]
+    pub fn estimate(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "FilterEstimateOptions | undefined")]
+        options: JsValue,
+    ) -> JsResult<JsValue> {
+        let o = estimate_options(options)?;
+        write(&estimate_result(
+            self.inner.estimate(&o).or_throw_in("options")?,
+        ))
+    }
+
+    /// r.
+    #[wasm_bindgen(getter)]
+    pub fn existence(&self) -> f64 {
+        self.inner.existence()
+    }
+
+    /// The particles, one state per row (a copy; equal weights after an update).
+    #[wasm_bindgen(getter, unchecked_return_type = "number[][]")]
+    pub fn particles(&self) -> JsResult<JsValue> {
+        let d = self.inner.dim();
+        let rows: Vec<Vec<f64>> = self
+            .inner
+            .particles()
+            .chunks_exact(d)
+            .map(|c| c.to_vec())
+            .collect();
+        write(&rows)
+    }
+
+    /// The particle weights.
+    #[wasm_bindgen(getter)]
+    pub fn weights(&self) -> Vec<f64> {
+        self.inner.weights().to_vec()
+    }
+
+    /// The seed in use.
+    #[wasm_bindgen(getter)]
+    pub fn seed(&self) -> f64 {
+        self.seed as f64
+    }
+}
+
+fn sixty() -> usize {
+    60
+}
+
+/// Options of `airportScenario`.
+#[derive(Deserialize, Tsify)]
+pub struct AirportScenarioOptions {
+    /// The seed (integer in [0, 2^53 − 1]); omitted: fresh entropy.
+    #[tsify(optional)]
+    pub seed: Option<u64>,
+    /// Report times (default 60, at most 2000).
+    #[serde(default = "sixty")]
+    pub steps: usize,
+}
+
+/// An anchor of the airport example.
+#[derive(Serialize, Tsify)]
+pub struct AnchorOut {
+    /// Its name.
+    pub name: String,
+    /// r_a.
+    pub position: [f64; 2],
+    /// 2 d_a / 3.
+    pub radius: f64,
+}
+
+/// The truth at one report time.
+#[derive(Serialize, Tsify)]
+pub struct TruthOut {
+    /// Seconds.
+    pub t: f64,
+    /// (x, y, ẋ, ẏ).
+    pub state: [f64; 4],
+}
+
+/// The filter configuration of the example, ready for both classes.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct AirportConfig {
+    /// r_{0|0}.
+    pub existence: f64,
+    /// p_{0|0}.
+    pub mixture: Vec<MixtureComponent>,
+    /// F, Q.
+    pub transition: Transition,
+    /// p_S.
+    pub survival: f64,
+    /// p_b, b(x).
+    pub birth: AirportBirth,
+    /// 2.
+    pub position_dims: usize,
+    /// p_D = 0.9 on S.
+    pub detection: AirportDetection,
+    /// λ_c = 0.25, c̃ = 1/10.
+    pub clutter: AirportClutter,
+    /// The exclusions.
+    pub exclusions: Vec<Region>,
+    /// 5000.
+    pub particles: usize,
+    /// 1.
+    pub mcmc_moves: usize,
+    /// The scenario's seed.
+    pub seed: u64,
+}
+
+/// Birth of the example.
+#[derive(Serialize, Tsify)]
+pub struct AirportBirth {
+    /// p_b.
+    pub probability: f64,
+    /// b(x).
+    pub mixture: Vec<MixtureComponent>,
+}
+
+/// Detection of the example.
+#[derive(Serialize, Tsify)]
+pub struct AirportDetection {
+    /// p_D.
+    pub probability: f64,
+    /// S.
+    pub fov: Region,
+}
+
+/// Clutter of the example.
+#[derive(Serialize, Tsify)]
+pub struct AirportClutter {
+    /// λ_c.
+    pub rate: f64,
+    /// c̃.
+    pub density: f64,
+}
+
+/// Result of `airportScenario`.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct AirportScenarioResult {
+    /// The anchors.
+    pub anchors: Vec<AnchorOut>,
+    /// The exclusion regions (four rectangles, then the exterior of the concourse).
+    pub exclusions: Vec<Region>,
+    /// The concourse box.
+    pub concourse: Region,
+    /// S, the union of the discs.
+    pub fov: Region,
+    /// T = 15 s.
+    pub dt: f64,
+    /// The configuration of both filters.
+    pub config: AirportConfig,
+    /// The truth at each report time.
+    pub truth: Vec<TruthOut>,
+    /// The reported anchor indices per step.
+    pub reports: Vec<Vec<usize>>,
+    /// The anchor of the true report per step (null: missed).
+    #[tsify(type = "(number | null)[]")]
+    pub true_reports: Vec<Option<usize>>,
+    /// Whether the person was in S per step.
+    pub in_fov: Vec<bool>,
+    /// The seed used.
+    pub seed: u64,
+}
+
+fn rows_of<M: std::ops::Index<(usize, usize), Output = f64>>(m: &M, n: usize) -> Vec<Vec<f64>> {
+    (0..n)
+        .map(|i| (0..n).map(|j| m[(i, j)]).collect())
+        .collect()
+}
+
+fn box_region(b: &fisst::regions::AxisBox) -> Region {
+    Region::Box(BoxRegion {
+        min: b.min().to_vec(),
+        max: b.max().to_vec(),
+    })
+}
+
+/// The airport example of paper 001, Section V-C (Figs. 6–8): a seeded walk through a
+/// concourse with ten anchors and four exclusion rectangles, and the reports. Options
+/// `{ seed, steps = 60 }`; report `a` at step k is `{ disc: { center: anchors[a].position,
+/// radius: anchors[a].radius } }`.
+#[wasm_bindgen(js_name = airportScenario, unchecked_return_type = "AirportScenarioResult")]
+pub fn airport_scenario(
+    #[wasm_bindgen(unchecked_param_type = "AirportScenarioOptions | undefined")] options: JsValue,
+) -> JsResult<JsValue> {
+    let o: AirportScenarioOptions = if options.is_undefined() {
+        AirportScenarioOptions {
+            seed: None,
+            steps: 60,
+        }
+    } else {
+        read(options, "options")?
+    };
+    let steps = check_range("options.steps", o.steps, 0, 2000)?;
+    let seed = seed_or_entropy(o.seed)?;
+    let sc = fisst::sim::airport::airport_scenario(seed, steps).or_throw_in("options")?;
+    let anchors: Vec<AnchorOut> = sc
+        .anchors
+        .iter()
+        .map(|a| AnchorOut {
+            name: a.name.clone(),
+            position: a.position,
+            radius: a.radius,
+        })
+        .collect();
+    let fov = Region::Union(
+        sc.anchors
+            .iter()
+            .map(|a| {
+                Region::Disc(DiscRegion {
+                    center: a.position.to_vec(),
+                    radius: a.radius,
+                })
+            })
+            .collect(),
+    );
+    let mut exclusions: Vec<Region> = sc.exclusion_boxes.iter().map(box_region).collect();
+    exclusions.push(Region::Complement(Box::new(box_region(&sc.concourse))));
+    let c = &sc.config;
+    let density = match &c.clutter.density {
+        ClutterDensity::Constant(d) => *d,
+        _ => 0.1,
+    };
+    let config = AirportConfig {
+        existence: c.existence,
+        mixture: types::mixture_out(&c.mixture),
+        transition: Transition {
+            f: rows_of(c.transition.f(), c.transition.dim()),
+            q: rows_of(c.transition.q(), c.transition.dim()),
+        },
+        survival: c.survival,
+        birth: AirportBirth {
+            probability: c.birth.probability,
+            mixture: types::mixture_out(&c.birth.mixture),
+        },
+        position_dims: c.position_dims,
+        detection: AirportDetection {
+            probability: c.detection.probability,
+            fov: fov.clone(),
+        },
+        clutter: AirportClutter {
+            rate: c.clutter.rate,
+            density,
+        },
+        exclusions: exclusions.clone(),
+        particles: 5000,
+        mcmc_moves: 1,
+        seed,
+    };
+    write(&AirportScenarioResult {
+        anchors,
+        exclusions,
+        concourse: box_region(&sc.concourse),
+        fov,
+        dt: sc.dt,
+        config,
+        truth: sc
+            .truth
+            .iter()
+            .map(|t| TruthOut {
+                t: t.t,
+                state: t.state,
+            })
+            .collect(),
+        reports: sc.reports.clone(),
+        true_reports: sc.true_reports.clone(),
+        in_fov: sc.in_fov.clone(),
+        seed,
+    })
+}
