@@ -81,6 +81,19 @@ impl Error {
         }
     }
 
+    /// The same error about another field: `rename` maps the field's name (e.g. to say which
+    /// time step of a series it is in).
+    pub(crate) fn map_field(mut self, rename: impl FnOnce(&str) -> String) -> Self {
+        match &mut self {
+            Error::InvalidParameter { what, .. }
+            | Error::InvalidProbability { what, .. }
+            | Error::DimensionMismatch { what, .. }
+            | Error::NotPositiveDefinite { what }
+            | Error::Unsupported { what, .. } => *what = rename(what),
+        }
+        self
+    }
+
     /// The field this error is about.
     pub fn field(&self) -> &str {
         match self {

@@ -164,7 +164,7 @@ impl Gospa {
         let a = cutoff_assignment(truth, estimate, metric, self.c, self.p)?;
         // Pairs at d ≥ c cost c^p assigned or c^p/2 + c^p/2 unassigned: Prop. 3's optimal γ
         // leaves them unassigned.
-        let kept: Vec<_> = a.pairs.iter().filter(|q| q.distance < self.c).collect();
+        let kept: Vec<_> = a.pairs.iter().filter(|q| q.close).collect();
         let localisation = crate::math::sum::sum(kept.iter().map(|q| q.cost));
         let missed = truth.len() - kept.len();
         let false_targets = estimate.len() - kept.len();
