@@ -173,3 +173,13 @@ pub fn peak_rss_kb() -> u64 {
         })
         .unwrap_or(0)
 }
+
+/// CPU time of the calling thread in seconds (`/proc/thread-self/schedstat`, Linux; 0 where
+/// it is not available): on a loaded machine it measures the work, where wall time also
+/// measures the wait for a core.
+pub fn thread_cpu_seconds() -> f64 {
+    std::fs::read_to_string("/proc/thread-self/schedstat")
+        .ok()
+        .and_then(|s| s.split_whitespace().next()?.parse::<u64>().ok())
+        .map_or(0.0, |ns| ns as f64 * 1e-9)
+}

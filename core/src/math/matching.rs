@@ -273,11 +273,7 @@ mod tests {
 
     fn solve(start: &[usize], cols: &[u32], costs: &[f64], m: usize, exit: f64) -> Vec<u32> {
         let n = start.len() - 1;
-        let graph = SparseRows {
-            start,
-            cols,
-            costs,
-        };
+        let graph = SparseRows { start, cols, costs };
         let rows: Vec<u32> = (0..n as u32)
             .filter(|&i| start[i as usize + 1] > start[i as usize])
             .collect();
@@ -351,7 +347,10 @@ mod tests {
     fn larger_instances_agree_with_the_dense_solver() {
         let mut rng = SmallRng::seed_from_u64(43);
         for t in 0..60 {
-            let (n, m) = (rng.random_range(20..120usize), rng.random_range(20..120usize));
+            let (n, m) = (
+                rng.random_range(20..120usize),
+                rng.random_range(20..120usize),
+            );
             let density = [0.01, 0.03, 0.1, 0.5, 1.0][t % 5];
             let exit = 1.0;
             let (start, cols, costs) = instance(&mut rng, n, m, density, exit, t % 2 == 0);

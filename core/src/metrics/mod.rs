@@ -11,6 +11,8 @@ mod gospa;
 mod ospa;
 mod pairs;
 mod series;
+#[cfg(test)]
+mod tests;
 
 pub use base::{Euclidean, FnMetric, Metric};
 pub use gospa::{Gospa, GospaDecomposition};
@@ -111,6 +113,7 @@ pub(crate) fn cutoff_assignment_capped<T, M: Metric<T> + ?Sized>(
     let (n, m) = (x.len(), y.len());
     let cp = fns::powp(c, p);
     let graph = close_graph(x, y, metric, c, p, cap)?;
+    // Solve on the internal numbering (rows and columns in grid order).
     let mut col4row = vec![UNMATCHED; n];
     let mut cost4row = vec![0.0f64; n];
     for block in &graph.blocks {
@@ -138,38 +141,50 @@ pub(crate) fn cutoff_assignment_capped<T, M: Metric<T> + ?Sized>(
         costs: &graph.costs,
     };
     min_cost_partial_matching(rows, &graph.sparse_rows, m, cp, &mut col4row);
-    for &i in &graph.sparse_rows {
-        let i = i as usize;
-        let j = col4row[i];
-        if j == UNMATCHED {
+    for &r in &graph.sparse_rows {
+        let r = r as usize;
+        let k = col4row[r];
+        if k == UNMATCHED {
             continue;
         }
-        let e = (graph.start[i]..graph.start[i + 1])
-            .find(|&e| graph.cols[e] == j)
-            .unwrap_or(graph.start[i]);
-        cost4row[i] = graph.costs[e];
-        if cost4row[i] >= cp {
+        let e = (graph.start[r]..graph.start[r + 1])
+            .find(|&e| graph.cols[e] == k)
+            .unwrap_or(graph.start[r]);
+        cost4row[r] = graph.costs[e];
+        if cost4row[r] >= cp {
             // d < c but d^p rounds to c^p: the same cost as leaving both out.
-            col4row[i] = UNMATCHED;
+            col4row[r] = UNMATCHED;
+        }
+    }
+    // Back to the caller's indices.
+    let mut estimate_of = vec![UNMATCHED; n];
+    let mut cost_of = vec![0.0f64; n];
+    for r in 0..n {
+        let i = graph.truth_order[r] as usize;
+        if col4row[r] != UNMATCHED {
+            estimate_of[i] = graph.estimate_order[col4row[r] as usize];
+            cost_of[i] = cost4row[r];
         }
     }
     drop(graph);
+    drop(col4row);
+    drop(cost4row);
 
     let mut col_done = vec![false; m];
     let mut pairs: Vec<AssignedPair> = Vec::with_capacity(n.min(m));
-    for (i, &j) in col4row.iter().enumerate() {
+    for (i, &j) in estimate_of.iter().enumerate() {
         if j != UNMATCHED {
             col_done[j as usize] = true;
             pairs.push(AssignedPair {
                 truth: i,
                 estimate: j as usize,
-                cost: cost4row[i],
+                cost: cost_of[i],
                 close: true,
             });
         }
     }
     // Complete the permutation with leftover rows and columns, in index order.
-    let leftover_rows = (0..n).filter(|&i| col4row[i] == UNMATCHED);
+    let leftover_rows = (0..n).filter(|&i| estimate_of[i] == UNMATCHED);
     let leftover_cols = (0..m).filter(|&j| !col_done[j]);
     let completion: Vec<AssignedPair> = leftover_rows
         .zip(leftover_cols)

@@ -10,29 +10,29 @@ use crate::error::{Error, Result};
 use crate::math::fns;
 
 /// The most pairs closer than the cut-off c that one OSPA/GOSPA evaluation accepts:
-/// `2^28 = 268,435,456` on 64-bit targets, `2^26 = 67,108,864` on 32-bit targets (wasm32,
+/// `2^27 = 134,217,728` on 64-bit targets, `2^25 = 33,554,432` on 32-bit targets (wasm32,
 /// whose whole address space is 4 GiB).
 ///
-/// Each such pair takes 12 bytes (its estimate index and cost) in a sparse component, or up to
-/// 16 bytes in a dense one (a component stored as a matrix is at least half full), so the cap
-/// bounds the graph at 4 GiB natively and 1 GiB in wasm32. Beyond it the call returns
-/// [`Error::InvalidParameter`] naming `truth × estimate pairs closer than c` with their count,
-/// after a counting pass that allocates nothing. Only scenes where a large share of all pairs
-/// lie within c reach it (e.g. two sets of 8,193 points within c of each other in wasm32);
-/// scenes where each point has a bounded number of neighbours within c stay far below it at
-/// any size.
+/// Each such pair takes 12 bytes (its estimate index and cost), plus up to 16 more in a
+/// component solved as a dense matrix (one at least half full), so the cap bounds the graph
+/// at 3.5 GiB natively and 0.9 GiB in wasm32, whatever the input. Beyond it the call returns
+/// [`Error::InvalidParameter`] naming `truth × estimate pairs closer than c` with their
+/// count (after a pass that only counts). Only scenes where a large share of all pairs lie
+/// within c of each other reach it — e.g. two sets of 5,793 points all within c of each other
+/// in wasm32, whose dense assignment would take tens of seconds — while scenes in which every
+/// point has a bounded number of neighbours within c stay far below it at any size.
 #[cfg(target_pointer_width = "64")]
-pub const MAX_CLOSE_PAIRS: usize = 1 << 28;
-/// See the 64-bit documentation: `2^26` on 32-bit targets.
+pub const MAX_CLOSE_PAIRS: usize = 1 << 27;
+/// See the 64-bit documentation: `2^25` on 32-bit targets.
 #[cfg(not(target_pointer_width = "64"))]
-pub const MAX_CLOSE_PAIRS: usize = 1 << 26;
+pub const MAX_CLOSE_PAIRS: usize = 1 << 25;
 
 /// The most points in one set: `2^31 − 1` (indices are stored in 32 bits).
 pub const MAX_POINTS: usize = (1 << 31) - 1;
 
 pub(crate) const PAIRS_FIELD: &str = "truth × estimate pairs closer than c";
-const PAIRS_EXPECTED: &str = "at most MAX_CLOSE_PAIRS (2^28 on 64-bit targets, 2^26 on 32-bit \
-                              targets such as wasm32; up to 16 bytes of memory each): lower c \
+const PAIRS_EXPECTED: &str = "at most MAX_CLOSE_PAIRS (2^27 on 64-bit targets, 2^25 on 32-bit \
+                              targets such as wasm32; up to 28 bytes of memory each): lower c \
                               or split the sets";
 
 /// Grid cells are `c · (1 + 2^-20)` wide: the margin absorbs the rounding of the cell
@@ -47,31 +47,45 @@ const MAX_GRID_AXES: usize = 3;
 /// there the dense shortest-augmenting-path scan beats the heap-based sparse search.
 const DENSE_MIN_ENTRIES: u64 = 256;
 
-/// The candidate pairs: a superset of the pairs closer than c.
-enum Candidates {
-    /// Every pair (no grid coordinates, an empty set, or points that a grid cannot separate).
-    All { n: usize, m: usize },
-    Grid(Grid),
+/// The candidate pairs, a superset of the pairs closer than c, over an internal numbering of
+/// the points: truths and estimates sorted by grid cell, so that neighbours in space are
+/// neighbours in memory for everything downstream (union-find, graph, solver).
+struct Candidates {
+    /// Internal row → truth index.
+    truth_order: Vec<u32>,
+    /// Internal column → estimate index.
+    estimate_order: Vec<u32>,
+    /// `None`: every pair is a candidate (no grid coordinates, an empty set, or points that a
+    /// grid cannot separate); the orders are then the identity.
+    grid: Option<Grid>,
 }
 
 /// A uniform grid on up to three coordinates (those spanning the most cells), with cells of
 /// width `h = c (1 + 2^-20)`: only pairs in neighbouring cells (`|Δq_k| ≤ 1` on every gridded
-/// axis) are candidates.
+/// axis) whose gridded coordinates also differ by less than `h` are candidates.
 ///
 /// Exactness: with `q_k = ⌊fl(fl(x_k − o_k) · fl(1/h))⌋` (`o_k` the smallest coordinate), two
 /// points whose computed distance is below c differ on axis k by less than
-/// `c (1 + 10⁻⁹)` (the [`Metric::grid_coordinates`] contract), and the rounding of the cell
-/// coordinates adds at most `4.02 ε R` cells for an axis of `R` cells (ε = 2⁻⁵³). Their
-/// unrounded cell coordinates then differ by less than
-/// `(1 + 10⁻⁹ + 3ε) / (1 + 2⁻²⁰) + 4.02 ε R < 1` whenever `R ≤ 2³⁰` (the bound is reached at
-/// `R ≈ 2.1·10⁹`), so their cells are neighbours: the grid never misses a pair closer than c,
-/// and the result is bit for bit the one from all pairs (up to the order of equally good
-/// assignments). Axes spanning more than 2³⁰ cells are not gridded.
+/// `c / (1 − 10⁻⁹) < h` (the [`Metric::grid_coordinates`] contract, on the same computed
+/// difference the box test uses), and the rounding of the cell coordinates adds at most
+/// `4.02 ε R` cells for an axis of `R` cells (ε = 2⁻⁵³). Their unrounded cell coordinates
+/// then differ by less than `(1 + 10⁻⁹ + 3ε) / (1 + 2⁻²⁰) + 4.02 ε R < 1` whenever
+/// `R ≤ 2³⁰` (the bound is reached at `R ≈ 2.1·10⁹`), so their cells are neighbours: the grid
+/// never misses a pair closer than c and gives exactly the graph that all pairs give. Axes
+/// spanning more than 2³⁰ cells are not gridded.
 struct Grid {
-    /// `(cell key, index)`, sorted.
-    truths: Vec<(u64, u32)>,
-    /// `(cell key, index)`, sorted.
-    estimates: Vec<(u64, u32)>,
+    /// Cell key of each internal row, sorted.
+    truth_keys: Vec<u64>,
+    /// Cell key of each internal column, sorted.
+    estimate_keys: Vec<u64>,
+    /// The gridded coordinates of each internal row (`axes` per row).
+    truth_coords: Vec<f64>,
+    /// The gridded coordinates of each internal column.
+    estimate_coords: Vec<f64>,
+    /// Number of gridded axes (1 to 3).
+    axes: usize,
+    /// The box half-width `h`.
+    reach: f64,
     /// Key offsets of the neighbouring lines of cells (all gridded axes but the last, whose
     /// neighbours `key − 1 ..= key + 1` are contiguous).
     deltas: Vec<i64>,
@@ -80,12 +94,16 @@ struct Grid {
 impl Candidates {
     fn new<T, M: Metric<T> + ?Sized>(x: &[T], y: &[T], metric: &M, c: f64) -> Result<Self> {
         let (n, m) = (x.len(), y.len());
-        let all = Candidates::All { n, m };
+        let all = || Candidates {
+            truth_order: (0..n as u32).collect(),
+            estimate_order: (0..m as u32).collect(),
+            grid: None,
+        };
         if n == 0 || m == 0 {
-            return Ok(all);
+            return Ok(all());
         }
         let Some(first) = metric.grid_coordinates(&x[0]) else {
-            return Ok(all);
+            return Ok(all());
         };
         let dim = first.len();
         let mut lo = vec![f64::INFINITY; dim];
@@ -93,7 +111,7 @@ impl Candidates {
         for (name, pts) in [("truth", x), ("estimate", y)] {
             for (i, pt) in pts.iter().enumerate() {
                 let Some(q) = metric.grid_coordinates(pt) else {
-                    return Ok(Candidates::All { n, m });
+                    return Ok(all());
                 };
                 if q.len() != dim {
                     return Err(Error::dimension(format!("{name}[{i}]"), dim, q.len()));
@@ -107,13 +125,15 @@ impl Candidates {
                 }
             }
         }
-        let s = 1.0 / (c * GRID_MARGIN);
+        let reach = c * GRID_MARGIN;
+        let s = 1.0 / reach;
         // (cells, axis) for the axes worth gridding, most cells first.
         let mut axes: Vec<(u64, usize)> = (0..dim)
             .filter_map(|k| {
                 let span = (hi[k] - lo[k]) * s;
                 // floor(span) + 1 cells; fewer than 4 prune nothing with ±1 neighbours.
-                (span.is_finite() && span < MAX_CELLS_PER_AXIS && span >= 3.0)
+                (3.0..MAX_CELLS_PER_AXIS)
+                    .contains(&span)
                     .then(|| (span as u64 + 1, k))
             })
             .collect();
@@ -134,84 +154,157 @@ impl Candidates {
             }
         }
         if chosen.is_empty() {
-            return Ok(all);
+            return Ok(all());
         }
         // Strides: the last chosen axis varies fastest.
         let mut strides = vec![1u64; chosen.len()];
         for a in (0..chosen.len() - 1).rev() {
             strides[a] = strides[a + 1] * (chosen[a + 1].0 + 2);
         }
-        let key = |q: &[f64]| -> u64 {
-            chosen
-                .iter()
-                .zip(&strides)
-                .map(|(&(_, k), &stride)| (((q[k] - lo[k]) * s) as u64 + 1) * stride)
-                .sum()
-        };
-        let keyed = |pts: &[T]| -> Vec<(u64, u32)> {
-            let mut v: Vec<(u64, u32)> = pts
+        let axes = chosen.len();
+        // Sorted (key, index) and the gridded coordinates in that order.
+        let keyed = |pts: &[T]| -> (Vec<u64>, Vec<u32>, Vec<f64>) {
+            let mut order: Vec<(u64, u32)> = pts
                 .iter()
                 .enumerate()
                 .map(|(i, pt)| {
                     // `grid_coordinates` returned Some for every point above.
                     let q = metric.grid_coordinates(pt).unwrap_or(&[]);
-                    (key(q), i as u32)
+                    let key = chosen
+                        .iter()
+                        .zip(&strides)
+                        .map(|(&(_, k), &stride)| (((q[k] - lo[k]) * s) as u64 + 1) * stride)
+                        .sum();
+                    (key, i as u32)
                 })
                 .collect();
-            v.sort_unstable();
-            v
+            order.sort_unstable();
+            let mut coords = Vec::with_capacity(order.len() * axes);
+            for &(_, i) in &order {
+                let q = metric.grid_coordinates(&pts[i as usize]).unwrap_or(&[]);
+                coords.extend(chosen.iter().map(|&(_, k)| q[k]));
+            }
+            let (keys, idx) = order.into_iter().unzip();
+            (keys, idx, coords)
         };
-        let (truths, estimates) = (keyed(x), keyed(y));
+        let (truth_keys, truth_order, truth_coords) = keyed(x);
+        let (estimate_keys, estimate_order, estimate_coords) = keyed(y);
         // Offsets in {-1, 0, 1} on every chosen axis but the last.
         let mut deltas = vec![0i64];
-        for &stride in &strides[..strides.len() - 1] {
+        for &stride in &strides[..axes - 1] {
             deltas = deltas
                 .iter()
                 .flat_map(|&d| [d - stride as i64, d, d + stride as i64])
                 .collect();
         }
-        Ok(Candidates::Grid(Grid {
-            truths,
-            estimates,
-            deltas,
-        }))
+        Ok(Candidates {
+            truth_order,
+            estimate_order,
+            grid: Some(Grid {
+                truth_keys,
+                estimate_keys,
+                truth_coords,
+                estimate_coords,
+                axes,
+                reach,
+                deltas,
+            }),
+        })
     }
 
-    /// Calls `f(i, j)` once for every candidate pair, grouped by truth `i` (each truth's
-    /// candidates in one run).
+    /// Calls `f(r, k)` once for every candidate pair of internal row `r` and internal column
+    /// `k`, in increasing `r` (each row's candidates in one run).
     fn for_each(&self, mut f: impl FnMut(usize, usize) -> Result<()>) -> Result<()> {
-        match self {
-            Candidates::All { n, m } => {
-                for i in 0..*n {
-                    for j in 0..*m {
-                        f(i, j)?;
-                    }
+        let Some(g) = &self.grid else {
+            for r in 0..self.truth_order.len() {
+                for k in 0..self.estimate_order.len() {
+                    f(r, k)?;
                 }
             }
-            Candidates::Grid(g) => {
-                let mut ranges: Vec<(usize, usize)> = Vec::with_capacity(g.deltas.len());
-                let mut a = 0;
-                while a < g.truths.len() {
-                    let key = g.truths[a].0;
-                    let b = a + g.truths[a..].partition_point(|t| t.0 == key);
-                    ranges.clear();
-                    for &d in &g.deltas {
-                        // Every cell coordinate is ≥ 1, so the neighbours' keys are ≥ 0.
-                        let centre = (key as i64 + d) as u64;
-                        let from = g.estimates.partition_point(|e| e.0 < centre - 1);
-                        let to = from + g.estimates[from..].partition_point(|e| e.0 <= centre + 1);
-                        if from < to {
-                            ranges.push((from, to));
-                        }
+            return Ok(());
+        };
+        g.for_each_cell(|rows, ranges| match g.axes {
+            1 => g.scan::<1>(rows, ranges, &mut f),
+            2 => g.scan::<2>(rows, ranges, &mut f),
+            _ => g.scan::<3>(rows, ranges, &mut f),
+        })
+    }
+
+    /// An upper bound on the number of candidate pairs (before the box test), without
+    /// looking at any point: `n·m` without a grid.
+    fn upper_bound(&self) -> u64 {
+        let Some(g) = &self.grid else {
+            return (self.truth_order.len() as u64)
+                .saturating_mul(self.estimate_order.len() as u64);
+        };
+        let mut bound = 0u64;
+        let _ = g.for_each_cell(|rows, ranges| {
+            let cols: usize = ranges.iter().map(|(from, to)| to - from).sum();
+            bound = bound.saturating_add(rows.len() as u64 * cols as u64);
+            Ok(())
+        });
+        bound
+    }
+}
+
+impl Grid {
+    /// Calls `f(rows, ranges)` for every cell holding truths: its internal rows and the
+    /// ranges of internal columns in the neighbouring cells.
+    fn for_each_cell(
+        &self,
+        mut f: impl FnMut(core::ops::Range<usize>, &[(usize, usize)]) -> Result<()>,
+    ) -> Result<()> {
+        let keys = &self.estimate_keys;
+        let mut ranges: Vec<(usize, usize)> = Vec::with_capacity(self.deltas.len());
+        // One pair of cursors per neighbouring line: the rows come in increasing key order, so
+        // every range only moves forward (a merge, O(n + m) per line).
+        let mut cursors: Vec<(usize, usize)> = vec![(0, 0); self.deltas.len()];
+        let mut a = 0;
+        while a < self.truth_keys.len() {
+            let key = self.truth_keys[a];
+            let mut b = a + 1;
+            while b < self.truth_keys.len() && self.truth_keys[b] == key {
+                b += 1;
+            }
+            ranges.clear();
+            for (&d, (from, to)) in self.deltas.iter().zip(&mut cursors) {
+                // Every cell coordinate is ≥ 1, so the neighbours' keys are ≥ 0.
+                let centre = (key as i64 + d) as u64;
+                while *from < keys.len() && keys[*from] < centre - 1 {
+                    *from += 1;
+                }
+                *to = (*to).max(*from);
+                while *to < keys.len() && keys[*to] <= centre + 1 {
+                    *to += 1;
+                }
+                if from < to {
+                    ranges.push((*from, *to));
+                }
+            }
+            f(a..b, &ranges)?;
+            a = b;
+        }
+        Ok(())
+    }
+
+    /// The candidates of the rows `rows` (one cell) among the columns of `ranges`: those whose
+    /// `A` gridded coordinates all differ by less than the reach.
+    #[inline]
+    fn scan<const A: usize>(
+        &self,
+        rows: core::ops::Range<usize>,
+        ranges: &[(usize, usize)],
+        f: &mut impl FnMut(usize, usize) -> Result<()>,
+    ) -> Result<()> {
+        let (truths, _) = self.truth_coords.as_chunks::<A>();
+        let (estimates, _) = self.estimate_coords.as_chunks::<A>();
+        for r in rows {
+            let t = truths[r];
+            for &(from, to) in ranges {
+                for (k, e) in estimates[from..to].iter().enumerate() {
+                    if (0..A).all(|a| fns::abs(t[a] - e[a]) < self.reach) {
+                        f(r, from + k)?;
                     }
-                    for &(_, i) in &g.truths[a..b] {
-                        for &(from, to) in &ranges {
-                            for &(_, j) in &g.estimates[from..to] {
-                                f(i as usize, j as usize)?;
-                            }
-                        }
-                    }
-                    a = b;
                 }
             }
         }
@@ -223,24 +316,29 @@ impl Candidates {
 /// more rows than columns, `cols × rows` otherwise (the solver wants the shorter side first).
 /// Non-edges cost `c^p`.
 pub(crate) struct DenseBlock {
-    /// Truth indices, increasing.
+    /// Internal rows, increasing.
     pub rows: Vec<u32>,
-    /// Estimate indices, increasing.
+    /// Internal columns, increasing.
     pub cols: Vec<u32>,
     /// Start of the matrix in [`CloseGraph::block_costs`].
     pub offset: usize,
 }
 
-/// The bipartite graph of the pairs closer than c, split into the sparse part (stored by rows)
-/// and the dense components (stored as matrices).
+/// The bipartite graph of the pairs closer than c on the internal numbering (rows and
+/// columns in grid order), split into the sparse part (stored by rows) and the dense
+/// components (stored as matrices).
 pub(crate) struct CloseGraph {
+    /// Internal row → truth index.
+    pub truth_order: Vec<u32>,
+    /// Internal column → estimate index.
+    pub estimate_order: Vec<u32>,
     /// Row offsets into `cols`/`costs` (length n + 1; empty for rows not in the sparse part).
     pub start: Vec<usize>,
-    /// Estimate index of each sparse edge.
+    /// Internal column of each sparse edge.
     pub cols: Vec<u32>,
     /// `d^p` of each sparse edge.
     pub costs: Vec<f64>,
-    /// The truths with edges in the sparse part, increasing.
+    /// The internal rows with edges in the sparse part, increasing.
     pub sparse_rows: Vec<u32>,
     /// The dense components.
     pub blocks: Vec<DenseBlock>,
@@ -258,14 +356,6 @@ struct Stat {
     block: u32,
 }
 
-fn nondeterministic(i: usize, j: usize, d: f64) -> Error {
-    Error::parameter(
-        format!("distance(truth[{i}], estimate[{j}])"),
-        d,
-        "the same value at every call (a deterministic metric)",
-    )
-}
-
 fn out_of_memory(pairs: usize) -> Error {
     Error::parameter(
         PAIRS_FIELD,
@@ -274,16 +364,36 @@ fn out_of_memory(pairs: usize) -> Error {
     )
 }
 
+/// The number of axes the grid indexes for these sets (0: all pairs), for tests.
+#[cfg(test)]
+pub(crate) fn grid_axes<T, M: Metric<T> + ?Sized>(x: &[T], y: &[T], metric: &M, c: f64) -> usize {
+    Candidates::new(x, y, metric, c)
+        .ok()
+        .and_then(|cands| cands.grid.map(|g| g.axes))
+        .unwrap_or(0)
+}
+
+/// Grows the edge buffers (doubling, at most to `cap`) without aborting on failure.
+fn grow(cols: &mut Vec<u32>, costs: &mut Vec<f64>, cap: usize, total: usize) -> Result<()> {
+    let want = (2 * cols.len()).max(1024).min(cap) - cols.len();
+    cols.try_reserve_exact(want)
+        .and_then(|()| costs.try_reserve_exact(want))
+        .map_err(|_| out_of_memory(total))
+}
+
 /// Builds the graph of the pairs with `metric.distance(x_i, y_j) < c`, edge costs `d^p`.
 ///
-/// Two passes over the candidate pairs: the first counts the edges and joins the components
-/// (union-find), allocating `O(n + m)`; then, unless there are more than `cap` edges, the
-/// second stores them (exactly sized, `O(n + m + E)`).
+/// One pass over the candidate pairs (they come in row order) stores the edges by rows and
+/// joins the components (union-find); components at least half full (and not tiny) are then
+/// copied into dense matrices. Memory: `O(n + m)` plus 12 bytes per edge, plus at most 16 per
+/// edge of a dense component (its matrix is at most twice its edge count), so at most 28
+/// bytes per pair closer than c. When the candidates could number more than `cap` (only
+/// where a large share of all pairs is close), a first pass counts the edges without
+/// storing anything, and an input over the cap fails there.
 ///
 /// # Errors
-/// `distance(truth[i], estimate[j])` for a NaN or negative distance (or a metric that changes
-/// its mind between the passes), [`PAIRS_FIELD`] beyond `cap` or when the allocation fails,
-/// and the grid's coordinate errors.
+/// `distance(truth[i], estimate[j])` for a NaN or negative distance, [`PAIRS_FIELD`] beyond
+/// `cap` or when an allocation fails, and the grid's coordinate errors.
 pub(crate) fn close_graph<T, M: Metric<T> + ?Sized>(
     x: &[T],
     y: &[T],
@@ -294,14 +404,11 @@ pub(crate) fn close_graph<T, M: Metric<T> + ?Sized>(
 ) -> Result<CloseGraph> {
     let (n, m) = (x.len(), y.len());
     let candidates = Candidates::new(x, y, metric, c)?;
+    let (to, eo) = (&candidates.truth_order, &candidates.estimate_order);
 
-    // Pass 1: count and join.
-    let mut forest = UnionFind::new(n + m);
-    let mut degree = vec![0u32; n];
-    let mut col_has_edge = vec![false; m];
-    let mut total = 0usize;
-    candidates.for_each(|i, j| {
-        let d = metric.distance(&x[i], &y[j]);
+    let distance = |r: usize, k: usize| -> Result<f64> {
+        let (i, j) = (to[r], eo[k]);
+        let d = metric.distance(&x[i as usize], &y[j as usize]);
         if d.is_nan() || d < 0.0 {
             return Err(Error::parameter(
                 format!("distance(truth[{i}], estimate[{j}])"),
@@ -309,49 +416,91 @@ pub(crate) fn close_graph<T, M: Metric<T> + ?Sized>(
                 ">= 0 (a metric)",
             ));
         }
+        Ok(d)
+    };
+    // When the candidates alone could exceed the cap, count first (no allocation), so that
+    // an input over the cap fails before storing anything.
+    if candidates.upper_bound() > cap as u64 {
+        let mut total = 0usize;
+        candidates.for_each(|r, k| {
+            total += usize::from(distance(r, k)? < c);
+            Ok(())
+        })?;
+        if total > cap {
+            return Err(Error::parameter(PAIRS_FIELD, total as f64, PAIRS_EXPECTED));
+        }
+    }
+
+    // The pass: store by rows, join components, count.
+    let mut forest = UnionFind::new(n + m);
+    let mut col_has_edge = vec![false; m];
+    // start[r + 1] is the end of row r's edges (fixed up below for rows without edges).
+    let mut start = vec![0usize; n + 1];
+    let mut cols: Vec<u32> = Vec::new();
+    let mut costs: Vec<f64> = Vec::new();
+    let mut total = 0usize;
+    candidates.for_each(|r, k| {
+        let d = distance(r, k)?;
         if d < c {
             total += 1;
-            forest.union(i as u32, (n + j) as u32);
-            degree[i] += 1;
-            col_has_edge[j] = true;
+            if total <= cap {
+                if cols.len() == cols.capacity() {
+                    grow(&mut cols, &mut costs, cap, total)?;
+                }
+                cols.push(k as u32);
+                costs.push(fns::powp(d, p));
+                start[r + 1] = cols.len();
+                forest.union(r as u32, (n + k) as u32);
+                col_has_edge[k] = true;
+            } else if total == cap + 1 {
+                // Over the cap after all (a metric that changed its mind since the count):
+                // free the buffers and only count from here on.
+                cols = Vec::new();
+                costs = Vec::new();
+            }
         }
         Ok(())
     })?;
     if total > cap {
         return Err(Error::parameter(PAIRS_FIELD, total as f64, PAIRS_EXPECTED));
     }
+    for r in 0..n {
+        start[r + 1] = start[r + 1].max(start[r]);
+    }
+    let degree = |r: usize| start[r + 1] - start[r];
 
-    // Components, numbered by first appearance (rows in index order, then columns), with
-    // the local index of each vertex inside its component.
+    // Components, numbered by first appearance (rows, then columns), with the local index of
+    // each vertex inside its component.
     let mut comp_of_root = vec![u32::MAX; n + m];
     let mut comp_row = vec![u32::MAX; n];
     let mut comp_col = vec![u32::MAX; m];
     let mut local = vec![0u32; n + m];
     let mut stats: Vec<Stat> = Vec::new();
-    for i in (0..n).filter(|&i| degree[i] > 0) {
-        let root = forest.find(i as u32) as usize;
+    for r in (0..n).filter(|&r| degree(r) > 0) {
+        let root = forest.find(r as u32) as usize;
         if comp_of_root[root] == u32::MAX {
             comp_of_root[root] = stats.len() as u32;
             stats.push(Stat::default());
         }
         let id = comp_of_root[root];
         let st = &mut stats[id as usize];
-        comp_row[i] = id;
-        local[i] = st.rows;
+        comp_row[r] = id;
+        local[r] = st.rows;
         st.rows += 1;
-        st.edges += degree[i] as usize;
+        st.edges += degree(r);
     }
-    for j in (0..m).filter(|&j| col_has_edge[j]) {
-        let id = comp_of_root[forest.find((n + j) as u32) as usize];
+    for k in (0..m).filter(|&k| col_has_edge[k]) {
+        let id = comp_of_root[forest.find((n + k) as u32) as usize];
         let st = &mut stats[id as usize];
-        comp_col[j] = id;
-        local[n + j] = st.cols;
+        comp_col[k] = id;
+        local[n + k] = st.cols;
         st.cols += 1;
     }
     drop(forest);
     drop(comp_of_root);
+    drop(col_has_edge);
 
-    // Storage: dense blocks for components at least half full and not tiny, rows otherwise.
+    // Dense blocks for components at least half full and not tiny; rows otherwise.
     let mut blocks: Vec<DenseBlock> = Vec::new();
     let mut dense_len = 0usize;
     for st in &mut stats {
@@ -367,89 +516,41 @@ pub(crate) fn close_graph<T, M: Metric<T> + ?Sized>(
             dense_len += entries as usize;
         }
     }
-    let mut start = vec![0usize; n + 1];
     let mut sparse_rows: Vec<u32> = Vec::new();
-    for i in 0..n {
-        let mut len = 0;
-        if comp_row[i] != u32::MAX {
-            let b = stats[comp_row[i] as usize].block;
-            if b == u32::MAX {
-                sparse_rows.push(i as u32);
-                len = degree[i] as usize;
-            } else {
-                blocks[b as usize].rows.push(i as u32);
-            }
-        }
-        start[i + 1] = start[i] + len;
-    }
-    for j in 0..m {
-        if comp_col[j] != u32::MAX {
-            let b = stats[comp_col[j] as usize].block;
-            if b != u32::MAX {
-                blocks[b as usize].cols.push(j as u32);
-            }
+    for r in (0..n).filter(|&r| comp_row[r] != u32::MAX) {
+        match stats[comp_row[r] as usize].block {
+            u32::MAX => sparse_rows.push(r as u32),
+            b => blocks[b as usize].rows.push(r as u32),
         }
     }
-    let sparse_len = start[n];
-    let cp = fns::powp(c, p);
-    let mut cols: Vec<u32> = Vec::new();
-    let mut costs: Vec<f64> = Vec::new();
+    for k in (0..m).filter(|&k| comp_col[k] != u32::MAX) {
+        let b = stats[comp_col[k] as usize].block;
+        if b != u32::MAX {
+            blocks[b as usize].cols.push(k as u32);
+        }
+    }
     let mut block_costs: Vec<f64> = Vec::new();
-    cols.try_reserve_exact(sparse_len)
-        .and_then(|()| costs.try_reserve_exact(sparse_len))
-        .and_then(|()| block_costs.try_reserve_exact(dense_len))
-        .map_err(|_| out_of_memory(total))?;
-    cols.resize(sparse_len, 0);
-    costs.resize(sparse_len, 0.0);
-    block_costs.resize(dense_len, cp);
-
-    // Pass 2: store. `degree` becomes the fill count of each sparse row.
-    degree.iter_mut().for_each(|d| *d = 0);
-    let mut stored = 0usize;
-    candidates.for_each(|i, j| {
-        let d = metric.distance(&x[i], &y[j]);
-        if !(d < c) {
-            return Ok(());
-        }
-        let id = comp_row[i];
-        if id == u32::MAX || id != comp_col[j] {
-            return Err(nondeterministic(i, j, d));
-        }
-        let cost = fns::powp(d, p);
-        let st = stats[id as usize];
-        if st.block == u32::MAX {
-            let pos = start[i] + degree[i] as usize;
-            if pos >= start[i + 1] {
-                return Err(nondeterministic(i, j, d));
-            }
-            cols[pos] = j as u32;
-            costs[pos] = cost;
-            degree[i] += 1;
-        } else {
+    if dense_len > 0 {
+        block_costs
+            .try_reserve_exact(dense_len)
+            .map_err(|_| out_of_memory(total))?;
+        block_costs.resize(dense_len, fns::powp(c, p));
+        for st in stats.iter().filter(|st| st.block != u32::MAX) {
             let block = &blocks[st.block as usize];
-            let (a, b) = (local[i] as usize, local[n + j] as usize);
-            let index = if st.rows <= st.cols {
-                a * st.cols as usize + b
-            } else {
-                b * st.rows as usize + a
-            };
-            block_costs[block.offset + index] = cost;
+            let (nr, nc) = (st.rows as usize, st.cols as usize);
+            for &r in &block.rows {
+                let a = local[r as usize] as usize;
+                for e in start[r as usize]..start[r as usize + 1] {
+                    let b = local[n + cols[e] as usize] as usize;
+                    let index = if nr <= nc { a * nc + b } else { b * nr + a };
+                    block_costs[block.offset + index] = costs[e];
+                }
+            }
         }
-        stored += 1;
-        Ok(())
-    })?;
-    if stored != total
-        || sparse_rows
-            .iter()
-            .any(|&i| start[i as usize] + degree[i as usize] as usize != start[i as usize + 1])
-    {
-        return Err(Error::parameter(
-            "distance(truth, estimate)",
-            stored as f64,
-            "the same value at every call (a deterministic metric)",
-        ));
     }
     Ok(CloseGraph {
+        truth_order: candidates.truth_order,
+        estimate_order: candidates.estimate_order,
         start,
         cols,
         costs,

@@ -108,7 +108,8 @@ impl FromIterator<GospaDecomposition> for GospaSeries {
 
 impl OspaSeries {
     fn from_steps(steps: impl IntoIterator<Item = (f64, f64, f64)>) -> Self {
-        let (mut distance, mut localisation, mut cardinality) = (Vec::new(), Vec::new(), Vec::new());
+        let (mut distance, mut localisation, mut cardinality) =
+            (Vec::new(), Vec::new(), Vec::new());
         for (d, l, c) in steps {
             distance.push(d);
             localisation.push(l);
@@ -244,7 +245,10 @@ impl Gospa {
         M: Metric<T> + Sync + ?Sized,
     {
         check_steps(truths.len(), estimates.len())?;
-        let (x, y) = (|t: usize| truths[t].as_ref(), |t: usize| estimates[t].as_ref());
+        let (x, y) = (
+            |t: usize| truths[t].as_ref(),
+            |t: usize| estimates[t].as_ref(),
+        );
         if self.alpha() == 2.0 {
             let steps = each_step(truths.len(), |t| {
                 let d = self.decompose_with(x(t), y(t), metric)?;
@@ -317,5 +321,166 @@ impl Ospa {
             Ok((d.distance, d.localisation, d.cardinality))
         })?;
         Ok(OspaSeries::from_steps(steps))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::metrics::FnMetric;
+    use alloc::vec;
+    use rand::{RngExt, SeedableRng, rngs::SmallRng};
+
+    type Steps = Vec<Vec<Vec<f64>>>;
+
+    /// A seeded scenario: `steps` steps of 0–12 truths in 2D and their noisy, partly missed,
+    /// cluttered estimates.
+    fn scenario(seed: u64, steps: usize) -> (Steps, Steps) {
+        let mut rng = SmallRng::seed_from_u64(seed);
+        let (mut truths, mut estimates) = (vec![], vec![]);
+        for _ in 0..steps {
+            let n = rng.random_range(0..=12);
+            let x: Vec<Vec<f64>> = (0..n)
+                .map(|_| vec![rng.random_range(0.0..20.0), rng.random_range(0.0..20.0)])
+                .collect();
+            let mut y: Vec<Vec<f64>> = vec![];
+            for t in &x {
+                if rng.random_range(0.0..1.0) < 0.8 {
+                    y.push(t.iter().map(|v| v + rng.random_range(-1.0..1.0)).collect());
+                }
+            }
+            for _ in 0..rng.random_range(0..3) {
+                y.push(vec![
+                    rng.random_range(0.0..20.0),
+                    rng.random_range(0.0..20.0),
+                ]);
+            }
+            truths.push(x);
+            estimates.push(y);
+        }
+        (truths, estimates)
+    }
+
+    #[test]
+    fn gospa_series_is_the_per_step_values_and_their_means() {
+        let (truths, estimates) = scenario(1, 120);
+        for (c, p) in [(2.0, 1.0), (3.0, 2.0), (1.5, 3.0)] {
+            let g = Gospa::new(c, p, 2.0).unwrap();
+            let s = g.series(&truths, &estimates).unwrap();
+            let per_step: Vec<GospaDecomposition> = truths
+                .iter()
+                .zip(&estimates)
+                .map(|(x, y)| g.decompose(x, y).unwrap())
+                .collect();
+            let parts = s.parts.clone().unwrap();
+            for (t, d) in per_step.iter().enumerate() {
+                assert_eq!(s.distance[t], d.distance);
+                assert_eq!(parts.localisation[t], d.localisation);
+                assert_eq!(
+                    (parts.missed[t], parts.false_targets[t]),
+                    (d.missed, d.false_targets)
+                );
+            }
+            let naive = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+            assert!((s.mean_distance - naive(&s.distance)).abs() <= 1e-13 * s.mean_distance);
+            let missed: Vec<f64> = parts.missed.iter().map(|&k| k as f64).collect();
+            assert_eq!(parts.mean_missed, naive(&missed));
+            // Collecting the per-step decompositions gives the same series.
+            assert_eq!(per_step.into_iter().collect::<GospaSeries>(), s);
+            for alpha in [1.0, 0.5] {
+                let g = Gospa::new(c, p, alpha).unwrap();
+                let s = g.series(&truths, &estimates).unwrap();
+                assert!(s.parts.is_none());
+                for t in 0..truths.len() {
+                    assert_eq!(
+                        s.distance[t],
+                        g.distance(&truths[t], &estimates[t]).unwrap()
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn ospa_series_is_the_per_step_values_and_their_means() {
+        let (truths, estimates) = scenario(2, 80);
+        let o = Ospa::new(4.0, 2.0).unwrap();
+        let s = o.series(&truths, &estimates).unwrap();
+        let per_step: Vec<OspaDecomposition> = truths
+            .iter()
+            .zip(&estimates)
+            .map(|(x, y)| o.decompose(x, y).unwrap())
+            .collect();
+        for (t, d) in per_step.iter().enumerate() {
+            assert_eq!(
+                (s.distance[t], s.localisation[t], s.cardinality[t]),
+                (d.distance, d.localisation, d.cardinality)
+            );
+        }
+        let mean_loc = s.localisation.iter().sum::<f64>() / 80.0;
+        assert!((s.mean_localisation - mean_loc).abs() <= 1e-13 * mean_loc);
+        assert_eq!(per_step.into_iter().collect::<OspaSeries>(), s);
+        // Slices of slices work as well as vectors of vectors.
+        let xs: Vec<&[Vec<f64>]> = truths.iter().map(|v| v.as_slice()).collect();
+        assert_eq!(o.series(&xs, &estimates).unwrap(), s);
+    }
+
+    #[test]
+    fn empty_series_and_empty_steps() {
+        let g = Gospa::new(1.0, 2.0, 2.0).unwrap();
+        let none: [Vec<[f64; 2]>; 0] = [];
+        let s = g.series(&none, &none).unwrap();
+        assert_eq!((s.distance.len(), s.mean_distance), (0, 0.0));
+        assert_eq!(s.parts.unwrap().mean_missed, 0.0);
+        let empty: Vec<Vec<[f64; 2]>> = vec![vec![], vec![]];
+        let s = Ospa::new(1.0, 2.0).unwrap().series(&empty, &empty).unwrap();
+        assert_eq!(s.distance, vec![0.0, 0.0]);
+    }
+
+    #[test]
+    fn errors_name_the_step_and_the_first_failing_step_wins() {
+        let g = Gospa::new(1.0, 2.0, 2.0).unwrap();
+        let (mut truths, mut estimates) = scenario(3, 10);
+        let e = g.series(&truths, &estimates[..9]).unwrap_err();
+        assert_eq!(e.field(), "estimates");
+        truths[7] = vec![vec![0.0, 0.0], vec![f64::NAN, 0.0]];
+        estimates[4] = vec![vec![0.0, 0.0], vec![1.0]];
+        let e = g.series(&truths, &estimates).unwrap_err();
+        assert_eq!(e.field(), "estimates[4][1]");
+        estimates[4] = vec![];
+        let e = g.series(&truths, &estimates).unwrap_err();
+        assert_eq!(e.field(), "truths[7][1][0]");
+        let e = Ospa::new(1.0, 2.0)
+            .unwrap()
+            .series(&truths, &estimates)
+            .unwrap_err();
+        assert_eq!(e.field(), "truths[7][1][0]");
+        let bad = FnMetric(|a: &f64, b: &f64| if a == b { f64::NAN } else { 1.0 });
+        let e = g
+            .series_with(&[vec![0.0], vec![1.0, 2.0]], &[vec![5.0], vec![2.0]], &bad)
+            .unwrap_err();
+        assert_eq!(e.field(), "distance(truths[1][1], estimates[1][0])");
+    }
+
+    #[test]
+    fn step_names() {
+        let cases = [
+            ("truth", "truths[3]"),
+            ("truth[2][0]", "truths[3][2][0]"),
+            ("estimate[1]", "estimates[3][1]"),
+            (
+                "distance(truth[0], estimate[4])",
+                "distance(truths[3][0], estimates[3][4])",
+            ),
+            (
+                "truth × estimate pairs closer than c",
+                "truths[3] × estimates[3] pairs closer than c",
+            ),
+            ("c", "c"),
+        ];
+        for (single, series) in cases {
+            let e = at_step(Error::parameter(single, 0.0, "x"), 3);
+            assert_eq!(e.field(), series);
+        }
     }
 }
