@@ -48,12 +48,17 @@ pub trait Metric<T: ?Sized> {
 pub struct Euclidean;
 
 impl Euclidean {
-    fn sq<P: AsRef<[f64]> + ?Sized>(a: &P, b: &P) -> f64 {
-        a.as_ref()
-            .iter()
-            .zip(b.as_ref())
-            .map(|(x, y)| (x - y) * (x - y))
-            .sum::<f64>()
+    /// Σ (a_k − b_k)², summed left to right (unrolled for 1 to 3 dimensions: the same
+    /// operations in the same order, so the same bits).
+    #[inline]
+    fn sq(a: &[f64], b: &[f64]) -> f64 {
+        let d = |k: usize| (a[k] - b[k]) * (a[k] - b[k]);
+        match (a.len(), b.len()) {
+            (1, 1) => d(0),
+            (2, 2) => d(0) + d(1),
+            (3, 3) => d(0) + d(1) + d(2),
+            _ => a.iter().zip(b).map(|(x, y)| (x - y) * (x - y)).sum::<f64>(),
+        }
     }
 }
 
@@ -64,7 +69,7 @@ impl<P: AsRef<[f64]> + ?Sized> Metric<P> for Euclidean {
         if a.as_ref().len() != b.as_ref().len() {
             return f64::NAN;
         }
-        fns::sqrt(Self::sq(a, b))
+        fns::sqrt(Self::sq(a.as_ref(), b.as_ref()))
     }
 
     fn validate(&self, truth: &[P], estimate: &[P]) -> Result<()>

@@ -1,10 +1,15 @@
 //! Multi-object metrics: OSPA with its localisation and cardinality parts, UOSPA, and GOSPA
 //! with its decomposition into localisation, missed and false targets.
 //!
-//! All of them are built on one computation (a crate-internal `cutoff_assignment`): the assignment that
-//! minimises `Σ d^(c)(x_i, y_π(i))^p` with `d^(c) = min(d, c)` — the cut-off distance raised to
-//! the order *before* the minimisation. (Minimising `Σ d` and raising afterwards, as Stone Soup
-//! does, picks the wrong assignment whenever p ≠ 1.)
+//! All of them are built on one computation (a crate-internal `cutoff_assignment`): the
+//! assignment that minimises `Σ d^(c)(x_i, y_π(i))^p` with `d^(c) = min(d, c)` — the cut-off
+//! distance raised to the order *before* the minimisation. (Minimising `Σ d` and raising
+//! afterwards, as Stone Soup 1.9.1's `OSPAMetric` does, picks the wrong assignment whenever
+//! p ≠ 1; its `GOSPAMetric` raises first.) Only the pairs closer than c matter to it, and for
+//! Euclidean points they are found with a uniform grid, so that scenes of 100,000 points
+//! take memory proportional to the pairs closer than c, never to `|X|·|Y|`
+//! ([`MAX_CLOSE_PAIRS`] caps them). [`Gospa::series`] and [`Ospa::series`] evaluate whole
+//! scenarios, in parallel over the steps with the `parallel` feature.
 
 mod base;
 mod gospa;
@@ -26,7 +31,7 @@ use alloc::vec::Vec;
 use crate::error::{Error, Result};
 use crate::math::matching::{SparseRows, UNMATCHED, min_cost_partial_matching};
 use crate::math::{assignment, fns};
-use pairs::close_graph;
+use pairs::{Problem, build};
 
 /// Validates a cut-off `c` (finite, > 0) and an order `p` (finite, ≥ 1).
 pub(crate) fn check_cutoff_order(c: f64, p: f64) -> Result<()> {
@@ -71,10 +76,14 @@ pub(crate) fn check_cutoff_order(c: f64, p: f64) -> Result<()> {
 /// (non-edges at `c^p`, by the same identity); the rest by an exact sparse shortest-
 /// augmenting-path matching on the edge list in which every row may also stay unmatched at
 /// cost `c^p` (`math/matching.rs`). Memory is `O(|x| + |y| + E)` for the E pairs closer than
-/// c, capped by [`MAX_CLOSE_PAIRS`]. The permutation is completed with the leftover rows and
-/// columns in index order (all at cost c^p). The value is exactly the optimum (up to the
-/// rounding of the dual updates); among equally good assignments the one returned may differ
-/// from a dense solver's.
+/// c, capped by [`MAX_CLOSE_PAIRS`]. Two cases skip the graph and solve the whole problem as
+/// one dense assignment on `min(d, c)^p` (the same optimum by the identity above): at most
+/// 1,024 pairs (where the graph's fixed cost dominates), and at most 2²² pairs (32 MiB) that
+/// no grid can split (all points within about 3c of each other on every axis, where most
+/// pairs are close anyway, or a metric without grid coordinates). The permutation is
+/// completed with the leftover rows and columns in index order (all at cost c^p). The value
+/// is exactly the optimum (up to the rounding of the dual updates); among equally good
+/// assignments the one returned may differ from a dense solver's.
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] naming `distance(truth[i], estimate[j])` if the metric returns a
@@ -88,10 +97,11 @@ pub(crate) fn cutoff_assignment<T, M: Metric<T> + ?Sized>(
     c: f64,
     p: f64,
 ) -> Result<CutoffAssignment> {
-    cutoff_assignment_capped(x, y, metric, c, p, MAX_CLOSE_PAIRS)
+    cutoff_assignment_capped(x, y, metric, c, p, MAX_CLOSE_PAIRS, false)
 }
 
-/// [`cutoff_assignment`] with the cap on the pairs closer than c as a parameter (for tests).
+/// [`cutoff_assignment`] with the cap on the pairs closer than c as a parameter, and the
+/// graph path forced whatever the size (for tests).
 pub(crate) fn cutoff_assignment_capped<T, M: Metric<T> + ?Sized>(
     x: &[T],
     y: &[T],
@@ -99,6 +109,7 @@ pub(crate) fn cutoff_assignment_capped<T, M: Metric<T> + ?Sized>(
     c: f64,
     p: f64,
     cap: usize,
+    force_graph: bool,
 ) -> Result<CutoffAssignment> {
     metric.validate(x, y)?;
     for (name, len) in [("truth", x.len()), ("estimate", y.len())] {
@@ -112,7 +123,62 @@ pub(crate) fn cutoff_assignment_capped<T, M: Metric<T> + ?Sized>(
     }
     let (n, m) = (x.len(), y.len());
     let cp = fns::powp(c, p);
-    let graph = close_graph(x, y, metric, c, p, cap)?;
+    let (estimate_of, cost_of) = match build(x, y, metric, (c, p), cap, force_graph)? {
+        Problem::Dense { costs, transposed } => {
+            // One dense assignment on min(d, c)^p; pairs at c^p are not close.
+            let (nr, nc) = if transposed { (m, n) } else { (n, m) };
+            let mut estimate_of = vec![UNMATCHED; n];
+            let mut cost_of = vec![0.0f64; n];
+            if nr > 0 {
+                for (a, b) in assignment::sap(&costs, nr, nc).into_iter().enumerate() {
+                    let cost = costs[a * nc + b];
+                    let (i, j) = if transposed { (b, a) } else { (a, b) };
+                    if cost < cp {
+                        estimate_of[i] = j as u32;
+                        cost_of[i] = cost;
+                    }
+                }
+            }
+            (estimate_of, cost_of)
+        }
+        Problem::Graph(graph) => solve_graph(graph, n, m, cp),
+    };
+
+    let mut col_done = vec![false; m];
+    let mut pairs: Vec<AssignedPair> = Vec::with_capacity(n.min(m));
+    for (i, &j) in estimate_of.iter().enumerate() {
+        if j != UNMATCHED {
+            col_done[j as usize] = true;
+            pairs.push(AssignedPair {
+                truth: i,
+                estimate: j as usize,
+                cost: cost_of[i],
+                close: true,
+            });
+        }
+    }
+    // Complete the permutation with leftover rows and columns, in index order.
+    let leftover_rows = (0..n).filter(|&i| estimate_of[i] == UNMATCHED);
+    let leftover_cols = (0..m).filter(|&j| !col_done[j]);
+    let completion: Vec<AssignedPair> = leftover_rows
+        .zip(leftover_cols)
+        .map(|(i, j)| AssignedPair {
+            truth: i,
+            estimate: j,
+            cost: cp,
+            close: false,
+        })
+        .collect();
+    pairs.extend(completion);
+    pairs.sort_unstable_by_key(|q| q.truth);
+    let total = crate::math::sum::sum(pairs.iter().map(|q| q.cost));
+    Ok(CutoffAssignment { pairs, total })
+}
+
+/// Solves the graph of the pairs closer than c: dense blocks by the dense solver, the rest by
+/// the sparse partial matching. Returns each truth's estimate ([`UNMATCHED`] if none) and the
+/// pair's cost `d^p`.
+fn solve_graph(graph: pairs::CloseGraph, n: usize, m: usize, cp: f64) -> (Vec<u32>, Vec<f64>) {
     // Solve on the internal numbering (rows and columns in grid order).
     let mut col4row = vec![UNMATCHED; n];
     let mut cost4row = vec![0.0f64; n];
@@ -166,39 +232,7 @@ pub(crate) fn cutoff_assignment_capped<T, M: Metric<T> + ?Sized>(
             cost_of[i] = cost4row[r];
         }
     }
-    drop(graph);
-    drop(col4row);
-    drop(cost4row);
-
-    let mut col_done = vec![false; m];
-    let mut pairs: Vec<AssignedPair> = Vec::with_capacity(n.min(m));
-    for (i, &j) in estimate_of.iter().enumerate() {
-        if j != UNMATCHED {
-            col_done[j as usize] = true;
-            pairs.push(AssignedPair {
-                truth: i,
-                estimate: j as usize,
-                cost: cost_of[i],
-                close: true,
-            });
-        }
-    }
-    // Complete the permutation with leftover rows and columns, in index order.
-    let leftover_rows = (0..n).filter(|&i| estimate_of[i] == UNMATCHED);
-    let leftover_cols = (0..m).filter(|&j| !col_done[j]);
-    let completion: Vec<AssignedPair> = leftover_rows
-        .zip(leftover_cols)
-        .map(|(i, j)| AssignedPair {
-            truth: i,
-            estimate: j,
-            cost: cp,
-            close: false,
-        })
-        .collect();
-    pairs.extend(completion);
-    pairs.sort_unstable_by_key(|q| q.truth);
-    let total = crate::math::sum::sum(pairs.iter().map(|q| q.cost));
-    Ok(CutoffAssignment { pairs, total })
+    (estimate_of, cost_of)
 }
 
 /// A pair of the optimal permutation.

@@ -91,6 +91,48 @@ struct Grid {
     deltas: Vec<i64>,
 }
 
+/// The bounding box of the grid coordinates of both sets, `None` if the metric has none
+/// (for any point).
+///
+/// # Errors
+/// [`Error::DimensionMismatch`] naming `truth[i]`/`estimate[j]` for coordinates of another
+/// length than the first point's, [`Error::InvalidParameter`] naming `truth[i][k]` for a
+/// non-finite one.
+fn coordinate_bounds<T, M: Metric<T> + ?Sized>(
+    x: &[T],
+    y: &[T],
+    metric: &M,
+) -> Result<Option<(Vec<f64>, Vec<f64>)>> {
+    let Some(first) = x
+        .first()
+        .or(y.first())
+        .and_then(|pt| metric.grid_coordinates(pt))
+    else {
+        return Ok(None);
+    };
+    let dim = first.len();
+    let mut lo = vec![f64::INFINITY; dim];
+    let mut hi = vec![f64::NEG_INFINITY; dim];
+    for (name, pts) in [("truth", x), ("estimate", y)] {
+        for (i, pt) in pts.iter().enumerate() {
+            let Some(q) = metric.grid_coordinates(pt) else {
+                return Ok(None);
+            };
+            if q.len() != dim {
+                return Err(Error::dimension(format!("{name}[{i}]"), dim, q.len()));
+            }
+            for (k, &v) in q.iter().enumerate() {
+                if !v.is_finite() {
+                    return Err(Error::parameter(format!("{name}[{i}][{k}]"), v, "finite"));
+                }
+                lo[k] = lo[k].min(v);
+                hi[k] = hi[k].max(v);
+            }
+        }
+    }
+    Ok(Some((lo, hi)))
+}
+
 impl Candidates {
     fn new<T, M: Metric<T> + ?Sized>(x: &[T], y: &[T], metric: &M, c: f64) -> Result<Self> {
         let (n, m) = (x.len(), y.len());
@@ -102,29 +144,10 @@ impl Candidates {
         if n == 0 || m == 0 {
             return Ok(all());
         }
-        let Some(first) = metric.grid_coordinates(&x[0]) else {
+        let Some((lo, hi)) = coordinate_bounds(x, y, metric)? else {
             return Ok(all());
         };
-        let dim = first.len();
-        let mut lo = vec![f64::INFINITY; dim];
-        let mut hi = vec![f64::NEG_INFINITY; dim];
-        for (name, pts) in [("truth", x), ("estimate", y)] {
-            for (i, pt) in pts.iter().enumerate() {
-                let Some(q) = metric.grid_coordinates(pt) else {
-                    return Ok(all());
-                };
-                if q.len() != dim {
-                    return Err(Error::dimension(format!("{name}[{i}]"), dim, q.len()));
-                }
-                for (k, &v) in q.iter().enumerate() {
-                    if !v.is_finite() {
-                        return Err(Error::parameter(format!("{name}[{i}][{k}]"), v, "finite"));
-                    }
-                    lo[k] = lo[k].min(v);
-                    hi[k] = hi[k].max(v);
-                }
-            }
-        }
+        let dim = lo.len();
         let reach = c * GRID_MARGIN;
         let s = 1.0 / reach;
         // (cells, axis) for the axes worth gridding, most cells first.
@@ -373,6 +396,26 @@ pub(crate) fn grid_axes<T, M: Metric<T> + ?Sized>(x: &[T], y: &[T], metric: &M, 
         .unwrap_or(0)
 }
 
+/// The graph, whatever the size (for tests).
+#[cfg(test)]
+pub(crate) fn graph_for_tests<T, M: Metric<T> + ?Sized>(
+    x: &[T],
+    y: &[T],
+    metric: &M,
+    c: f64,
+    p: f64,
+) -> Result<CloseGraph> {
+    close_graph(
+        x,
+        y,
+        metric,
+        c,
+        p,
+        MAX_CLOSE_PAIRS,
+        Candidates::new(x, y, metric, c)?,
+    )
+}
+
 /// Grows the edge buffers (doubling, at most to `cap`) without aborting on failure.
 fn grow(cols: &mut Vec<u32>, costs: &mut Vec<f64>, cap: usize, total: usize) -> Result<()> {
     let want = (2 * cols.len()).max(1024).min(cap) - cols.len();
@@ -381,93 +424,187 @@ fn grow(cols: &mut Vec<u32>, costs: &mut Vec<f64>, cap: usize, total: usize) -> 
         .map_err(|_| out_of_memory(total))
 }
 
-/// Builds the graph of the pairs with `metric.distance(x_i, y_j) < c`, edge costs `d^p`.
-///
-/// One pass over the candidate pairs (they come in row order) stores the edges by rows and
-/// joins the components (union-find); components at least half full (and not tiny) are then
-/// copied into dense matrices. Memory: `O(n + m)` plus 12 bytes per edge, plus at most 16 per
-/// edge of a dense component (its matrix is at most twice its edge count), so at most 28
-/// bytes per pair closer than c. When the candidates could number more than `cap` (only
-/// where a large share of all pairs is close), a first pass counts the edges without
-/// storing anything, and an input over the cap fails there.
+/// When the candidates number more than this many per point, the graph is built in two
+/// passes (count, then store exactly where each component goes) instead of one: dense
+/// components then go straight into their matrices, never through the edge list.
+const CANDIDATES_PER_POINT_ONE_PASS: u64 = 16;
+
+fn nondeterministic(i: u32, j: u32, d: f64) -> Error {
+    Error::parameter(
+        format!("distance(truth[{i}], estimate[{j}])"),
+        d,
+        "the same value at every call (a deterministic metric)",
+    )
+}
+
+/// Up to this many pairs (`|X|·|Y|`), the whole problem is solved as one dense assignment:
+/// below it the fixed cost of the grid and the graph outweighs anything they save.
+const SMALL_PROBLEM: usize = 1 << 10;
+/// Up to this many pairs (32 MiB of costs), a problem the grid cannot split (every point
+/// within about 3c of the others on every axis, so that a large share of all pairs is close,
+/// or coordinates too spread for a grid) is solved as one dense assignment: one pass over the
+/// pairs instead of two. Above it, the two-pass graph keeps the memory at the pairs closer
+/// than c.
+const DIRECT_DENSE_MAX: usize = 1 << 22;
+
+/// How a problem is solved.
+pub(crate) enum Problem {
+    /// The full `min(d, c)^p` matrix, row-major with the smaller set as rows (`transposed`:
+    /// the estimates are the rows).
+    Dense { costs: Vec<f64>, transposed: bool },
+    /// The graph of the pairs closer than c.
+    Graph(CloseGraph),
+}
+
+#[inline(always)]
+fn checked<T, M: Metric<T> + ?Sized>(metric: &M, a: &T, b: &T, i: u32, j: u32) -> Result<f64> {
+    let d = metric.distance(a, b);
+    if d.is_nan() || d < 0.0 {
+        return Err(Error::parameter(
+            format!("distance(truth[{i}], estimate[{j}])"),
+            d,
+            ">= 0 (a metric)",
+        ));
+    }
+    Ok(d)
+}
+
+/// The problem of `x` against `y`: a dense matrix for small problems and for problems a grid
+/// cannot split (up to [`DIRECT_DENSE_MAX`] pairs), the graph of the pairs closer than c
+/// otherwise (see [`close_graph`]).
 ///
 /// # Errors
-/// `distance(truth[i], estimate[j])` for a NaN or negative distance, [`PAIRS_FIELD`] beyond
-/// `cap` or when an allocation fails, and the grid's coordinate errors.
-pub(crate) fn close_graph<T, M: Metric<T> + ?Sized>(
+/// As [`close_graph`].
+pub(crate) fn build<T, M: Metric<T> + ?Sized>(
+    x: &[T],
+    y: &[T],
+    metric: &M,
+    (c, p): (f64, f64),
+    cap: usize,
+    force_graph: bool,
+) -> Result<Problem> {
+    let (n, m) = (x.len(), y.len());
+    let pairs = n.saturating_mul(m);
+    let candidates = if pairs <= SMALL_PROBLEM && !force_graph {
+        // The same coordinate errors as with a grid, whatever the size.
+        coordinate_bounds(x, y, metric)?;
+        None
+    } else {
+        let candidates = Candidates::new(x, y, metric, c)?;
+        if force_graph || candidates.grid.is_some() || pairs > DIRECT_DENSE_MAX {
+            return close_graph(x, y, metric, c, p, cap, candidates).map(Problem::Graph);
+        }
+        Some(candidates)
+    };
+    drop(candidates);
+    let cp = fns::powp(c, p);
+    let transposed = n > m;
+    let mut costs: Vec<f64> = Vec::new();
+    costs
+        .try_reserve_exact(pairs)
+        .map_err(|_| out_of_memory(pairs))?;
+    costs.resize(pairs, cp);
+    for (i, a) in x.iter().enumerate() {
+        for (j, b) in y.iter().enumerate() {
+            let d = checked(metric, a, b, i as u32, j as u32)?;
+            if d < c {
+                costs[if transposed { j * n + i } else { i * m + j }] = fns::powp(d, p);
+            }
+        }
+    }
+    Ok(Problem::Dense { costs, transposed })
+}
+
+/// Builds the graph of the pairs with `metric.distance(x_i, y_j) < c`, edge costs `d^p`.
+///
+/// The candidate pairs come in row order. Where they are few (at most 16 per point, as in
+/// scenes where every point has a bounded number of neighbours within c), one pass stores the
+/// edges by rows and joins the components (union-find), and components at least half full
+/// (and not tiny) are then copied into dense matrices: memory `O(n + m)` plus 12 bytes per
+/// edge, plus at most 16 per edge of a dense component. Otherwise (a large share of all
+/// pairs may be close) a first pass counts the edges and joins the components without
+/// storing anything — an input over `cap` fails there — and a second stores each edge where
+/// its component goes: 12 bytes per sparse edge, at most 16 per dense one.
+///
+/// # Errors
+/// `distance(truth[i], estimate[j])` for a NaN or negative distance (or a metric that
+/// changes its mind between the passes), [`PAIRS_FIELD`] beyond `cap` or when an allocation
+/// fails, and the grid's coordinate errors.
+fn close_graph<T, M: Metric<T> + ?Sized>(
     x: &[T],
     y: &[T],
     metric: &M,
     c: f64,
     p: f64,
     cap: usize,
+    candidates: Candidates,
 ) -> Result<CloseGraph> {
     let (n, m) = (x.len(), y.len());
-    let candidates = Candidates::new(x, y, metric, c)?;
     let (to, eo) = (&candidates.truth_order, &candidates.estimate_order);
-
     let distance = |r: usize, k: usize| -> Result<f64> {
         let (i, j) = (to[r], eo[k]);
-        let d = metric.distance(&x[i as usize], &y[j as usize]);
-        if d.is_nan() || d < 0.0 {
-            return Err(Error::parameter(
-                format!("distance(truth[{i}], estimate[{j}])"),
-                d,
-                ">= 0 (a metric)",
-            ));
-        }
-        Ok(d)
+        checked(metric, &x[i as usize], &y[j as usize], i, j)
     };
-    // When the candidates alone could exceed the cap, count first (no allocation), so that
-    // an input over the cap fails before storing anything.
-    if candidates.upper_bound() > cap as u64 {
-        let mut total = 0usize;
-        candidates.for_each(|r, k| {
-            total += usize::from(distance(r, k)? < c);
-            Ok(())
-        })?;
-        if total > cap {
-            return Err(Error::parameter(PAIRS_FIELD, total as f64, PAIRS_EXPECTED));
-        }
-    }
+    let bound = candidates.upper_bound();
+    let two_pass =
+        bound > cap as u64 || bound > CANDIDATES_PER_POINT_ONE_PASS.saturating_mul((n + m) as u64);
 
-    // The pass: store by rows, join components, count.
+    // First pass: join components and count edges per row; in one-pass mode also store them.
     let mut forest = UnionFind::new(n + m);
     let mut col_has_edge = vec![false; m];
-    // start[r + 1] is the end of row r's edges (fixed up below for rows without edges).
+    // start[r + 1]: in one-pass mode the end of row r's edges (fixed up below for rows
+    // without edges); in two-pass mode the degree of row r.
     let mut start = vec![0usize; n + 1];
     let mut cols: Vec<u32> = Vec::new();
     let mut costs: Vec<f64> = Vec::new();
     let mut total = 0usize;
+    // The root of the current row's component (rows come in order): one find per edge.
+    let mut row_root = (usize::MAX, 0u32);
     candidates.for_each(|r, k| {
         let d = distance(r, k)?;
         if d < c {
             total += 1;
-            if total <= cap {
+            if total > cap {
+                if total == cap + 1 {
+                    // Only count from here on (the error needs the count).
+                    cols = Vec::new();
+                    costs = Vec::new();
+                }
+                return Ok(());
+            }
+            if two_pass {
+                start[r + 1] += 1;
+            } else {
                 if cols.len() == cols.capacity() {
                     grow(&mut cols, &mut costs, cap, total)?;
                 }
                 cols.push(k as u32);
                 costs.push(fns::powp(d, p));
                 start[r + 1] = cols.len();
-                forest.union(r as u32, (n + k) as u32);
-                col_has_edge[k] = true;
-            } else if total == cap + 1 {
-                // Over the cap after all (a metric that changed its mind since the count):
-                // free the buffers and only count from here on.
-                cols = Vec::new();
-                costs = Vec::new();
             }
+            if row_root.0 != r {
+                row_root = (r, forest.find(r as u32));
+            }
+            let col_root = forest.find((n + k) as u32);
+            if col_root != row_root.1 {
+                row_root.1 = forest.link(row_root.1, col_root);
+            }
+            col_has_edge[k] = true;
         }
         Ok(())
     })?;
     if total > cap {
         return Err(Error::parameter(PAIRS_FIELD, total as f64, PAIRS_EXPECTED));
     }
+    let mut degree = vec![0u32; n];
     for r in 0..n {
-        start[r + 1] = start[r + 1].max(start[r]);
+        if two_pass {
+            degree[r] = start[r + 1] as u32;
+        } else {
+            start[r + 1] = start[r + 1].max(start[r]);
+            degree[r] = (start[r + 1] - start[r]) as u32;
+        }
     }
-    let degree = |r: usize| start[r + 1] - start[r];
 
     // Components, numbered by first appearance (rows, then columns), with the local index of
     // each vertex inside its component.
@@ -476,7 +613,7 @@ pub(crate) fn close_graph<T, M: Metric<T> + ?Sized>(
     let mut comp_col = vec![u32::MAX; m];
     let mut local = vec![0u32; n + m];
     let mut stats: Vec<Stat> = Vec::new();
-    for r in (0..n).filter(|&r| degree(r) > 0) {
+    for r in (0..n).filter(|&r| degree[r] > 0) {
         let root = forest.find(r as u32) as usize;
         if comp_of_root[root] == u32::MAX {
             comp_of_root[root] = stats.len() as u32;
@@ -487,7 +624,7 @@ pub(crate) fn close_graph<T, M: Metric<T> + ?Sized>(
         comp_row[r] = id;
         local[r] = st.rows;
         st.rows += 1;
-        st.edges += degree(r);
+        st.edges += degree[r] as usize;
     }
     for k in (0..m).filter(|&k| col_has_edge[k]) {
         let id = comp_of_root[forest.find((n + k) as u32) as usize];
@@ -530,20 +667,66 @@ pub(crate) fn close_graph<T, M: Metric<T> + ?Sized>(
         }
     }
     let mut block_costs: Vec<f64> = Vec::new();
-    if dense_len > 0 {
-        block_costs
-            .try_reserve_exact(dense_len)
+    block_costs
+        .try_reserve_exact(dense_len)
+        .map_err(|_| out_of_memory(total))?;
+    block_costs.resize(dense_len, fns::powp(c, p));
+    let index = |st: &Stat, r: usize, k: usize| {
+        let (a, b) = (local[r] as usize, local[n + k] as usize);
+        let offset = blocks[st.block as usize].offset;
+        if st.rows <= st.cols {
+            offset + a * st.cols as usize + b
+        } else {
+            offset + b * st.rows as usize + a
+        }
+    };
+
+    if two_pass {
+        // The edge list of the sparse part only, exactly sized, then the second pass.
+        for r in 0..n {
+            let sparse = comp_row[r] != u32::MAX && stats[comp_row[r] as usize].block == u32::MAX;
+            start[r + 1] = start[r] + if sparse { degree[r] as usize } else { 0 };
+        }
+        let sparse_len = start[n];
+        cols.try_reserve_exact(sparse_len)
+            .and_then(|()| costs.try_reserve_exact(sparse_len))
             .map_err(|_| out_of_memory(total))?;
-        block_costs.resize(dense_len, fns::powp(c, p));
+        let mut stored = 0usize;
+        candidates.for_each(|r, k| {
+            let d = distance(r, k)?;
+            if d >= c {
+                return Ok(());
+            }
+            let (i, j) = (to[r], eo[k]);
+            let id = comp_row[r];
+            if id == u32::MAX || id != comp_col[k] {
+                return Err(nondeterministic(i, j, d));
+            }
+            let st = &stats[id as usize];
+            if st.block == u32::MAX {
+                if cols.len() < start[r] || cols.len() >= start[r + 1] {
+                    return Err(nondeterministic(i, j, d));
+                }
+                cols.push(k as u32);
+                costs.push(fns::powp(d, p));
+            } else {
+                block_costs[index(st, r, k)] = fns::powp(d, p);
+            }
+            stored += 1;
+            Ok(())
+        })?;
+        if stored != total || cols.len() != sparse_len {
+            return Err(Error::parameter(
+                "distance(truth, estimate)",
+                stored as f64,
+                "the same value at every call (a deterministic metric)",
+            ));
+        }
+    } else {
         for st in stats.iter().filter(|st| st.block != u32::MAX) {
-            let block = &blocks[st.block as usize];
-            let (nr, nc) = (st.rows as usize, st.cols as usize);
-            for &r in &block.rows {
-                let a = local[r as usize] as usize;
+            for &r in &blocks[st.block as usize].rows {
                 for e in start[r as usize]..start[r as usize + 1] {
-                    let b = local[n + cols[e] as usize] as usize;
-                    let index = if nr <= nc { a * nc + b } else { b * nr + a };
-                    block_costs[block.offset + index] = costs[e];
+                    block_costs[index(st, r as usize, cols[e] as usize)] = costs[e];
                 }
             }
         }
@@ -583,15 +766,13 @@ impl UnionFind {
         v
     }
 
-    fn union(&mut self, a: u32, b: u32) {
-        let (mut a, mut b) = (self.find(a), self.find(b));
-        if a == b {
-            return;
-        }
+    /// Joins the sets of the distinct roots `a` and `b`; returns the new root.
+    fn link(&mut self, mut a: u32, mut b: u32) -> u32 {
         if self.size[a as usize] < self.size[b as usize] {
             core::mem::swap(&mut a, &mut b);
         }
         self.parent[b as usize] = a;
         self.size[a as usize] += self.size[b as usize];
+        a
     }
 }

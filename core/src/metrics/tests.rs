@@ -75,7 +75,14 @@ fn scene<R: Rng>(
 /// Checks one instance: a valid permutation, consistent costs, the optimum of the dense
 /// oracle, and the same value with and without the grid.
 fn check(x: &[Vec<f64>], y: &[Vec<f64>], c: f64, p: f64, exact: Option<f64>) {
-    let a = cutoff_assignment(x, y, &Euclidean, c, p).unwrap();
+    // The automatic choice, and the graph path (grid, sparse and dense blocks) whatever the
+    // size.
+    check_path(x, y, c, p, exact, false);
+    check_path(x, y, c, p, exact, true);
+}
+
+fn check_path(x: &[Vec<f64>], y: &[Vec<f64>], c: f64, p: f64, exact: Option<f64>, graph: bool) {
+    let a = cutoff_assignment_capped(x, y, &Euclidean, c, p, MAX_CLOSE_PAIRS, graph).unwrap();
     let cp = fns::powp(c, p);
     assert_eq!(a.pairs.len(), x.len().min(y.len()));
     let mut used_t = vec![false; x.len()];
@@ -106,7 +113,7 @@ fn check(x: &[Vec<f64>], y: &[Vec<f64>], c: f64, p: f64, exact: Option<f64>) {
     if let Some(best) = exact {
         assert!((a.total - best).abs() <= 1e-12 * (1.0 + best));
     }
-    let all = cutoff_assignment(x, y, &AllPairs, c, p).unwrap();
+    let all = cutoff_assignment_capped(x, y, &AllPairs, c, p, MAX_CLOSE_PAIRS, graph).unwrap();
     assert!((all.total - a.total).abs() <= tol, "grid vs all pairs");
     let close = |a: &CutoffAssignment| a.pairs.iter().filter(|q| q.close).count();
     // The number of assigned pairs can differ only between equally good assignments.
@@ -151,7 +158,7 @@ fn every_density_matches_the_dense_solver() {
                 let (x, y) = scene(&mut rng, (n, m, dim), side, c * 0.5, lattice);
                 check(&x, &y, c, p, None);
                 let axes = pairs::grid_axes(&x, &y, &Euclidean, c);
-                let g = pairs::close_graph(&x, &y, &Euclidean, c, p, MAX_CLOSE_PAIRS).unwrap();
+                let g = pairs::graph_for_tests(&x, &y, &Euclidean, c, p).unwrap();
                 match density {
                     0 => assert_eq!((axes, g.blocks.len()), (dim.min(3), 0)),
                     1 if dim <= 2 => assert_eq!((axes, g.blocks.len()), (dim, 0)),
@@ -235,7 +242,7 @@ fn dense_blocks_in_both_orientations_and_mixed_components() {
             x.push(vec![base, 0.0]);
             y.push(vec![base + rng.random_range(0.0..1.5), 0.0]);
         }
-        let g = pairs::close_graph(&x, &y, &Euclidean, 2.0, 2.0, MAX_CLOSE_PAIRS).unwrap();
+        let g = pairs::graph_for_tests(&x, &y, &Euclidean, 2.0, 2.0).unwrap();
         assert_eq!(g.blocks.len(), 1, "the cluster is one dense block");
         let b = &g.blocks[0];
         assert_eq!((b.rows.len(), b.cols.len()), (nr, nk));
@@ -308,27 +315,24 @@ fn grid_coordinate_errors_name_the_point() {
 
 #[test]
 fn the_cap_on_pairs_closer_than_c_is_an_error_with_the_count() {
-    let x: Vec<[f64; 2]> = (0..30).map(|i| [f64::from(i), 0.0]).collect();
+    // 40 points on a line, c = 2.5: each is within c of itself and up to two neighbours on
+    // each side (40 · 40 pairs: the grid path).
+    let x: Vec<[f64; 2]> = (0..40).map(|i| [f64::from(i), 0.0]).collect();
     let y = x.clone();
-    // c = 2.5: each point is within c of itself and up to two neighbours each side.
-    let pairs = 30 + 2 * 29 + 2 * 28;
-    let ok = cutoff_assignment_capped(&x, &y, &Euclidean, 2.5, 2.0, pairs).unwrap();
-    assert_eq!(ok.total, 0.0);
-    let e = cutoff_assignment_capped(&x, &y, &Euclidean, 2.5, 2.0, pairs - 1).unwrap_err();
-    assert_eq!(e.field(), pairs::PAIRS_FIELD);
-    assert!(matches!(e, Error::InvalidParameter { value, .. } if value == pairs as f64));
-    assert!(alloc::format!("{e}").contains("MAX_CLOSE_PAIRS"));
-    // The same through a metric without grid coordinates, and with every pair close.
-    let e = cutoff_assignment_capped(
-        &x,
-        &y,
-        &FnMetric(|a: &[f64; 2], b: &[f64; 2]| Euclidean.distance(a, b)),
-        100.0,
-        1.0,
-        899,
-    )
-    .unwrap_err();
-    assert!(matches!(e, Error::InvalidParameter { value, .. } if value == 900.0));
+    let pairs = 40 + 2 * 39 + 2 * 38;
+    for graph in [false, true] {
+        let ok = cutoff_assignment_capped(&x, &y, &Euclidean, 2.5, 2.0, pairs, graph).unwrap();
+        assert_eq!(ok.total, 0.0);
+        let e =
+            cutoff_assignment_capped(&x, &y, &Euclidean, 2.5, 2.0, pairs - 1, graph).unwrap_err();
+        assert_eq!(e.field(), pairs::PAIRS_FIELD);
+        assert!(matches!(e, Error::InvalidParameter { value, .. } if value == pairs as f64));
+        assert!(alloc::format!("{e}").contains("MAX_CLOSE_PAIRS"));
+    }
+    // Without grid coordinates, with every pair close (the count comes first).
+    let all = FnMetric(|a: &[f64; 2], b: &[f64; 2]| Euclidean.distance(a, b));
+    let e = cutoff_assignment_capped(&x, &y, &all, 100.0, 1.0, 1599, true).unwrap_err();
+    assert!(matches!(e, Error::InvalidParameter { value, .. } if value == 1600.0));
     #[cfg(target_pointer_width = "64")]
     assert_eq!(MAX_CLOSE_PAIRS, 1 << 27);
 }
