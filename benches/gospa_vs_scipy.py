@@ -6,7 +6,8 @@
           dense assignment per component of the "closer than c" graph;
           fisst_benches::baseline_gospa);
 - native: fisst natively (grid for the pairs closer than c, sparse exact matching);
-- node:   fisst through the npm package in Node (`gospa`, wasm32).
+- node:   fisst through the npm package in Node (`gospa`, wasm32; after warm-up calls, and
+          including the conversion of the JS point arrays by the current bindings).
 
 Scenes, each density: the sparse scenes of the first version of this script (side 10 sqrt(n),
 c = 5: small components); issue 15's percolating scene (n truths uniform in a square of side

@@ -11,6 +11,7 @@ if (typeof fn !== 'function') process.exit(3);
 const { truths, estimates, c, p, alpha } = JSON.parse(readFileSync(file, 'utf8'));
 const options = metric === 'gospa' ? { truths, estimates, c, p, alpha } : { truths, estimates, c, p };
 const reps = Number(repsText);
+fn(options); // warm-up
 const times = [];
 let s;
 for (let i = 0; i < reps; i++) {
