@@ -103,6 +103,9 @@ pub(crate) fn min_cost_partial_matching(
     exit: f64,
     col4row: &mut [u32],
 ) {
+    if rows.is_empty() {
+        return;
+    }
     let n = col4row.len();
     let mut u = vec![0.0f64; n];
     let mut v = vec![0.0f64; m];
