@@ -69,6 +69,7 @@ soak: web-pkg
 bench: pkg
 	cd benches && cargo bench
 	python3 benches/gospa_vs_scipy.py
+	python3 benches/gospa_vs_stonesoup.py
 	python3 benches/pmf_vs_scipy.py
 	python3 benches/map_vs_numpy.py
 	python3 benches/bernoulli_vs_scipy.py

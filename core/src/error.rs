@@ -81,28 +81,35 @@ impl Error {
         }
     }
 
-    /// The same error about the field `prefix.field` (or `prefix[i]…` when the field starts
-    /// with an index): how the bindings give a core error the full path of an argument, e.g.
-    /// `c` → `options.c`, `[2].mean` → `options.mixture[2].mean`.
-    pub fn within(mut self, prefix: &str) -> Self {
-        let what = match &mut self {
+    /// The same error about another field: `rename` maps the field's name (e.g. to say which
+    /// time step of a series it is in).
+    pub(crate) fn map_field(mut self, rename: impl FnOnce(&str) -> String) -> Self {
+        match &mut self {
             Error::InvalidParameter { what, .. }
             | Error::InvalidProbability { what, .. }
             | Error::DimensionMismatch { what, .. }
             | Error::NotPositiveDefinite { what }
-            | Error::Unsupported { what, .. } => what,
-        };
+            | Error::Unsupported { what, .. } => *what = rename(what),
+        }
+        self
+    }
+
+    /// The same error about the field `prefix.field` (or `prefix[i]…` when the field starts
+    /// with an index): how the bindings give a core error the full path of an argument, e.g.
+    /// `c` → `options.c`, `[2].mean` → `options.mixture[2].mean`.
+    pub fn within(self, prefix: &str) -> Self {
         if prefix.is_empty() {
             return self;
         }
-        *what = if what.is_empty() {
-            prefix.into()
-        } else if what.starts_with('[') {
-            alloc::format!("{prefix}{what}")
-        } else {
-            alloc::format!("{prefix}.{what}")
-        };
-        self
+        self.map_field(|what| {
+            if what.is_empty() {
+                prefix.into()
+            } else if what.starts_with('[') {
+                alloc::format!("{prefix}{what}")
+            } else {
+                alloc::format!("{prefix}.{what}")
+            }
+        })
     }
 
     /// The field this error is about.

@@ -107,7 +107,7 @@ pub(crate) fn solve_unchecked(cost: &[f64], rows: usize, cols: usize) -> Assignm
 const NONE: usize = usize::MAX;
 
 /// Shortest augmenting paths for `nr ≤ nc`; returns the column of each row.
-fn sap(cost: &[f64], nr: usize, nc: usize) -> Vec<usize> {
+pub(crate) fn sap(cost: &[f64], nr: usize, nc: usize) -> Vec<usize> {
     debug_assert!(nr <= nc);
     let mut u = vec![0.0f64; nr];
     let mut v = vec![0.0f64; nc];

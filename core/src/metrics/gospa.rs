@@ -27,6 +27,14 @@ use crate::math::fns;
 /// truths) and the false targets (unassigned estimates). The optimal γ never assigns a pair
 /// with `d ≥ c`. Two empty sets are at distance 0.
 ///
+/// Every α is computed exactly from the pairs closer than c only: the minimisation over π is
+/// the same for all α (α only weights the constant `|Y| − |X|`), and it equals
+/// `c^p |X| + min_γ Σ_γ (d^p − c^p)` over partial assignments γ of pairs with `d < c` — the
+/// α = 2 form above, up to constants. For Euclidean points those pairs come from a uniform
+/// grid, without the `|X|·|Y|` distances. Only the *reading* of γ as missed and false targets
+/// is particular to α = 2, so [`Gospa::decompose`] needs α = 2 and [`Gospa::distance`] takes
+/// any α. Whole scenarios: [`Gospa::series`].
+///
 /// # References
 /// - A. S. Rahmathullah, Á. F. García-Fernández, L. Svensson, "Generalized optimal sub-pattern
 ///   assignment metric," Proc. 20th Int. Conf. Information Fusion, 2017 — Def. 1, Prop. 1.
@@ -164,7 +172,7 @@ impl Gospa {
         let a = cutoff_assignment(truth, estimate, metric, self.c, self.p)?;
         // Pairs at d ≥ c cost c^p assigned or c^p/2 + c^p/2 unassigned: Prop. 3's optimal γ
         // leaves them unassigned.
-        let kept: Vec<_> = a.pairs.iter().filter(|q| q.distance < self.c).collect();
+        let kept: Vec<_> = a.pairs.iter().filter(|q| q.close).collect();
         let localisation = crate::math::sum::sum(kept.iter().map(|q| q.cost));
         let missed = truth.len() - kept.len();
         let false_targets = estimate.len() - kept.len();

@@ -1,23 +1,37 @@
 //! Multi-object metrics: OSPA with its localisation and cardinality parts, UOSPA, and GOSPA
 //! with its decomposition into localisation, missed and false targets.
 //!
-//! All of them are built on one computation (a crate-internal `cutoff_assignment`): the assignment that
-//! minimises `Σ d^(c)(x_i, y_π(i))^p` with `d^(c) = min(d, c)` — the cut-off distance raised to
-//! the order *before* the minimisation. (Minimising `Σ d` and raising afterwards, as Stone Soup
-//! does, picks the wrong assignment whenever p ≠ 1.)
+//! All of them are built on one computation (a crate-internal `cutoff_assignment`): the
+//! assignment that minimises `Σ d^(c)(x_i, y_π(i))^p` with `d^(c) = min(d, c)` — the cut-off
+//! distance raised to the order *before* the minimisation. (Minimising `Σ d` and raising
+//! afterwards, as Stone Soup 1.9.1's `OSPAMetric` does, picks the wrong assignment whenever
+//! p ≠ 1; its `GOSPAMetric` raises first.) Only the pairs closer than c matter to it, and for
+//! Euclidean points they are found with a uniform grid, so that scenes of 100,000 points
+//! take memory proportional to the pairs closer than c, never to `|X|·|Y|`
+//! ([`MAX_CLOSE_PAIRS`] caps them). [`Gospa::series`] and [`Ospa::series`] evaluate whole
+//! scenarios, in parallel over the steps with the `parallel` feature.
 
 mod base;
 mod gospa;
 mod ospa;
+mod pairs;
+mod series;
+#[cfg(test)]
+mod tests;
 
 pub use base::{Euclidean, FnMetric, Metric};
 pub use gospa::{Gospa, GospaDecomposition};
 pub use ospa::{Ospa, OspaDecomposition};
+pub use pairs::{MAX_CLOSE_PAIRS, MAX_POINTS};
+pub use series::{GospaSeries, GospaSeriesParts, OspaSeries};
 
+use alloc::vec;
 use alloc::vec::Vec;
 
 use crate::error::{Error, Result};
+use crate::math::matching::{SparseRows, UNMATCHED, min_cost_partial_matching};
 use crate::math::{assignment, fns};
+use pairs::{Problem, build};
 
 /// Validates a cut-off `c` (finite, > 0) and an order `p` (finite, ≥ 1).
 pub(crate) fn check_cutoff_order(c: f64, p: f64) -> Result<()> {
@@ -32,10 +46,11 @@ pub(crate) fn check_cutoff_order(c: f64, p: f64) -> Result<()> {
 
 /// The optimal assignment of the cut-off costs `min(d(x, y), c)^p` between `x` and `y`.
 ///
-/// Returns the `min(|x|, |y|)` assigned pairs (sorted by truth index) with their raw distance
-/// and cut-off cost, and the minimal total `Σ min(d, c)^p`.
+/// Returns the `min(|x|, |y|)` pairs of an optimal permutation (sorted by truth index), each
+/// with its cut-off cost and whether it is closer than c, and the minimal total
+/// `Σ min(d, c)^p`.
 ///
-/// # Method: decomposition into the components of the "closer than c" graph
+/// # Method: only the pairs closer than c
 /// Every pair with `d ≥ c` costs exactly `c^p`, so for `|x| ≤ |y|`
 ///
 /// ```text
@@ -43,20 +58,38 @@ pub(crate) fn check_cutoff_order(c: f64, p: f64) -> Result<()> {
 /// ```
 ///
 /// where γ ranges over the partial matchings that use only edges of the bipartite graph
-/// `G = {(i, j) : d(x_i, y_j) < c}` (rows of π outside γ go to leftover columns at cost c^p;
-/// there are enough of them because |x| ≤ |y|). The right-hand minimum splits over the
-/// connected components of G, and each component's part is again a rectangular assignment
-/// problem on its own (small) cost matrix by the same identity. So the solver runs one exact
-/// assignment per component, keeps the pairs closer than c, and completes the permutation
-/// with leftover rows and columns in index order (all at cost c^p, since a leftover pair
-/// closer than c would improve an optimum). For the sparse scenes trackers are scored on this
-/// is close to linear after the `O(|x||y|)` distance pass; in the dense worst case it is the
-/// single full problem. The value is exactly the optimum; among equally good assignments the
-/// one returned may differ from a dense solver's.
+/// `G = {(i, j) : d(x_i, y_j) < c}`: rows of π outside γ go to leftover columns at cost c^p
+/// (there are enough of them because |x| ≤ |y|), and conversely dropping the pairs at
+/// `d ≥ c` from π leaves such a γ. The identity is the α = 2 form of GOSPA (Prop. 3 of
+/// `003_…`, `Σ_γ d^p + (c^p/2)(|x| + |y| − 2|γ|)`, the same minimiser) and holds for every
+/// α, for UOSPA and for OSPA alike, because α and OSPA's normalisation only multiply the
+/// constant `|y| − |x|` term: the assignment problem itself never depends on α. So all of
+/// them are computed exactly from `G` alone; what is special to α = 2 is only reading γ as
+/// localisation, missed and false targets.
+///
+/// `G` is built without all `|x||y|` distances when the metric provides grid coordinates
+/// ([`Metric::grid_coordinates`], e.g. [`Euclidean`]): a uniform grid of cells about c wide
+/// proposes the pairs in neighbouring cells only (exactly the same `G`, see `pairs.rs`).
+/// Otherwise every pair is evaluated, but only the pairs closer than c are stored. The
+/// minimum over γ splits over the connected components of `G`: components at least half full
+/// (and not tiny) are solved as dense rectangular assignments on their own cost matrices
+/// (non-edges at `c^p`, by the same identity); the rest by an exact sparse shortest-
+/// augmenting-path matching on the edge list in which every row may also stay unmatched at
+/// cost `c^p` (`math/matching.rs`). Memory is `O(|x| + |y| + E)` for the E pairs closer than
+/// c, capped by [`MAX_CLOSE_PAIRS`]. Two cases skip the graph and solve the whole problem as
+/// one dense assignment on `min(d, c)^p` (the same optimum by the identity above): at most
+/// 1,024 pairs (where the graph's fixed cost dominates), and at most 2²² pairs (32 MiB) that
+/// no grid can split (all points within about 3c of each other on every axis, where most
+/// pairs are close anyway, or a metric without grid coordinates). The permutation is
+/// completed with the leftover rows and columns in index order (all at cost c^p). The value
+/// is exactly the optimum (up to the rounding of the dual updates); among equally good
+/// assignments the one returned may differ from a dense solver's.
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] naming `distance(truth[i], estimate[j])` if the metric returns a
-/// NaN or negative value, or the metric's own validation error (e.g. ragged points).
+/// NaN or negative value, naming `truth × estimate pairs closer than c` (with their count)
+/// beyond [`MAX_CLOSE_PAIRS`], naming `truth`/`estimate` beyond [`MAX_POINTS`] points; the
+/// metric's own validation error (e.g. ragged points).
 pub(crate) fn cutoff_assignment<T, M: Metric<T> + ?Sized>(
     x: &[T],
     y: &[T],
@@ -64,155 +97,154 @@ pub(crate) fn cutoff_assignment<T, M: Metric<T> + ?Sized>(
     c: f64,
     p: f64,
 ) -> Result<CutoffAssignment> {
+    cutoff_assignment_capped(x, y, metric, c, p, MAX_CLOSE_PAIRS, false)
+}
+
+/// [`cutoff_assignment`] with the cap on the pairs closer than c as a parameter, and the
+/// graph path forced whatever the size (for tests).
+pub(crate) fn cutoff_assignment_capped<T, M: Metric<T> + ?Sized>(
+    x: &[T],
+    y: &[T],
+    metric: &M,
+    c: f64,
+    p: f64,
+    cap: usize,
+    force_graph: bool,
+) -> Result<CutoffAssignment> {
     metric.validate(x, y)?;
+    for (name, len) in [("truth", x.len()), ("estimate", y.len())] {
+        if len > MAX_POINTS {
+            return Err(Error::parameter(
+                name,
+                len as f64,
+                "at most MAX_POINTS = 2^31 - 1 points",
+            ));
+        }
+    }
     let (n, m) = (x.len(), y.len());
     let cp = fns::powp(c, p);
-    // All distances (row-major), and a union-find over the n + m vertices (rows first) joined
-    // by the edges of G.
-    let mut dist = Vec::with_capacity(n * m);
-    let mut forest = UnionFind::new(n + m);
-    let mut has_edge = alloc::vec![false; n + m];
-    for (i, xi) in x.iter().enumerate() {
-        for (j, yj) in y.iter().enumerate() {
-            let d = metric.distance(xi, yj);
-            if d.is_nan() || d < 0.0 {
-                return Err(Error::parameter(
-                    alloc::format!("distance(truth[{i}], estimate[{j}])"),
-                    d,
-                    ">= 0 (a metric)",
-                ));
+    let (estimate_of, cost_of) = match build(x, y, metric, (c, p), cap, force_graph)? {
+        Problem::Dense { costs, transposed } => {
+            // One dense assignment on min(d, c)^p; pairs at c^p are not close.
+            let (nr, nc) = if transposed { (m, n) } else { (n, m) };
+            let mut estimate_of = vec![UNMATCHED; n];
+            let mut cost_of = vec![0.0f64; n];
+            if nr > 0 {
+                for (a, b) in assignment::sap(&costs, nr, nc).into_iter().enumerate() {
+                    let cost = costs[a * nc + b];
+                    let (i, j) = if transposed { (b, a) } else { (a, b) };
+                    if cost < cp {
+                        estimate_of[i] = j as u32;
+                        cost_of[i] = cost;
+                    }
+                }
             }
-            if d < c {
-                forest.union(i, n + j);
-                has_edge[i] = true;
-                has_edge[n + j] = true;
-            }
-            dist.push(d);
+            (estimate_of, cost_of)
         }
-    }
-    // Components with at least one edge, numbered by first appearance (rows, then columns).
-    let mut component_of_root = alloc::vec![usize::MAX; n + m];
-    let mut members: Vec<Component> = Vec::new();
-    for v in (0..n + m).filter(|&v| has_edge[v]) {
-        let root = forest.find(v);
-        if component_of_root[root] == usize::MAX {
-            component_of_root[root] = members.len();
-            members.push(Component::default());
-        }
-        let comp = &mut members[component_of_root[root]];
-        if v < n {
-            comp.rows.push(v);
-        } else {
-            comp.cols.push(v - n);
-        }
-    }
-    let cost_of = |d: f64| if d < c { fns::powp(d, p) } else { cp };
+        Problem::Graph(graph) => solve_graph(graph, n, m, cp),
+    };
+
+    let mut col_done = vec![false; m];
     let mut pairs: Vec<AssignedPair> = Vec::with_capacity(n.min(m));
-    let mut row_done = alloc::vec![false; n];
-    let mut col_done = alloc::vec![false; m];
-    let mut keep = |i: usize, j: usize, d: f64, pairs: &mut Vec<AssignedPair>| {
-        if d < c {
-            row_done[i] = true;
-            col_done[j] = true;
+    for (i, &j) in estimate_of.iter().enumerate() {
+        if j != UNMATCHED {
+            col_done[j as usize] = true;
             pairs.push(AssignedPair {
                 truth: i,
-                estimate: j,
-                distance: d,
-                cost: fns::powp(d, p),
+                estimate: j as usize,
+                cost: cost_of[i],
+                close: true,
             });
-        }
-    };
-    if members.len() == 1 && members[0].rows.len() == n && members[0].cols.len() == m {
-        // One component holds everything: solve the full problem in the distance buffer.
-        let costs: Vec<f64> = dist.iter().map(|&d| cost_of(d)).collect();
-        for (i, j) in assignment::solve_unchecked(&costs, n, m).pairs {
-            keep(i, j, dist[i * m + j], &mut pairs);
-        }
-    } else {
-        let mut costs = Vec::new();
-        for Component { rows, cols } in &members {
-            let k = cols.len();
-            costs.clear();
-            costs.extend(
-                rows.iter()
-                    .flat_map(|&i| cols.iter().map(move |&j| (i, j)))
-                    .map(|(i, j)| cost_of(dist[i * m + j])),
-            );
-            for (a, b) in assignment::solve_unchecked(&costs, rows.len(), k).pairs {
-                let (i, j) = (rows[a], cols[b]);
-                keep(i, j, dist[i * m + j], &mut pairs);
-            }
         }
     }
     // Complete the permutation with leftover rows and columns, in index order.
-    let leftover_rows = (0..n).filter(|&i| !row_done[i]);
+    let leftover_rows = (0..n).filter(|&i| estimate_of[i] == UNMATCHED);
     let leftover_cols = (0..m).filter(|&j| !col_done[j]);
-    let mut completion: Vec<AssignedPair> = leftover_rows
+    let completion: Vec<AssignedPair> = leftover_rows
         .zip(leftover_cols)
         .map(|(i, j)| AssignedPair {
             truth: i,
             estimate: j,
-            distance: dist[i * m + j],
             cost: cp,
+            close: false,
         })
         .collect();
-    pairs.append(&mut completion);
+    pairs.extend(completion);
     pairs.sort_unstable_by_key(|q| q.truth);
     let total = crate::math::sum::sum(pairs.iter().map(|q| q.cost));
     Ok(CutoffAssignment { pairs, total })
 }
 
-/// A connected component of the "closer than c" graph: its rows and columns (global indices).
-#[derive(Default)]
-struct Component {
-    rows: Vec<usize>,
-    cols: Vec<usize>,
-}
-
-/// Disjoint sets with path halving and union by size.
-struct UnionFind {
-    parent: Vec<usize>,
-    size: Vec<usize>,
-}
-
-impl UnionFind {
-    fn new(n: usize) -> Self {
-        Self {
-            parent: (0..n).collect(),
-            size: alloc::vec![1; n],
+/// Solves the graph of the pairs closer than c: dense blocks by the dense solver, the rest by
+/// the sparse partial matching. Returns each truth's estimate ([`UNMATCHED`] if none) and the
+/// pair's cost `d^p`.
+fn solve_graph(graph: pairs::CloseGraph, n: usize, m: usize, cp: f64) -> (Vec<u32>, Vec<f64>) {
+    // Solve on the internal numbering (rows and columns in grid order).
+    let mut col4row = vec![UNMATCHED; n];
+    let mut cost4row = vec![0.0f64; n];
+    for block in &graph.blocks {
+        let (r, k) = (block.rows.len(), block.cols.len());
+        let matrix = &graph.block_costs[block.offset..block.offset + r * k];
+        let mut take = |a: usize, b: usize, cost: f64| {
+            if cost < cp {
+                col4row[block.rows[a] as usize] = block.cols[b];
+                cost4row[block.rows[a] as usize] = cost;
+            }
+        };
+        if r <= k {
+            for (a, b) in assignment::sap(matrix, r, k).into_iter().enumerate() {
+                take(a, b, matrix[a * k + b]);
+            }
+        } else {
+            for (b, a) in assignment::sap(matrix, k, r).into_iter().enumerate() {
+                take(a, b, matrix[b * r + a]);
+            }
         }
     }
-
-    fn find(&mut self, mut v: usize) -> usize {
-        while self.parent[v] != v {
-            self.parent[v] = self.parent[self.parent[v]];
-            v = self.parent[v];
+    let rows = SparseRows {
+        start: &graph.start,
+        cols: &graph.cols,
+        costs: &graph.costs,
+    };
+    min_cost_partial_matching(rows, &graph.sparse_rows, m, cp, &mut col4row);
+    for &r in &graph.sparse_rows {
+        let r = r as usize;
+        let k = col4row[r];
+        if k == UNMATCHED {
+            continue;
         }
-        v
+        let e = (graph.start[r]..graph.start[r + 1])
+            .find(|&e| graph.cols[e] == k)
+            .unwrap_or(graph.start[r]);
+        cost4row[r] = graph.costs[e];
+        if cost4row[r] >= cp {
+            // d < c but d^p rounds to c^p: the same cost as leaving both out.
+            col4row[r] = UNMATCHED;
+        }
     }
-
-    fn union(&mut self, a: usize, b: usize) {
-        let (mut a, mut b) = (self.find(a), self.find(b));
-        if a == b {
-            return;
+    // Back to the caller's indices.
+    let mut estimate_of = vec![UNMATCHED; n];
+    let mut cost_of = vec![0.0f64; n];
+    for r in 0..n {
+        let i = graph.truth_order[r] as usize;
+        if col4row[r] != UNMATCHED {
+            estimate_of[i] = graph.estimate_order[col4row[r] as usize];
+            cost_of[i] = cost4row[r];
         }
-        if self.size[a] < self.size[b] {
-            core::mem::swap(&mut a, &mut b);
-        }
-        self.parent[b] = a;
-        self.size[a] += self.size[b];
     }
+    (estimate_of, cost_of)
 }
 
-/// An assigned pair and its distances.
+/// A pair of the optimal permutation.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct AssignedPair {
     pub truth: usize,
     pub estimate: usize,
-    /// d(x, y), uncut.
-    pub distance: f64,
     /// min(d, c)^p.
     pub cost: f64,
+    /// Whether the pair is closer than c (assigned in GOSPA's sense; `cost = d^p < c^p`).
+    /// Otherwise it only completes the permutation, at cost `c^p`.
+    pub close: bool,
 }
 
 /// See [`cutoff_assignment`].

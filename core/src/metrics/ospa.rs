@@ -19,6 +19,10 @@ use crate::math::fns;
 /// with `d_c(x, y) = min(c, d(x, y))`, and `d̄ = 0` when both sets are empty. The parts satisfy
 /// `d̄^p = (e^loc)^p + (e^card)^p`, and `0 ≤ d̄ ≤ c`.
 ///
+/// The minimum over π is computed exactly from the pairs closer than c only (pairs at
+/// `d ≥ c` all cost `c^p`; see [`crate::metrics::Gospa`]), found for Euclidean points with a
+/// uniform grid. Whole scenarios: [`Ospa::series`].
+///
 /// # References
 /// - D. Schuhmacher, B.-T. Vo, B.-N. Vo, "A consistent metric for performance evaluation of
 ///   multi-object filters," IEEE Trans. Signal Process. 56(8):3447–3457, 2008.

@@ -1,0 +1,486 @@
+//! OSPA and GOSPA over whole scenarios: one set pair per time step, per-step values and their
+//! means, in one call (in parallel over the steps with the `parallel` feature).
+
+use alloc::string::String;
+use alloc::vec::Vec;
+
+use super::{Euclidean, Gospa, GospaDecomposition, Metric, Ospa, OspaDecomposition};
+use crate::error::{Error, Result};
+use crate::math::sum::sum;
+
+/// GOSPA over a scenario: the distance at every time step and its mean, with the α = 2
+/// decomposition when it exists. The fields are the ones the JavaScript `gospaSeries`
+/// returns (`meanDistance`, `falseTargets`, … in camelCase).
+///
+/// Built by [`Gospa::series`] / [`Gospa::series_with`], or collected from per-step
+/// decompositions: `steps.map(|(x, y)| g.decompose(x, y)).collect::<Result<GospaSeries>>()`.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GospaSeries {
+    /// GOSPA at each step.
+    pub distance: Vec<f64>,
+    /// The mean of `distance` over the steps (0 for no steps).
+    pub mean_distance: f64,
+    /// The decomposition at each step, for α = 2 only (`None` for other α, like
+    /// [`Gospa::decompose`]).
+    pub parts: Option<GospaSeriesParts>,
+}
+
+/// The α = 2 decomposition of a [`GospaSeries`] (Prop. 3 of `003_…`), per step and averaged.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GospaSeriesParts {
+    /// Σ d^p over the assigned pairs at each step (not rooted, as in
+    /// [`GospaDecomposition::localisation`]).
+    pub localisation: Vec<f64>,
+    /// Missed targets (unassigned truths) at each step.
+    pub missed: Vec<usize>,
+    /// False targets (unassigned estimates) at each step.
+    pub false_targets: Vec<usize>,
+    /// The mean of `localisation`.
+    pub mean_localisation: f64,
+    /// The mean of `missed`.
+    pub mean_missed: f64,
+    /// The mean of `false_targets`.
+    pub mean_false_targets: f64,
+}
+
+/// OSPA over a scenario: distance, localisation and cardinality parts at every time step and
+/// their means. The fields are the ones the JavaScript `ospaSeries` returns.
+///
+/// The means are of the rooted per-step values, so `mean_distance^p` is in general not
+/// `mean_localisation^p + mean_cardinality^p` (that identity holds step by step).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct OspaSeries {
+    /// OSPA at each step, eq. (24) of `004_…`.
+    pub distance: Vec<f64>,
+    /// The localisation part at each step, eq. (26).
+    pub localisation: Vec<f64>,
+    /// The cardinality part at each step, eq. (25).
+    pub cardinality: Vec<f64>,
+    /// The mean of `distance` (0 for no steps).
+    pub mean_distance: f64,
+    /// The mean of `localisation`.
+    pub mean_localisation: f64,
+    /// The mean of `cardinality`.
+    pub mean_cardinality: f64,
+}
+
+fn mean(values: impl IntoIterator<Item = f64>, len: usize) -> f64 {
+    if len == 0 {
+        0.0
+    } else {
+        sum(values) / len as f64
+    }
+}
+
+impl GospaSeries {
+    fn from_parts(distance: Vec<f64>, parts: Option<(Vec<f64>, Vec<usize>, Vec<usize>)>) -> Self {
+        let t = distance.len();
+        let parts = parts.map(|(localisation, missed, false_targets)| GospaSeriesParts {
+            mean_localisation: mean(localisation.iter().copied(), t),
+            mean_missed: mean(missed.iter().map(|&k| k as f64), t),
+            mean_false_targets: mean(false_targets.iter().map(|&k| k as f64), t),
+            localisation,
+            missed,
+            false_targets,
+        });
+        Self {
+            mean_distance: mean(distance.iter().copied(), t),
+            distance,
+            parts,
+        }
+    }
+}
+
+impl FromIterator<GospaDecomposition> for GospaSeries {
+    /// The series of per-step α = 2 decompositions, in order.
+    fn from_iter<I: IntoIterator<Item = GospaDecomposition>>(iter: I) -> Self {
+        let (mut distance, mut localisation, mut missed, mut false_targets) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        for d in iter {
+            distance.push(d.distance);
+            localisation.push(d.localisation);
+            missed.push(d.missed);
+            false_targets.push(d.false_targets);
+        }
+        Self::from_parts(distance, Some((localisation, missed, false_targets)))
+    }
+}
+
+impl OspaSeries {
+    fn from_steps(steps: impl IntoIterator<Item = (f64, f64, f64)>) -> Self {
+        let (mut distance, mut localisation, mut cardinality) =
+            (Vec::new(), Vec::new(), Vec::new());
+        for (d, l, c) in steps {
+            distance.push(d);
+            localisation.push(l);
+            cardinality.push(c);
+        }
+        let t = distance.len();
+        Self {
+            mean_distance: mean(distance.iter().copied(), t),
+            mean_localisation: mean(localisation.iter().copied(), t),
+            mean_cardinality: mean(cardinality.iter().copied(), t),
+            distance,
+            localisation,
+            cardinality,
+        }
+    }
+}
+
+impl FromIterator<OspaDecomposition> for OspaSeries {
+    /// The series of per-step decompositions, in order.
+    fn from_iter<I: IntoIterator<Item = OspaDecomposition>>(iter: I) -> Self {
+        Self::from_steps(
+            iter.into_iter()
+                .map(|d| (d.distance, d.localisation, d.cardinality)),
+        )
+    }
+}
+
+/// Names a per-step field as the series names it: `truth[2][0]` at step 7 becomes
+/// `truths[7][2][0]`, `estimate[1]` becomes `estimates[7][1]` (also inside
+/// `distance(truth[i], estimate[j])`).
+fn at_step(e: Error, t: usize) -> Error {
+    e.map_field(|what| {
+        let mut out = String::with_capacity(what.len() + 16);
+        let mut rest = what;
+        while !rest.is_empty() {
+            let (word, plural) = if rest.starts_with("truth") {
+                ("truth", "truths")
+            } else if rest.starts_with("estimate") {
+                ("estimate", "estimates")
+            } else {
+                let ch = rest.chars().next().unwrap_or(' ');
+                out.push(ch);
+                rest = &rest[ch.len_utf8()..];
+                continue;
+            };
+            rest = &rest[word.len()..];
+            if rest.starts_with('s') {
+                out.push_str(word);
+            } else {
+                out.push_str(plural);
+                out.push_str(&alloc::format!("[{t}]"));
+            }
+        }
+        out
+    })
+}
+
+/// Runs `step` for every `t < steps` (in parallel with the `parallel` feature) and returns
+/// the results in order, or the error of the first failing step (the same either way).
+fn each_step<R: Send>(steps: usize, step: impl Fn(usize) -> Result<R> + Sync) -> Result<Vec<R>> {
+    #[cfg(feature = "parallel")]
+    let results: Vec<Result<R>> = {
+        use rayon::prelude::*;
+        (0..steps).into_par_iter().map(&step).collect()
+    };
+    #[cfg(not(feature = "parallel"))]
+    let results: Vec<Result<R>> = (0..steps).map(&step).collect();
+    results
+        .into_iter()
+        .enumerate()
+        .map(|(t, r)| r.map_err(|e| at_step(e, t)))
+        .collect()
+}
+
+fn check_steps(truths: usize, estimates: usize) -> Result<()> {
+    if truths != estimates {
+        return Err(Error::dimension("estimates", truths, estimates));
+    }
+    Ok(())
+}
+
+impl Gospa {
+    /// GOSPA at every step of a scenario under the Euclidean distance: `truths[t]` against
+    /// `estimates[t]`, with the α = 2 decomposition (`parts`) when α = 2.
+    ///
+    /// Each step is exactly [`Gospa::decompose`] (α = 2) or [`Gospa::distance`] (other α),
+    /// so the values are identical to per-step calls; the steps run in parallel with the
+    /// `parallel` feature, with identical results without it.
+    ///
+    /// # Errors
+    /// [`Error::DimensionMismatch`] naming `estimates` if the two have different numbers of
+    /// steps; a step's error with its fields named per step (`truths[t][i]`,
+    /// `estimates[t][j]`, `distance(truths[t][i], estimates[t][j])`), the first failing step
+    /// in time order.
+    ///
+    /// # Examples
+    /// ```
+    /// use fisst::metrics::Gospa;
+    /// let g = Gospa::new(2.0, 1.0, 2.0)?;
+    /// let truths = vec![vec![[0.0, 0.0]], vec![[0.0, 0.0], [5.0, 5.0]]];
+    /// let estimates = vec![vec![[0.5, 0.0]], vec![]];
+    /// let s = g.series(&truths, &estimates)?;
+    /// // step 0: one pair at 0.5; step 1: two missed targets at c/2 = 1 each
+    /// assert_eq!(s.distance, vec![0.5, 2.0]);
+    /// assert_eq!(s.mean_distance, 1.25);
+    /// let parts = s.parts.unwrap();
+    /// assert_eq!((parts.missed, parts.mean_missed), (vec![0, 2], 1.0));
+    /// # Ok::<(), fisst::Error>(())
+    /// ```
+    pub fn series<A, B, P>(&self, truths: &[A], estimates: &[B]) -> Result<GospaSeries>
+    where
+        A: AsRef<[P]> + Sync,
+        B: AsRef<[P]> + Sync,
+        P: AsRef<[f64]> + Sync,
+    {
+        self.series_with(truths, estimates, &Euclidean)
+    }
+
+    /// [`Gospa::series`] under a user-supplied single-object distance.
+    ///
+    /// # Errors
+    /// As [`Gospa::series`], with the metric's errors.
+    pub fn series_with<A, B, T, M>(
+        &self,
+        truths: &[A],
+        estimates: &[B],
+        metric: &M,
+    ) -> Result<GospaSeries>
+    where
+        A: AsRef<[T]> + Sync,
+        B: AsRef<[T]> + Sync,
+        T: Sync,
+        M: Metric<T> + Sync + ?Sized,
+    {
+        check_steps(truths.len(), estimates.len())?;
+        let (x, y) = (
+            |t: usize| truths[t].as_ref(),
+            |t: usize| estimates[t].as_ref(),
+        );
+        if self.alpha() == 2.0 {
+            let steps = each_step(truths.len(), |t| {
+                let d = self.decompose_with(x(t), y(t), metric)?;
+                Ok((d.distance, d.localisation, d.missed, d.false_targets))
+            })?;
+            let mut parts = (Vec::new(), Vec::new(), Vec::new());
+            let mut distance = Vec::with_capacity(steps.len());
+            for (d, l, mi, f) in steps {
+                distance.push(d);
+                parts.0.push(l);
+                parts.1.push(mi);
+                parts.2.push(f);
+            }
+            Ok(GospaSeries::from_parts(distance, Some(parts)))
+        } else {
+            let distance = each_step(truths.len(), |t| self.distance_with(x(t), y(t), metric))?;
+            Ok(GospaSeries::from_parts(distance, None))
+        }
+    }
+}
+
+impl Ospa {
+    /// OSPA and its parts at every step of a scenario under the Euclidean distance:
+    /// `truths[t]` against `estimates[t]`.
+    ///
+    /// Each step is exactly [`Ospa::decompose`]; parallel over the steps with the `parallel`
+    /// feature, with identical results without it.
+    ///
+    /// # Errors
+    /// As [`Gospa::series`].
+    ///
+    /// # Examples
+    /// ```
+    /// use fisst::metrics::Ospa;
+    /// let o = Ospa::new(10.0, 1.0)?;
+    /// let s = o.series(&[vec![[0.0], [5.0]], vec![]], &[vec![[1.0]], vec![]])?;
+    /// assert_eq!(s.distance, vec![5.5, 0.0]);
+    /// assert_eq!((s.localisation[0], s.cardinality[0]), (0.5, 5.0));
+    /// assert_eq!(s.mean_distance, 2.75);
+    /// # Ok::<(), fisst::Error>(())
+    /// ```
+    pub fn series<A, B, P>(&self, truths: &[A], estimates: &[B]) -> Result<OspaSeries>
+    where
+        A: AsRef<[P]> + Sync,
+        B: AsRef<[P]> + Sync,
+        P: AsRef<[f64]> + Sync,
+    {
+        self.series_with(truths, estimates, &Euclidean)
+    }
+
+    /// [`Ospa::series`] under a user-supplied single-object distance.
+    ///
+    /// # Errors
+    /// As [`Gospa::series_with`].
+    pub fn series_with<A, B, T, M>(
+        &self,
+        truths: &[A],
+        estimates: &[B],
+        metric: &M,
+    ) -> Result<OspaSeries>
+    where
+        A: AsRef<[T]> + Sync,
+        B: AsRef<[T]> + Sync,
+        T: Sync,
+        M: Metric<T> + Sync + ?Sized,
+    {
+        check_steps(truths.len(), estimates.len())?;
+        let steps = each_step(truths.len(), |t| {
+            let d = self.decompose_with(truths[t].as_ref(), estimates[t].as_ref(), metric)?;
+            Ok((d.distance, d.localisation, d.cardinality))
+        })?;
+        Ok(OspaSeries::from_steps(steps))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::metrics::FnMetric;
+    use alloc::vec;
+    use rand::{RngExt, SeedableRng, rngs::SmallRng};
+
+    type Steps = Vec<Vec<Vec<f64>>>;
+
+    /// A seeded scenario: `steps` steps of 0–12 truths in 2D and their noisy, partly missed,
+    /// cluttered estimates.
+    fn scenario(seed: u64, steps: usize) -> (Steps, Steps) {
+        let mut rng = SmallRng::seed_from_u64(seed);
+        let (mut truths, mut estimates) = (vec![], vec![]);
+        for _ in 0..steps {
+            let n = rng.random_range(0..=12);
+            let x: Vec<Vec<f64>> = (0..n)
+                .map(|_| vec![rng.random_range(0.0..20.0), rng.random_range(0.0..20.0)])
+                .collect();
+            let mut y: Vec<Vec<f64>> = vec![];
+            for t in &x {
+                if rng.random_range(0.0..1.0) < 0.8 {
+                    y.push(t.iter().map(|v| v + rng.random_range(-1.0..1.0)).collect());
+                }
+            }
+            for _ in 0..rng.random_range(0..3) {
+                y.push(vec![
+                    rng.random_range(0.0..20.0),
+                    rng.random_range(0.0..20.0),
+                ]);
+            }
+            truths.push(x);
+            estimates.push(y);
+        }
+        (truths, estimates)
+    }
+
+    #[test]
+    fn gospa_series_is_the_per_step_values_and_their_means() {
+        let (truths, estimates) = scenario(1, 120);
+        for (c, p) in [(2.0, 1.0), (3.0, 2.0), (1.5, 3.0)] {
+            let g = Gospa::new(c, p, 2.0).unwrap();
+            let s = g.series(&truths, &estimates).unwrap();
+            let per_step: Vec<GospaDecomposition> = truths
+                .iter()
+                .zip(&estimates)
+                .map(|(x, y)| g.decompose(x, y).unwrap())
+                .collect();
+            let parts = s.parts.clone().unwrap();
+            for (t, d) in per_step.iter().enumerate() {
+                assert_eq!(s.distance[t], d.distance);
+                assert_eq!(parts.localisation[t], d.localisation);
+                assert_eq!(
+                    (parts.missed[t], parts.false_targets[t]),
+                    (d.missed, d.false_targets)
+                );
+            }
+            let naive = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+            assert!((s.mean_distance - naive(&s.distance)).abs() <= 1e-13 * s.mean_distance);
+            let missed: Vec<f64> = parts.missed.iter().map(|&k| k as f64).collect();
+            assert_eq!(parts.mean_missed, naive(&missed));
+            // Collecting the per-step decompositions gives the same series.
+            assert_eq!(per_step.into_iter().collect::<GospaSeries>(), s);
+            for alpha in [1.0, 0.5] {
+                let g = Gospa::new(c, p, alpha).unwrap();
+                let s = g.series(&truths, &estimates).unwrap();
+                assert!(s.parts.is_none());
+                for t in 0..truths.len() {
+                    assert_eq!(
+                        s.distance[t],
+                        g.distance(&truths[t], &estimates[t]).unwrap()
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn ospa_series_is_the_per_step_values_and_their_means() {
+        let (truths, estimates) = scenario(2, 80);
+        let o = Ospa::new(4.0, 2.0).unwrap();
+        let s = o.series(&truths, &estimates).unwrap();
+        let per_step: Vec<OspaDecomposition> = truths
+            .iter()
+            .zip(&estimates)
+            .map(|(x, y)| o.decompose(x, y).unwrap())
+            .collect();
+        for (t, d) in per_step.iter().enumerate() {
+            assert_eq!(
+                (s.distance[t], s.localisation[t], s.cardinality[t]),
+                (d.distance, d.localisation, d.cardinality)
+            );
+        }
+        let mean_loc = s.localisation.iter().sum::<f64>() / 80.0;
+        assert!((s.mean_localisation - mean_loc).abs() <= 1e-13 * mean_loc);
+        assert_eq!(per_step.into_iter().collect::<OspaSeries>(), s);
+        // Slices of slices work as well as vectors of vectors.
+        let xs: Vec<&[Vec<f64>]> = truths.iter().map(|v| v.as_slice()).collect();
+        assert_eq!(o.series(&xs, &estimates).unwrap(), s);
+    }
+
+    #[test]
+    fn empty_series_and_empty_steps() {
+        let g = Gospa::new(1.0, 2.0, 2.0).unwrap();
+        let none: [Vec<[f64; 2]>; 0] = [];
+        let s = g.series(&none, &none).unwrap();
+        assert_eq!((s.distance.len(), s.mean_distance), (0, 0.0));
+        assert_eq!(s.parts.unwrap().mean_missed, 0.0);
+        let empty: Vec<Vec<[f64; 2]>> = vec![vec![], vec![]];
+        let s = Ospa::new(1.0, 2.0).unwrap().series(&empty, &empty).unwrap();
+        assert_eq!(s.distance, vec![0.0, 0.0]);
+    }
+
+    #[test]
+    fn errors_name_the_step_and_the_first_failing_step_wins() {
+        let g = Gospa::new(1.0, 2.0, 2.0).unwrap();
+        let (mut truths, mut estimates) = scenario(3, 10);
+        let e = g.series(&truths, &estimates[..9]).unwrap_err();
+        assert_eq!(e.field(), "estimates");
+        truths[7] = vec![vec![0.0, 0.0], vec![f64::NAN, 0.0]];
+        estimates[4] = vec![vec![0.0, 0.0], vec![1.0]];
+        let e = g.series(&truths, &estimates).unwrap_err();
+        assert_eq!(e.field(), "estimates[4][1]");
+        estimates[4] = vec![];
+        let e = g.series(&truths, &estimates).unwrap_err();
+        assert_eq!(e.field(), "truths[7][1][0]");
+        let e = Ospa::new(1.0, 2.0)
+            .unwrap()
+            .series(&truths, &estimates)
+            .unwrap_err();
+        assert_eq!(e.field(), "truths[7][1][0]");
+        let bad = FnMetric(|a: &f64, b: &f64| if a == b { f64::NAN } else { 1.0 });
+        let e = g
+            .series_with(&[vec![0.0], vec![1.0, 2.0]], &[vec![5.0], vec![2.0]], &bad)
+            .unwrap_err();
+        assert_eq!(e.field(), "distance(truths[1][1], estimates[1][0])");
+    }
+
+    #[test]
+    fn step_names() {
+        let cases = [
+            ("truth", "truths[3]"),
+            ("truth[2][0]", "truths[3][2][0]"),
+            ("estimate[1]", "estimates[3][1]"),
+            (
+                "distance(truth[0], estimate[4])",
+                "distance(truths[3][0], estimates[3][4])",
+            ),
+            (
+                "truth × estimate pairs closer than c",
+                "truths[3] × estimates[3] pairs closer than c",
+            ),
+            ("c", "c"),
+        ];
+        for (single, series) in cases {
+            let e = at_step(Error::parameter(single, 0.0, "x"), 3);
+            assert_eq!(e.field(), series);
+        }
+    }
+}
