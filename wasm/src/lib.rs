@@ -37,7 +37,7 @@ pub use bernoulli_filters::{
     gm_bernoulli_update,
 };
 pub use fov::{fov_cardinality_js, fov_variance_map, mixture_density_grid_js, placement_scene_js};
-pub use metrics::{gospa, linear_assignment, ospa, uospa};
+pub use metrics::{gospa, gospa_series, linear_assignment, ospa, ospa_series, uospa};
 pub use multi_bernoulli::{
     mb_alternative_estimate, mb_decision_map, mb_identical_component_counts, mb_mean_square_error,
     mb_optimal_estimate, multi_bernoulli_cardinality_js, multi_bernoulli_leave_one_out,

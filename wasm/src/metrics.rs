@@ -82,6 +82,93 @@ pub struct UospaResult {
     pub distance: f64,
 }
 
+/// Options of `gospaSeries`: a whole scenario, one truth set and one estimate set per time
+/// step.
+#[derive(Deserialize, Tsify)]
+pub struct GospaSeriesOptions {
+    /// The truth at each step (arrays of points of one common dimension; empty sets allowed).
+    pub truths: Vec<PointSet>,
+    /// The estimate at each step (as many steps as `truths`).
+    pub estimates: Vec<PointSet>,
+    /// The cut-off c > 0, in the units of the points.
+    pub c: f64,
+    /// The order p ≥ 1 (finite; default 2).
+    #[serde(default = "two")]
+    pub p: f64,
+    /// α in (0, 2] (default 2; the decomposition exists for α = 2 only).
+    #[serde(default = "two")]
+    pub alpha: f64,
+}
+
+/// Result of `gospaSeries`: per-step values (arrays indexed by step) and their means. The
+/// decomposition (`localisation`, `missed`, `falseTargets` and their means) is present for
+/// α = 2 only.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct GospaSeriesResult {
+    /// GOSPA at each step.
+    pub distance: Vec<f64>,
+    /// The mean of `distance` (0 for no steps).
+    pub mean_distance: f64,
+    /// Σ d^p over the assigned pairs at each step (α = 2 only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub localisation: Option<Vec<f64>>,
+    /// Unassigned truths at each step (α = 2 only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub missed: Option<Vec<usize>>,
+    /// Unassigned estimates at each step (α = 2 only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub false_targets: Option<Vec<usize>>,
+    /// The mean of `localisation` (α = 2 only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub mean_localisation: Option<f64>,
+    /// The mean of `missed` (α = 2 only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub mean_missed: Option<f64>,
+    /// The mean of `falseTargets` (α = 2 only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub mean_false_targets: Option<f64>,
+}
+
+/// Options of `ospaSeries`.
+#[derive(Deserialize, Tsify)]
+pub struct OspaSeriesOptions {
+    /// The truth at each step.
+    pub truths: Vec<PointSet>,
+    /// The estimate at each step (as many steps as `truths`).
+    pub estimates: Vec<PointSet>,
+    /// The cut-off c > 0.
+    pub c: f64,
+    /// The order p ≥ 1 (finite; default 2).
+    #[serde(default = "two")]
+    pub p: f64,
+}
+
+/// Result of `ospaSeries`: OSPA and its rooted parts at each step (distance^p =
+/// localisation^p + cardinality^p step by step), and the means of each over the steps.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct OspaSeriesResult {
+    /// OSPA at each step, eq. (24) of `004_…`.
+    pub distance: Vec<f64>,
+    /// The localisation part at each step, eq. (26).
+    pub localisation: Vec<f64>,
+    /// The cardinality part at each step, eq. (25).
+    pub cardinality: Vec<f64>,
+    /// The mean of `distance` (0 for no steps).
+    pub mean_distance: f64,
+    /// The mean of `localisation`.
+    pub mean_localisation: f64,
+    /// The mean of `cardinality`.
+    pub mean_cardinality: f64,
+}
+
 /// A cost matrix: an array of rows of equal length.
 #[derive(Deserialize, Tsify)]
 #[tsify(type = "(number[] | Float64Array)[]")]
@@ -170,6 +257,54 @@ pub fn uospa(
     let g = Gospa::uospa(o.c, o.p).or_throw_in("options")?;
     let distance = g.distance(&truth, &estimate).or_throw()?;
     write(&UospaResult { distance })
+}
+
+fn steps(sets: Vec<PointSet>) -> Vec<Vec<Vec<f64>>> {
+    sets.into_iter().map(PointSet::into_rows).collect()
+}
+
+/// GOSPA over a whole scenario in one call: `options.truths[t]` and `options.estimates[t]`
+/// are the sets at step t. Returns per-step `distance` (and, for α = 2, `localisation`,
+/// `missed`, `falseTargets`) with their means. The same numbers as calling `gospa` per step.
+#[wasm_bindgen(js_name = gospaSeries, unchecked_return_type = "GospaSeriesResult")]
+pub fn gospa_series(
+    #[wasm_bindgen(unchecked_param_type = "GospaSeriesOptions")] options: JsValue,
+) -> JsResult<JsValue> {
+    let o: GospaSeriesOptions = read(options, "options")?;
+    let g = Gospa::new(o.c, o.p, o.alpha).or_throw_in("options")?;
+    let (truths, estimates) = (steps(o.truths), steps(o.estimates));
+    let s = g.series(&truths, &estimates).or_throw_in("options")?;
+    let parts = s.parts;
+    write(&GospaSeriesResult {
+        distance: s.distance,
+        mean_distance: s.mean_distance,
+        mean_localisation: parts.as_ref().map(|p| p.mean_localisation),
+        mean_missed: parts.as_ref().map(|p| p.mean_missed),
+        mean_false_targets: parts.as_ref().map(|p| p.mean_false_targets),
+        localisation: parts.as_ref().map(|p| p.localisation.clone()),
+        missed: parts.as_ref().map(|p| p.missed.clone()),
+        false_targets: parts.map(|p| p.false_targets),
+    })
+}
+
+/// OSPA with its localisation and cardinality parts over a whole scenario in one call
+/// (eqs. 24–26 of Ristic & Vo 2010 at every step). Returns per-step arrays and their means.
+#[wasm_bindgen(js_name = ospaSeries, unchecked_return_type = "OspaSeriesResult")]
+pub fn ospa_series(
+    #[wasm_bindgen(unchecked_param_type = "OspaSeriesOptions")] options: JsValue,
+) -> JsResult<JsValue> {
+    let o: OspaSeriesOptions = read(options, "options")?;
+    let metric = Ospa::new(o.c, o.p).or_throw_in("options")?;
+    let (truths, estimates) = (steps(o.truths), steps(o.estimates));
+    let s = metric.series(&truths, &estimates).or_throw_in("options")?;
+    write(&OspaSeriesResult {
+        distance: s.distance,
+        localisation: s.localisation,
+        cardinality: s.cardinality,
+        mean_distance: s.mean_distance,
+        mean_localisation: s.mean_localisation,
+        mean_cardinality: s.mean_cardinality,
+    })
 }
 
 /// Exact rectangular linear assignment: `cost` is an array of rows (equal lengths). Returns

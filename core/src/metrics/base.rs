@@ -122,3 +122,33 @@ impl<T: ?Sized, F: Fn(&T, &T) -> f64> Metric<T> for FnMetric<F> {
         (self.0)(a, b)
     }
 }
+
+/// A metric in units of `c`: d(a, b) / c. The set metrics evaluate in these units when c^p
+/// would overflow or underflow an `f64` (c = 1e300, p = 2), so that a huge or tiny cut-off
+/// gives the right distance instead of `∞ · 0 = NaN` or a spurious 0. No grid: this path is
+/// for extreme scales only. As on every path, the result is exact to rounding relative to c: a
+/// distance whose p-th power underflows next to c^p counts as 0.
+pub(crate) struct InUnitsOf<'m, M: ?Sized> {
+    pub(crate) metric: &'m M,
+    pub(crate) c: f64,
+}
+
+impl<T: ?Sized, M: Metric<T> + ?Sized> Metric<T> for InUnitsOf<'_, M> {
+    fn distance(&self, a: &T, b: &T) -> f64 {
+        self.metric.distance(a, b) / self.c
+    }
+
+    fn validate(&self, truth: &[T], estimate: &[T]) -> Result<()>
+    where
+        T: Sized,
+    {
+        self.metric.validate(truth, estimate)
+    }
+}
+
+/// Whether c^p is too large or too small for the set metrics to work in the units of the
+/// points (then they work in units of c, see [`InUnitsOf`]).
+pub(crate) fn extreme_scale(c: f64, p: f64) -> bool {
+    let cp = fns::powp(c, p);
+    !(1e-280..=1e280).contains(&cp)
+}

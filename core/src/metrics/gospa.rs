@@ -2,6 +2,7 @@
 
 use alloc::vec::Vec;
 
+use super::base::{InUnitsOf, extreme_scale};
 use super::{Euclidean, Metric, check_cutoff_order, cutoff_assignment};
 use crate::error::{Error, Result};
 use crate::math::fns;
@@ -133,9 +134,29 @@ impl Gospa {
         estimate: &[T],
         metric: &M,
     ) -> Result<f64> {
+        if extreme_scale(self.c, self.p) {
+            let unit = Gospa { c: 1.0, ..*self };
+            let scaled = InUnitsOf { metric, c: self.c };
+            return Ok(self.c * unit.distance_in_units(truth, estimate, &scaled)?);
+        }
+        self.distance_in_units(truth, estimate, metric)
+    }
+
+    /// [`Gospa::distance_with`] in the units of the points (c^p representable).
+    fn distance_in_units<T, M: Metric<T> + ?Sized>(
+        &self,
+        truth: &[T],
+        estimate: &[T],
+        metric: &M,
+    ) -> Result<f64> {
         let a = cutoff_assignment(truth, estimate, metric, self.c, self.p)?;
-        let unmatched = truth.len().abs_diff(estimate.len()) as f64;
-        let total = a.total + fns::powp(self.c, self.p) / self.alpha * unmatched;
+        let unmatched = truth.len().abs_diff(estimate.len());
+        // No unmatched points, no term: c^p/α overflows for a tiny α and ∞·0 would be NaN.
+        let total = if unmatched == 0 {
+            a.total
+        } else {
+            a.total + fns::powp(self.c, self.p) / self.alpha * unmatched as f64
+        };
         Ok(fns::rootp(total, self.p))
     }
 
@@ -169,6 +190,26 @@ impl Gospa {
                          exists only for alpha = 2",
             });
         }
+        if extreme_scale(self.c, self.p) {
+            let unit = Gospa { c: 1.0, ..*self };
+            let scaled = InUnitsOf { metric, c: self.c };
+            let d = unit.decompose_in_units(truth, estimate, &scaled)?;
+            return Ok(GospaDecomposition {
+                distance: self.c * d.distance,
+                localisation: scale_power(d.localisation, self.c, self.p),
+                ..d
+            });
+        }
+        self.decompose_in_units(truth, estimate, metric)
+    }
+
+    /// [`Gospa::decompose_with`] in the units of the points (c^p representable).
+    fn decompose_in_units<T, M: Metric<T> + ?Sized>(
+        &self,
+        truth: &[T],
+        estimate: &[T],
+        metric: &M,
+    ) -> Result<GospaDecomposition> {
         let a = cutoff_assignment(truth, estimate, metric, self.c, self.p)?;
         // Pairs at d ≥ c cost c^p assigned or c^p/2 + c^p/2 unassigned: Prop. 3's optimal γ
         // leaves them unassigned.
@@ -185,6 +226,12 @@ impl Gospa {
             assignment: kept.iter().map(|q| (q.truth, q.estimate)).collect(),
         })
     }
+}
+
+/// x·c^p for x ≥ 0 given in units of c^p, as (c·x^(1/p))^p so that it is finite whenever the
+/// result is (c^p alone may overflow).
+fn scale_power(x: f64, c: f64, p: f64) -> f64 {
+    fns::powp(c * fns::rootp(x, p), p)
 }
 
 #[cfg(test)]

@@ -2,6 +2,7 @@
 
 use alloc::vec::Vec;
 
+use super::base::{InUnitsOf, extreme_scale};
 use super::{Euclidean, Metric, check_cutoff_order, cutoff_assignment};
 use crate::error::Result;
 use crate::math::fns;
@@ -116,6 +117,26 @@ impl Ospa {
     /// # Errors
     /// As [`Ospa::distance_with`].
     pub fn decompose_with<T, M: Metric<T> + ?Sized>(
+        &self,
+        truth: &[T],
+        estimate: &[T],
+        metric: &M,
+    ) -> Result<OspaDecomposition> {
+        if extreme_scale(self.c, self.p) {
+            let unit = Ospa { c: 1.0, ..*self };
+            let d = unit.decompose_in_units(truth, estimate, &InUnitsOf { metric, c: self.c })?;
+            return Ok(OspaDecomposition {
+                distance: self.c * d.distance,
+                localisation: self.c * d.localisation,
+                cardinality: self.c * d.cardinality,
+                ..d
+            });
+        }
+        self.decompose_in_units(truth, estimate, metric)
+    }
+
+    /// [`Ospa::decompose_with`] in the units of the points (c^p representable).
+    fn decompose_in_units<T, M: Metric<T> + ?Sized>(
         &self,
         truth: &[T],
         estimate: &[T],

@@ -362,3 +362,72 @@ fn gospa_and_ospa_agree_with_the_dense_oracle_on_a_percolating_scene() {
         assert!((o - fns::rootp(dense / 300.0, p)).abs() <= 1e-12 * o);
     }
 }
+
+#[test]
+fn extreme_cut_offs_are_computed_in_units_of_c() {
+    // Found by the boundary fuzzer: c = 1e300 made c^p overflow, and ∞ · 0 gave NaN (or the
+    // assignment solver trapped); c = 1e-300 made it underflow to 0.
+    use crate::metrics::{Gospa, Ospa};
+    for c in [1e300, 1e308, 1e-300] {
+        let g = Gospa::new(c, 2.0, 2.0).unwrap();
+        let o = Ospa::new(c, 2.0).unwrap();
+        let u = Gospa::uospa(c, 2.0).unwrap();
+        let empty: [[f64; 2]; 0] = [];
+        assert_eq!(g.distance(&empty, &empty).unwrap(), 0.0);
+        assert_eq!(
+            o.decompose(&[[0.0, 0.0, 0.0]], &[[0.0, 0.0, 0.0]])
+                .unwrap()
+                .distance,
+            0.0
+        );
+        assert_eq!(
+            u.distance(&[[0.0, 0.0, 0.0]], &[[0.0, 0.0, 0.0]]).unwrap(),
+            0.0
+        );
+        // One missed point: c/√2, and one OSPA cardinality error: c.
+        let d = g.decompose(&[[0.0, 0.0]], &empty).unwrap();
+        assert!(
+            (d.distance / (c / 2f64.sqrt()) - 1.0).abs() < 1e-15,
+            "{d:?}"
+        );
+        assert_eq!((d.missed, d.false_targets), (1, 0));
+        let d = o.decompose(&[[0.0]], &[[0.0], [1.5 * c.max(1.0)]]).unwrap();
+        assert!(
+            (d.distance / (c / 2f64.sqrt()) - 1.0).abs() < 1e-15,
+            "{d:?}"
+        );
+        assert!(
+            (d.cardinality / (c / 2f64.sqrt()) - 1.0).abs() < 1e-15,
+            "{d:?}"
+        );
+        assert_eq!(d.localisation, 0.0);
+    }
+    // A pair well inside the cut-off: the distance and Σ d^p (1e300, finite) exactly.
+    let g = Gospa::new(1e300, 2.0, 2.0).unwrap();
+    let d = g.decompose(&[[1e150, 0.0]], &[[0.0, 0.0]]).unwrap();
+    assert_eq!(d.missed, 0);
+    assert!((d.distance / 1e150 - 1.0).abs() < 1e-15, "{d:?}");
+    assert!((d.localisation / 1e300 - 1.0).abs() < 1e-14, "{d:?}");
+    let o = Ospa::new(1e300, 2.055031437066112).unwrap();
+    let d = o
+        .decompose(&[[0.0, 1e150]], &[[0.0, 0.0], [0.0, 0.0]])
+        .unwrap();
+    assert!(d.distance.is_finite() && d.distance > 0.0, "{d:?}");
+}
+
+#[test]
+fn a_tiny_alpha_with_every_point_matched_is_not_nan() {
+    // Found by the boundary fuzzer: c^p/α overflows for α = 5e-324, and multiplying it by
+    // zero unmatched points gave NaN. No unmatched point, no term.
+    use crate::metrics::Gospa;
+    for c in [1.0, 1e-300] {
+        let g = Gospa::new(c, 2.0, 5e-324).unwrap();
+        assert_eq!(g.distance(&[[0.0, 0.0]], &[[0.0, 0.0]]).unwrap(), 0.0);
+        // One unmatched point: c^p/α is beyond f64, the distance is +∞, not NaN.
+        assert_eq!(
+            g.distance(&[[0.0, 0.0]], &[[0.0, 0.0], [1.0, 1.0]])
+                .unwrap(),
+            f64::INFINITY
+        );
+    }
+}

@@ -186,6 +186,30 @@ export const specs = [
     args: dim.chain((d) => fc.tuple(pointSet(d), pointSet(d), metricOpts)),
   },
   {
+    name: 'gospaSeries',
+    roots: ['options'],
+    args: dim.chain((d) =>
+      fc
+        .integer({ min: 0, max: 6 })
+        .chain((k) =>
+          fc.tuple(fc.array(pointSet(d), { minLength: k, maxLength: k }), fc.array(pointSet(d), { minLength: k, maxLength: k }), gospaOpts),
+        )
+        .map(([truths, estimates, o]) => [{ truths, estimates, ...o }]),
+    ),
+  },
+  {
+    name: 'ospaSeries',
+    roots: ['options'],
+    args: dim.chain((d) =>
+      fc
+        .integer({ min: 0, max: 6 })
+        .chain((k) =>
+          fc.tuple(fc.array(pointSet(d), { minLength: k, maxLength: k }), fc.array(pointSet(d), { minLength: k, maxLength: k }), metricOpts),
+        )
+        .map(([truths, estimates, o]) => [{ truths, estimates, ...o }]),
+    ),
+  },
+  {
     name: 'linearAssignment',
     roots: ['cost'],
     args: fc

@@ -22,6 +22,8 @@ export const cases = {
   multiBernoulliCardinality: [[[0.1, 0.5, 0.9]], [[0.5, 2]]],
   multiBernoulliLeaveOneOut: [[[0.1, 0.5, 0.9]], ['0.5']],
   mbOptimalEstimate: [[{ existence: [0.4, 0.4], metric: 'ospa' }], [{ existence: [0.4], metric: 'hausdorff' }]],
+  gospaSeries: [[{ truths: [[[0, 0]], []], estimates: [[[0, 1]], [[2, 2]]], c: 2 }], [{ truths: [[[0]]], estimates: [], c: 1 }], [{ truths: [], estimates: [], c: 1, aplha: 2 }]],
+  ospaSeries: [[{ truths: [[[0, 0]], [[1, 1], [2, 2]]], estimates: [[[0, 1]], []], c: 3, p: 1 }], [{ truths: [[[0, NaN]]], estimates: [[]], c: 1 }]],
   mbMeanSquareError: [[{ existence: [0.4, 0.9], report: [true, false], metric: 'gospa' }], [{ existence: [0.4], report: [true, true], metric: 'ospa' }]],
   mbAlternativeEstimate: [[{ existence: [0.4, 0.6], method: 'jom' }], [{ existence: [0.4], method: 'map' }]],
   mbDecisionMap: [[{ estimator: 'ospa', resolution: 8 }], [{ estimator: 'ospa', resolution: 0 }]],

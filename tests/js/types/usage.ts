@@ -29,6 +29,10 @@ const mb: fisst.Bernoulli[] = [{ existence: 0.5, ...g2 }];
 const rfs: fisst.MultiObjectDensity = { multiBernoulli: mb };
 const grid: fisst.Grid = { x: [-1, 1, 5], y: [-1, 1, 5] };
 
+const gs: fisst.GospaSeriesResult = fisst.gospaSeries({ truths: [truth, []], estimates: [[[0, 1]], truth], c: 2 });
+const gsMissed: number[] | undefined = gs.missed;
+const os: fisst.OspaSeriesResult = fisst.ospaSeries({ truths: [truth], estimates: [truth], c: 2, p: 1 });
+const osMean: number = os.meanLocalisation + os.meanCardinality + gs.meanDistance;
 const la: fisst.LinearAssignmentResult = fisst.linearAssignment([[1, 2], [3, 4]]);
 const u: number = fisst.uospa(truth, truth, { c: 1 }).distance;
 const loo: number[][] = fisst.multiBernoulliLeaveOneOut(new Float64Array([0.2, 0.7]));
