@@ -1,5 +1,5 @@
-use super::{assert_throws, get, js, json, num};
-use fisst_wasm::{gospa, linear_assignment, ospa, uospa};
+use super::{assert_throws, get, js, json, num, nums};
+use fisst_wasm::{gospa, gospa_series, linear_assignment, ospa, ospa_series, uospa};
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -121,5 +121,39 @@ fn bad_input_throws_naming_the_field() {
     assert_eq!(
         num(&gospa(ok(), ok(), js(r#"{"c":1}"#)).unwrap(), "distance"),
         0.0
+    );
+}
+
+#[wasm_bindgen_test]
+fn series_equal_the_per_step_calls_and_name_the_step_in_errors() {
+    let r = gospa_series(js(
+        r#"{"truths":[[[0,0],[10,0]],[],[[1,1]]],"estimates":[[[0,1]],[[5,5]],[[1,2]]],"c":2}"#,
+    ))
+    .unwrap();
+    let d = nums(&get(&r, "distance"));
+    assert_eq!(d.len(), 3);
+    assert!((d[0] - 3f64.sqrt()).abs() < 1e-15);
+    assert!((d[1] - 2f64.sqrt()).abs() < 1e-15);
+    assert_eq!(d[2], 1.0);
+    assert_eq!(nums(&get(&r, "missed")), vec![1.0, 0.0, 0.0]);
+    assert_eq!(nums(&get(&r, "falseTargets")), vec![0.0, 1.0, 0.0]);
+    assert!((num(&r, "meanDistance") - (d[0] + d[1] + d[2]) / 3.0).abs() < 1e-15);
+    let o = ospa_series(js(
+        r#"{"truths":[[[0],[5]]],"estimates":[[[1]]],"c":10,"p":1}"#,
+    ))
+    .unwrap();
+    assert_eq!(nums(&get(&o, "distance")), vec![5.5]);
+    assert_eq!(nums(&get(&o, "localisation")), vec![0.5]);
+    assert_throws(
+        gospa_series(js(
+            r#"{"truths":[[],[[0,1],[2]]],"estimates":[[],[]],"c":1}"#,
+        )),
+        "RangeError",
+        "options.truths[1][1]",
+    );
+    assert_throws(
+        ospa_series(js(r#"{"truths":[[]],"estimates":[],"c":1}"#)),
+        "RangeError",
+        "options.estimates",
     );
 }
