@@ -144,6 +144,15 @@ const gospaOpts = fc.record(
   { requiredKeys: ['c'] },
 );
 
+// One set per time step (0–6 steps) for the series metrics, with their options.
+const seriesArgs = (opts) =>
+  dim.chain((d) =>
+    fc
+      .integer({ min: 0, max: 6 })
+      .chain((k) => fc.tuple(fc.array(pointSet(d), { minLength: k, maxLength: k }), fc.array(pointSet(d), { minLength: k, maxLength: k }), opts))
+      .map(([truths, estimates, o]) => [{ truths, estimates, ...o }]),
+  );
+
 const multiObjectDensity = (n) =>
   fc.oneof(
     fc.array(bernoulli(n), { maxLength: 6 }).map((c) => ({ multiBernoulli: c })),
@@ -185,30 +194,8 @@ export const specs = [
     roots: ['truth', 'estimate', 'options'],
     args: dim.chain((d) => fc.tuple(pointSet(d), pointSet(d), metricOpts)),
   },
-  {
-    name: 'gospaSeries',
-    roots: ['options'],
-    args: dim.chain((d) =>
-      fc
-        .integer({ min: 0, max: 6 })
-        .chain((k) =>
-          fc.tuple(fc.array(pointSet(d), { minLength: k, maxLength: k }), fc.array(pointSet(d), { minLength: k, maxLength: k }), gospaOpts),
-        )
-        .map(([truths, estimates, o]) => [{ truths, estimates, ...o }]),
-    ),
-  },
-  {
-    name: 'ospaSeries',
-    roots: ['options'],
-    args: dim.chain((d) =>
-      fc
-        .integer({ min: 0, max: 6 })
-        .chain((k) =>
-          fc.tuple(fc.array(pointSet(d), { minLength: k, maxLength: k }), fc.array(pointSet(d), { minLength: k, maxLength: k }), metricOpts),
-        )
-        .map(([truths, estimates, o]) => [{ truths, estimates, ...o }]),
-    ),
-  },
+  { name: 'gospaSeries', roots: ['options'], args: seriesArgs(gospaOpts) },
+  { name: 'ospaSeries', roots: ['options'], args: seriesArgs(metricOpts) },
   {
     name: 'linearAssignment',
     roots: ['cost'],
