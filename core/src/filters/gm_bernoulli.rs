@@ -11,7 +11,7 @@ use super::likelihood::{GeneralizedLikelihood, LinearGaussianLikelihood, RegionR
 use crate::error::{Error, Result};
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::math::sum::NeumaierSum;
-use crate::mixture::reduce;
+use crate::mixture::reduce_owned;
 use crate::regions::Region;
 use crate::splitting::split_for_regions;
 
@@ -71,7 +71,7 @@ pub fn gm_bernoulli_predict(state: &GmBernoulli, config: &PredictConfig) -> Resu
             let p = (&p + p.transpose()) * 0.5;
             out.push((
                 w / total,
-                Gaussian::new(m, p, &alloc::format!("mixture[{i}]"))?,
+                Gaussian::named(m, p, &|| alloc::format!("mixture[{i}]"))?,
             ));
         }
         Ok(out)
@@ -193,7 +193,7 @@ pub fn gm_bernoulli_update(
 /// non-finite value, `exclusions` when the exclusions remove the whole density, `reports`
 /// when the scan has probability 0 under the model while r = 1 (or while r = 0 and only an
 /// object can explain it), `clutter.rate` when two or more reports have zero clutter
-/// intensity; those of [`split_for_regions`] and [`reduce`].
+/// intensity; those of [`split_for_regions`] and [`reduce`](crate::mixture::reduce).
 pub fn gm_bernoulli_update_with<L: GeneralizedLikelihood + ?Sized>(
     state: &GmBernoulli,
     likelihood: &L,
@@ -205,7 +205,11 @@ pub fn gm_bernoulli_update_with<L: GeneralizedLikelihood + ?Sized>(
     let kappa = config.clutter.intensities(m, |_| None)?;
     let split_about: Vec<Region> = likelihood.split_regions();
     let (split, split_components) = refine(&state.mixture, split_about, config)?;
-    let prior = constrain(&split, &config.exclusions)?;
+    let kept = constrain(&split, &config.exclusions)?;
+    let prior: Vec<(f64, &Gaussian)> = kept
+        .iter()
+        .filter_map(|&(w, i)| split.components().get(i).map(|(_, g)| (w, g)))
+        .collect();
     let detection = &config.detection;
     let mut terms = Vec::with_capacity(prior.len());
     for (w, g) in &prior {
@@ -240,13 +244,20 @@ pub fn gm_bernoulli_update_with<L: GeneralizedLikelihood + ?Sized>(
     }
     let zero_kappa = kappa.iter().filter(|k| **k <= 0.0).count();
     let (existence, weights, delta) = bernoulli_weights(state.existence, &terms, zero_kappa)?;
-    let mut out = Vec::with_capacity(prior.len());
-    for ((_, g), w) in prior.into_iter().zip(weights) {
-        if w > 0.0 {
-            out.push((w, g.clone()));
-        }
-    }
-    finish(existence, out, delta, split_components, config)
+    let posterior: Vec<(usize, f64)> = kept
+        .iter()
+        .zip(weights)
+        .filter(|(_, w)| *w > 0.0)
+        .map(|(&(_, i), w)| (i, w))
+        .collect();
+    drop(prior);
+    finish(
+        existence,
+        pick(split, &posterior),
+        delta,
+        split_components,
+        config,
+    )
 }
 
 /// The per-component quantities of the zeroth-order update.
@@ -358,20 +369,46 @@ fn refine<'a>(
     Ok((alloc::borrow::Cow::Owned(out.mixture), n))
 }
 
+/// The components `keep` ((index, weight), indices ascending) of `split` with their new
+/// weights: moved out when the split mixture is owned, copied when it is the caller's.
+fn pick(
+    split: alloc::borrow::Cow<'_, GaussianMixture>,
+    keep: &[(usize, f64)],
+) -> Vec<(f64, Gaussian)> {
+    match split {
+        alloc::borrow::Cow::Owned(m) => {
+            let mut next = keep.iter().peekable();
+            let mut out = Vec::with_capacity(keep.len());
+            for (i, (_, g)) in m.into_components().into_iter().enumerate() {
+                if let Some(&&(j, w)) = next.peek()
+                    && j == i
+                {
+                    out.push((w, g));
+                    next.next();
+                }
+            }
+            out
+        }
+        alloc::borrow::Cow::Borrowed(m) => keep
+            .iter()
+            .filter_map(|&(i, w)| m.components().get(i).map(|(_, g)| (w, g.clone())))
+            .collect(),
+    }
+}
+
 /// The exclusion constraint: drop the components whose mean lies in some exclusion region
-/// and renormalise (the mean-based partition (12) about ∪E).
-fn constrain<'a>(
-    mixture: &'a GaussianMixture,
-    exclusions: &[Region],
-) -> Result<Vec<(f64, &'a Gaussian)>> {
-    let kept: Vec<(f64, &Gaussian)> = mixture
+/// and renormalise (the mean-based partition (12) about ∪E). Returns (weight, index into
+/// `mixture`), indices ascending.
+fn constrain(mixture: &GaussianMixture, exclusions: &[Region]) -> Result<Vec<(f64, usize)>> {
+    let kept: Vec<(f64, usize)> = mixture
         .components()
         .iter()
-        .filter(|(_, g)| {
+        .enumerate()
+        .filter(|(_, (_, g))| {
             let x = g.mean().as_slice();
             !exclusions.iter().any(|e| e.contains(x))
         })
-        .map(|(w, g)| (*w, g))
+        .map(|(i, (w, _))| (*w, i))
         .collect();
     let total: f64 = kept
         .iter()
@@ -385,7 +422,7 @@ fn constrain<'a>(
             "regions that leave some of the predicted density outside them",
         ));
     }
-    Ok(kept.into_iter().map(|(w, g)| (w / total, g)).collect())
+    Ok(kept.into_iter().map(|(w, i)| (w / total, i)).collect())
 }
 
 /// Builds the posterior mixture, reduces it and packs the result.
@@ -406,7 +443,7 @@ fn finish(
         .map(|(w, g)| (w / total, g))
         .collect();
     let mixture = GaussianMixture::new(components, "mixture")?;
-    let mixture = reduce(&mixture, &config.reduction).map_err(|e| match e {
+    let mixture = reduce_owned(mixture, &config.reduction).map_err(|e| match e {
         Error::InvalidParameter {
             what,
             value,
@@ -488,7 +525,10 @@ pub fn gm_bernoulli_update_vector<M: AsRef<[f64]>>(
         .clutter
         .intensities(measurements.len(), |j| Some(measurements[j].as_ref()))?;
     let (split, split_components) = refine(&state.mixture, Vec::new(), config)?;
-    let prior = constrain(&split, &config.exclusions)?;
+    let prior: Vec<(f64, &Gaussian)> = constrain(&split, &config.exclusions)?
+        .into_iter()
+        .filter_map(|(w, i)| split.components().get(i).map(|(_, g)| (w, g)))
+        .collect();
     let h = likelihood.h();
     let ht = h.transpose();
     // Per component: the missed term and one detected term per measurement.

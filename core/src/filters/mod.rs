@@ -55,15 +55,25 @@
 //! # Cost and accuracy (the airport example)
 //! The GM filter's cost is set by the splitting (w_min, the grid) and the reduction
 //! (L_max); the particle filter's by N and the number of MCMC moves. On the airport example
-//! ([`crate::sim::airport`], 60 steps, native, one core, `benches/benches/bernoulli_filters.rs`)
-//! the whole GM run takes about 0.21 s and the particle filter with 5,000 particles and one
-//! MCMC move about 0.54 s (2.6×, medians of criterion runs on a shared machine; the paper
-//! reports 45.2 s against 128.5 s in MATLAB, 2.8×), with mean position errors of 9.1 (GM) and
-//! 8.7 (particles) over 10 seeds (100 seeds: 9.35 and 8.82; 3σ coverage 99.7 % and 98.7 %):
-//! the GM filter's posterior is the wider of the two (covariance RSS 17.4 against 12.6).
-//! Most of the GM filter's time is the splitting test of Algorithms 1–2 (the collocation
-//! grid evaluated on every region near a component); in a profiling run (merge distance 2)
-//! `SplitOptions::grid_points` = 7 cut the splitting time by 60 % at the same accuracy.
+//! ([`crate::sim::airport`], 60 steps, one core, on a shared 2-core machine under load) the
+//! whole GM run takes about 90 ms natively (criterion `airport/gm/60`: 93 ms, interval
+//! 68–115 ms; `airport_timing accuracy 100`: 62 ms per run averaged over seeds 1–100) and the
+//! particle filter with 5,000 particles and one MCMC move 300–380 ms: 4–5× (the paper
+//! reports 45.2 s against 128.5 s in MATLAB, 2.8×). In Node (`benches/airport_node.mjs`,
+//! the npm package) 110–120 ms against 430–470 ms, 4×. Before issue 12's speed work the GM
+//! run took 135 ms natively (2.6×) and 185–205 ms in Node (2×); the results are bit for bit
+//! the same (the work is in how the splitting test evaluates the regions, see
+//! [`split_for_regions`](crate::splitting::split_for_regions), and in copies the update and
+//! the reduction no longer make): 805 M instructions per run before, 362 M after.
+//!
+//! Over seeds 1–100 (`cargo run --release --bin airport_timing -- accuracy 100` in
+//! `benches/`) the mean position errors are 9.35 (GM) and 8.82 (particles), the 3σ coverage
+//! 99.7 % and 98.7 %: the GM filter's posterior is the wider of the two (covariance RSS 18.0
+//! against 13.0). Most of the GM filter's time is still the splitting test of Algorithms 1–2
+//! (the collocation grid, 149 points for N_g = 15, evaluated on every region near each of
+//! the ~70 components split per step), then the eigendecompositions, the allocations of the
+//! per-component `Gaussian`s and the reduction; `SplitOptions::grid_points` = 7 cut the
+//! splitting time by 60 % at the same accuracy in a profiling run (merge distance 2).
 //!
 mod clutter;
 mod config;

@@ -32,13 +32,23 @@ impl Gaussian {
     /// `cov` is not `n × n` for `n = mean.len()`, [`Error::NotPositiveDefinite`] if `cov` is
     /// not symmetric (to a relative 1e-9) positive definite.
     pub fn new(mean: DVector<f64>, cov: DMatrix<f64>, what: &str) -> Result<Self> {
+        Self::named(mean, cov, &|| String::from(what))
+    }
+
+    /// [`Gaussian::new`] with the name built only for an error (the filters' hot loops
+    /// name thousands of components that are almost never wrong).
+    pub(crate) fn named(
+        mean: DVector<f64>,
+        cov: DMatrix<f64>,
+        what: &dyn Fn() -> String,
+    ) -> Result<Self> {
         let n = mean.len();
         if n == 0 {
-            return Err(Error::dimension(alloc::format!("{what}.mean"), 1, 0));
+            return Err(Error::dimension(alloc::format!("{}.mean", what()), 1, 0));
         }
         if let Some(i) = mean.iter().position(|v| !v.is_finite()) {
             return Err(Error::parameter(
-                alloc::format!("{what}.mean[{i}]"),
+                alloc::format!("{}.mean[{i}]", what()),
                 mean[i],
                 "finite",
             ));
@@ -49,13 +59,13 @@ impl Gaussian {
             } else {
                 cov.ncols()
             };
-            return Err(Error::dimension(alloc::format!("{what}.cov"), n, found));
+            return Err(Error::dimension(alloc::format!("{}.cov", what()), n, found));
         }
-        let cov_name = || -> String { alloc::format!("{what}.cov") };
+        let cov_name = || -> String { alloc::format!("{}.cov", what()) };
         if let Some(k) = cov.iter().position(|v| !v.is_finite()) {
             // nalgebra is column-major: k = col·n + row.
             return Err(Error::parameter(
-                alloc::format!("{what}.cov[{}][{}]", k % n, k / n),
+                alloc::format!("{}.cov[{}][{}]", what(), k % n, k / n),
                 cov[k],
                 "finite",
             ));
@@ -83,6 +93,35 @@ impl Gaussian {
             cov,
             chol,
             ln_det,
+        })
+    }
+
+    /// N(mean, P) with this Gaussian's P (and its Cholesky factor): the same result as
+    /// [`Gaussian::new`]`(mean, self.cov())` without factorising P again (the children of a
+    /// split share their covariance).
+    ///
+    /// # Errors
+    /// As [`Gaussian::new`] for the mean (named `{what}.mean`).
+    pub(crate) fn with_mean(&self, mean: DVector<f64>, what: &dyn Fn() -> String) -> Result<Self> {
+        if mean.len() != self.dim() {
+            return Err(Error::dimension(
+                alloc::format!("{}.cov", what()),
+                mean.len(),
+                self.dim(),
+            ));
+        }
+        if let Some(i) = mean.iter().position(|v| !v.is_finite()) {
+            return Err(Error::parameter(
+                alloc::format!("{}.mean[{i}]", what()),
+                mean[i],
+                "finite",
+            ));
+        }
+        Ok(Self {
+            mean,
+            cov: self.cov.clone(),
+            chol: self.chol.clone(),
+            ln_det: self.ln_det,
         })
     }
 

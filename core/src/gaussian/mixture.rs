@@ -46,6 +46,11 @@ impl GaussianMixture {
         &self.components
     }
 
+    /// The components, by value (no copy).
+    pub fn into_components(self) -> Vec<(f64, Gaussian)> {
+        self.components
+    }
+
     /// The number of components.
     pub fn len(&self) -> usize {
         self.components.len()

@@ -66,9 +66,18 @@ impl Default for ReductionOptions {
 /// # Ok::<(), fisst::Error>(())
 /// ```
 pub fn reduce(mixture: &GaussianMixture, options: &ReductionOptions) -> Result<GaussianMixture> {
-    let mut out = prune(mixture, options.prune_below)?;
+    reduce_owned(mixture.clone(), options)
+}
+
+/// [`reduce`] of a mixture the caller gives away (the filters' posterior): no component is
+/// copied that a pass leaves alone; the same numbers.
+pub(crate) fn reduce_owned(
+    mixture: GaussianMixture,
+    options: &ReductionOptions,
+) -> Result<GaussianMixture> {
+    let mut out = prune::prune_owned(mixture, options.prune_below)?;
     if let Some(d) = options.merge_distance {
-        out = merge_close(&out, d)?;
+        out = merge::merge_close_owned(out, d)?;
     }
     if let Some(max) = options.max_components {
         out = runnalls(&out, max)?;

@@ -28,14 +28,54 @@ pub fn prune(mixture: &GaussianMixture, threshold: f64) -> Result<GaussianMixtur
     if !(threshold.is_finite() && threshold >= 0.0) {
         return Err(Error::parameter("pruneBelow", threshold, "finite and >= 0"));
     }
-    let components = mixture.components();
-    if components.is_empty() {
-        return Ok(mixture.clone());
+    if mixture.components().iter().all(|(w, _)| *w >= threshold) {
+        // Nothing to drop: the scale below, on the mixture itself.
+        return prune_owned(mixture.clone(), threshold);
+    }
+    let kept = mixture
+        .components()
+        .iter()
+        .filter(|(w, _)| *w >= threshold)
+        .cloned()
+        .collect();
+    rescale(kept, mixture)
+}
+
+/// [`prune`] of a mixture the caller gives away: the kept components are moved, not copied
+/// (the same numbers).
+pub(crate) fn prune_owned(mixture: GaussianMixture, threshold: f64) -> Result<GaussianMixture> {
+    if !(threshold.is_finite() && threshold >= 0.0) {
+        return Err(Error::parameter("pruneBelow", threshold, "finite and >= 0"));
+    }
+    if mixture.components().iter().any(|(w, _)| *w < threshold) {
+        return prune(&mixture, threshold);
     }
     let total = mixture.total_weight();
-    let mut kept: Vec<usize> = (0..components.len())
-        .filter(|&i| components[i].0 >= threshold)
-        .collect();
+    let mut components = mixture.into_components();
+    if components.is_empty() {
+        return GaussianMixture::new(components, "mixture");
+    }
+    let kept_total = sum(components.iter().map(|(w, _)| *w));
+    let scale = if kept_total > 0.0 {
+        total / kept_total
+    } else {
+        1.0
+    };
+    for (w, _) in &mut components {
+        *w *= scale;
+    }
+    GaussianMixture::new(components, "mixture")
+}
+
+/// The survivors `kept` (in order, at least one of `mixture`'s components is below the
+/// threshold) rescaled to the total weight of `mixture`; when none survives, the heaviest
+/// component (the first on ties) with the whole weight.
+fn rescale(
+    mut kept: Vec<(f64, crate::gaussian::Gaussian)>,
+    mixture: &GaussianMixture,
+) -> Result<GaussianMixture> {
+    let components = mixture.components();
+    let total = mixture.total_weight();
     if kept.is_empty() {
         let mut best = 0;
         for (i, (w, _)) in components.iter().enumerate() {
@@ -43,17 +83,16 @@ pub fn prune(mixture: &GaussianMixture, threshold: f64) -> Result<GaussianMixtur
                 best = i;
             }
         }
-        kept.push(best);
+        kept.push(components[best].clone());
     }
-    let kept_total = sum(kept.iter().map(|&i| components[i].0));
+    let kept_total = sum(kept.iter().map(|(w, _)| *w));
     let scale = if kept_total > 0.0 {
         total / kept_total
     } else {
         1.0
     };
-    let out = kept
-        .into_iter()
-        .map(|i| (components[i].0 * scale, components[i].1.clone()))
-        .collect();
-    GaussianMixture::new(out, "mixture")
+    for (w, _) in &mut kept {
+        *w *= scale;
+    }
+    GaussianMixture::new(kept, "mixture")
 }

@@ -26,6 +26,7 @@
 mod axis_box;
 mod ball;
 pub mod bivariate_normal;
+mod compiled;
 mod mass;
 mod polygon;
 mod predicates;
@@ -35,6 +36,8 @@ pub use axis_box::AxisBox;
 pub use ball::Ball;
 pub use mass::{MAX_MASS_DIM, Mass};
 pub use polygon::Polygon;
+
+pub(crate) use compiled::{Hull, RegionSet};
 
 use alloc::boxed::Box;
 use alloc::vec::Vec;
@@ -290,65 +293,4 @@ impl Region {
             Node::Complement(r) => r.ball_relation(center, radius).map(|b| !b),
         }
     }
-
-    /// The region as seen by the closed ball of `radius` about `center`: decided (the whole
-    /// ball inside or outside, as [`Region::ball_relation`]), or a simpler region that
-    /// agrees with this one on the ball (union and intersection members decided on the ball
-    /// are dropped), or unchanged. Used by the splitting test, which evaluates the region
-    /// at many points of one ball.
-    pub(crate) fn on_ball(&self, center: &[f64], radius: f64) -> OnBall {
-        match &self.node {
-            Node::Union(m) | Node::Intersection(m) => {
-                let union = matches!(self.node, Node::Union(_));
-                let mut kept: Vec<Region> = Vec::new();
-                let mut changed = false;
-                for r in m {
-                    match r.on_ball(center, radius) {
-                        OnBall::Decided(b) if b == union => return OnBall::Decided(union),
-                        OnBall::Decided(_) => changed = true,
-                        OnBall::Same => kept.push(r.clone()),
-                        OnBall::Reduced(x) => {
-                            changed = true;
-                            kept.push(x);
-                        }
-                    }
-                }
-                if kept.is_empty() {
-                    return OnBall::Decided(!union);
-                }
-                if !changed {
-                    return OnBall::Same;
-                }
-                if kept.len() == 1 {
-                    return OnBall::Reduced(kept.pop().unwrap_or_else(|| unreachable!()));
-                }
-                OnBall::Reduced(Region {
-                    node: if union {
-                        Node::Union(kept)
-                    } else {
-                        Node::Intersection(kept)
-                    },
-                })
-            }
-            Node::Complement(r) => match r.on_ball(center, radius) {
-                OnBall::Decided(b) => OnBall::Decided(!b),
-                OnBall::Same => OnBall::Same,
-                OnBall::Reduced(x) => OnBall::Reduced(Region::complement(x)),
-            },
-            _ => match self.ball_relation(center, radius) {
-                Some(b) => OnBall::Decided(b),
-                None => OnBall::Same,
-            },
-        }
-    }
-}
-
-/// What [`Region::on_ball`] found.
-pub(crate) enum OnBall {
-    /// The whole ball is inside (`true`) or outside (`false`).
-    Decided(bool),
-    /// No simplification.
-    Same,
-    /// A simpler region equal to this one on the ball.
-    Reduced(Region),
 }

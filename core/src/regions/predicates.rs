@@ -16,7 +16,7 @@ use alloc::vec::Vec;
 use crate::math::fns;
 
 /// Unit roundoff 2⁻⁵³.
-const EPS: f64 = 1.110_223_024_625_156_5e-16;
+pub(crate) const EPS: f64 = 1.110_223_024_625_156_5e-16;
 
 #[inline]
 fn two_sum(a: f64, b: f64) -> (f64, f64) {
@@ -108,6 +108,10 @@ pub(crate) fn orient2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
 
 /// The exact sign of r² − |p − c|² (`Greater`: strictly inside the ball, `Equal`: on its
 /// sphere, `Less`: outside). `p` and `c` have the same length.
+///
+/// The floating-point filter is inlined; the exact expansion arithmetic (for the points
+/// within a few ulps of the sphere) is a separate, cold function.
+#[inline]
 pub(crate) fn ball_side(p: &[f64], c: &[f64], r: f64) -> Ordering {
     let mut d2 = 0.0;
     for (&x, &y) in p.iter().zip(c) {
@@ -121,6 +125,14 @@ pub(crate) fn ball_side(p: &[f64], c: &[f64], r: f64) -> Ordering {
     if fns::abs(diff) > bound {
         return sign_of(diff);
     }
+    ball_side_exact(p, c, r)
+}
+
+/// The exact sign of r² − |p − c|² by expansion arithmetic (the slow path of
+/// [`ball_side`]).
+#[cold]
+#[inline(never)]
+pub(crate) fn ball_side_exact(p: &[f64], c: &[f64], r: f64) -> Ordering {
     let mut e = Expansion::new();
     let (rr, rr_err) = two_product(r, r);
     e.add(rr_err);

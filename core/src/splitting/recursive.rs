@@ -13,7 +13,7 @@ use super::component::{Eigen, child_covariance, child_means};
 use crate::error::{Error, Result};
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::math::fns;
-use crate::regions::{OnBall, Region};
+use crate::regions::{Hull, Region, RegionSet};
 
 /// Largest number of collocation points N_g^{n_s} of the full grid (before the ball cut (22)).
 pub const MAX_GRID_POINTS: usize = 1 << 20;
@@ -98,12 +98,14 @@ pub struct SplitOutcome {
 struct Grid {
     /// The points ȳ, flat, `n_s` numbers each.
     points: Vec<f64>,
-    /// Their index tuples (i₁ … i_{n_s}) − 1, flat.
-    index: Vec<usize>,
     ns: usize,
     ng: usize,
     /// ζ.
     zeta: f64,
+    /// 64-bit words of a bit set over the points.
+    words: usize,
+    /// Per plane (j, l) (slot j·N_g + l): the bit set of its points.
+    planes: Vec<u64>,
 }
 
 impl Grid {
@@ -131,12 +133,21 @@ impl Grid {
             let mut d = 0;
             loop {
                 if d == ns {
+                    let count = index.len() / ns;
+                    let words = count.div_ceil(64);
+                    let mut planes = alloc::vec![0u64; ns * ng * words];
+                    for (p, idx) in index.chunks_exact(ns).enumerate() {
+                        for (j, &l) in idx.iter().enumerate() {
+                            planes[(j * ng + l) * words + p / 64] |= 1 << (p % 64);
+                        }
+                    }
                     return Self {
                         points,
-                        index,
                         ns,
                         ng,
                         zeta,
+                        words,
+                        planes,
                     };
                 }
                 idx[d] += 1;
@@ -177,6 +188,8 @@ struct Item {
 struct Shared {
     cov: DMatrix<f64>,
     info: OnceCell<CovInfo>,
+    /// The first output Gaussian with this covariance (its siblings reuse the factor).
+    gaussian: OnceCell<Gaussian>,
 }
 
 impl Shared {
@@ -184,6 +197,7 @@ impl Shared {
         Rc::new(Self {
             cov,
             info: OnceCell::new(),
+            gaussian: OnceCell::new(),
         })
     }
 
@@ -381,6 +395,7 @@ pub fn split_for_regions(
     let mut depth = 0;
     let mut splits = 0;
     let mut stop = None;
+    let set = RegionSet::new(regions);
     let mut scratch = Scratch::new(&grid);
     loop {
         if items.iter().all(|it| it.done) {
@@ -399,7 +414,7 @@ pub fn split_for_regions(
                 None
             } else {
                 let info = item.cov.info(ns, item.origin)?;
-                split_direction(&item.mean, info, regions, &grid, &mut scratch)
+                split_direction(&item.mean, info, &set, &grid, &mut scratch)
             };
             let Some(k) = k else {
                 item.done = true;
@@ -451,11 +466,18 @@ pub fn split_for_regions(
     for item in items {
         let g = match item.original {
             Some(g) => g,
-            None => Gaussian::new(
-                item.mean,
-                item.cov.cov.clone(),
-                &format!("mixture[{}]", item.origin),
-            )?,
+            None => {
+                let origin = item.origin;
+                let what = move || format!("mixture[{origin}]");
+                match item.cov.gaussian.get() {
+                    Some(sibling) => sibling.with_mean(item.mean, &what)?,
+                    None => {
+                        let g = Gaussian::named(item.mean, item.cov.cov.clone(), &what)?;
+                        let _ = item.cov.gaussian.set(g.clone());
+                        g
+                    }
+                }
+            }
         };
         components.push((item.weight, g));
     }
@@ -471,28 +493,39 @@ pub fn split_for_regions(
 struct Scratch {
     /// The grid mapped back to position space, flat.
     mapped: Vec<f64>,
-    /// Per plane (j, l): the reference inclusion of the current region (0 unset, 1 out,
-    /// 2 in) and whether the plane is consistent in every region so far.
-    plane_ref: Vec<u8>,
+    /// Per flattened region node: decided on the component's ball, or not.
+    state: Vec<Option<bool>>,
+    /// Per node: the inclusion bits of the grid points.
+    bits: Vec<u64>,
+    /// Per plane (j, l): consistent in every region so far.
     plane_ok: Vec<bool>,
+    /// The ball's radius per axis (the hull's box when n_s > 4).
+    reach: Vec<f64>,
 }
 
 impl Scratch {
     fn new(grid: &Grid) -> Self {
         Self {
             mapped: alloc::vec![0.0; grid.points.len()],
-            plane_ref: alloc::vec![0; grid.ns * grid.ng],
+            state: Vec::new(),
+            bits: Vec::new(),
             plane_ok: alloc::vec![true; grid.ns * grid.ng],
+            reach: Vec::new(),
         }
     }
 }
 
 /// The split decision of one component: `None` if every region includes or excludes the
 /// whole grid (24)/(34), otherwise k* of (32) for the direction j* of (26)/(35).
+///
+/// The inclusions d^{(ι)} of (23)/(33) are bit sets over the grid points
+/// ([`RegionSet::evaluate`]); a region is consistent on a plane when its bits on the plane
+/// are all 0 or all 1, and on the grid when they are all 0 or all 1 there (the same
+/// decisions as testing the points one by one, bit for bit).
 fn split_direction(
     mean: &DVector<f64>,
     info: &CovInfo,
-    regions: &[Region],
+    set: &RegionSet<'_>,
     grid: &Grid,
     scratch: &mut Scratch,
 ) -> Option<usize> {
@@ -500,63 +533,132 @@ fn split_direction(
     let pos = &info.position;
     // Every grid point lies within ζ √λ_max of the mean (‖ȳ‖ ≤ ζ); a region that holds or
     // misses that whole ball agrees on every point, so it changes neither test (24)/(34)
-    // nor (25)/(35) and is skipped: the result is the same bit for bit, only faster.
+    // nor (25)/(35) and is skipped: the result is the same bit for bit, only faster. The
+    // same holds for every node of a region's tree (a union member that misses the ball).
     let lambda_max = pos.values.first().copied().unwrap_or(0.0);
     let scale = mean
         .iter()
         .take(ns)
         .fold(1.0f64, |a, m| a.max(fns::abs(*m)));
-    let reach = grid.zeta * fns::sqrt(lambda_max) * (1.0 + 1e-8) + 1e-12 * scale;
-    let undecided: Vec<alloc::borrow::Cow<'_, Region>> = regions
-        .iter()
-        .filter_map(|r| match r.on_ball(mean.as_slice(), reach) {
-            OnBall::Decided(_) => None,
-            OnBall::Same => Some(alloc::borrow::Cow::Borrowed(r)),
-            OnBall::Reduced(x) => Some(alloc::borrow::Cow::Owned(x)),
-        })
-        .collect();
-    if undecided.is_empty() {
-        return None;
-    }
-    // s = m_s + V_s Λ_s^{1/2} ȳ  (the inverse of (15)).
+    let slack = 1e-12 * scale;
+    let reach = grid.zeta * fns::sqrt(lambda_max) * (1.0 + 1e-8) + slack;
+    // s = m_s + V_s Λ_s^{1/2} ȳ  (the inverse of (15)), as (V_s Λ_s^{1/2})_{ij} ȳ_j summed
+    // in j order.
+    let mut a = [0.0f64; 16];
+    let small = ns <= 4;
     let roots: Vec<f64> = pos.values.iter().map(|&l| fns::sqrt(l)).collect();
-    for (p, out) in grid
-        .points
-        .chunks_exact(ns)
-        .zip(scratch.mapped.chunks_exact_mut(ns))
-    {
-        for (i, o) in out.iter_mut().enumerate() {
-            let mut s = mean[i];
+    if small {
+        for i in 0..ns {
             for j in 0..ns {
-                s += pos.vectors[(i, j)] * roots[j] * p[j];
+                a[i * ns + j] = pos.vectors[(i, j)] * roots[j];
             }
-            *o = s;
         }
     }
-    scratch.plane_ok.iter_mut().for_each(|x| *x = true);
-    let mut all_consistent = true;
-    for region in undecided {
-        scratch.plane_ref.iter_mut().for_each(|x| *x = 0);
-        let mut first: u8 = 0;
-        for (s, idx) in scratch
-            .mapped
-            .chunks_exact(ns)
-            .zip(grid.index.chunks_exact(ns))
+    // The grid's bounding box: |s_i − m_i| ≤ ζ ‖row i of V_s Λ_s^{1/2}‖ (the support of the
+    // ellipse along axis i), with the same room for rounding as the ball.
+    let mut half_width = [0.0f64; 4];
+    if small {
+        for (i, h) in half_width.iter_mut().enumerate().take(ns) {
+            let row2: f64 = (0..ns).map(|j| a[i * ns + j] * a[i * ns + j]).sum();
+            *h = grid.zeta * fns::sqrt(row2) * (1.0 + 1e-8) + slack;
+        }
+    }
+    if !small {
+        scratch.reach.clear();
+        scratch.reach.resize(ns, reach);
+    }
+    let hull = Hull {
+        center: &mean.as_slice()[..ns],
+        radius: reach,
+        // Without the box (n_s > 4) every axis gets the ball's radius.
+        half_width: if small {
+            &half_width[..ns]
+        } else {
+            &scratch.reach[..]
+        },
+        vectors: pos.vectors.as_slice(),
+        roots: &roots,
+        zeta: grid.zeta,
+        slack,
+    };
+    set.classify(&hull, &mut scratch.state);
+    if set.roots().iter().all(|&r| scratch.state[r].is_some()) {
+        return None;
+    }
+    if ns == 2 {
+        // The loop below unrolled for the plane (the same operations in the same order).
+        let (m0, m1) = (mean[0], mean[1]);
+        let [a00, a01, a10, a11] = [a[0], a[1], a[2], a[3]];
+        for (p, out) in grid
+            .points
+            .chunks_exact(2)
+            .zip(scratch.mapped.chunks_exact_mut(2))
         {
-            let d: u8 = if region.contains(s) { 2 } else { 1 };
-            if first == 0 {
-                first = d;
-            } else if first != d {
-                all_consistent = false;
-            }
-            for (j, &l) in idx.iter().enumerate() {
-                let slot = j * grid.ng + l;
-                let r = &mut scratch.plane_ref[slot];
-                if *r == 0 {
-                    *r = d;
-                } else if *r != d {
-                    scratch.plane_ok[slot] = false;
+            out[0] = m0 + a00 * p[0] + a01 * p[1];
+            out[1] = m1 + a10 * p[0] + a11 * p[1];
+        }
+    } else {
+        for (p, out) in grid
+            .points
+            .chunks_exact(ns)
+            .zip(scratch.mapped.chunks_exact_mut(ns))
+        {
+            for (i, o) in out.iter_mut().enumerate() {
+                let mut s = mean[i];
+                if small {
+                    for j in 0..ns {
+                        s += a[i * ns + j] * p[j];
+                    }
+                } else {
+                    for j in 0..ns {
+                        s += pos.vectors[(i, j)] * roots[j] * p[j];
+                    }
                 }
+                *o = s;
+            }
+        }
+    }
+    let count = grid.len();
+    let words = grid.words;
+    set.evaluate(
+        &scratch.mapped,
+        ns,
+        count,
+        &scratch.state,
+        &mut scratch.bits,
+    );
+    scratch.plane_ok.iter_mut().for_each(|x| *x = true);
+    let full = |w: usize| {
+        if w + 1 == words && !count.is_multiple_of(64) {
+            (1u64 << (count % 64)) - 1
+        } else {
+            u64::MAX
+        }
+    };
+    let mut all_consistent = true;
+    for &root in set.roots() {
+        if scratch.state[root].is_some() {
+            continue;
+        }
+        let d = &scratch.bits[root * words..(root + 1) * words];
+        let none = d.iter().all(|&x| x == 0);
+        let all = d.iter().enumerate().all(|(w, &x)| x == full(w));
+        if !(none || all) {
+            all_consistent = false;
+        }
+        for (slot, ok) in scratch.plane_ok.iter_mut().enumerate() {
+            if !*ok {
+                continue;
+            }
+            let m = &grid.planes[slot * words..(slot + 1) * words];
+            let (mut any_in, mut all_in) = (false, true);
+            for (x, mw) in d.iter().zip(m) {
+                let y = x & mw;
+                any_in |= y != 0;
+                all_in &= y == *mw;
+            }
+            if any_in && !all_in {
+                *ok = false;
             }
         }
     }

@@ -1,0 +1,193 @@
+//! The airport example of `001_…` Section V-C, natively, outside criterion:
+//!
+//! ```text
+//! airport_timing time [reps]          wall time of one 60-step run, GM and PF (median of reps)
+//! airport_timing gm [reps]            only the GM filter, seed 1 (for callgrind / perf)
+//! airport_timing dump [runs]          every GM estimate of seeds 1..=runs, exactly
+//! airport_timing stats                 per-step component counts of seed 1 (GM)
+//! airport_timing accuracy [runs]      both filters over seeds 1..=runs (default 100):
+//!                                     3σ coverage, mean position error, mean position RSS
+//! ```
+//!
+//! A third argument sets the GM filter's grid N_g (`SplitOptions::grid_points`, default 15),
+//! e.g. `airport_timing accuracy 100 7`.
+//!
+//! The PF has 5,000 particles and one MCMC move (the paper's settings), seed 1000 + seed.
+use fisst::filters::{
+    EstimateOptions, FilterEstimate, GmBernoulliFilter, ParticleBernoulliFilter, ParticleOptions,
+};
+use fisst::regions::Region;
+use fisst::sim::airport::{AirportScenario, airport_scenario};
+use std::time::Instant;
+
+const STEPS: usize = 60;
+
+/// The GM filter's collocation grid N_g: the third argument, else the default (15).
+fn grid_points() -> Option<usize> {
+    std::env::args().nth(3).and_then(|s| s.parse().ok())
+}
+
+fn gm_run(sc: &AirportScenario, reports: &[Vec<Region>]) -> Vec<FilterEstimate> {
+    let mut config = sc.config.clone();
+    if let Some(g) = grid_points() {
+        config.splitting.options.grid_points = g;
+    }
+    let mut f = GmBernoulliFilter::new(config).unwrap();
+    reports
+        .iter()
+        .map(|r| {
+            f.predict().unwrap();
+            f.update(r).unwrap();
+            f.estimate(&EstimateOptions::default()).unwrap()
+        })
+        .collect()
+}
+
+fn pf_run(sc: &AirportScenario, reports: &[Vec<Region>], seed: u64) -> Vec<FilterEstimate> {
+    let options = ParticleOptions {
+        particles: 5000,
+        mcmc_moves: 1,
+        seed,
+        ..ParticleOptions::default()
+    };
+    let mut f = ParticleBernoulliFilter::new(sc.config.clone(), options).unwrap();
+    reports
+        .iter()
+        .map(|r| {
+            f.predict();
+            f.update(r).unwrap();
+            f.estimate(&EstimateOptions::default()).unwrap()
+        })
+        .collect()
+}
+
+fn reports(sc: &AirportScenario) -> Vec<Vec<Region>> {
+    (0..sc.reports.len())
+        .map(|k| sc.report_regions(k))
+        .collect()
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// (3σ hits, position error sum, RSS sum, steps).
+fn score(sc: &AirportScenario, est: &[FilterEstimate]) -> (usize, f64, f64, usize) {
+    let (mut hits, mut err, mut rss) = (0, 0.0, 0.0);
+    for (e, t) in est.iter().zip(&sc.truth) {
+        let t = &t.state;
+        let (dx, dy) = (t[0] - e.mean[0], t[1] - e.mean[1]);
+        let (a, b, c) = (e.cov[0][0], e.cov[0][1], e.cov[1][1]);
+        if (c * dx * dx - 2.0 * b * dx * dy + a * dy * dy) / (a * c - b * b) <= 9.0 {
+            hits += 1;
+        }
+        err += (dx * dx + dy * dy).sqrt();
+        rss += e.rss(0..2);
+    }
+    (hits, err, rss, est.len())
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let mode = args.get(1).map(String::as_str).unwrap_or("time");
+    let n: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(0);
+    match mode {
+        "gm" => {
+            let sc = airport_scenario(1, STEPS).unwrap();
+            let r = reports(&sc);
+            for _ in 0..n.max(1) {
+                std::hint::black_box(gm_run(&sc, &r));
+            }
+        }
+        "time" => {
+            let reps = if n == 0 { 11 } else { n };
+            let sc = airport_scenario(1, STEPS).unwrap();
+            let r = reports(&sc);
+            let time = |f: &dyn Fn()| {
+                f();
+                median(
+                    (0..reps)
+                        .map(|_| {
+                            let t = Instant::now();
+                            f();
+                            t.elapsed().as_secs_f64()
+                        })
+                        .collect(),
+                )
+            };
+            let gm = time(&|| {
+                std::hint::black_box(gm_run(&sc, &r));
+            });
+            let pf = time(&|| {
+                std::hint::black_box(pf_run(&sc, &r, 1));
+            });
+            println!(
+                "airport 60 steps, seed 1, median of {reps}: GM {:.2} ms, PF 5000 + MCMC {:.2} ms, PF/GM {:.1}×",
+                gm * 1e3,
+                pf * 1e3,
+                pf / gm
+            );
+        }
+        "accuracy" => {
+            let runs = if n == 0 { 100 } else { n };
+            let (mut g, mut p) = ((0, 0.0, 0.0, 0), (0, 0.0, 0.0, 0));
+            let (mut tg, mut tp) = (0.0, 0.0);
+            for seed in 1..=runs as u64 {
+                let sc = airport_scenario(seed, STEPS).unwrap();
+                let r = reports(&sc);
+                let t = Instant::now();
+                let ge = gm_run(&sc, &r);
+                tg += t.elapsed().as_secs_f64();
+                let t = Instant::now();
+                let pe = pf_run(&sc, &r, seed + 1000);
+                tp += t.elapsed().as_secs_f64();
+                let (a, b) = (score(&sc, &ge), score(&sc, &pe));
+                g = (g.0 + a.0, g.1 + a.1, g.2 + a.2, g.3 + a.3);
+                p = (p.0 + b.0, p.1 + b.1, p.2 + b.2, p.3 + b.3);
+            }
+            let line = |name: &str, s: (usize, f64, f64, usize), t: f64| {
+                println!(
+                    "{name}: 3σ coverage {:.4}, mean position error {:.3}, mean position RSS {:.3}, {:.2} ms per run",
+                    s.0 as f64 / s.3 as f64,
+                    s.1 / s.3 as f64,
+                    s.2 / s.3 as f64,
+                    t * 1e3 / runs as f64
+                );
+            };
+            println!("airport, {runs} seeded runs of {STEPS} steps (seeds 1..={runs}):");
+            line("GM", g, tg);
+            line("PF 5000 + MCMC", p, tp);
+        }
+        "stats" => stats(),
+        "dump" => {
+            // Every GM estimate of seeds 1..=n, exactly (to compare two builds bit for bit).
+            for seed in 1..=n.max(1) as u64 {
+                let sc = airport_scenario(seed, STEPS).unwrap();
+                for (k, e) in gm_run(&sc, &reports(&sc)).iter().enumerate() {
+                    println!("{seed} {k} {:?} {:?} {:?}", e.existence, e.mean, e.cov);
+                }
+            }
+        }
+        other => panic!("mode must be time, gm, stats, dump or accuracy, got {other}"),
+    }
+}
+
+#[allow(dead_code)]
+fn stats() {
+    let sc = airport_scenario(1, STEPS).unwrap();
+    let r = reports(&sc);
+    let mut f = GmBernoulliFilter::new(sc.config.clone()).unwrap();
+    for (k, rep) in r.iter().enumerate() {
+        f.predict().unwrap();
+        let pred = f.mixture().len();
+        let info = f.update(rep).unwrap();
+        println!(
+            "step {k}: reports {}, predicted {pred}, split {}, posterior {}, r {:.3}",
+            rep.len(),
+            info.split_components,
+            f.mixture().len(),
+            f.existence()
+        );
+    }
+}
