@@ -56,6 +56,7 @@ extern crate std;
 
 pub mod bernoulli;
 pub mod cardinality;
+pub mod control;
 pub mod error;
 pub mod estimators;
 pub mod filters;
@@ -66,6 +67,7 @@ pub mod metrics;
 pub mod mixture;
 pub mod regions;
 pub mod sim;
+pub mod smc;
 pub mod splitting;
 
 pub use error::{Error, Result};

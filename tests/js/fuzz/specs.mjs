@@ -339,6 +339,75 @@ export const specs = [
       .record({ existences: probabilities(20), missProbability: probability, costs, threshold: fc.double({ min: 0, max: 1, noNaN: true }) }, { requiredKeys: ['existences', 'missProbability', 'costs'] })
       .map((o) => [o]),
   },
+  {
+    name: 'multiObjectLikelihood',
+    roots: ['options'],
+    args: fc
+      .tuple(fc.integer({ min: 0, max: 6 }), fc.integer({ min: 0, max: 7 }))
+      .chain(([n, m]) =>
+        fc.record({
+          likelihoods: fc.array(fc.array(fc.oneof(fc.double({ min: 0, max: 10, noNaN: true }), fc.constantFrom(0, 5e-324, 1e-300, 1e300)), { minLength: m, maxLength: m }).chain(asTyped), { minLength: n, maxLength: n }),
+          detectionProbability: probability,
+          clutterRate: fc.oneof(fc.constantFrom(0, 0.8, 1e-300, 1e6), fc.double({ min: 0, max: 20, noNaN: true })),
+          clutterDensity: fc.array(fc.oneof(fc.double({ min: 0, max: 10, noNaN: true }), fc.constantFrom(0, 1e-300, 1e300)), { minLength: m, maxLength: m }).chain(asTyped),
+        }),
+      )
+      .map((o) => [o]),
+  },
+  {
+    name: 'SensorControlRun',
+    roots: ['options', 'step'],
+    // A mutation that deletes particles/futureScans gets the paper's size (N = 750, M = 200):
+    // a few seconds per step in wasm, so the class is drawn rarely and steps at most twice.
+    weight: 0.1,
+    maxMs: 20_000,
+    args: fc
+      .record(
+        {
+          seed: fc.integer({ min: 0, max: 2 ** 53 - 1 }),
+          scheme: fc.constantFrom('renyi', 'fisher', 'pent', 'random'),
+          particles: fc.integer({ min: 1, max: 20 }),
+          futureScans: fc.integer({ min: 1, max: 4 }),
+          alpha: fc.oneof(fc.constantFrom(0.5, 1, 1 + 1e-9, 1e-6, 50), fc.double({ min: 0.01, max: 5, noNaN: true })),
+          steps: fc.integer({ min: 1, max: 3 }),
+          start: fc.tuple(fc.constantFrom(0, 1000, 500, 999.9), fc.constantFrom(0, 1000, 250)),
+          maxObjects: fc.integer({ min: 1, max: 3 }),
+        },
+        { requiredKeys: ['scheme', 'seed'] },
+      )
+      .map((o) => [o]),
+    call: (fisst, args) => {
+      const run = new fisst.SensorControlRun(args[0]);
+      try {
+        let last;
+        for (let k = 0; k < Math.min(run.steps, 2); k++) last = run.step();
+        void run.particles;
+        void run.sensorPath;
+        return last;
+      } finally {
+        run.free();
+      }
+    },
+  },
+  {
+    name: 'compareSchemes',
+    roots: ['options'],
+    weight: 0.05,
+    maxMs: 60_000,
+    args: fc
+      .record(
+        {
+          runs: fc.integer({ min: 1, max: 2 }),
+          steps: fc.integer({ min: 1, max: 2 }),
+          seed: fc.integer({ min: 0, max: 2 ** 53 - 1 }),
+          schemes: fc.subarray(['renyi', 'fisher', 'pent', 'random'], { minLength: 1 }),
+          particles: fc.integer({ min: 1, max: 10 }),
+          futureScans: fc.integer({ min: 1, max: 3 }),
+        },
+        { requiredKeys: ['runs', 'steps', 'seed', 'particles', 'futureScans'] },
+      )
+      .map((o) => [o]),
+  },
   { name: 'version', roots: [], weight: 0.05, args: fc.constant([]) },
 ];
 
@@ -357,4 +426,7 @@ export const pastCaps = {
   negativeInformationScenario: [['0.step', 4], ['0.step', 0]],
   fovVarianceMap: [['0.grid.x.2', 4097]],
   mixtureDensityGrid: [['0.grid.y.2', 4097]],
+  multiObjectLikelihood: [['0.likelihoods.length', 65]],
+  SensorControlRun: [['0.particles', 20001], ['0.steps', 1001], ['0.maxObjects', 9]],
+  compareSchemes: [['0.runs', 1001], ['0.steps', 1001]],
 };

@@ -43,10 +43,27 @@ export const cases = {
   multiBernoulliPointEstimate: [[{ components: [{ existence: 0.9, density: { mean: [0], cov: 1 } }], radius: 1, costs: 'mpe' }], [{ components: [{ existence: 2, density: { mean: [0], cov: 1 } }], radius: 1, costs: 'mpe' }]],
   bernoulliLossCurve: [[{ existences: [0.1, 0.9], missProbability: 0.2, costs: 'mpe' }], [{ existences: [0.1], missProbability: 2, costs: 'mpe' }]],
   version: [[]],
+  multiObjectLikelihood: [
+    [{ likelihoods: [[0.2, 0.01], [0.03, 0.4]], detectionProbability: 0.95, clutterRate: 0.8, clutterDensity: [0.5, 0.5] }],
+    [{ likelihoods: [[0.2]], detectionProbability: 0.95, clutterRate: 0.8, clutterDensity: [0.5, 0.5] }],
+  ],
+  SensorControlRun: [[{ seed: 1, scheme: 'renyi', particles: 10, futureScans: 2, steps: 2 }], [{ scheme: 'best' }]],
+  compareSchemes: [[{ runs: 1, steps: 1, seed: 1, schemes: ['pent'], particles: 5, futureScans: 1 }], [{ runs: 0, steps: 1 }]],
 };
 
 /** Drivers of classes: `drivers[name](fisst, args)` (construct, call methods, `free()`). */
-export const drivers = {};
+export const drivers = {
+  SensorControlRun: (fisst, args) => {
+    const run = new fisst.SensorControlRun(args[0]);
+    try {
+      while (run.k < run.steps) run.step();
+      void run.particles;
+      void run.measurements;
+    } finally {
+      run.free();
+    }
+  },
+};
 
 function call(name, args) {
   try {

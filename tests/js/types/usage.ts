@@ -97,3 +97,32 @@ const cloud: number[][] = pfFilter.particles;
 pfFilter.free();
 // @ts-expect-error: a misspelt option ('existance') is not in GmBernoulliPredictOptions
 fisst.gmBernoulliPredict({ existance: 0.5, mixture: [], transition: airport.config.transition });
+const mol: fisst.MultiObjectLikelihoodResult = fisst.multiObjectLikelihood({
+  likelihoods: [[0.2, 0.01]],
+  detectionProbability: 0.95,
+  clutterRate: 0.8,
+  clutterDensity: [1 / 1414, 1 / 1414],
+});
+const logLik: number = mol.logLikelihood;
+const controlRun = new fisst.SensorControlRun({ seed: 1, scheme: 'renyi', particles: 20, futureScans: 4, alpha: 0.5, steps: 2 });
+const stepOut: fisst.ControlStep = controlRun.step();
+const nextPosition: [number, number] = stepOut.action.position;
+const rewards17: number[] = stepOut.rewards;
+const ospaNow: number = stepOut.ospa.localisation + stepOut.estimate.cardinality;
+const controlParticles: fisst.ControlParticles = controlRun.particles;
+const path: [number, number][] = controlRun.sensorPath;
+const truth2: [number, number][] = controlRun.truth;
+const scans: number[][] = controlRun.measurements;
+controlRun.free();
+const fig3: fisst.CompareSchemesResult = fisst.compareSchemes({
+  runs: 1,
+  steps: 1,
+  seed: 2,
+  schemes: ['pent', 'random'],
+  particles: 10,
+  futureScans: 2,
+  onProgress: (done: number, total: number) => void (done + total),
+});
+const fig3Mean: number[] = fig3.schemes[0].distance.standardError;
+// @ts-expect-error: a misspelt option ('futureScan') is not in SensorControlRunOptions
+new fisst.SensorControlRun({ scheme: 'renyi', futureScan: 3 });
