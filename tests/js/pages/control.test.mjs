@@ -1,0 +1,111 @@
+// web/control.html in headless Chromium: the page opens with the first scan drawn (the work
+// runs in a module worker), steps the live run to what SensorControlRun gives in Node for the
+// same options, keeps its settings in the URL, and a tiny comparison moves the progress bar
+// and the three Fig. 3 charts; the step and redraw times are printed.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import * as fisst from 'fisst';
+import { json, reopen, text, timeLine, useBrowser } from './harness.mjs';
+
+const browser = useBrowser();
+const pageState = (page) => json(page, '#control-state');
+const SMALL = 'particles=100&futureScans=20&steps=6';
+
+/** Waits until the live run reports scan k. */
+const waitForScan = (page, k) => page.waitForFunction((kk) => JSON.parse(document.getElementById('control-state').textContent).k >= kk, k, { timeout: 60_000 });
+
+/** The same run in Node, stepped k times: the page's worker must give identical numbers. */
+function nodeRun(options, k) {
+  const run = new fisst.SensorControlRun(options);
+  try {
+    let last = null;
+    for (let i = 0; i < k; i++) last = run.step();
+    return { last, sensorPath: run.sensorPath, truth: run.truth, measurements: run.measurements, particles: run.particles.length };
+  } finally {
+    run.free();
+  }
+}
+
+test('control: opens on scan 1, steps, and equals SensorControlRun in Node', async () => {
+  const page = await browser.open(`control.html?${SMALL}`);
+  let s = await pageState(page);
+  assert.equal(s.k, 1);
+  assert.deepEqual(s.options, { seed: 1, scheme: 'renyi', particles: 100, futureScans: 20, alpha: 0.5, steps: 6 });
+  assert.equal(s.particles, 100);
+  assert.equal(s.step.rewards.length, 17);
+  assert.equal(await text(page, '#k'), '1 of 6');
+  // Two steps by the button; the page keeps answering meanwhile (the worker does the work).
+  await page.locator('#step').click();
+  await waitForScan(page, 2);
+  await page.locator('#step').click();
+  await waitForScan(page, 3);
+  s = await pageState(page);
+  const node = nodeRun(s.options, 3);
+  assert.deepEqual(s.step, node.last);
+  assert.deepEqual(s.sensorPath, node.sensorPath);
+  assert.deepEqual(s.truth, node.truth);
+  assert.deepEqual(s.measurements, node.measurements);
+  assert.equal(await text(page, '#ospa'), `${+node.last.ospa.distance.toFixed(4)} m`);
+  // Play runs to the end (K = 6), then the button offers a restart.
+  await page.locator('#play').click();
+  await waitForScan(page, 6);
+  await page.waitForFunction(() => document.getElementById('status').textContent.startsWith('done'));
+  s = await pageState(page);
+  assert.deepEqual(s.step, nodeRun(s.options, 6).last);
+  const t = await browser.timing(page);
+  console.log(`control (Chromium, N = 100, M = 20): ${timeLine('step in the worker', t.history.step)}; ${timeLine('scene', t.history.scene)}`);
+  await browser.done(page, 'control-run');
+});
+
+test('control: a setting restarts the run and stays in the URL', async () => {
+  const page = await browser.open(`control.html?${SMALL}`);
+  await page.locator('#scheme-fisher').click();
+  await page.locator('#seed').fill('7');
+  await page.waitForFunction(() => {
+    const s = JSON.parse(document.getElementById('control-state').textContent);
+    return s.options.seed === 7 && s.k === 1;
+  });
+  const s = await pageState(page);
+  assert.equal(s.options.scheme, 'fisher');
+  assert.equal(await page.locator('#scheme-fisher').getAttribute('aria-pressed'), 'true');
+  assert.deepEqual(s.step, nodeRun(s.options, 1).last);
+  const again = await reopen(browser, page);
+  const s2 = await pageState(again);
+  assert.deepEqual(s2.options, s.options);
+  assert.deepEqual(s2.step, s.step);
+  const bad = await browser.open('control.html?scheme=nope&particles=abc&steps=6');
+  const s3 = await pageState(bad);
+  assert.deepEqual([s3.options.scheme, s3.options.particles], ['renyi', 750]);
+  await Promise.all([browser.done(page), browser.done(again), browser.done(bad)]);
+});
+
+test('control: a tiny comparison moves the progress bar and the Fig. 3 charts', async () => {
+  const page = await browser.open('control.html?particles=100&futureScans=20&steps=4&runs=2');
+  assert.equal(await text(page, '#compare-progress output'), 'not started');
+  await page.locator('#compare').click();
+  assert.equal(await text(page, '#compare'), 'stop');
+  await page.waitForFunction(() => document.querySelector('#compare-progress progress').value > 0, null, { timeout: 60_000 });
+  await page.waitForFunction(() => document.getElementById('compare-status').textContent.startsWith('done'), null, { timeout: 120_000 });
+  assert.equal(await page.locator('#compare-progress progress').evaluate((el) => el.value), 1);
+  // Every chart has a line per scheme: the legend's read-outs are numbers, not dashes.
+  const fig3 = await page.evaluate(() => window.fisstFig3);
+  for (const part of ['distance', 'localisation', 'cardinality']) {
+    for (const scheme of ['renyi', 'fisher', 'pent', 'random']) {
+      const st = fig3.stats[scheme][part];
+      assert.equal(st.mean.length, 4, `${scheme} ${part}`);
+      assert.ok(st.mean.every(Number.isFinite), `${scheme} ${part} ${st.mean}`);
+      assert.ok(st.standardError.every((e) => Number.isFinite(e) && e >= 0), `${scheme} ${part} ${st.standardError}`);
+    }
+  }
+  assert.equal(fig3.runs, 2);
+  // The page's pooled runs equal one compareSchemes call in Node.
+  const node = fisst.compareSchemes({ runs: 2, steps: 4, seed: 1, schemes: ['renyi', 'fisher', 'pent', 'random'], particles: 100, futureScans: 20, alpha: 0.5 });
+  for (const s of node.schemes) {
+    for (const part of ['distance', 'localisation', 'cardinality']) {
+      s[part].mean.forEach((m, t) => assert.ok(Math.abs(m - fig3.stats[s.scheme][part].mean[t]) <= 1e-9 * Math.max(1, m), `${s.scheme} ${part} mean[${t}]`));
+      s[part].standardError.forEach((e, t) => assert.ok(Math.abs(e - fig3.stats[s.scheme][part].standardError[t]) <= 1e-9 * Math.max(1, e), `${s.scheme} ${part} se[${t}]`));
+    }
+  }
+  await page.locator('#fig3a').scrollIntoViewIfNeeded();
+  await browser.done(page, 'control');
+});
