@@ -229,7 +229,7 @@ function drawLive() {
   const [lo, hi] = rewardRange(r.rewards);
   legend.update({ min: lo, max: hi, label: `reward of a move (${SCHEME_LABEL[state.scheme]})` });
   timer.show();
-  $('control-state').textContent = JSON.stringify({ options: runOptions(), k: live.k, step: r, probability: mapProbability(), scanAt: live.scanAt, measurements: live.measurements, sensorPath: live.sensorPath, truth: live.truth, particles: live.particles.length, box: view.box, ...view.domain() });
+  $('control-state').textContent = JSON.stringify({ options: runOptions(), k: live.k, step: r, probability: mapProbability(), scanAt: live.scanAt, measurements: live.measurements, sensorPath: live.sensorPath, truth: live.truth, particles: live.particles.length, box: view.box, ...view.domain() }, (_, v) => (v === -Infinity ? '-Infinity' : v)); // JSON has no −∞
 }
 
 // ---------------------------------------------------------------- Fig. 3: the comparison

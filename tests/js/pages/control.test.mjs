@@ -5,10 +5,11 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as fisst from 'fisst';
-import { json, reopen, text, timeLine, useBrowser } from './harness.mjs';
+import { reopen, text, timeLine, useBrowser } from './harness.mjs';
 
 const browser = useBrowser();
-const pageState = (page) => json(page, '#control-state');
+/** The state the page publishes (JSON, with −∞ rewards written as '-Infinity'). */
+const pageState = async (page) => JSON.parse(await text(page, '#control-state'), (_, v) => (v === '-Infinity' ? -Infinity : v));
 const SMALL = 'particles=100&futureScans=20&steps=6';
 
 /** Waits until the live run reports scan k. */
