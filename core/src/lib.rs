@@ -66,6 +66,7 @@ pub mod metrics;
 pub mod mixture;
 pub mod regions;
 pub mod sim;
+pub mod smc;
 pub mod splitting;
 
 pub use error::{Error, Result};
