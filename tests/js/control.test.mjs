@@ -205,11 +205,13 @@ test('multiObjectLikelihood: bad input is a typed error naming the field', () =>
 });
 
 // ------------------------------------------------------------------ SensorControlRun
+// Shapes: core/src/control/JS_SHAPES.md (branch issue14).
 const SMALL = { particles: 100, futureScans: 20 };
 const AREA = 1000; // A = [0, 1000]² m (Sec. 5.1)
+const PARTS = ['distance', 'localisation', 'cardinality'];
 const waiting = (name) => (typeof fisst[name] === 'function' ? false : `waiting for the ${name} binding (branch issue14)`);
 
-/** OSPA (24)–(26) with c = 100 m, p = 2 by enumerating the permutations (sets of ≤ 7 points). */
+/** OSPA (24)–(26) with c = 100 m, p = 2 by enumerating the permutations (sets of ≤ 8 points). */
 function ospaBrute(X, Y, c = 100, p = 2) {
   if (X.length > Y.length) return ospaBrute(Y, X, c, p);
   const [m, n] = [X.length, Y.length];
@@ -226,11 +228,10 @@ function ospaBrute(X, Y, c = 100, p = 2) {
     }
   };
   walk(0, 0);
-  const card = (c ** p * (n - m)) / n;
-  return { distance: ((best + c ** p * (n - m)) / n) ** (1 / p), localisation: (best / n) ** (1 / p), cardinality: card ** (1 / p) };
+  return { distance: ((best + c ** p * (n - m)) / n) ** (1 / p), localisation: (best / n) ** (1 / p), cardinality: ((c ** p * (n - m)) / n) ** (1 / p) };
 }
 
-/** The 17 admissible positions (23) around `at` (N_ρ = 2, N_θ = 8, ρ0 = 50 m), in any order. */
+/** The 17 admissible positions (23) around `at` (N_ρ = 2, N_θ = 8, ρ0 = 50 m): stay, then ring j, heading ℓ. */
 function admissible(at) {
   const out = [[...at]];
   for (let j = 1; j <= 2; j++) for (let l = 1; l <= 8; l++) out.push([at[0] + j * 50 * Math.cos((l * Math.PI) / 4), at[1] + j * 50 * Math.sin((l * Math.PI) / 4)]);
@@ -239,15 +240,21 @@ function admissible(at) {
 const samePoint = (a, b, tol = 1e-9) => Math.abs(a[0] - b[0]) <= tol && Math.abs(a[1] - b[1]) <= tol;
 const inside = ([x, y]) => x >= 0 && x <= AREA && y >= 0 && y <= AREA;
 
-/** Steps a new run k times; returns the step results and the properties after each step. */
-function steps(options, k) {
+/** The flat particles of `run.particles` as point sets. */
+const unflatten = ({ cardinalities, positions }) => {
+  let o = 0;
+  return cardinalities.map((n) => Array.from({ length: n }, () => [positions[2 * o], positions[2 * o++ + 1]]));
+};
+
+/** Steps a new run k times; returns what it says before and after each step. */
+function stepRun(options, k) {
   const run = new fisst.SensorControlRun(options);
   try {
+    const before = { sensorPath: run.sensorPath, truth: run.truth, k: run.k, steps: run.steps, seed: run.seed, scheme: run.scheme };
     const out = [];
-    const before = { sensorPath: run.sensorPath, truth: run.truth };
     for (let i = 0; i < k; i++) {
-      const at = run.sensorPath.at(-1);
-      out.push({ at, step: run.step(), particles: run.particles, sensorPath: run.sensorPath, truth: run.truth, measurements: run.measurements });
+      const step = run.step();
+      out.push({ step, particles: run.particles, sensorPath: run.sensorPath, truth: run.truth, measurements: run.measurements, k: run.k });
     }
     return { before, out };
   } finally {
@@ -255,48 +262,63 @@ function steps(options, k) {
   }
 }
 
-test('SensorControlRun: shapes, the 17 actions (23), −∞ outside A, OSPA (24)–(26), MAP cardinality (22)', { skip: waiting('SensorControlRun') }, () => {
+test('SensorControlRun: shapes, the 17 actions (23), −∞ outside A, MAP cardinality (22), OSPA (24)–(26)', { skip: waiting('SensorControlRun') }, () => {
   for (const scheme of ['renyi', 'fisher', 'pent', 'random']) {
-    const { before, out } = steps({ seed: 3, scheme, ...SMALL, steps: 6 }, 6);
-    // The paper's two sources (Sec. 5.1), fixed for the whole run.
-    assert.deepEqual(before.truth, [[300, 600], [750, 250]]);
-    assert.ok(inside(before.sensorPath.at(-1)), `${scheme}: the sensor starts inside A`);
-    out.forEach(({ at, step, particles, sensorPath, truth, measurements }, i) => {
+    // From the corner (0, 0), the default start: 10 of the 17 moves leave A.
+    const { before, out } = stepRun({ seed: 3, scheme, ...SMALL, steps: 5 }, 5);
+    assert.deepEqual(before.truth, [[300, 600], [750, 250]]); // the paper's sources (Sec. 5.1)
+    assert.deepEqual(before.sensorPath, [[0, 0]]);
+    assert.deepEqual([before.k, before.steps, before.seed, before.scheme], [0, 5, 3, scheme]);
+    out.forEach(({ step, particles, sensorPath, truth, measurements, k }, i) => {
       const what = `${scheme} k=${i + 1}`;
-      assert.deepEqual(Object.keys(step).sort(), ['action', 'estimate', 'k', 'ospa', 'rewards'], what);
+      assert.deepEqual(Object.keys(step).sort(), ['action', 'estimate', 'k', 'measurements', 'ospa', 'rewards', 'sensor'], what);
       assert.equal(step.k, i + 1, what);
+      assert.equal(k, i + 1, what);
       assert.deepEqual(truth, before.truth, what);
-      // The 17 rewards, one per admissible move from where the sensor stood; −∞ exactly
-      // for the moves that leave A; the move taken is one of them, inside A.
+      // Z_k was taken at the previous location; the path grows by the move taken.
+      assert.equal(sensorPath.length, i + 2, what);
+      assert.deepEqual(step.sensor, sensorPath[i], what);
+      assert.deepEqual(sensorPath[i + 1], step.action.position, what);
+      assert.equal(measurements.length, i + 1, what);
+      assert.deepEqual(measurements[i], step.measurements, what);
+      assert.ok(step.measurements.every((z) => Number.isFinite(z) && z >= 0), `${what}: ${step.measurements}`);
+      // The 17 moves (23) indexed 0 (stay), 1 + (j − 1)·8 + (ℓ − 1); −∞ exactly outside A.
+      const moves = admissible(step.sensor);
+      const { index, ring, heading, position } = step.action;
+      assert.ok(Number.isInteger(index) && index >= 0 && index < 17, what);
+      assert.deepEqual([ring, heading], index === 0 ? [0, 0] : [1 + Math.floor((index - 1) / 8), 1 + ((index - 1) % 8)], what);
+      assert.ok(samePoint(position, moves[index], 1e-9), `${what}: ${position} vs ${moves[index]}`);
+      assert.ok(inside(position), what);
       assert.equal(step.rewards.length, 17, what);
-      const moves = admissible(at);
-      assert.ok(moves.some((u) => samePoint(u, step.action)), `${what}: ${step.action} is not one of the moves (23) from ${at}`);
-      assert.ok(inside(step.action), what);
-      assert.equal(step.rewards.filter((r) => r === -Infinity).length, moves.filter((u) => !inside(u)).length, `${what}: ${step.rewards}`);
+      step.rewards.forEach((r, j) => assert.equal(r === -Infinity, !inside(moves[j]), `${what}: reward ${j} = ${r} at ${moves[j]}`));
       assert.ok(step.rewards.every((r) => r === -Infinity || Number.isFinite(r)), `${what}: ${step.rewards}`);
-      if (scheme !== 'random') {
-        // A greedy scheme takes a move of the largest reward (6).
-        const best = Math.max(...step.rewards);
-        assert.ok(Number.isFinite(best), what);
+      if (scheme === 'random') assert.ok(step.rewards.every((r) => r === -Infinity || r === 0), `${what}: ${step.rewards}`);
+      else assert.equal(step.rewards[index], Math.max(...step.rewards), `${what}: a greedy scheme takes the largest reward (6)`);
+      // Particles: N point sets inside A with n ≤ n_max = 4, equal weights after resampling.
+      assert.equal(particles.weights.length, SMALL.particles, what);
+      particles.weights.forEach((w) => assert.ok(Math.abs(w - 1 / SMALL.particles) < 1e-12, what));
+      const sets = unflatten(particles);
+      assert.equal(particles.positions.length, 2 * particles.cardinalities.reduce((a, b) => a + b, 0), what);
+      for (const p of sets) {
+        assert.ok(p.length <= 4, what);
+        for (const x of p) assert.ok(inside(x), `${what}: particle point ${x}`);
       }
-      // The path grows by the move taken.
-      assert.equal(sensorPath.length, before.sensorPath.length + i + 1, what);
-      assert.deepEqual(sensorPath.at(-1), step.action, what);
-      // Ranges are non-negative numbers; particles are N sets of points, all inside A.
-      assert.ok(measurements.every((z) => Number.isFinite(z) && z >= 0), `${what}: ${measurements}`);
-      assert.equal(particles.length, SMALL.particles, what);
-      for (const p of particles) for (const x of p) assert.ok(x.length === 2 && inside(x), `${what}: particle point ${x}`);
-      // (22): n̂ is the most frequent particle cardinality; the estimate averages the
-      // particles of that cardinality object by object (Sec. 5.2).
-      const counts = new Map();
-      for (const p of particles) counts.set(p.length, (counts.get(p.length) ?? 0) + 1);
-      const top = Math.max(...counts.values());
-      assert.equal(counts.get(step.estimate.length), top, `${what}: n̂ = ${step.estimate.length}, counts ${[...counts]}`);
-      // OSPA of the estimate against the truth (c = 100 m, p = 2): distance² = localisation² + cardinality².
-      const o = ospaBrute(truth, step.estimate);
-      for (const part of ['distance', 'localisation', 'cardinality']) {
-        assert.ok(Math.abs(step.ospa[part] - o[part]) <= 1e-9 * Math.max(1, o[part]), `${what}: ${part} ${step.ospa[part]} vs ${o[part]}`);
-      }
+      // (22): the pmf of the particle cardinalities, its argmax n̂, and the states as the
+      // object-by-object means of the particles with n̂ objects (Sec. 5.2).
+      const pmf = [0, 1, 2, 3, 4].map((n) => sets.filter((p) => p.length === n).length / SMALL.particles);
+      const e = step.estimate;
+      assert.equal(e.cardinalityPmf.length, 5, what);
+      e.cardinalityPmf.forEach((q, n) => assert.ok(Math.abs(q - pmf[n]) < 1e-12, `${what}: pmf ${e.cardinalityPmf} vs ${pmf}`));
+      assert.equal(pmf[e.cardinality], Math.max(...pmf), what);
+      assert.equal(e.states.length, e.cardinality, what);
+      const chosen = sets.filter((p) => p.length === e.cardinality);
+      e.states.forEach((s, r) => {
+        const mean = [0, 1].map((c) => chosen.reduce((a, p) => a + p[r][c], 0) / chosen.length);
+        assert.ok(samePoint(s, mean, 1e-9), `${what}: state ${r} ${s} vs ${mean}`);
+      });
+      // OSPA of the estimate against the truth (c = 100 m, p = 2), and distance² = localisation² + cardinality².
+      const o = ospaBrute(truth, e.states);
+      for (const part of PARTS) assert.ok(Math.abs(step.ospa[part] - o[part]) <= 1e-9 * Math.max(1, o[part]), `${what}: ${part} ${step.ospa[part]} vs ${o[part]}`);
       const { distance: d, localisation: l, cardinality: c } = step.ospa;
       assert.ok(Math.abs(d * d - (l * l + c * c)) <= 1e-9 * Math.max(1, d * d), `${what}: ${d}² vs ${l}² + ${c}²`);
       assert.ok(d >= 0 && d <= 100, what);
@@ -304,17 +326,20 @@ test('SensorControlRun: shapes, the 17 actions (23), −∞ outside A, OSPA (24)
   }
 });
 
-test('SensorControlRun: the same seed gives the same run, another seed another', { skip: waiting('SensorControlRun') }, () => {
-  const a = steps({ seed: 11, scheme: 'renyi', ...SMALL, steps: 4 }, 4);
-  const b = steps({ seed: 11, scheme: 'renyi', ...SMALL, steps: 4 }, 4);
-  assert.deepEqual(a, b);
-  const c = steps({ seed: 12, scheme: 'renyi', ...SMALL, steps: 4 }, 4);
-  assert.notDeepEqual(a.out.map((s) => s.measurements), c.out.map((s) => s.measurements));
-  // The defaults are the paper's (N = 750, M = 200, α = 0.5).
-  const run = new fisst.SensorControlRun({ seed: 1, scheme: 'random', steps: 1 });
+test('SensorControlRun: the same seed gives the same run, another seed another; the paper\'s defaults', { skip: waiting('SensorControlRun') }, () => {
+  const a = stepRun({ seed: 11, scheme: 'renyi', ...SMALL, steps: 4 }, 4);
+  assert.deepEqual(stepRun({ seed: 11, scheme: 'renyi', ...SMALL, steps: 4 }, 4), a);
+  const c = stepRun({ seed: 12, scheme: 'renyi', ...SMALL, steps: 4 }, 4);
+  assert.notDeepEqual(a.out.map((s) => s.step.measurements), c.out.map((s) => s.step.measurements));
+  // Another start: the path begins there.
+  assert.deepEqual(stepRun({ seed: 1, scheme: 'fisher', ...SMALL, steps: 1, start: [500, 500] }, 1).out[0].step.sensor, [500, 500]);
+  // N = 750, K = 40 by default; an omitted seed is drawn and can be read back.
+  const run = new fisst.SensorControlRun({ scheme: 'random', futureScans: 1 });
   try {
+    assert.equal(run.steps, 40);
+    assert.ok(Number.isInteger(run.seed));
     run.step();
-    assert.equal(run.particles.length, 750);
+    assert.equal(run.particles.weights.length, 750);
   } finally {
     run.free();
   }
@@ -327,70 +352,74 @@ test('SensorControlRun: bad options are typed errors naming the field; a finishe
   throwsAt(bad({ scheme: 3 }), TypeError, 'options.scheme');
   throwsAt(bad({ particles: 0 }), RangeError, 'options.particles');
   throwsAt(bad({ particles: 10.5 }), RangeError, 'options.particles');
+  throwsAt(bad({ particles: 20_001 }), RangeError, 'options.particles');
   throwsAt(bad({ futureScans: 0 }), RangeError, 'options.futureScans');
-  throwsAt(bad({ alpha: 1 }), RangeError, 'options.alpha');
+  assert.throws(bad({ particles: 2000, futureScans: 501 }), (e) => e instanceof RangeError && /^options\.(particles|futureScans)/.test(e.message));
+  throwsAt(bad({ alpha: 0 }), RangeError, 'options.alpha');
   throwsAt(bad({ alpha: -0.5 }), RangeError, 'options.alpha');
   throwsAt(bad({ alpha: NaN }), RangeError, 'options.alpha');
   throwsAt(bad({ steps: 0 }), RangeError, 'options.steps');
   throwsAt(bad({ seed: -1 }), RangeError, 'options.seed');
+  throwsAt(bad({ start: [1200, 0] }), RangeError, 'options.start');
+  throwsAt(bad({ maxObjects: 0 }), RangeError, 'options.maxObjects');
+  throwsAt(bad({ maxObjects: 9 }), RangeError, 'options.maxObjects');
   throwsAt(bad({ particle: 100 }), TypeError, 'options');
   throwsAt(() => new fisst.SensorControlRun(), TypeError, 'options');
+  // α = 1 is the Kullback–Leibler divergence, not an error.
+  new fisst.SensorControlRun({ ...ok, alpha: 1 }).free();
   const run = new fisst.SensorControlRun(ok);
   try {
     run.step();
     run.step();
     assert.throws(() => run.step(), (e) => e instanceof RangeError);
-    assert.equal(run.sensorPath.length, steps(ok, 2).before.sensorPath.length + 2, 'the failed step changed nothing');
+    assert.equal(run.k, 2, 'the refused step changed nothing');
+    assert.equal(run.sensorPath.length, 3);
   } finally {
     run.free();
   }
 });
 
 // ------------------------------------------------------------------ compareSchemes
-test('compareSchemes: per scheme, mean OSPA parts over time with standard errors; onProgress', { skip: waiting('compareSchemes') }, () => {
+test('compareSchemes: per scheme, the mean OSPA parts over time with standard errors; onProgress', { skip: waiting('compareSchemes') }, () => {
   const calls = [];
   const schemes = ['renyi', 'random'];
   const out = fisst.compareSchemes({ runs: 3, steps: 4, seed: 5, schemes, ...SMALL, onProgress: (done, total) => calls.push([done, total]) });
-  // onProgress: once per finished run, done increasing to total.
-  assert.ok(calls.length >= 3, `${calls}`);
-  calls.forEach(([done, total], i) => {
-    assert.equal(total, calls[0][1]);
-    if (i > 0) assert.ok(done > calls[i - 1][0], `${calls}`);
-  });
-  assert.equal(calls.at(-1)[0], calls.at(-1)[1]);
+  // onProgress after each finished run: done = 1 … runs·schemes.
+  assert.deepEqual(calls, [1, 2, 3, 4, 5, 6].map((d) => [d, 6]));
+  assert.deepEqual([out.seed, out.runs, out.steps], [5, 3, 4]);
   assert.deepEqual(out.schemes.map((s) => s.scheme), schemes);
   for (const s of out.schemes) {
-    for (const part of ['distance', 'localisation', 'cardinality']) {
-      assert.equal(s[part].mean.length, 4, `${s.scheme} ${part}`);
-      assert.equal(s[part].standardError.length, 4, `${s.scheme} ${part}`);
-      assert.ok(s[part].mean.every((v) => v >= 0 && v <= 100), `${s.scheme} ${part} ${s[part].mean}`);
-      assert.ok(s[part].standardError.every((v) => v >= 0 && Number.isFinite(v)), `${s.scheme} ${part}`);
+    for (const part of PARTS) {
+      const { mean, standardError } = s[part];
+      assert.equal(mean.length, 4, `${s.scheme} ${part}`);
+      assert.equal(standardError.length, 4, `${s.scheme} ${part}`);
+      assert.ok(mean.every((v) => v >= 0 && v <= 100), `${s.scheme} ${part} ${mean}`);
+      assert.ok(standardError.every((v) => v >= 0 && Number.isFinite(v)), `${s.scheme} ${part}`);
     }
+    // Per run max(l, c) ≤ d = √(l² + c²) ≤ l + c, so the means keep that order.
+    s.distance.mean.forEach((d, t) => {
+      const [l, c] = [s.localisation.mean[t], s.cardinality.mean[t]];
+      assert.ok(d >= Math.max(l, c) - 1e-9 && d <= l + c + 1e-9, `${s.scheme} t=${t}: ${d} vs ${l}, ${c}`);
+    });
   }
-  // Run r is SensorControlRun with seed + r: the means and standard errors are theirs.
-  for (const s of out.schemes) {
-    const runs = [0, 1, 2].map((r) => steps({ seed: 5 + r, scheme: s.scheme, ...SMALL, steps: 4 }, 4).out.map((o) => o.step.ospa));
-    for (const part of ['distance', 'localisation', 'cardinality']) {
-      for (let t = 0; t < 4; t++) {
-        const xs = runs.map((r) => r[t][part]);
-        const mean = xs.reduce((a, b) => a + b, 0) / 3;
-        const se = Math.sqrt(xs.reduce((a, x) => a + (x - mean) ** 2, 0) / 2 / 3);
-        assert.ok(Math.abs(s[part].mean[t] - mean) <= 1e-9 * Math.max(1, mean), `${s.scheme} ${part} mean[${t}]: ${s[part].mean[t]} vs ${mean}`);
-        assert.ok(Math.abs(s[part].standardError[t] - se) <= 1e-9 * Math.max(1, se), `${s.scheme} ${part} se[${t}]: ${s[part].standardError[t]} vs ${se}`);
-      }
-    }
-  }
+  // The same seed gives the same numbers; one run has standard errors 0; all four by default.
+  assert.deepEqual(fisst.compareSchemes({ runs: 3, steps: 4, seed: 5, schemes, ...SMALL }), out);
+  const one = fisst.compareSchemes({ runs: 1, steps: 2, seed: 5, ...SMALL, futureScans: 5 });
+  assert.deepEqual(one.schemes.map((s) => s.scheme), ['renyi', 'fisher', 'pent', 'random']);
+  for (const s of one.schemes) for (const part of PARTS) assert.deepEqual(s[part].standardError, [0, 0]);
 });
 
 test('compareSchemes: errors name the field; a throwing onProgress stops it', { skip: waiting('compareSchemes') }, () => {
   const ok = { runs: 1, steps: 2, seed: 1, schemes: ['random'], ...SMALL };
   const bad = (changes) => () => fisst.compareSchemes({ ...ok, ...changes });
   throwsAt(bad({ runs: 0 }), RangeError, 'options.runs');
+  throwsAt(bad({ runs: 1001 }), RangeError, 'options.runs');
   throwsAt(bad({ steps: 0 }), RangeError, 'options.steps');
   throwsAt(bad({ schemes: ['random', 'bogus'] }), RangeError, 'options.schemes[1]');
   throwsAt(bad({ schemes: 'random' }), TypeError, 'options.schemes');
   throwsAt(bad({ onProgress: 3 }), TypeError, 'options.onProgress');
+  throwsAt(bad({ particles: 0 }), RangeError, 'options.particles');
+  throwsAt(() => fisst.compareSchemes(), TypeError, 'options');
   assert.throws(bad({ onProgress: () => { throw new Error('stop here'); } }), /stop here/);
-  // Still usable afterwards.
-  assert.equal(fisst.compareSchemes(ok).schemes.length, 1);
+  assert.equal(fisst.compareSchemes(ok).schemes.length, 1, 'still usable afterwards');
 });
