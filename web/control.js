@@ -16,7 +16,7 @@ const OBJECT_COLOURS = ['#1f2933', '#0072b2', '#7c3aed', '#b45309', '#0e7490'];
 const AREA = 1000; // the surveillance area A = [0, 1000]² m (Sec. 5.1)
 const OSPA_C = 100; // the cut-off c = 100 m (Sec. 5.3)
 
-const url = urlState({ scheme: 'renyi', seed: 1, particles: 750, futureScans: 200, alpha: 0.5, steps: 30, runs: 20 });
+const url = urlState({ scheme: 'renyi', seed: 1, particles: 750, futureScans: 200, alpha: 0.5, steps: 40, runs: 20 });
 const state = url.values;
 const timer = timings('control');
 timer.badge($('redraw-ms'), { step: 'step (worker)', scene: 'scene', chart: 'OSPA chart', fig3: 'Fig. 3' });
@@ -68,10 +68,9 @@ function onStepper(data) {
   if (data.type !== 'step') return;
   const { result } = data;
   timer.record('step', data.ms);
-  // The scan Z_k was taken where the sensor stood before this step's move (Alg. 1, line 5).
-  live.scanAt = live.sensorPath.at(-1) ?? data.sensorPath.at(-2) ?? data.sensorPath[0];
-  Object.assign(live, { k: result.k, last: result, particles: data.particles, sensorPath: data.sensorPath, truth: data.truth, measurements: data.measurements, busy: false });
-  live.history.push({ k: result.k, ...result.ospa, n: result.estimate.length, probability: mapProbability() });
+  // Z_k, taken where the sensor stood before this step's move (Alg. 1, line 5).
+  Object.assign(live, { k: result.k, last: result, scanAt: result.sensor, measurements: result.measurements, particles: data.particles, sensorPath: data.sensorPath, truth: data.truth, busy: false });
+  live.history.push({ k: result.k, ...result.ospa, n: result.estimate.cardinality, probability: mapProbability() });
   drawLive();
   const done = live.k >= live.steps;
   status(done ? `done: ${live.k} scans (restart, or change a setting)` : `scan ${live.k} of ${live.steps}${live.playing ? ': playing' : ''}`);
@@ -87,16 +86,11 @@ function setPlaying(on) {
 }
 
 // ---------------------------------------------------------------- Fig. 1: the scene
-/** Particle cardinalities: n̂ is the most frequent one (22); Pr{n = n̂} its share. */
-function cardinalityCounts() {
-  const counts = new Map();
-  for (const p of live.particles) counts.set(p.length, (counts.get(p.length) ?? 0) + 1);
-  return counts;
-}
-const mapCardinality = () => live.last?.estimate.length ?? 0;
-const mapProbability = () => (live.particles.length ? (cardinalityCounts().get(mapCardinality()) ?? 0) / live.particles.length : null);
+/** n̂, the most frequent particle cardinality (22), and Pr{n = n̂}, its share of the particles. */
+const mapCardinality = () => live.last?.estimate.cardinality ?? 0;
+const mapProbability = () => live.last?.estimate.cardinalityPmf[mapCardinality()] ?? null;
 
-/** The 17 admissible positions (23) around `at`: stay, then j = 1, 2 steps of ρ0 = 50 m in ℓ = 1 … 8 directions. */
+/** The 17 admissible positions (23) around `at`, indexed as the rewards: 0 stay, then 1 + (j − 1)·8 + (ℓ − 1) for j·50 m at ℓ·45°. */
 function candidates(at) {
   const out = [[...at]];
   for (let j = 1; j <= 2; j++) for (let l = 1; l <= 8; l++) out.push([at[0] + j * 50 * Math.cos((l * Math.PI) / 4), at[1] + j * 50 * Math.sin((l * Math.PI) / 4)]);
@@ -168,7 +162,7 @@ function drawScene(ctx, v) {
         cross(ctx, px(c[0]), py(c[1]), 4);
       } else dot(ctx, px(c[0]), py(c[1]), 5, rewardMap.css(hi > lo ? (r - lo) / (hi - lo) : 1), '#fff', 1);
     });
-    const a = live.last.action;
+    const a = live.last.action.position;
     ctx.strokeStyle = RED;
     ctx.lineWidth = 2;
     ctx.beginPath();
@@ -193,7 +187,7 @@ function drawScene(ctx, v) {
     cross(ctx, px(t[0]), py(t[1]), 5.5, true);
   }
   ctx.strokeStyle = RED;
-  for (const e of live.last?.estimate ?? []) cross(ctx, px(e[0]), py(e[1]), 6);
+  for (const e of live.last?.estimate.states ?? []) cross(ctx, px(e[0]), py(e[1]), 6);
   ctx.font = '12px system-ui, sans-serif';
   ctx.textBaseline = 'top';
   ctx.textAlign = 'left';
@@ -221,11 +215,11 @@ function drawLive() {
   $('k').textContent = `${live.k} of ${live.steps}`;
   $('scan').textContent = `${live.measurements.length}: ${live.measurements.map((z) => `${fmt(z, 4)} m`).join(', ') || 'none'}`;
   $('cardinality').textContent = `${mapCardinality()}, ${fmt(mapProbability(), 3)}`;
-  $('estimate').textContent = r.estimate.map((e) => pointText(e, 0)).join(' ') || '∅';
+  $('estimate').textContent = r.estimate.states.map((e) => pointText(e, 0)).join(' ') || '∅';
   $('ospa').textContent = `${fmt(r.ospa.distance, 4)} m`;
   $('ospa-parts').textContent = `${fmt(r.ospa.localisation, 4)} m, ${fmt(r.ospa.cardinality, 4)} m`;
-  const taken = candidates(live.scanAt).findIndex((c) => Math.hypot(c[0] - r.action[0], c[1] - r.action[1]) < 1e-6);
-  $('action').textContent = `${pointText(r.action, 0)}, ${taken >= 0 ? fmt(r.rewards[taken], 4) : '—'}`;
+  const { index, ring, heading, position } = r.action;
+  $('action').textContent = `${ring ? `${ring * 50} m at ${heading * 45}°` : 'stay'} to ${pointText(position, 0)}, ${fmt(r.rewards[index], 4)}`;
   const [lo, hi] = rewardRange(r.rewards);
   legend.update({ min: lo, max: hi, label: `reward of a move (${SCHEME_LABEL[state.scheme]})` });
   timer.show();
@@ -326,7 +320,7 @@ const sceneCSV = () => toCSV(['what', 'index', 'object', 'x', 'y', 'value'], [
   ...(live.scanAt ? candidates(live.scanAt).map((c, i) => ['move', i, null, c[0], c[1], live.last.rewards[i]]) : []),
   ...live.measurements.map((z, i) => ['range', i, null, null, null, z]),
   ...live.truth.map((t, i) => ['truth', i, null, t[0], t[1], null]),
-  ...(live.last?.estimate ?? []).map((e, i) => ['estimate', i, null, e[0], e[1], null]),
+  ...(live.last?.estimate.states ?? []).map((e, i) => ['estimate', i, null, e[0], e[1], null]),
 ]);
 downloads($('scene-figure'), { name: () => `control-${state.scheme}-k${live.k}`, png: () => view.canvas, csv: sceneCSV });
 downloads($('run-figure'), { name: () => `control-${state.scheme}-ospa`, png: () => runChart.canvas(), csv: runCSV });

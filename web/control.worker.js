@@ -9,7 +9,7 @@
 // Messages out:
 //   { type: 'ready' }
 //   { type: 'started', truth, sensorPath }
-//   { type: 'step', result, particles, sensorPath, truth, measurements, ms }
+//   { type: 'step', result, particles (point sets), sensorPath, truth, ms }
 //   { type: 'progress', done, total }                      (from compareSchemes' onProgress)
 //   { type: 'compare', runs, total, stats, ms }            (the statistics of the runs so far)
 //   { type: 'error', during, name, message }
@@ -45,6 +45,12 @@ function summary({ n, sum, squares }) {
   return { mean, standardError };
 }
 
+/** The flat `run.particles` ({ cardinalities, positions }, JS_SHAPES.md) as point sets. */
+function pointSets({ cardinalities, positions }) {
+  let o = 0;
+  return cardinalities.map((n) => Array.from({ length: n }, () => [positions[2 * o], positions[2 * o++ + 1]]));
+}
+
 const PARTS = ['distance', 'localisation', 'cardinality'];
 
 async function compare({ runs, seed, ...options }) {
@@ -52,8 +58,9 @@ async function compare({ runs, seed, ...options }) {
   const sums = {};
   const t0 = performance.now();
   for (let r = 0; r < runs; r++) {
-    // Run r of the comparison is compareSchemes' run 0 with seed + r (JS_SHAPES.md: run r of
-    // a call uses seed + r), so that any chunking gives the same numbers as one call.
+    // Run r of the page's comparison is a one-run compareSchemes call with seed + r (every
+    // scheme sees the same run seed), pooled here exactly: the page draws the means as the
+    // runs come in, and a Node call per run gives the same numbers.
     const out = fisst.compareSchemes({
       ...options,
       runs: 1,
@@ -82,7 +89,7 @@ onmessage = async ({ data }) => {
       const t0 = performance.now();
       const result = run.step();
       const ms = performance.now() - t0;
-      postMessage({ type: 'step', id: data.id, result, particles: run.particles, sensorPath: run.sensorPath, truth: run.truth, measurements: run.measurements, ms });
+      postMessage({ type: 'step', id: data.id, result, particles: pointSets(run.particles), sensorPath: run.sensorPath, truth: run.truth, ms });
     } else if (data.type === 'compare') {
       await compare(data.options);
     }
