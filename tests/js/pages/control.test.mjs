@@ -8,6 +8,14 @@ import * as fisst from 'fisst';
 import { reopen, text, timeLine, useBrowser } from './harness.mjs';
 
 const browser = useBrowser();
+
+/** The lines of the CSV that the figure's CSV button downloads. */
+async function csvLines(page, figure) {
+  const download = page.waitForEvent('download');
+  await page.locator(`${figure} [data-download="csv"]`).click();
+  const body = await (await download).createReadStream().then((st) => st.toArray());
+  return Buffer.concat(body).toString('utf8').trim().split('\n');
+}
 /** The state the page publishes (JSON, with −∞ rewards written as '-Infinity'). */
 const pageState = async (page) => JSON.parse(await text(page, '#control-state'), (_, v) => (v === '-Infinity' ? -Infinity : v));
 const SMALL = 'particles=100&futureScans=20&steps=6';
@@ -53,6 +61,16 @@ test('control: opens on scan 1, steps, and equals SensorControlRun in Node', asy
   await page.waitForFunction(() => document.getElementById('status').textContent.startsWith('done'));
   s = await pageState(page);
   assert.deepEqual(s.step, nodeRun(s.options, 6).last);
+  // The downloads: the OSPA chart's six rows, the scene's particles, moves and truth.
+  const run = await csvLines(page, '#run-figure');
+  assert.equal(run.length, 7);
+  assert.deepEqual(run.at(-1).split(',').slice(0, 4).map(Number), [6, s.step.ospa.distance, s.step.ospa.localisation, s.step.ospa.cardinality]);
+  const scene = await csvLines(page, '#scene-figure');
+  assert.equal(scene.filter((l) => l.startsWith('move,')).length, 17);
+  assert.equal(scene.filter((l) => l.startsWith('truth,')).length, 2);
+  const png = page.waitForEvent('download');
+  await page.locator('#scene-figure [data-download="png"]').click();
+  assert.match((await png).suggestedFilename(), /^control-renyi-k6\.png$/);
   const t = await browser.timing(page);
   console.log(`control (Chromium, N = 100, M = 20): ${timeLine('step in the worker', t.history.step)}; ${timeLine('scene', t.history.scene)}`);
   await browser.done(page, 'control-run');
@@ -114,6 +132,12 @@ test('control: a tiny comparison moves the progress bar and the Fig. 3 charts', 
       });
     }
   });
+  // The charts hold the pooled means: their CSVs have a row per scan, a number per scheme.
+  for (const [figure, part] of [['#fig3a-figure', 'distance'], ['#fig3b-figure', 'localisation'], ['#fig3c-figure', 'cardinality']]) {
+    const lines = await csvLines(page, figure);
+    assert.equal(lines.length, 5, figure);
+    lines.slice(1).forEach((l, t) => assert.deepEqual(l.split(',').map(Number), [t + 1, ...['renyi', 'fisher', 'pent', 'random'].map((sc) => fig3.stats[sc][part].mean[t])], figure));
+  }
   await page.locator('#fig3a').scrollIntoViewIfNeeded();
   await browser.done(page, 'control');
 });
