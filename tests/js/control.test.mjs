@@ -423,3 +423,25 @@ test('compareSchemes: errors name the field; a throwing onProgress stops it', { 
   assert.throws(bad({ onProgress: () => { throw new Error('stop here'); } }), /stop here/);
   assert.equal(fisst.compareSchemes(ok).schemes.length, 1, 'still usable afterwards');
 });
+
+// Run r of compareSchemes uses a seed derived from the master seed (core/src/control/
+// comparison.rs, run_seeds); with those seeds returned, its means and standard errors can be
+// checked against SensorControlRun runs here.
+const probe = waiting('compareSchemes') ? null : fisst.compareSchemes({ runs: 1, steps: 1, schemes: ['random'], particles: 100, futureScans: 1 });
+const noSeeds = probe && !Array.isArray(probe.runSeeds) && 'waiting: compareSchemes does not return the seeds of its runs (runSeeds)';
+test('compareSchemes: the means and standard errors of SensorControlRun runs with its run seeds', { skip: waiting('compareSchemes') || noSeeds }, () => {
+  const out = fisst.compareSchemes({ runs: 3, steps: 3, seed: 9, schemes: ['fisher', 'pent'], ...SMALL });
+  assert.equal(out.runSeeds.length, 3);
+  for (const s of out.schemes) {
+    const runs = out.runSeeds.map((seed) => stepRun({ seed, scheme: s.scheme, ...SMALL, steps: 3 }, 3).out.map((o) => o.step.ospa));
+    for (const part of PARTS) {
+      for (let t = 0; t < 3; t++) {
+        const xs = runs.map((r) => r[t][part]);
+        const mean = xs.reduce((a, b) => a + b, 0) / 3;
+        const se = Math.sqrt(xs.reduce((a, x) => a + (x - mean) ** 2, 0) / 2 / 3);
+        assert.ok(Math.abs(s[part].mean[t] - mean) <= 1e-9 * Math.max(1, mean), `${s.scheme} ${part} mean[${t}]: ${s[part].mean[t]} vs ${mean}`);
+        assert.ok(Math.abs(s[part].standardError[t] - se) <= 1e-9 * Math.max(1, se), `${s.scheme} ${part} se[${t}]: ${s[part].standardError[t]} vs ${se}`);
+      }
+    }
+  }
+});
