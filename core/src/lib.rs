@@ -56,6 +56,7 @@ extern crate std;
 
 pub mod bernoulli;
 pub mod cardinality;
+pub mod control;
 pub mod error;
 pub mod estimators;
 pub mod filters;

@@ -37,7 +37,7 @@ pub use bernoulli_filters::{
     GmBernoulliFilterJs, ParticleBernoulliFilterJs, airport_scenario, gm_bernoulli_predict,
     gm_bernoulli_update,
 };
-pub use control::multi_object_likelihood;
+pub use control::{SensorControlRunJs, compare_schemes, multi_object_likelihood};
 pub use fov::{fov_cardinality_js, fov_variance_map, mixture_density_grid_js, placement_scene_js};
 pub use metrics::{gospa, linear_assignment, ospa, uospa};
 pub use multi_bernoulli::{

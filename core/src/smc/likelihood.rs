@@ -96,6 +96,8 @@ pub(crate) fn ln_sum_matchings(
     dp.clear();
     dp.resize(states, 0.0);
     dp[0] = 1.0;
+    group.clear();
+    group.resize(cols, 0.0);
     // Linear sweep, row r scaled by e^{T_r}, T_r = its largest log factor.
     let mut ln_scale = 0.0;
     for r in 0..rows {
@@ -107,28 +109,59 @@ pub(crate) fn ln_sum_matchings(
         }
         ln_scale += t;
         let m = exp(ln_row_miss[r] - t);
+        for (f, &l) in group.iter_mut().zip(row) {
+            *f = exp(l - t);
+        }
         // Descending in place: dp[S \ {c}] < S is still the previous row's value.
-        for s in (0..states).rev() {
+        for s in (1..states).rev() {
             let mut v = dp[s] * m;
             let mut bits = s;
             while bits != 0 {
                 let c = bits.trailing_zeros() as usize;
                 bits &= bits - 1;
-                v += dp[s & !(1 << c)] * exp(row[c] - t);
+                v += dp[s & !(1 << c)] * group[c];
             }
             dp[s] = v;
         }
+        dp[0] *= m;
     }
-    // Final factor of the unmatched columns, grouped by |S| so that e^{V} (V the largest
-    // column-miss log) is applied in log space: Σ_S dp[S] Π_{c∉S} e^{L_c − V} e^{(k−|S|) V}.
+    // Final factor of the unmatched columns, Σ_S dp[S] Π_{c∉S} e^{L_c}: linearly when the
+    // e^{L_c} are moderate, else grouped by |S| with e^{(k−|S|) V} (V the largest L_c)
+    // applied in log space.
     let v = ln_col_miss
         .iter()
         .copied()
         .fold(f64::NEG_INFINITY, f64::max);
+    let moderate = ln_col_miss
+        .iter()
+        .all(|&l| l == f64::NEG_INFINITY || l.abs() * (cols as f64) < 600.0);
     let ln_val = if v == f64::NEG_INFINITY {
         // Every column must be matched.
         if dp[full] > 0.0 {
             ln(dp[full])
+        } else {
+            f64::NEG_INFINITY
+        }
+    } else if moderate {
+        for (f, &l) in group.iter_mut().zip(ln_col_miss) {
+            *f = exp(l);
+        }
+        let mut total = 0.0;
+        for (s, &d) in dp.iter().enumerate() {
+            if d == 0.0 {
+                continue;
+            }
+            let mut f = d;
+            let mut out = full & !s;
+            while out != 0 {
+                let c = out.trailing_zeros() as usize;
+                out &= out - 1;
+                f *= group[c];
+            }
+            total += f;
+        }
+        if total > 0.0 {
+            ln(total)
         } else {
             f64::NEG_INFINITY
         }
@@ -157,13 +190,11 @@ pub(crate) fn ln_sum_matchings(
         )
     };
     // Rigorous underflow bound: each dp entry is built by at most rows·(k+1) roundings, each
-    // losing at most 2^-1074 absolutely to gradual underflow; the column factors are ≤ 1.
-    let ops = (rows as f64 + 1.0) * (cols as f64 + 1.0) * states as f64 * (cols as f64 + 1.0);
-    let ln_err = ln(ops) - 744.44 + if v > 0.0 { cols as f64 * v } else { 0.0 };
-    if ln_val != f64::NEG_INFINITY && ln_val - ln_err > 30.0 {
-        return ln_scale + ln_val;
-    }
-    if rows == 0 {
+    // losing at most 2^-1074 ≈ e^-744.4 absolutely to gradual underflow, the scaled factors
+    // are ≤ 1 and there are 2^k entries: for any rows·(k+1)·2^k ≤ e^44 the total loss is
+    // below e^-700 · e^{k·max(V, 0)}.
+    let ln_err = -700.0 + if v > 0.0 { cols as f64 * v } else { 0.0 };
+    if rows == 0 || (ln_val != f64::NEG_INFINITY && ln_val - ln_err > 30.0) {
         return ln_scale + ln_val;
     }
     ln_sum_matchings_log(rows, cols, ln_pair, ln_row_miss, ln_col_miss, dp)
@@ -218,6 +249,7 @@ pub struct MultiObjectLikelihood {
     clutter_rate: f64,
     ln_detection: f64,
     ln_miss: f64,
+    ln_rate: f64,
 }
 
 impl MultiObjectLikelihood {
@@ -236,6 +268,7 @@ impl MultiObjectLikelihood {
             clutter_rate,
             ln_detection: ln(detection),
             ln_miss: ln_1p(-detection),
+            ln_rate: ln(clutter_rate),
         })
     }
 
@@ -262,7 +295,7 @@ impl MultiObjectLikelihood {
     ) -> f64 {
         let m = ln_clutter.len();
         debug_assert_eq!(ln_g.len(), n * m);
-        let ln_rate = ln(self.clutter_rate);
+        let ln_rate = self.ln_rate;
         let LikelihoodWorkspace {
             dp,
             miss,

@@ -1,0 +1,103 @@
+//! The admissible sensor actions (23) of paper `004`: stay, or move j·ρ₀ along heading
+//! ℓ·θ₀ (θ₀ = 2π/N_θ), j = 1 … N_ρ, ℓ = 1 … N_θ; N_ρ = 2, N_θ = 8, ρ₀ = 50 m give 17 options.
+//! An action outside the area gets the reward −∞.
+
+use alloc::vec::Vec;
+
+use crate::math::fns::{cos, sin};
+use crate::smc::{Area, State};
+
+/// One action of (23).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Action {
+    /// 0 for stay, else 1 + (ring − 1)·N_θ + (heading − 1).
+    pub index: usize,
+    /// j: 0 (stay) … N_ρ; the move is j·ρ₀.
+    pub ring: usize,
+    /// ℓ: 0 for stay, else 1 … N_θ (angle ℓ·θ₀ counter-clockwise from +x).
+    pub heading: usize,
+    /// The sensor location after the action.
+    pub position: State,
+    /// Whether `position` lies in the area (admissible).
+    pub inside: bool,
+}
+
+/// The grid of (23).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ActionGrid {
+    /// N_ρ (2).
+    pub rings: usize,
+    /// N_θ (8).
+    pub headings: usize,
+    /// ρ₀ (50 m).
+    pub step: f64,
+}
+
+impl Default for ActionGrid {
+    fn default() -> Self {
+        Self {
+            rings: 2,
+            headings: 8,
+            step: 50.0,
+        }
+    }
+}
+
+impl ActionGrid {
+    /// The 1 + N_ρ N_θ actions from `from`, stay first, then ring by ring, heading by heading.
+    pub fn actions(&self, from: State, area: &Area) -> Vec<Action> {
+        let mut out = Vec::with_capacity(1 + self.rings * self.headings);
+        out.push(Action {
+            index: 0,
+            ring: 0,
+            heading: 0,
+            position: from,
+            inside: area.contains(from),
+        });
+        let theta0 = core::f64::consts::TAU / self.headings as f64;
+        for j in 1..=self.rings {
+            for l in 1..=self.headings {
+                let a = l as f64 * theta0;
+                let r = j as f64 * self.step;
+                // Snap the rounding of cos/sin at multiples of 90° to exact zeros, so a move
+                // along an edge of the area stays on it.
+                let snap = |v: f64| if v.abs() < 1e-12 { 0.0 } else { v };
+                let p = [from[0] + r * snap(cos(a)), from[1] + r * snap(sin(a))];
+                out.push(Action {
+                    index: out.len(),
+                    ring: j,
+                    heading: l,
+                    position: p,
+                    inside: area.contains(p),
+                });
+            }
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn seventeen_actions_with_corner_exclusions() {
+        let area = Area {
+            lo: [0.0, 0.0],
+            hi: [1000.0, 1000.0],
+        };
+        let acts = ActionGrid::default().actions([500.0, 500.0], &area);
+        assert_eq!(acts.len(), 17);
+        assert!(acts.iter().all(|a| a.inside));
+        assert_eq!(acts[0].position, [500.0, 500.0]);
+        // Heading 2 = 90°, ring 2: 100 m north.
+        let a = acts[1 + 8 + 1];
+        assert_eq!((a.ring, a.heading), (2, 2));
+        assert!((a.position[0] - 500.0).abs() < 1e-9 && (a.position[1] - 600.0).abs() < 1e-9);
+        // From the corner: stay, and headings 1 (45°), 2 (90°, along an edge) and 8 (360°,
+        // along the other edge) in both rings.
+        let acts = ActionGrid::default().actions([0.0, 0.0], &area);
+        let inside: Vec<usize> = acts.iter().filter(|a| a.inside).map(|a| a.index).collect();
+        assert_eq!(inside, [0, 1, 2, 8, 9, 10, 16]);
+    }
+}

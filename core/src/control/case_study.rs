@@ -1,0 +1,555 @@
+//! The case study of paper `004`, Sec. 5: a range-only sensor moving in 𝒜 = [0, 1000]² m,
+//! p_D = 0.95, λ = 0.8 clutter uniform on [0, √2·1000] m, sources at (300, 600) and
+//! (750, 250), σ(x) = 10 + 4·10⁻⁵ ‖x − u‖², N = 750 particles, M = 200 ideal future scans,
+//! and Algorithm 1 with one of four control schemes, scored by OSPA (c = 100, p = 2).
+
+use alloc::vec;
+use alloc::vec::Vec;
+
+use rand::Rng;
+
+use super::actions::{Action, ActionGrid};
+use super::rewards::{fisher_reward, ln_normal, pent_reward, renyi_divergence};
+use crate::error::{Error, Result};
+use crate::gaussian::normal;
+use crate::math::fns::{exp, ln};
+use crate::math::rng::{SeededRng, index, seeded, uniform};
+use crate::metrics::Ospa;
+use crate::smc::{
+    Area, LikelihoodWorkspace, MultiObjectLikelihood, MultiObjectParticles, Regularisation,
+    SetEstimate, State, regularise, resample, reweight, systematic,
+};
+
+/// The range sensor of (19) and (21): z = ‖x − u‖ + v, v ~ N(0, σ²(x)), σ = σ₀ + s‖x − u‖²,
+/// detection p_D, Poisson clutter of rate λ uniform on [0, R_max].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RangeSensor {
+    /// p_D (0.95).
+    pub detection: f64,
+    /// λ (0.8).
+    pub clutter_rate: f64,
+    /// R_max (√2·1000 m).
+    pub max_range: f64,
+    /// σ₀ (10 m).
+    pub sigma0: f64,
+    /// s (4·10⁻⁵ m⁻¹).
+    pub sigma_slope: f64,
+}
+
+impl Default for RangeSensor {
+    fn default() -> Self {
+        Self {
+            detection: 0.95,
+            clutter_rate: 0.8,
+            max_range: core::f64::consts::SQRT_2 * 1000.0,
+            sigma0: 10.0,
+            sigma_slope: 4e-5,
+        }
+    }
+}
+
+impl RangeSensor {
+    /// σ at range d.
+    #[inline]
+    pub fn sigma(&self, d: f64) -> f64 {
+        self.sigma0 + self.sigma_slope * d * d
+    }
+
+    /// ln c(z) (uniform on [0, R_max]; −∞ outside).
+    #[inline]
+    pub fn ln_clutter_density(&self, z: f64) -> f64 {
+        if (0.0..=self.max_range).contains(&z) {
+            -ln(self.max_range)
+        } else {
+            f64::NEG_INFINITY
+        }
+    }
+
+    /// ln g(z | x, u) of (21).
+    #[inline]
+    pub fn ln_g(&self, z: f64, x: State, u: State) -> f64 {
+        let d = libm::hypot(x[0] - u[0], x[1] - u[1]);
+        ln_normal(z, d, self.sigma(d))
+    }
+
+    /// One scan from `u` of the objects `truth`: each detected with p_D, plus Poisson clutter.
+    pub fn scan<R: Rng + ?Sized>(&self, truth: &[State], u: State, rng: &mut R) -> Vec<f64> {
+        let mut z = Vec::new();
+        for x in truth {
+            if uniform(rng) < self.detection {
+                let d = libm::hypot(x[0] - u[0], x[1] - u[1]);
+                z.push(d + self.sigma(d) * normal::sample(rng));
+            }
+        }
+        // Poisson count by inversion (λ is small).
+        let (mut k, mut p) = (0usize, exp(-self.clutter_rate));
+        let (u0, mut cdf) = (uniform(rng), p);
+        while u0 > cdf && k < 10_000 {
+            k += 1;
+            p *= self.clutter_rate / k as f64;
+            cdf += p;
+        }
+        for _ in 0..k {
+            z.push(self.max_range * uniform(rng));
+        }
+        z
+    }
+
+    /// ln g(Z | X, u) of (20) for the particle `set`.
+    pub fn ln_likelihood(
+        &self,
+        model: &MultiObjectLikelihood,
+        set: &[State],
+        z: &[f64],
+        u: State,
+        ws: &mut LikelihoodWorkspace,
+        buf: &mut Vec<f64>,
+    ) -> f64 {
+        let ln_c: Vec<f64> = z.iter().map(|&z| self.ln_clutter_density(z)).collect();
+        buf.clear();
+        for &x in set {
+            buf.extend(z.iter().map(|&zj| self.ln_g(zj, x, u)));
+        }
+        model.ln_likelihood_from_logs(set.len(), buf, &ln_c, ws)
+    }
+}
+
+/// The four control schemes compared in Fig. 3.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scheme {
+    /// The expected Rényi divergence (15)–(17).
+    Renyi,
+    /// The trace of the Fisher information gain (27)–(29).
+    Fisher,
+    /// PENT (30)–(34).
+    Pent,
+    /// Uniformly random among the admissible actions.
+    Random,
+}
+
+/// Settings of one run of Algorithm 1.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ControlConfig {
+    /// The control scheme.
+    pub scheme: Scheme,
+    /// N (750).
+    pub particles: usize,
+    /// M (200): ideal future scans per step (Rényi only).
+    pub future_scans: usize,
+    /// α of the Rényi divergence (0.5); α = 1 is the Kullback–Leibler divergence.
+    pub alpha: f64,
+    /// K: the number of steps.
+    pub steps: usize,
+    /// The sensor's initial location (the paper does not state it; default [0, 0]).
+    pub start: State,
+    /// n_max (4; the paper does not state it).
+    pub max_objects: usize,
+    /// 𝒜.
+    pub area: Area,
+    /// The true objects.
+    pub truth: Vec<State>,
+    /// The sensor.
+    pub sensor: RangeSensor,
+    /// The actions (23).
+    pub actions: ActionGrid,
+    /// The regularisation (Sec. 5.2).
+    pub regularisation: Regularisation,
+}
+
+impl ControlConfig {
+    /// The paper's case study with `scheme` and K = `steps`.
+    pub fn paper(scheme: Scheme, steps: usize) -> Self {
+        Self {
+            scheme,
+            particles: 750,
+            future_scans: 200,
+            alpha: 0.5,
+            steps,
+            start: [0.0, 0.0],
+            max_objects: 4,
+            area: Area {
+                lo: [0.0, 0.0],
+                hi: [1000.0, 1000.0],
+            },
+            truth: vec![[300.0, 600.0], [750.0, 250.0]],
+            sensor: RangeSensor::default(),
+            actions: ActionGrid::default(),
+            regularisation: Regularisation::default(),
+        }
+    }
+
+    /// Checks the fields (names as in the bindings).
+    pub fn validate(&self) -> Result<()> {
+        if self.particles == 0 {
+            return Err(Error::parameter("particles", 0.0, "≥ 1"));
+        }
+        if self.future_scans == 0 {
+            return Err(Error::parameter("futureScans", 0.0, "≥ 1"));
+        }
+        if !(self.alpha.is_finite() && self.alpha > 0.0) {
+            return Err(Error::parameter("alpha", self.alpha, "finite and > 0"));
+        }
+        if self.steps == 0 {
+            return Err(Error::parameter("steps", 0.0, "≥ 1"));
+        }
+        if !(1..=8).contains(&self.max_objects) {
+            return Err(Error::parameter(
+                "maxObjects",
+                self.max_objects as f64,
+                "an integer in [1, 8]",
+            ));
+        }
+        if !self.area.contains(self.start) {
+            return Err(Error::parameter(
+                "start",
+                if self.start[0].is_finite() {
+                    self.start[1]
+                } else {
+                    self.start[0]
+                },
+                "a point of the area [0, 1000]²",
+            ));
+        }
+        MultiObjectLikelihood::new(self.sensor.detection, self.sensor.clutter_rate)?;
+        Ok(())
+    }
+}
+
+/// What one step of Algorithm 1 produced.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepOutcome {
+    /// k (1-based).
+    pub k: usize,
+    /// Where Z_k was taken.
+    pub sensor: State,
+    /// Z_k.
+    pub measurements: Vec<f64>,
+    /// u_k, the action chosen after the update.
+    pub action: Action,
+    /// The reward of each of the actions (−∞ outside the area).
+    pub rewards: Vec<f64>,
+    /// X̂_k.
+    pub estimate: SetEstimate,
+    /// OSPA (c = 100, p = 2) of X̂_k against the truth: (distance, localisation, cardinality).
+    pub ospa: [f64; 3],
+}
+
+/// One run of Algorithm 1.
+#[derive(Clone, Debug)]
+pub struct ControlRun {
+    config: ControlConfig,
+    model: MultiObjectLikelihood,
+    world: SeededRng,
+    rng: SeededRng,
+    particles: MultiObjectParticles,
+    path: Vec<State>,
+    measurements: Vec<Vec<f64>>,
+    k: usize,
+}
+
+impl ControlRun {
+    /// A run seeded by `seed` (the scans and the filter draw from two streams derived from it).
+    pub fn new(config: ControlConfig, seed: u64) -> Result<Self> {
+        config.validate()?;
+        let model =
+            MultiObjectLikelihood::new(config.sensor.detection, config.sensor.clutter_rate)?;
+        let path = vec![config.start];
+        let max_objects = config.max_objects;
+        Ok(Self {
+            config,
+            model,
+            world: seeded(seed),
+            rng: seeded(seed ^ 0x9e37_79b9_7f4a_7c15),
+            particles: MultiObjectParticles {
+                sets: Vec::new(),
+                weights: Vec::new(),
+                max_objects,
+            },
+            path,
+            measurements: Vec::new(),
+            k: 0,
+        })
+    }
+
+    /// The settings.
+    pub fn config(&self) -> &ControlConfig {
+        &self.config
+    }
+    /// The particles (empty before the first step).
+    pub fn particles(&self) -> &MultiObjectParticles {
+        &self.particles
+    }
+    /// The start and every location moved to.
+    pub fn sensor_path(&self) -> &[State] {
+        &self.path
+    }
+    /// Z_1 … Z_k.
+    pub fn measurements(&self) -> &[Vec<f64>] {
+        &self.measurements
+    }
+    /// Steps done.
+    pub fn k(&self) -> usize {
+        self.k
+    }
+
+    /// One step of Algorithm 1: scan, (initialise,) reweight by (20), resample and
+    /// regularise, estimate, score, choose the next action.
+    ///
+    /// # Errors
+    /// [`Error::Unsupported`] naming `steps` once K steps are done.
+    pub fn step(&mut self) -> Result<StepOutcome> {
+        if self.k >= self.config.steps {
+            return Err(Error::Unsupported {
+                what: "steps".into(),
+                reason: "the run has done all its steps",
+            });
+        }
+        let cfg = &self.config;
+        let u = *self.path.last().unwrap_or(&cfg.start);
+        let z = cfg.sensor.scan(&cfg.truth, u, &mut self.world);
+        if self.k == 0 {
+            let sensor = cfg.sensor;
+            self.particles = MultiObjectParticles::from_ranges(
+                cfg.particles,
+                cfg.max_objects,
+                &cfg.area,
+                u,
+                &z,
+                |r| sensor.sigma(r),
+                &mut self.rng,
+            );
+        }
+        let (mut ws, mut buf) = (LikelihoodWorkspace::new(), Vec::new());
+        let (sensor, model) = (cfg.sensor, self.model);
+        reweight(&mut self.particles, |set| {
+            sensor.ln_likelihood(&model, set, &z, u, &mut ws, &mut buf)
+        });
+        resample(&mut self.particles, &mut self.rng);
+        regularise(
+            &mut self.particles,
+            &cfg.area,
+            &cfg.regularisation,
+            &mut self.rng,
+        );
+        let estimate = self.particles.estimate();
+        let ospa = Ospa::new(100.0, 2.0)?.decompose(&cfg.truth, &estimate.states)?;
+        let actions = cfg.actions.actions(u, &cfg.area);
+        let rewards = rewards(
+            cfg,
+            &self.model,
+            &self.particles,
+            &estimate,
+            u,
+            &actions,
+            &mut self.rng,
+        );
+        let chosen = choose(&rewards, cfg.scheme, &mut self.rng);
+        let action = actions[chosen];
+        self.path.push(action.position);
+        self.measurements.push(z.clone());
+        self.k += 1;
+        Ok(StepOutcome {
+            k: self.k,
+            sensor: u,
+            measurements: z,
+            action,
+            rewards,
+            estimate,
+            ospa: [ospa.distance, ospa.localisation, ospa.cardinality],
+        })
+    }
+}
+
+/// The index of the largest reward (the first on ties), or for [`Scheme::Random`] a uniform
+/// admissible one; stay when nothing is admissible.
+fn choose<R: Rng + ?Sized>(rewards: &[f64], scheme: Scheme, rng: &mut R) -> usize {
+    let admissible: Vec<usize> = (0..rewards.len())
+        .filter(|&i| rewards[i] > f64::NEG_INFINITY)
+        .collect();
+    if admissible.is_empty() {
+        return 0;
+    }
+    if scheme == Scheme::Random {
+        return admissible[index(rng, admissible.len())];
+    }
+    let mut best = admissible[0];
+    for &i in &admissible {
+        if rewards[i] > rewards[best] {
+            best = i;
+        }
+    }
+    best
+}
+
+/// The rewards of every action for the scheme of `cfg` (−∞ outside the area).
+fn rewards<R: Rng + ?Sized>(
+    cfg: &ControlConfig,
+    model: &MultiObjectLikelihood,
+    particles: &MultiObjectParticles,
+    estimate: &SetEstimate,
+    _from: State,
+    actions: &[Action],
+    rng: &mut R,
+) -> Vec<f64> {
+    let sensor = cfg.sensor;
+    let per_action = |a: &Action, scans: &FutureScans, ws: &mut LikelihoodWorkspace| -> f64 {
+        if !a.inside {
+            return f64::NEG_INFINITY;
+        }
+        let u = a.position;
+        match cfg.scheme {
+            Scheme::Random => 0.0,
+            Scheme::Fisher => fisher_reward(&estimate.states, u, |d| sensor.sigma(d)),
+            Scheme::Pent => pent_reward(
+                &estimate.states,
+                u,
+                particles
+                    .weights
+                    .iter()
+                    .copied()
+                    .zip(particles.sets.iter().map(|s| s.as_slice())),
+                sensor.detection,
+                |z| sensor.clutter_rate * exp(sensor.ln_clutter_density(z)),
+                |z, x| sensor.ln_g(z, x, u),
+            ),
+            Scheme::Renyi => renyi_reward(cfg, model, particles, u, scans, ws),
+        }
+    };
+    let scans = if cfg.scheme == Scheme::Renyi {
+        FutureScans::draw(particles, cfg.future_scans, cfg.max_objects, rng)
+    } else {
+        FutureScans::default()
+    };
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        actions
+            .par_iter()
+            .map_init(LikelihoodWorkspace::new, |ws, a| per_action(a, &scans, ws))
+            .collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        let mut ws = LikelihoodWorkspace::new();
+        actions
+            .iter()
+            .map(|a| per_action(a, &scans, &mut ws))
+            .collect()
+    }
+}
+
+/// The ideal future scans (Sec. 5.2: p_D = 1, no clutter), drawn once per step and shared
+/// by every action (common random numbers): scan j is the particle `picks[j]` (drawn by
+/// weight) seen with standard normal noise `noise[j·n_max + o]` on its object o.
+#[derive(Clone, Debug, Default)]
+struct FutureScans {
+    picks: Vec<usize>,
+    noise: Vec<f64>,
+    stride: usize,
+}
+
+impl FutureScans {
+    fn draw<R: Rng + ?Sized>(
+        p: &MultiObjectParticles,
+        m: usize,
+        stride: usize,
+        rng: &mut R,
+    ) -> Self {
+        let mut picks = systematic(&p.weights, m, rng);
+        // Systematic picks are ordered; shuffle is unnecessary for a mean, keep them.
+        picks.truncate(m);
+        let noise = (0..m * stride).map(|_| normal::sample(rng)).collect();
+        Self {
+            picks,
+            noise,
+            stride,
+        }
+    }
+}
+
+/// E[D(u)] (17) as the plain mean over the ideal future scans (see [`super::rewards`]).
+fn renyi_reward(
+    cfg: &ControlConfig,
+    model: &MultiObjectLikelihood,
+    p: &MultiObjectParticles,
+    u: State,
+    scans: &FutureScans,
+    ws: &mut LikelihoodWorkspace,
+) -> f64 {
+    let sensor = cfg.sensor;
+    // Per object of every particle: the range h, σ and ln of the normal's constant.
+    let mut offsets = Vec::with_capacity(p.len() + 1);
+    let (mut h, mut s, mut c) = (Vec::new(), Vec::new(), Vec::new());
+    offsets.push(0);
+    for set in &p.sets {
+        for x in set {
+            let d = libm::hypot(x[0] - u[0], x[1] - u[1]);
+            let sig = sensor.sigma(d);
+            h.push(d);
+            s.push(1.0 / sig);
+            c.push(-ln(sig) - 0.918_938_533_204_672_8);
+        }
+        offsets.push(h.len());
+    }
+    let ln_w: Vec<f64> = p.weights.iter().map(|&w| ln(w)).collect();
+    let mut ln_l = vec![0.0; p.len()];
+    let (mut z, mut ln_c, mut ln_g) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut sum, mut count) = (0.0, 0usize);
+    for (j, &pick) in scans.picks.iter().enumerate() {
+        z.clear();
+        for o in offsets[pick]..offsets[pick + 1] {
+            let e = scans.noise[j * scans.stride + (o - offsets[pick])];
+            z.push(h[o] + e / s[o]);
+        }
+        ln_c.clear();
+        ln_c.extend(z.iter().map(|&zj| sensor.ln_clutter_density(zj)));
+        for (i, l) in ln_l.iter_mut().enumerate() {
+            ln_g.clear();
+            for o in offsets[i]..offsets[i + 1] {
+                for &zj in &z {
+                    let v = (zj - h[o]) * s[o];
+                    ln_g.push(c[o] - 0.5 * v * v);
+                }
+            }
+            *l = model.ln_likelihood_from_logs(offsets[i + 1] - offsets[i], &ln_g, &ln_c, ws);
+        }
+        if let Some(d) = renyi_divergence(&ln_w, &ln_l, cfg.alpha) {
+            sum += d;
+            count += 1;
+        }
+    }
+    if count == 0 { 0.0 } else { sum / count as f64 }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_reduced_run_localises_both_sources() {
+        let mut cfg = ControlConfig::paper(Scheme::Renyi, 30);
+        cfg.particles = 300;
+        cfg.future_scans = 40;
+        let mut run = ControlRun::new(cfg, 5).unwrap();
+        let t = std::time::Instant::now();
+        let mut last = None;
+        for _ in 0..30 {
+            let s = run.step().unwrap();
+            assert_eq!(s.rewards.len(), 17);
+            assert!(s.rewards.iter().all(|r| !r.is_nan()));
+            std::println!(
+                "k={} n̂={} ospa={:?} u={:?}",
+                s.k,
+                s.estimate.cardinality,
+                s.ospa,
+                s.action.position
+            );
+            last = Some(s);
+        }
+        std::println!("{:?}", t.elapsed());
+        let last = last.unwrap();
+        assert_eq!(last.estimate.cardinality, 2);
+        assert!(run.step().is_err());
+        assert_eq!(run.sensor_path().len(), 31);
+    }
+}
