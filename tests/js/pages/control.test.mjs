@@ -139,5 +139,5 @@ test('control: a tiny comparison moves the progress bar and the Fig. 3 charts', 
     lines.slice(1).forEach((l, t) => assert.deepEqual(l.split(',').map(Number), [t + 1, ...['renyi', 'fisher', 'pent', 'random'].map((sc) => fig3.stats[sc][part].mean[t])], figure));
   }
   await page.locator('#fig3a').scrollIntoViewIfNeeded();
-  await browser.done(page, 'control');
+  await browser.done(page, 'control-compare');
 });
