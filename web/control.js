@@ -12,7 +12,7 @@ const SCHEMES = ['renyi', 'fisher', 'pent', 'random'];
 const SCHEME_LABEL = { renyi: 'Rényi divergence', fisher: 'Fisher information', pent: 'PENT', random: 'random' };
 const SCHEME_COLOUR = { renyi: CATEGORICAL[0], fisher: CATEGORICAL[1], pent: CATEGORICAL[2], random: CATEGORICAL[3] };
 const [PINK, CYAN, GREEN, RED] = ['#cc79a7', '#0e9bd6', '#009e73', '#d55e00'];
-const OBJECT_COLOURS = ['#1f2933', '#0072b2', '#7c3aed', '#b45309', '#0e7490'];
+const OBJECT_COLOURS = ['#1f2933', '#0072b2', '#7c3aed', '#0f766e']; // clear of the estimate's vermillion
 const AREA = 1000; // the surveillance area A = [0, 1000]² m (Sec. 5.1)
 const OSPA_C = 100; // the cut-off c = 100 m (Sec. 5.3)
 
@@ -206,6 +206,11 @@ const runChart = chart($('run-chart'), {
     { label: 'localisation', colour: CATEGORICAL[0], width: 1.6, dash: [6, 4] },
     { label: 'cardinality', colour: CATEGORICAL[1], width: 1.6, dash: [2, 3] },
   ],
+  overlay({ ctx, x, y }) { // the last scan's values as dots (a single scan draws no line)
+    const h = live.history.at(-1);
+    if (!h) return;
+    [['distance', '#1f2933'], ['localisation', CATEGORICAL[0]], ['cardinality', CATEGORICAL[1]]].forEach(([part, colour]) => dot(ctx, x(h.k), y(h[part]), 3.5, colour, '#fff', 1));
+  },
 });
 
 function drawLive() {
@@ -244,7 +249,7 @@ const fig3Chart = (id, part, label) => chart($(id), {
       st.mean.forEach((m, t) => ctx.lineTo(x(t + 1), y(m + st.standardError[t])));
       for (let t = st.mean.length - 1; t >= 0; t--) ctx.lineTo(x(t + 1), y(Math.max(st.mean[t] - st.standardError[t], 0)));
       ctx.closePath();
-      ctx.fillStyle = `${SCHEME_COLOUR[s]}2e`;
+      ctx.fillStyle = `${SCHEME_COLOUR[s]}1f`;
       ctx.fill();
     }
   },
