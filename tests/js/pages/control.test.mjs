@@ -141,3 +141,27 @@ test('control: a tiny comparison moves the progress bar and the Fig. 3 charts', 
   await page.locator('#fig3a').scrollIntoViewIfNeeded();
   await browser.done(page, 'control-compare');
 });
+
+test('control: the page keeps answering while the worker runs a paper-size Rényi step', async () => {
+  const page = await browser.open('control.html'); // N = 750, M = 200: about 1.7 s a step
+  await page.locator('#step').click();
+  assert.match(await text(page, '#status'), /^scan 2 of 40…/);
+  // While the step runs, frames keep coming and a click is handled at once.
+  const gaps = await page.evaluate(() => new Promise((resolve) => {
+    const out = [];
+    let last = performance.now();
+    const frame = (t) => {
+      out.push(t - last);
+      last = t;
+      if (out.length < 20) requestAnimationFrame(frame);
+      else resolve(out);
+    };
+    requestAnimationFrame(frame);
+  }));
+  assert.ok(Math.max(...gaps.slice(1)) < 250, `frame gaps ${gaps.map((g) => g.toFixed(0))} ms`);
+  assert.match(await text(page, '#status'), /^scan 2 of 40…/, 'the step was still running');
+  await page.locator('details summary').click();
+  assert.equal(await page.locator('details').evaluate((el) => el.open), true);
+  await waitForScan(page, 2);
+  await browser.done(page);
+});
