@@ -502,9 +502,13 @@ pub struct SchemeComparison {
 
 /// Result of `compareSchemes`.
 #[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
 pub struct CompareSchemesResult {
     /// The master seed used.
     pub seed: u64,
+    /// The seed of run r (the same for every scheme; 53-bit integers): `new
+    /// SensorControlRun({ seed: runSeeds[r], scheme, … })` repeats that run exactly.
+    pub run_seeds: Vec<u64>,
     /// Runs per scheme.
     pub runs: usize,
     /// K.
@@ -563,6 +567,7 @@ pub fn compare_schemes(
     })?;
     write(&CompareSchemesResult {
         seed,
+        run_seeds: fisst::control::run_seeds(seed, o.runs),
         runs: o.runs,
         steps: o.steps,
         schemes: out

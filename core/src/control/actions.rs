@@ -63,6 +63,9 @@ impl ActionGrid {
                 // along an edge of the area stays on it.
                 let snap = |v: f64| if v.abs() < 1e-12 { 0.0 } else { v };
                 let p = [from[0] + r * snap(cos(a)), from[1] + r * snap(sin(a))];
+                // A move back along a diagonal to an edge or corner lands a rounding error
+                // outside it (x = −1.4e-14 for the corner): within 1e-9 of the step, on it.
+                let p = area.snap_to_edge(p, 1e-9 * self.step);
                 out.push(Action {
                     index: out.len(),
                     ring: j,
@@ -99,5 +102,24 @@ mod tests {
         let acts = ActionGrid::default().actions([0.0, 0.0], &area);
         let inside: Vec<usize> = acts.iter().filter(|a| a.inside).map(|a| a.index).collect();
         assert_eq!(inside, [0, 1, 2, 8, 9, 10, 16]);
+    }
+
+    #[test]
+    fn a_diagonal_move_back_to_the_corner_is_inside() {
+        // Found by the page's Node tests: from (70.71…, 70.71…) the 100 m move at 225° ends
+        // at x = −1.4e-14 by rounding, and was excluded.
+        let area = Area {
+            lo: [0.0, 0.0],
+            hi: [1000.0, 1000.0],
+        };
+        let h = 100.0 * core::f64::consts::FRAC_1_SQRT_2;
+        let acts = ActionGrid::default().actions([h, h], &area);
+        let a = acts[1 + 8 + 4];
+        assert_eq!((a.ring, a.heading), (2, 5));
+        assert!(a.inside, "{:?}", a.position);
+        assert!(a.position[0].abs() < 1e-12 && a.position[1].abs() < 1e-12);
+        // A real step outside stays outside.
+        let acts = ActionGrid::default().actions([10.0, 10.0], &area);
+        assert!(!acts[1 + 8 + 4].inside);
     }
 }

@@ -30,6 +30,20 @@ impl Area {
         p[0] >= self.lo[0] && p[0] <= self.hi[0] && p[1] >= self.lo[1] && p[1] <= self.hi[1]
     }
 
+    /// `p` moved onto the boundary of the area where it lies outside by at most `tol` in a
+    /// coordinate (rounding of a move that ends on an edge); otherwise `p` unchanged.
+    pub fn snap_to_edge(&self, p: State, tol: f64) -> State {
+        let mut q = p;
+        for d in 0..2 {
+            if q[d] < self.lo[d] && self.lo[d] - q[d] <= tol {
+                q[d] = self.lo[d];
+            } else if q[d] > self.hi[d] && q[d] - self.hi[d] <= tol {
+                q[d] = self.hi[d];
+            }
+        }
+        q
+    }
+
     /// A uniform draw from the area.
     pub fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> State {
         [
