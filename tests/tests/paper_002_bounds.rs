@@ -460,3 +460,39 @@ fn a_non_gaussian_prior_and_variable_detection_stay_below_the_mse() {
     assert!(z > -4.0);
     assert!(b.regular);
 }
+
+#[test]
+fn fig_3_enumeration_dominates_irf_and_they_meet() {
+    // Fig. 3: σf² = 100 (J0 = 1/100), σh² = 25 (J1 = 1/25), r = 1.
+    use fisst::bounds::{Sequential, sequential_bound};
+    for &p in &[0.2, 0.5, 0.8, 1.0] {
+        let e = sequential_bound(Sequential::Enumeration, 0.01, 0.04, p, 200).unwrap();
+        let i = sequential_bound(Sequential::Irf, 0.01, 0.04, p, 200).unwrap();
+        for k in 0..200 {
+            assert!(e[k] >= i[k] * (1.0 - 1e-14));
+            if p == 1.0 {
+                assert!((e[k] - i[k]).abs() <= 1e-14 * e[k]);
+            }
+        }
+        // decreasing in k, and asymptotically the same (relative gap shrinks)
+        assert!(e.windows(2).all(|w| w[1] <= w[0]));
+        assert!((e[199] - i[199]) / i[199] < (e[4] - i[4]) / i[4] + 1e-15);
+        println!(
+            "Fig. 3 P_o {p}: P_1 Enum {:.3} IRF {:.3}; P_200 Enum {:.4} IRF {:.4}",
+            e[0], i[0], e[199], i[199]
+        );
+    }
+}
+
+#[test]
+fn vector_bounds_reduce_to_the_scalar_ones() {
+    let v = bounds::component_bounds_no_clutter(0.6, 0.7, &[25.0], &[100.0], 150.0, 200.0).unwrap();
+    let s = bounds::gaussian_no_clutter(0.6, 0.7, 100.0, 25.0, 150.0, 200.0).unwrap();
+    assert!((v[0].bound - s.bound).abs() < 1e-12);
+    // A 2D state with independent components: the component bounds use e²/2 and 2σ_{e,i}².
+    // P = diag(4, 9), H = I, R = I: [J_1⁻¹]_ii = 4/5, 9/10 (the matrix form is unit-tested).
+    let c = bounds::component_bounds_no_clutter(0.6, 0.7, &[0.8, 0.9], &[4.0, 9.0], 10.0, 30.0)
+        .unwrap();
+    let one = bounds::corollary3(0.6, 0.7, 0.8, 4.0, 5.0, 15.0).unwrap();
+    assert_eq!(c[0], one);
+}

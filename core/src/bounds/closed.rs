@@ -339,9 +339,15 @@ pub fn gaussian_fisher_information(
     check_positive("priorVariance", prior_variance)?;
     check_finite("gain", gain)?;
     check_positive("noiseVariance", noise_variance)?;
-    let information = 1.0 / prior_variance + gain * gain / noise_variance;
-    let posterior_variance =
-        prior_variance * noise_variance / (noise_variance + gain * gain * prior_variance);
+    let t = gain * gain / noise_variance;
+    let information = 1.0 / prior_variance + t;
+    // σx² / (1 + σx² a²/σv²): no overflow for huge σx², exact σx² for a = 0
+    let pt = prior_variance * t;
+    let posterior_variance = if pt.is_finite() {
+        prior_variance / (1.0 + pt)
+    } else {
+        1.0 / t
+    };
     Ok(GaussianInformation {
         information,
         posterior_variance,
@@ -389,11 +395,11 @@ pub fn sequential_bound(
         out.push(match method {
             Sequential::Irf => 1.0 / (j0 + k as f64 * p * gain),
             Sequential::Enumeration => {
-                let mut s = crate::math::NeumaierSum::default();
-                for m in 0..=k {
-                    s.add(binomial_pmf(k, m, p) / (j0 + m as f64 * gain));
-                }
-                s.total()
+                // positive terms: no cancellation to compensate (and a compensated sum
+                // would turn an overflowing 1/J_0 into NaN)
+                (0..=k)
+                    .map(|m| binomial_pmf(k, m, p) / (j0 + m as f64 * gain))
+                    .sum::<f64>()
             }
         });
     }

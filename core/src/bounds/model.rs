@@ -49,6 +49,11 @@ pub trait Observation {
     fn d2_ln_likelihood(&self, z: f64, x: f64) -> f64;
     /// An interval of z holding g(·|x) for every x in [x_lo, x_hi].
     fn z_range(&self, x_lo: f64, x_hi: f64) -> (f64, f64);
+    /// The part of [x_lo, x_hi] where g(z|x) is not negligible, so that ∫ f(x) g(z|x) dx can
+    /// skip the rest (default: all of it).
+    fn x_range(&self, _z: f64, x_lo: f64, x_hi: f64) -> (f64, f64) {
+        (x_lo, x_hi)
+    }
     /// ∫_a^b g(z|x) dz (default: quadrature).
     fn likelihood_mass(&self, a: f64, b: f64, x: f64) -> f64 {
         quadrature::integrate(&mut |z| self.likelihood(z, x), &[a, b], 1e-12, 200, &|| {
@@ -506,6 +511,17 @@ impl Observation for LinearGaussian {
         );
         let s = GAUSSIAN_SPAN * fns::sqrt(self.noise_variance);
         (a.min(b) - s, a.max(b) + s)
+    }
+    fn x_range(&self, z: f64, x_lo: f64, x_hi: f64) -> (f64, f64) {
+        if self.gain == 0.0 {
+            return (x_lo, x_hi);
+        }
+        let s = GAUSSIAN_SPAN * fns::sqrt(self.noise_variance);
+        let (u, v) = (
+            (z - self.offset - s) / self.gain,
+            (z - self.offset + s) / self.gain,
+        );
+        (u.min(v).max(x_lo), u.max(v).min(x_hi))
     }
     fn likelihood_mass(&self, a: f64, b: f64, x: f64) -> f64 {
         normal_mass(a, b, self.gain * x + self.offset, self.noise_variance)

@@ -172,6 +172,7 @@ pub(crate) fn marginal(
         return 0.0;
     }
     let (lo, hi) = prior.support();
+    let (lo, hi) = obs.x_range(z, lo, hi);
     integrate(
         &mut |x| prior.pdf(x) * obs.detection(x) * obs.likelihood(z, x),
         lo,
@@ -196,9 +197,10 @@ pub(crate) fn region(h: &mut dyn FnMut(f64) -> f64, lo: f64, hi: f64) -> Vec<(f6
         if inside != prev_in {
             // bisect [prev_x, x] for the switch
             let (mut a, mut b) = (prev_x, x);
+            let resolution = 1e-13 * (hi - lo);
             for _ in 0..64 {
                 let m = 0.5 * (a + b);
-                if !(a < m && m < b) {
+                if !(a < m && m < b) || b - a < resolution {
                     break;
                 }
                 if (h(m) >= 0.0) == prev_in {
@@ -301,6 +303,45 @@ pub struct ModelI<'a> {
     pub miss_error: f64,
 }
 
+/// The interval must be finite with a finite, positive width (so quadrature can cover it).
+pub(crate) fn check_interval(what: &'static str, (lo, hi): (f64, f64)) -> Result<()> {
+    let w = hi - lo;
+    if lo.is_finite() && hi.is_finite() && w.is_finite() && w > 0.0 && w < 1e150 {
+        Ok(())
+    } else {
+        Err(Error::Unsupported {
+            what: what.into(),
+            reason: "its support must be a finite interval narrower than 1e150",
+        })
+    }
+}
+
+/// A NaN anywhere in the result is an error, never a silent number.
+pub(crate) fn check_result(b: JdeBound) -> Result<JdeBound> {
+    let a = &b.assembled;
+    if [
+        a.bound,
+        a.hpe,
+        a.lpe,
+        b.error,
+        b.eta,
+        b.mean_detection,
+        b.undetected_variance,
+    ]
+    .iter()
+    .any(|v| v.is_nan())
+        || b.cardinalities
+            .iter()
+            .any(|c| c.w.is_nan() || c.inverse_information.is_nan())
+    {
+        return Err(Error::Unsupported {
+            what: "prior".into(),
+            reason: "the integrals did not converge at this scale (NaN); rescale the problem",
+        });
+    }
+    Ok(b)
+}
+
 pub(crate) fn check_common(r: f64, e0: f64, e1: f64, s: &Settings) -> Result<()> {
     check_probability(|| "existence".into(), r)?;
     check_nonnegative("falseAlarmError", e0)?;
@@ -323,8 +364,13 @@ pub fn theorem1(m: &ModelI<'_>, s: &Settings) -> Result<JdeBound> {
     check_common(r, m.false_alarm_error, m.miss_error, s)?;
     check_probability(|| "falseAlarm.probability".into(), q)?;
     let tol = s.tolerance;
-    let st = prior_stats(m.prior, m.observation, tol);
+    check_interval("prior", m.prior.support())?;
     let (xl, xh) = m.prior.support();
+    check_interval("observation", m.observation.z_range(xl, xh))?;
+    if q > 0.0 {
+        check_interval("falseAlarm.density", m.false_alarm_density.support())?;
+    }
+    let st = prior_stats(m.prior, m.observation, tol);
     let (zl, zh) = m.observation.z_range(xl, xh);
     // Z'_0 (19): r P̄o m(z) ≥ (1 − r) q ψ(z), i.e. β_b ≥ (1 − r)/(r P̄o).
     let zone = if q == 0.0 {
@@ -361,7 +407,7 @@ pub fn theorem1(m: &ModelI<'_>, s: &Settings) -> Result<JdeBound> {
     });
     let error = r * st.p_bar * (einv + ew * m.miss_error)
         + r * st.error * (m.miss_error + st.sigma_e2 + 1.0);
-    Ok(JdeBound {
+    check_result(JdeBound {
         assembled,
         mean_detection: st.p_bar,
         undetected_mean: st.x_star,

@@ -21,8 +21,8 @@ use alloc::vec::Vec;
 use crate::bounds::closed::{Ingredients, assemble, check_nonnegative, poisson_pmf};
 use crate::bounds::model::{Density, Observation};
 use crate::bounds::theorem::{
-    Cardinality, JdeBound, Method, Settings, check_common, detected_parts, inverse_information,
-    marginal, prior_stats, region,
+    Cardinality, JdeBound, Method, Settings, check_common, check_interval, check_result,
+    detected_parts, inverse_information, marginal, prior_stats, region,
 };
 use crate::error::{Error, Result};
 use crate::math::fns;
@@ -86,6 +86,14 @@ pub fn theorem2(m: &ModelII<'_>, s: &Settings) -> Result<JdeBound> {
     }
     let tol = s.tolerance;
     let (prior, obs, clutter) = (m.prior, m.observation, m.clutter_density);
+    check_interval("prior", prior.support())?;
+    check_interval(
+        "observation",
+        obs.z_range(prior.support().0, prior.support().1),
+    )?;
+    if lambda > 0.0 {
+        check_interval("clutter.density", clutter.support())?;
+    }
     let st = prior_stats(prior, obs, tol);
     let p = st.p_bar;
     let (xl, xh) = prior.support();
@@ -209,7 +217,7 @@ pub fn theorem2(m: &ModelII<'_>, s: &Settings) -> Result<JdeBound> {
     let error = r * p * (err_s + m.miss_error * err_w)
         + coef_eta * err_eta
         + r * st.error * (m.miss_error + st.sigma_e2 + 1.0);
-    Ok(JdeBound {
+    check_result(JdeBound {
         assembled,
         mean_detection: p,
         undetected_mean: st.x_star,

@@ -381,6 +381,16 @@ export const specs = [
         },
       ]),
   },
+  {
+    name: 'jdeExample2',
+    roots: ['options'],
+    weight: 0.2,
+    maxMs: 2000,
+    args: fc
+      .record({ existence: probability, detectionProbability: probability, falseAlarmProbability: probability, falseAlarmError: fc.double({ min: 0, max: 10, noNaN: true }), missError: fc.double({ min: 0, max: 10, noNaN: true }) }, { requiredKeys: ['existence', 'detectionProbability', 'falseAlarmProbability', 'falseAlarmError'] })
+      .map((o) => [o]),
+  },
+  { name: 'jdeExample2Regularity', roots: [], weight: 0.02, maxMs: 2000, args: fc.constant([]) },
   { name: 'version', roots: [], weight: 0.05, args: fc.constant([]) },
 ];
 

@@ -115,3 +115,7 @@ const jb2: fisst.JdeBoundResult = fisst.jdeBound({ model: 'II', existence: 0.6, 
 const perN: number[] = jb2.cardinalities.map((c) => c.inverseInformation);
 // @ts-expect-error: a misspelt option ('existance') is not in JdeBoundNoClutterOptions
 fisst.jdeBoundNoClutter({ existance: 0.7, detectionProbability: 0.4, priorVariance: 100, posteriorVariance: 25, falseAlarmError: 150, missError: 200 });
+const ex2: fisst.JdeExample2Result = fisst.jdeExample2({ existence: 0.6, detectionProbability: 0.5, falseAlarmProbability: 0.3, falseAlarmError: 1.2 });
+const ex2Curves: [number, number] = [ex2.bound, ex2.paperBound];
+const ex2Reg: fisst.JdeExample2RegularityResult = fisst.jdeExample2Regularity();
+const notABound: boolean = ex2Reg.inverseInformation > ex2Reg.posteriorMeanMse;

@@ -1,6 +1,7 @@
 use super::{assert_throws, get, js, num, nums};
 use fisst_wasm::{
-    gaussian_fisher_information, jde_bound, jde_bound_no_clutter, jde_sequential_bound,
+    gaussian_fisher_information, jde_bound, jde_bound_no_clutter, jde_example2,
+    jde_example2_regularity, jde_sequential_bound,
 };
 use wasm_bindgen_test::wasm_bindgen_test;
 
