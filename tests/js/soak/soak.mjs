@@ -15,7 +15,7 @@ const box = { box: { min: [-1, -1], max: [1, 1] } };
 /** Per function (or class, with a driver below): a few cheap valid argument lists and a few
  * malformed ones. */
 export const cases = {
-  jdeExample2: [[{ existence: 0.6, detectionProbability: 0.5, falseAlarmProbability: 0.3, falseAlarmError: 1.2 }], [{ existence: 0.6, detectionProbability: 0.5, falseAlarmProbability: 3, falseAlarmError: 1.2 }]],
+  jdeExample2: [[{ existence: 0.6, detectionProbability: 0.5, falseAlarmProbability: 0, falseAlarmError: 1.2 }], [{ existence: 0.6, detectionProbability: 0.5, falseAlarmProbability: 3, falseAlarmError: 1.2 }]],
   jdeBoundNoClutter: [[{ existence: 0.7, detectionProbability: 0.4, priorVariance: 100, posteriorVariance: 25, falseAlarmError: 150, missError: 200 }], [{ existence: 2, detectionProbability: 0.4, priorVariance: 100, posteriorVariance: 25, falseAlarmError: 150, missError: 200 }]],
   gaussianFisherInformation: [[{ priorVariance: 4, gain: 2, noiseVariance: 1 }], [{ priorVariance: 4, gain: 2 }]],
   jdeSequentialBound: [[{ method: 'irf', priorInformation: 0.01, detectedInformation: 0.04, detectionProbability: 0.6, steps: 5 }], [{ method: 'crb', priorInformation: 0.01, detectedInformation: 0.04, detectionProbability: 0.6, steps: 5 }]],
