@@ -364,7 +364,7 @@ pub enum Sequential {
 }
 
 /// Most steps [`sequential_bound`] computes (the Enumeration sum is O(k²) in total).
-pub const MAX_STEPS: usize = 10_000;
+pub const MAX_STEPS: usize = 5_000;
 
 /// P_1 … P_steps of (35) or (37) for the static state observed k times with detection
 /// probability P̄_o: `prior_information` J_0 > 0 (of f_d'), `detected_information` J_1 ≥ J_0.
@@ -387,9 +387,16 @@ pub fn sequential_bound(
     }
     let p = check_probability(|| "detectionProbability".into(), detection_probability)?;
     if steps == 0 || steps > MAX_STEPS {
-        return Err(Error::parameter("steps", steps as f64, "in [1, 10000]"));
+        return Err(Error::parameter("steps", steps as f64, "in [1, 5000]"));
     }
     let gain = j1 - j0;
+    // ln m! for m ≤ steps, once: the Enumeration sums are then O(steps²) in all.
+    let mut ln_fact = Vec::with_capacity(steps + 1);
+    ln_fact.push(0.0);
+    for m in 1..=steps {
+        ln_fact.push(ln_fact[m - 1] + fns::ln(m as f64));
+    }
+    let (ln_p, ln_q) = (fns::ln(p), fns::ln_1p(-p));
     let mut out = Vec::with_capacity(steps);
     for k in 1..=steps {
         out.push(match method {
@@ -398,24 +405,25 @@ pub fn sequential_bound(
                 // positive terms: no cancellation to compensate (and a compensated sum
                 // would turn an overflowing 1/J_0 into NaN)
                 (0..=k)
-                    .map(|m| binomial_pmf(k, m, p) / (j0 + m as f64 * gain))
+                    .map(|m| {
+                        let b = if p == 0.0 {
+                            if m == 0 { 1.0 } else { 0.0 }
+                        } else if p == 1.0 {
+                            if m == k { 1.0 } else { 0.0 }
+                        } else {
+                            fns::exp(
+                                ln_fact[k] - ln_fact[m] - ln_fact[k - m]
+                                    + m as f64 * ln_p
+                                    + (k - m) as f64 * ln_q,
+                            )
+                        };
+                        b / (j0 + m as f64 * gain)
+                    })
                     .sum::<f64>()
             }
         });
     }
     Ok(out)
-}
-
-/// The Binomial(k, p) pmf at m, through logarithms (exact 0/1 at p ∈ {0, 1}).
-pub(crate) fn binomial_pmf(k: usize, m: usize, p: f64) -> f64 {
-    if p == 0.0 {
-        return if m == 0 { 1.0 } else { 0.0 };
-    }
-    if p == 1.0 {
-        return if m == k { 1.0 } else { 0.0 };
-    }
-    let ln_c = fns::ln_factorial(k) - fns::ln_factorial(m) - fns::ln_factorial(k - m);
-    fns::exp(ln_c + m as f64 * fns::ln(p) + (k - m) as f64 * fns::ln_1p(-p))
 }
 
 #[cfg(test)]

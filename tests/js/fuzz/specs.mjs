@@ -409,6 +409,6 @@ export const pastCaps = {
   negativeInformationScenario: [['0.step', 4], ['0.step', 0]],
   fovVarianceMap: [['0.grid.x.2', 4097]],
   mixtureDensityGrid: [['0.grid.y.2', 4097]],
-  jdeSequentialBound: [['0.steps', 10001]],
+  jdeSequentialBound: [['0.steps', 5001]],
   jdeBound: [['0.samples', 1e6 + 1], ['0.dims', 2]],
 };
