@@ -23,6 +23,7 @@ pub mod types;
 
 mod bernoulli;
 mod bernoulli_filters;
+mod bounds;
 mod control;
 mod fov;
 mod metrics;
@@ -36,6 +37,10 @@ pub use bernoulli::{
 pub use bernoulli_filters::{
     GmBernoulliFilterJs, ParticleBernoulliFilterJs, airport_scenario, gm_bernoulli_predict,
     gm_bernoulli_update,
+};
+pub use bounds::{
+    gaussian_fisher_information, jde_bound, jde_bound_no_clutter, jde_example2,
+    jde_example2_regularity, jde_sequential_bound,
 };
 pub use control::{SensorControlRunJs, compare_schemes, multi_object_likelihood};
 pub use fov::{fov_cardinality_js, fov_variance_map, mixture_density_grid_js, placement_scene_js};

@@ -408,6 +408,69 @@ export const specs = [
       )
       .map((o) => [o]),
   },
+  {
+    name: 'jdeBoundNoClutter',
+    roots: ['options'],
+    args: fc
+      .tuple(probability, probability, fc.double({ min: 1e-6, max: 1e6, noNaN: true }), fc.double({ min: 0, max: 1, noNaN: true }), fc.double({ min: 0, max: 1e6, noNaN: true }), fc.double({ min: 0, max: 1e6, noNaN: true }))
+      .map(([r, p, f, frac, e0, e1]) => [{ existence: r, detectionProbability: p, priorVariance: f, posteriorVariance: Math.max(f * frac, 1e-300), falseAlarmError: e0, missError: e1 }]),
+  },
+  {
+    name: 'gaussianFisherInformation',
+    roots: ['options'],
+    args: fc.record({ priorVariance: fc.double({ min: 1e-6, max: 1e6, noNaN: true }), gain: coord, noiseVariance: fc.double({ min: 1e-6, max: 1e6, noNaN: true }) }).map((o) => [o]),
+  },
+  {
+    name: 'jdeSequentialBound',
+    roots: ['options'],
+    args: fc
+      .tuple(fc.constantFrom('enumeration', 'irf'), fc.double({ min: 1e-6, max: 1e3, noNaN: true }), fc.double({ min: 0, max: 1e3, noNaN: true }), probability, fc.integer({ min: 1, max: 200 }))
+      .map(([method, j0, extra, p, steps]) => [{ method, priorInformation: j0, detectedInformation: j0 + extra, detectionProbability: p, steps }]),
+  },
+  {
+    name: 'jdeBound',
+    roots: ['options'],
+    weight: 0.3,
+    maxMs: 2000,
+    args: fc
+      .tuple(
+        fc.constantFrom('I', 'II'),
+        probability,
+        fc.oneof(
+          fc.record({ gaussian: fc.record({ mean: fc.double({ min: -5, max: 5, noNaN: true }), variance: fc.double({ min: 0.01, max: 25, noNaN: true }) }) }),
+          fc.record({ uniform: fc.constantFrom({ low: -2, high: 2 }, { low: 0, high: 1 }) }),
+          fc.record({ mixture: fc.array(fc.record({ weight: fc.double({ min: 0.1, max: 1, noNaN: true }), mean: fc.double({ min: -5, max: 5, noNaN: true }), variance: fc.double({ min: 0.1, max: 4, noNaN: true }) }), { minLength: 1, maxLength: 3 }) }),
+          fc.constant({ table: { x: [-2, 0, 2], density: [0, 1, 0] } }),
+        ),
+        fc.oneof(probability, fc.constant({ table: { x: [-3, 3], probability: [0.3, 0.9] } })),
+        fc.double({ min: 0.01, max: 10, noNaN: true }),
+        probability,
+        fc.double({ min: 0, max: 2, noNaN: true }),
+        fc.double({ min: 0, max: 100, noNaN: true }),
+        fc.double({ min: 0, max: 100, noNaN: true }),
+      )
+      .map(([model, r, prior, det, noise, q, rate, e0, e1]) => [
+        {
+          model,
+          existence: r,
+          prior,
+          observation: { detectionProbability: det, noiseVariance: noise },
+          ...(model === 'I' ? { falseAlarm: { probability: q, density: { uniform: { low: -10, high: 10 } } } } : { clutter: { rate, density: { uniform: { low: -10, high: 10 } } }, samples: 200, seed: 1 }),
+          falseAlarmError: e0,
+          missError: e1,
+        },
+      ]),
+  },
+  {
+    name: 'jdeExample2',
+    roots: ['options'],
+    weight: 0.2,
+    maxMs: 2000,
+    args: fc
+      .record({ existence: probability, detectionProbability: probability, falseAlarmProbability: probability, falseAlarmError: fc.double({ min: 0, max: 10, noNaN: true }), missError: fc.double({ min: 0, max: 10, noNaN: true }) }, { requiredKeys: ['existence', 'detectionProbability', 'falseAlarmProbability', 'falseAlarmError'] })
+      .map((o) => [o]),
+  },
+  { name: 'jdeExample2Regularity', roots: [], weight: 0.02, maxMs: 2000, args: fc.constant([]) },
   { name: 'version', roots: [], weight: 0.05, args: fc.constant([]) },
 ];
 
@@ -429,4 +492,6 @@ export const pastCaps = {
   multiObjectLikelihood: [['0.likelihoods.length', 65]],
   SensorControlRun: [['0.particles', 20001], ['0.steps', 1001], ['0.maxObjects', 9]],
   compareSchemes: [['0.runs', 1001], ['0.steps', 1001]],
+  jdeSequentialBound: [['0.steps', 5001]],
+  jdeBound: [['0.samples', 1e6 + 1], ['0.dims', 2]],
 };

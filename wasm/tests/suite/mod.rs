@@ -4,6 +4,7 @@
 
 mod bernoulli;
 mod boundary;
+mod bounds;
 mod control;
 mod fov;
 mod metrics;
