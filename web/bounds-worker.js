@@ -1,0 +1,52 @@
+// The Monte Carlo of web/bounds.html, off the main thread (a module worker): the optimal
+// joint detector-estimators of paper 002 simulated by web/bounds-mc.js, one grid point at a
+// time. A job is { id, kind, params }; the worker answers { id, kind, progress } after each
+// point and { id, kind, result } at the end, and drops a job as soon as a newer one of the
+// same kind arrives (a slider drag sends many).
+import { example2Prior, mcExample2, mcGaussian, mcSequential } from './bounds-mc.js';
+
+const latest = {};
+const pause = () => new Promise((resolve) => setTimeout(resolve, 0));
+
+const JOBS = {
+  /** Fig. 2 left: the optimal and the MAP-on-∅ estimator over r, for one P̄o. */
+  * fig2left({ rs, detectionProbability, priorVariance, noiseVariance, gain, falseAlarmError, missError, samples, seed }) {
+    for (const [i, r] of rs.entries()) {
+      const base = { existence: r, prior: { mean: 0, variance: priorVariance }, gain, noiseVariance, detectionProbability, falseAlarmError, missError, samples };
+      yield { r, optimal: mcGaussian({ ...base, seed: seed + 2 * i }), map: mcGaussian({ ...base, rule: 'map', seed: seed + 2 * i + 1 }) };
+    }
+  },
+  /** Fig. 3: the posterior mean after k = 1 … steps scans (r = 1). */
+  * fig3(params) {
+    yield mcSequential(params);
+  },
+  /** Fig. 2 right: Example 2 over q for each P_o. */
+  * example2({ qs, detectionProbabilities, existence, falseAlarmError, samples, seed }) {
+    const missError = falseAlarmError + example2Prior.variance;
+    // First the reference point of NOTES.md: r = 1, P_o = 1 (the MMSE, 0.0340, against 1/J_1).
+    yield mcExample2({ existence: 1, detectionProbability: 1, falseAlarmProbability: 0, falseAlarmError, missError, samples: 4 * samples, seed: seed + 999_999 });
+    for (const [j, P] of detectionProbabilities.entries()) {
+      for (const [i, q] of qs.entries()) {
+        yield { P, q, ...mcExample2({ existence, detectionProbability: P, falseAlarmProbability: q, falseAlarmError, missError, samples, seed: seed + 1000 * j + i }) };
+      }
+    }
+  },
+};
+
+async function run({ id, kind, params }) {
+  const out = [];
+  const total = kind === 'fig2left' ? params.rs.length : kind === 'example2' ? params.qs.length * params.detectionProbabilities.length + 1 : 1;
+  for (const point of JOBS[kind](params)) {
+    out.push(point);
+    postMessage({ id, kind, progress: out.length / total });
+    await pause(); // let a newer job in
+    if (latest[kind] !== id) return;
+  }
+  const result = { fig2left: out, fig3: out[0], example2: { reference: out[0], points: out.slice(1) } }[kind];
+  postMessage({ id, kind, result });
+}
+
+onmessage = (e) => {
+  latest[e.data.kind] = e.data.id;
+  run(e.data);
+};
