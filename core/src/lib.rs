@@ -55,6 +55,7 @@ extern crate alloc;
 extern crate std;
 
 pub mod bernoulli;
+pub mod bounds;
 pub mod cardinality;
 pub mod error;
 pub mod estimators;

@@ -4,6 +4,7 @@
 
 mod bernoulli;
 mod boundary;
+mod bounds;
 mod fov;
 mod metrics;
 mod multi_bernoulli;
