@@ -84,8 +84,8 @@ export function mcGaussian({
   // (P(∅|no target) = 1 − q in model I, e^{−λ} in model II, where r(1−P) is times e^{−λ} too).
   const emptyNoTarget = clutter ? 1 : 1 - q;
   const hpe = rule === 'map'
-    ? r * (1 - P) > 1 - r
-    : (1 - r) * emptyNoTarget * e0 + r * (1 - P) * vf < r * (1 - P) * e1;
+    ? r * (1 - P) >= 1 - r // ties declare, as r ≥ r_M*
+    : (1 - r) * emptyNoTarget * e0 + r * (1 - P) * vf <= r * (1 - P) * e1; // ties declare, as r ≥ r*
   const cost = (exists, x, declare, estimate) => (exists ? (declare ? (x - estimate) ** 2 : e1) : declare ? e0 : 0);
   for (let k = 0; k < samples; k++) {
     const exists = g.uniform() < r;
@@ -188,7 +188,7 @@ export function mcExample2({ existence: r, detectionProbability: P, falseAlarmPr
   const g = rng(seed);
   const t = tally();
   const { mean: xs, variance: ve } = example2Prior;
-  const hpe = (1 - r) * (1 - q) * e0 + r * (1 - P) * ve < r * (1 - P) * e1;
+  const hpe = (1 - r) * (1 - q) * e0 + r * (1 - P) * ve <= r * (1 - P) * e1;
   const peak = 2 * (Math.E - 1);
   for (let k = 0; k < samples; k++) {
     const exists = g.uniform() < r;

@@ -97,7 +97,7 @@ function drawDots({ ctx, x, y }, points, colour, { filled = true, ring = () => f
     }
   }
 }
-const zText = (zs) => (zs.length ? `worst |z| = ${fmt(Math.max(...zs.map(Math.abs)), 2)} over ${zs.length} dots` : '—');
+const zText = (zs) => (zs.length ? `within ${fmt(Math.max(...zs.map(Math.abs)), 2)} standard errors at all ${zs.length} dots` : 'Monte Carlo running …');
 
 // ---------------------------------------------------------------- Fig. 2 left
 const left = chart($('left'), {

@@ -288,7 +288,7 @@ function throwsAt(fn, cls, path) {
   });
 }
 
-test('bad values are RangeErrors and misspelt keys TypeErrors, each naming the field path', { skip: waiting('jdeBound') || waiting('jdeBoundNoClutter') }, () => {
+test('closed forms: bad values are RangeErrors and misspelt keys TypeErrors, each naming the field path', { skip: waiting('jdeBoundNoClutter') }, () => {
   const nc = { existence: 0.5, detectionProbability: 0.5, priorVariance: 100, posteriorVariance: 25, falseAlarmError: 150, missError: 200 };
   throwsAt(() => fisst.jdeBoundNoClutter({ ...nc, existence: 1.5 }), RangeError, 'options.existence');
   throwsAt(() => fisst.jdeBoundNoClutter({ ...nc, existence: NaN }), RangeError, 'options.existence');
@@ -310,6 +310,12 @@ test('bad values are RangeErrors and misspelt keys TypeErrors, each naming the f
   throwsAt(() => fisst.jdeSequentialBound({ ...sq, priorInformation: 0 }), RangeError, 'options.priorInformation');
   assert.throws(() => fisst.jdeSequentialBound({ ...sq, method: 'enum' }), (e) => (e instanceof TypeError || e instanceof RangeError) && e.message.startsWith('options.method'));
   throwsAt(() => fisst.jdeSequentialBound({ ...sq, step: 5 }), TypeError, 'options');
+  throwsAt(() => fisst.jdeSequentialBound({ ...sq, steps: 10_001 }), RangeError, 'options.steps');
+  // The module survives: a good call after the bad ones.
+  assert.equal(fisst.jdeSequentialBound(sq).bound.length, 5);
+});
+
+test('jdeBound: bad values are RangeErrors and misspelt keys TypeErrors, each naming the field path', { skip: waiting('jdeBound') }, () => {
   const jb = { ...gaussianSystem(0.5, 0.5), model: 'I', falseAlarm: { probability: 0.2, density: { gaussian: { mean: 0, variance: 25 } } } };
   assert.throws(() => fisst.jdeBound({ ...jb, model: 'III' }), (e) => (e instanceof TypeError || e instanceof RangeError) && e.message.startsWith('options.model'));
   throwsAt(() => fisst.jdeBound({ ...jb, existence: -0.5 }), RangeError, 'options.existence');
