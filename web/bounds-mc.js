@@ -142,11 +142,11 @@ export function mcSequential({ priorInformation: j0, detectedInformation: j1, de
     let m = 0;
     let sum = 0;
     for (let k = 0; k < steps; k++) {
-      if (g.uniform() < P) {
+      if (g.uniform() < P && dj > 0) { // dj = 0: a measurement carries nothing
         m++;
         sum += x + g.normal() / Math.sqrt(dj);
       }
-      tallies[k].add((x - (dj * sum) / (j0 + m * dj)) ** 2);
+      tallies[k].add((x - (m > 0 ? (dj * sum) / (j0 + m * dj) : 0)) ** 2);
     }
   }
   const out = tallies.map((t) => t.result());
