@@ -51,7 +51,7 @@ pub mod inversion;
 mod isotropic;
 mod loss;
 mod mmuc;
-mod quadrature;
+pub(crate) mod quadrature;
 mod threshold;
 
 pub use ball::{BallProbability, DEFAULT_TOLERANCE};

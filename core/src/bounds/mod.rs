@@ -31,3 +31,15 @@ pub use closed::{
     Terms, assemble, corollary1, corollary2, corollary3, gaussian_fisher_information,
     gaussian_no_clutter, map_threshold, poisson_pmf, sequential_bound,
 };
+mod model;
+mod theorem;
+mod theorem2;
+
+pub use model::{Density, Density1, Detection, GAUSSIAN_SPAN, LinearGaussian, Observation};
+pub use theorem::{Cardinality, JdeBound, Method, ModelI, Settings, theorem1};
+pub use theorem2::{MAX_CLUTTER_RATE, ModelII, theorem2};
+mod example2;
+pub use example2::{
+    Example2, Example2Observation, Example2Prior, Example2Regularity, UnitUniform, example2,
+    example2_regularity,
+};

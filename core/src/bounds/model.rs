@@ -1,0 +1,519 @@
+//! The densities of measurement models I (13) and II (22) of paper 002: the traits a caller
+//! implements with closures ([`Density`] for f, ψ and v/λ; [`Observation`] for P_o and g),
+//! and the ready-made forms the JavaScript bindings use ([`Density1`], [`Detection`],
+//! [`LinearGaussian`]).
+
+use alloc::vec::Vec;
+
+use crate::bernoulli::quadrature;
+use crate::bounds::closed::{check_finite, check_positive};
+use crate::error::{Error, Result, check_probability};
+use crate::math::fns;
+use crate::math::rng::{SeededRng, uniform};
+
+/// A probability density on an interval, with what the bounds need of it.
+pub trait Density {
+    /// The interval [lo, hi] outside which the density is (numerically) 0.
+    fn support(&self) -> (f64, f64);
+    /// The density at x.
+    fn pdf(&self, x: f64) -> f64;
+    /// ∂²/∂x² ln f(x) where f(x) > 0 (the prior's share of the Fisher information; for a
+    /// false-alarm or clutter density it is never called).
+    fn d2_ln_pdf(&self, x: f64) -> f64;
+    /// ∫_a^b f (default: adaptive quadrature).
+    fn mass(&self, a: f64, b: f64) -> f64 {
+        let (lo, hi) = self.support();
+        let (a, b) = (a.max(lo), b.min(hi));
+        if b <= a {
+            return 0.0;
+        }
+        quadrature::integrate(&mut |x| self.pdf(x), &[a, b], 1e-12, 200, &|| true).value
+    }
+    /// A draw (needed by the Monte Carlo part of Theorem 2 only; default: none).
+    fn sample(&self, _rng: &mut SeededRng) -> Option<f64> {
+        None
+    }
+}
+
+/// P_o(x) and g(z|x) of the Bernoulli observation Θ_b (13).
+pub trait Observation {
+    /// P_o(x), the probability of observing the target at x.
+    fn detection(&self, x: f64) -> f64;
+    /// ∂²/∂x² ln P_o(x) where P_o(x) > 0.
+    fn d2_ln_detection(&self, x: f64) -> f64;
+    /// g(z|x).
+    fn likelihood(&self, z: f64, x: f64) -> f64;
+    /// ∂/∂x ln g(z|x).
+    fn d_ln_likelihood(&self, z: f64, x: f64) -> f64;
+    /// ∂²/∂x² ln g(z|x).
+    fn d2_ln_likelihood(&self, z: f64, x: f64) -> f64;
+    /// An interval of z holding g(·|x) for every x in [x_lo, x_hi].
+    fn z_range(&self, x_lo: f64, x_hi: f64) -> (f64, f64);
+    /// ∫_a^b g(z|x) dz (default: quadrature).
+    fn likelihood_mass(&self, a: f64, b: f64, x: f64) -> f64 {
+        quadrature::integrate(&mut |z| self.likelihood(z, x), &[a, b], 1e-12, 200, &|| {
+            true
+        })
+        .value
+    }
+    /// ∫_a^b g(z|x) ∂²_x ln g(z|x) dz (default: quadrature).
+    fn fisher_mass(&self, a: f64, b: f64, x: f64) -> f64 {
+        quadrature::integrate(
+            &mut |z| {
+                let g = self.likelihood(z, x);
+                if g > 0.0 {
+                    g * self.d2_ln_likelihood(z, x)
+                } else {
+                    0.0
+                }
+            },
+            &[a, b],
+            1e-12,
+            200,
+            &|| true,
+        )
+        .value
+    }
+    /// A draw of z from g(·|x) (Monte Carlo part of Theorem 2 only; default: none).
+    fn sample(&self, _x: f64, _rng: &mut SeededRng) -> Option<f64> {
+        None
+    }
+}
+
+/// A standard normal draw (Box–Muller with libm, the same on every platform).
+pub(crate) fn standard_normal(rng: &mut SeededRng) -> f64 {
+    let u1 = 1.0 - uniform(rng); // (0, 1]
+    let u2 = uniform(rng);
+    fns::sqrt(-2.0 * fns::ln(u1)) * fns::cos(2.0 * core::f64::consts::PI * u2)
+}
+
+fn normal_pdf(x: f64, mean: f64, var: f64) -> f64 {
+    let d = x - mean;
+    fns::exp(-0.5 * d * d / var) / fns::sqrt(2.0 * core::f64::consts::PI * var)
+}
+
+/// Φ((b − μ)/σ) − Φ((a − μ)/σ) through erfc (accurate in both tails).
+fn normal_mass(a: f64, b: f64, mean: f64, var: f64) -> f64 {
+    let s = fns::sqrt(2.0 * var);
+    let (ua, ub) = ((a - mean) / s, (b - mean) / s);
+    if ua >= 0.0 {
+        0.5 * (fns::erfc(ua) - fns::erfc(ub))
+    } else if ub <= 0.0 {
+        0.5 * (fns::erfc(-ub) - fns::erfc(-ua))
+    } else {
+        1.0 - 0.5 * (fns::erfc(-ua) + fns::erfc(ub))
+    }
+}
+
+/// How many standard deviations a Gaussian's support spans each side (e^{−72} beyond).
+pub const GAUSSIAN_SPAN: f64 = 12.0;
+
+/// The ready-made densities: Gaussian, uniform, Gaussian mixture, and tabulated (linear
+/// interpolation between knots, 0 outside, normalised to integrate to 1).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Density1 {
+    /// N(mean, variance).
+    Gaussian {
+        /// The mean.
+        mean: f64,
+        /// The variance (> 0).
+        variance: f64,
+    },
+    /// U[low, high].
+    Uniform {
+        /// The lower end.
+        low: f64,
+        /// The upper end (> low).
+        high: f64,
+    },
+    /// Σ w_i N(mean_i, var_i) with normalised weights.
+    Mixture(Vec<(f64, f64, f64)>),
+    /// Linear interpolation of `density` at the increasing knots `x`, normalised; `cdf[i]` is
+    /// the mass left of knot i.
+    Table {
+        /// Knots, strictly increasing.
+        x: Vec<f64>,
+        /// Density at the knots (normalised).
+        density: Vec<f64>,
+        /// Mass left of each knot.
+        cdf: Vec<f64>,
+    },
+}
+
+impl Density1 {
+    /// N(mean, variance); errors name `mean` or `variance`.
+    pub fn gaussian(mean: f64, variance: f64) -> Result<Self> {
+        check_finite("mean", mean)?;
+        check_positive("variance", variance)?;
+        Ok(Density1::Gaussian { mean, variance })
+    }
+
+    /// U[low, high]; errors name `low` or `high`.
+    pub fn uniform(low: f64, high: f64) -> Result<Self> {
+        check_finite("low", low)?;
+        check_finite("high", high)?;
+        if high <= low {
+            return Err(Error::parameter("high", high, "> low"));
+        }
+        Ok(Density1::Uniform { low, high })
+    }
+
+    /// A mixture of `(weight, mean, variance)`; weights > 0, normalised here. Errors name
+    /// `[i].weight` etc.
+    pub fn mixture(components: &[(f64, f64, f64)]) -> Result<Self> {
+        if components.is_empty() {
+            return Err(Error::dimension("", 1, 0));
+        }
+        let mut total = 0.0;
+        for (i, &(w, m, v)) in components.iter().enumerate() {
+            check_positive(&alloc::format!("[{i}].weight"), w)?;
+            check_finite(&alloc::format!("[{i}].mean"), m)?;
+            check_positive(&alloc::format!("[{i}].variance"), v)?;
+            total += w;
+        }
+        if !total.is_finite() {
+            return Err(Error::parameter("[0].weight", total, "with a finite sum"));
+        }
+        Ok(Density1::Mixture(
+            components
+                .iter()
+                .map(|&(w, m, v)| (w / total, m, v))
+                .collect(),
+        ))
+    }
+
+    /// A table: `x` strictly increasing (≥ 2 knots), `density` ≥ 0 with a positive integral.
+    /// Errors name `x[i]` or `density[i]`.
+    pub fn table(x: &[f64], density: &[f64]) -> Result<Self> {
+        if x.len() < 2 {
+            return Err(Error::dimension("x", 2, x.len()));
+        }
+        if density.len() != x.len() {
+            return Err(Error::dimension("density", x.len(), density.len()));
+        }
+        for (i, &v) in x.iter().enumerate() {
+            check_finite(&alloc::format!("x[{i}]"), v)?;
+            if i > 0 && v <= x[i - 1] {
+                return Err(Error::parameter(
+                    alloc::format!("x[{i}]"),
+                    v,
+                    "> the previous knot",
+                ));
+            }
+        }
+        for (i, &d) in density.iter().enumerate() {
+            if !(d.is_finite() && d >= 0.0) {
+                return Err(Error::parameter(
+                    alloc::format!("density[{i}]"),
+                    d,
+                    "finite and ≥ 0",
+                ));
+            }
+        }
+        let mut cdf = Vec::with_capacity(x.len());
+        let mut acc = 0.0;
+        cdf.push(0.0);
+        for i in 1..x.len() {
+            acc += 0.5 * (density[i] + density[i - 1]) * (x[i] - x[i - 1]);
+            cdf.push(acc);
+        }
+        if !(acc.is_finite() && acc > 0.0) {
+            return Err(Error::parameter(
+                "density",
+                acc,
+                "with a finite, positive integral",
+            ));
+        }
+        Ok(Density1::Table {
+            x: x.to_vec(),
+            density: density.iter().map(|d| d / acc).collect(),
+            cdf: cdf.iter().map(|c| c / acc).collect(),
+        })
+    }
+
+    /// The segment of a table holding t (None outside).
+    fn segment(x: &[f64], t: f64) -> Option<usize> {
+        let last = x.len().checked_sub(1)?;
+        if !(t >= x[0] && t <= x[last]) {
+            return None;
+        }
+        let i = x.partition_point(|&k| k <= t);
+        Some(i.clamp(1, last) - 1)
+    }
+
+    /// (f, f', f'') at x.
+    fn derivatives(&self, t: f64) -> (f64, f64, f64) {
+        match self {
+            Density1::Gaussian { mean, variance } => {
+                let f = normal_pdf(t, *mean, *variance);
+                let u = (t - mean) / variance;
+                (f, -u * f, (u * u - 1.0 / variance) * f)
+            }
+            Density1::Uniform { low, high } => {
+                if t >= *low && t <= *high {
+                    (1.0 / (high - low), 0.0, 0.0)
+                } else {
+                    (0.0, 0.0, 0.0)
+                }
+            }
+            Density1::Mixture(c) => {
+                let mut s = (0.0, 0.0, 0.0);
+                for &(w, m, v) in c {
+                    let f = w * normal_pdf(t, m, v);
+                    let u = (t - m) / v;
+                    s.0 += f;
+                    s.1 += -u * f;
+                    s.2 += (u * u - 1.0 / v) * f;
+                }
+                s
+            }
+            Density1::Table { x, density, .. } => match Self::segment(x, t) {
+                Some(i) => {
+                    let slope = (density[i + 1] - density[i]) / (x[i + 1] - x[i]);
+                    (density[i] + slope * (t - x[i]), slope, 0.0)
+                }
+                None => (0.0, 0.0, 0.0),
+            },
+        }
+    }
+}
+
+impl Density for Density1 {
+    fn support(&self) -> (f64, f64) {
+        match self {
+            Density1::Gaussian { mean, variance } => {
+                let s = GAUSSIAN_SPAN * fns::sqrt(*variance);
+                (mean - s, mean + s)
+            }
+            Density1::Uniform { low, high } => (*low, *high),
+            Density1::Mixture(c) => {
+                c.iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |a, &(_, m, v)| {
+                        let s = GAUSSIAN_SPAN * fns::sqrt(v);
+                        (a.0.min(m - s), a.1.max(m + s))
+                    })
+            }
+            Density1::Table { x, .. } => (x[0], x[x.len() - 1]),
+        }
+    }
+
+    fn pdf(&self, x: f64) -> f64 {
+        self.derivatives(x).0
+    }
+
+    fn d2_ln_pdf(&self, x: f64) -> f64 {
+        match self {
+            Density1::Gaussian { variance, .. } => -1.0 / variance,
+            _ => {
+                let (f, d1, d2) = self.derivatives(x);
+                if f > 0.0 {
+                    d2 / f - (d1 / f) * (d1 / f)
+                } else {
+                    0.0
+                }
+            }
+        }
+    }
+
+    fn mass(&self, a: f64, b: f64) -> f64 {
+        if b <= a {
+            return 0.0;
+        }
+        match self {
+            Density1::Gaussian { mean, variance } => normal_mass(a, b, *mean, *variance),
+            Density1::Uniform { low, high } => (b.min(*high) - a.max(*low)).max(0.0) / (high - low),
+            Density1::Mixture(c) => c.iter().map(|&(w, m, v)| w * normal_mass(a, b, m, v)).sum(),
+            Density1::Table { .. } => self.cdf(b) - self.cdf(a),
+        }
+    }
+
+    fn sample(&self, rng: &mut SeededRng) -> Option<f64> {
+        Some(match self {
+            Density1::Gaussian { mean, variance } => {
+                mean + fns::sqrt(*variance) * standard_normal(rng)
+            }
+            Density1::Uniform { low, high } => low + (high - low) * uniform(rng),
+            Density1::Mixture(c) => {
+                let mut u = uniform(rng);
+                let mut pick = c.last()?;
+                for comp in c {
+                    if u < comp.0 {
+                        pick = comp;
+                        break;
+                    }
+                    u -= comp.0;
+                }
+                pick.1 + fns::sqrt(pick.2) * standard_normal(rng)
+            }
+            Density1::Table { x, density, cdf } => {
+                let u = uniform(rng);
+                let i = cdf.partition_point(|&c| c <= u).clamp(1, x.len() - 1) - 1;
+                // Invert the quadratic CDF of the trapezoid [x_i, x_{i+1}].
+                let (h, d0) = (x[i + 1] - x[i], density[i]);
+                let slope = (density[i + 1] - d0) / h;
+                let m = u - cdf[i];
+                let t = if fns::abs(slope) < 1e-300 {
+                    if d0 > 0.0 { m / d0 } else { 0.0 }
+                } else {
+                    let disc = (d0 * d0 + 2.0 * slope * m).max(0.0);
+                    (fns::sqrt(disc) - d0) / slope
+                };
+                x[i] + t.clamp(0.0, h)
+            }
+        })
+    }
+}
+
+impl Density1 {
+    /// The mass left of t (tables; others through [`Density::mass`]).
+    fn cdf(&self, t: f64) -> f64 {
+        match self {
+            Density1::Table { x, density, cdf } => {
+                if t <= x[0] {
+                    return 0.0;
+                }
+                let last = x.len() - 1;
+                if t >= x[last] {
+                    return 1.0;
+                }
+                let i = x.partition_point(|&k| k <= t).clamp(1, last) - 1;
+                let d = t - x[i];
+                let slope = (density[i + 1] - density[i]) / (x[i + 1] - x[i]);
+                cdf[i] + density[i] * d + 0.5 * slope * d * d
+            }
+            _ => self.mass(f64::NEG_INFINITY, t),
+        }
+    }
+}
+
+/// P_o(x): a constant, or linear interpolation of a table (held constant beyond its ends).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Detection {
+    /// The same P_o everywhere.
+    Constant(f64),
+    /// Knots x (strictly increasing) and probabilities in [0, 1].
+    Table {
+        /// Knots.
+        x: Vec<f64>,
+        /// P_o at the knots.
+        probability: Vec<f64>,
+    },
+}
+
+impl Detection {
+    /// Validated constant; the error names `detectionProbability`.
+    pub fn constant(p: f64) -> Result<Self> {
+        check_probability(|| "detectionProbability".into(), p)?;
+        Ok(Detection::Constant(p))
+    }
+
+    /// Validated table; errors name `x[i]` or `probability[i]`.
+    pub fn table(x: &[f64], probability: &[f64]) -> Result<Self> {
+        if x.len() < 2 {
+            return Err(Error::dimension("x", 2, x.len()));
+        }
+        if probability.len() != x.len() {
+            return Err(Error::dimension("probability", x.len(), probability.len()));
+        }
+        for (i, &v) in x.iter().enumerate() {
+            check_finite(&alloc::format!("x[{i}]"), v)?;
+            if i > 0 && v <= x[i - 1] {
+                return Err(Error::parameter(
+                    alloc::format!("x[{i}]"),
+                    v,
+                    "> the previous knot",
+                ));
+            }
+        }
+        for (i, &p) in probability.iter().enumerate() {
+            check_probability(|| alloc::format!("probability[{i}]"), p)?;
+        }
+        Ok(Detection::Table {
+            x: x.to_vec(),
+            probability: probability.to_vec(),
+        })
+    }
+
+    /// (P_o, P_o') at t.
+    fn value(&self, t: f64) -> (f64, f64) {
+        match self {
+            Detection::Constant(p) => (*p, 0.0),
+            Detection::Table { x, probability } => {
+                let last = x.len() - 1;
+                if t <= x[0] {
+                    return (probability[0], 0.0);
+                }
+                if t >= x[last] {
+                    return (probability[last], 0.0);
+                }
+                let i = x.partition_point(|&k| k <= t).clamp(1, last) - 1;
+                let slope = (probability[i + 1] - probability[i]) / (x[i + 1] - x[i]);
+                (probability[i] + slope * (t - x[i]), slope)
+            }
+        }
+    }
+}
+
+/// g(z|x) = N(z; a x + b, σ_v²) with detection P_o(x): the linear-Gaussian observation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LinearGaussian {
+    /// P_o.
+    pub detection: Detection,
+    /// a.
+    pub gain: f64,
+    /// b.
+    pub offset: f64,
+    /// σ_v² > 0.
+    pub noise_variance: f64,
+}
+
+impl LinearGaussian {
+    /// Validated; errors name `gain`, `offset` or `noiseVariance`.
+    pub fn new(detection: Detection, gain: f64, offset: f64, noise_variance: f64) -> Result<Self> {
+        check_finite("gain", gain)?;
+        check_finite("offset", offset)?;
+        check_positive("noiseVariance", noise_variance)?;
+        Ok(LinearGaussian {
+            detection,
+            gain,
+            offset,
+            noise_variance,
+        })
+    }
+}
+
+impl Observation for LinearGaussian {
+    fn detection(&self, x: f64) -> f64 {
+        self.detection.value(x).0
+    }
+    fn d2_ln_detection(&self, x: f64) -> f64 {
+        let (p, d) = self.detection.value(x);
+        if p > 0.0 { -(d / p) * (d / p) } else { 0.0 }
+    }
+    fn likelihood(&self, z: f64, x: f64) -> f64 {
+        normal_pdf(z, self.gain * x + self.offset, self.noise_variance)
+    }
+    fn d_ln_likelihood(&self, z: f64, x: f64) -> f64 {
+        self.gain * (z - self.gain * x - self.offset) / self.noise_variance
+    }
+    fn d2_ln_likelihood(&self, _z: f64, _x: f64) -> f64 {
+        -self.gain * self.gain / self.noise_variance
+    }
+    fn z_range(&self, x_lo: f64, x_hi: f64) -> (f64, f64) {
+        let (a, b) = (
+            self.gain * x_lo + self.offset,
+            self.gain * x_hi + self.offset,
+        );
+        let s = GAUSSIAN_SPAN * fns::sqrt(self.noise_variance);
+        (a.min(b) - s, a.max(b) + s)
+    }
+    fn likelihood_mass(&self, a: f64, b: f64, x: f64) -> f64 {
+        normal_mass(a, b, self.gain * x + self.offset, self.noise_variance)
+    }
+    fn fisher_mass(&self, a: f64, b: f64, x: f64) -> f64 {
+        self.d2_ln_likelihood(a, x) * self.likelihood_mass(a, b, x)
+    }
+    fn sample(&self, x: f64, rng: &mut SeededRng) -> Option<f64> {
+        Some(self.gain * x + self.offset + fns::sqrt(self.noise_variance) * standard_normal(rng))
+    }
+}

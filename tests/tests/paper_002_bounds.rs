@@ -1,0 +1,462 @@
+//! Paper 002 (Rezaeian & Vo, error bounds for joint detection and estimation): the theorems
+//! against a Monte Carlo of the optimal joint detector-estimator, the reductions to the
+//! corollaries, the sequential and vector bounds, Example 2 and its regularity failure.
+//!
+//! Monte Carlo tolerance: the simulated MSE of MAP detection + posterior mean may not lie
+//! below the bound by more than 4 standard errors (z > −4); in the linear-Gaussian model I
+//! with constant P_o (where the bound is attained) |z| < 4. Every run is seeded.
+
+use fisst::bounds::{
+    self, Density, Density1, Detection, LinearGaussian, ModelI, ModelII, Settings, theorem1,
+    theorem2,
+};
+use fisst::math::rng::{SeededRng, seeded, uniform};
+
+fn normal(rng: &mut SeededRng) -> f64 {
+    let u1 = 1.0 - uniform(rng);
+    let u2 = uniform(rng);
+    (-2.0 * u1.ln()).sqrt() * (2.0 * std::f64::consts::PI * u2).cos()
+}
+
+fn npdf(x: f64, m: f64, v: f64) -> f64 {
+    (-(x - m) * (x - m) / (2.0 * v)).exp() / (2.0 * std::f64::consts::PI * v).sqrt()
+}
+
+/// The linear-Gaussian system of the tests: x ~ N(μ, σ²), z = x + v, v ~ N(0, σv²), constant
+/// P_o; false alarms / clutter uniform on [−L, L].
+#[derive(Clone, Copy)]
+struct Lg {
+    mu: f64,
+    var: f64,
+    noise: f64,
+    p: f64,
+    half_width: f64,
+}
+
+impl Lg {
+    fn prior(&self) -> Density1 {
+        Density1::gaussian(self.mu, self.var).unwrap()
+    }
+    fn obs(&self) -> LinearGaussian {
+        LinearGaussian::new(Detection::constant(self.p).unwrap(), 1.0, 0.0, self.noise).unwrap()
+    }
+    fn flat(&self) -> Density1 {
+        Density1::uniform(-self.half_width, self.half_width).unwrap()
+    }
+    /// m(z) = ∫ f_d g = N(z; μ, σ² + σv²).
+    fn m(&self, z: f64) -> f64 {
+        npdf(z, self.mu, self.var + self.noise)
+    }
+    fn c(&self, z: f64) -> f64 {
+        if z.abs() <= self.half_width {
+            0.5 / self.half_width
+        } else {
+            0.0
+        }
+    }
+    /// N(x; μ, σ²) N(z; x, σv²) ∝ N(z; μ, σ²+σv²) N(x; post_mean(z), post_var).
+    fn post_mean(&self, z: f64) -> f64 {
+        self.mu + self.var / (self.var + self.noise) * (z - self.mu)
+    }
+}
+
+struct Mc {
+    mean: f64,
+    se: f64,
+}
+
+fn stats(v: &[f64]) -> Mc {
+    let n = v.len() as f64;
+    let mean = v.iter().sum::<f64>() / n;
+    let var = v.iter().map(|x| (x - mean) * (x - mean)).sum::<f64>() / (n - 1.0);
+    Mc {
+        mean,
+        se: (var / n).sqrt(),
+    }
+}
+
+/// The MSE of MAP detection (Z ≠ ∅), the better rule on Z = ∅, and the posterior mean, in
+/// model I (q, ψ uniform).
+fn simulate_model_i(s: Lg, r: f64, q: f64, e0: f64, e1: f64, n: usize, seed: u64) -> Mc {
+    let mut rng = seeded(seed);
+    // Z = ∅: HPE (declare x* = μ) iff its cost is lower: (1−r)(1−q)e0² + r(1−P)σ² vs r(1−P)e1².
+    let declare_empty =
+        (1.0 - r) * (1.0 - q) * e0 + r * (1.0 - s.p) * s.var <= r * (1.0 - s.p) * e1;
+    let mut errs = Vec::with_capacity(n);
+    for _ in 0..n {
+        let exists = uniform(&mut rng) < r;
+        let x = s.mu + s.var.sqrt() * normal(&mut rng);
+        let z = if exists {
+            (uniform(&mut rng) < s.p).then(|| x + s.noise.sqrt() * normal(&mut rng))
+        } else {
+            (uniform(&mut rng) < q).then(|| s.half_width * (2.0 * uniform(&mut rng) - 1.0))
+        };
+        let est = match z {
+            None => declare_empty.then_some(s.mu),
+            Some(z) => (r * s.p * s.m(z) >= (1.0 - r) * q * s.c(z)).then(|| s.post_mean(z)),
+        };
+        errs.push(match (exists, est) {
+            (true, Some(e)) => (x - e) * (x - e),
+            (true, None) => e1,
+            (false, Some(_)) => e0,
+            (false, None) => 0.0,
+        });
+    }
+    stats(&errs)
+}
+
+/// The same in model II: Poisson(λ) clutter uniform on [−L, L]; the posterior mean given
+/// existence mixes "undetected" and "point i is the target".
+fn simulate_model_ii(s: Lg, r: f64, lambda: f64, e0: f64, e1: f64, n: usize, seed: u64) -> Mc {
+    let mut rng = seeded(seed);
+    let declare_empty = (1.0 - r) * e0 + r * (1.0 - s.p) * s.var <= r * (1.0 - s.p) * e1;
+    let mut errs = Vec::with_capacity(n);
+    let mut z = Vec::new();
+    for _ in 0..n {
+        let exists = uniform(&mut rng) < r;
+        let x = s.mu + s.var.sqrt() * normal(&mut rng);
+        z.clear();
+        if exists && uniform(&mut rng) < s.p {
+            z.push(x + s.noise.sqrt() * normal(&mut rng));
+        }
+        // Poisson count by inversion
+        let (mut k, mut pk, u) = (0usize, (-lambda).exp(), uniform(&mut rng));
+        let mut cum = pk;
+        while u > cum && k < 200 {
+            k += 1;
+            pk *= lambda / k as f64;
+            cum += pk;
+        }
+        for _ in 0..k {
+            z.push(s.half_width * (2.0 * uniform(&mut rng) - 1.0));
+        }
+        let est = if z.is_empty() {
+            declare_empty.then_some(s.mu)
+        } else {
+            let outside: Vec<f64> = z.iter().copied().filter(|&zi| s.c(zi) == 0.0).collect();
+            if !outside.is_empty() {
+                // a point no clutter can make: the target's (declare; its posterior)
+                Some(outside.iter().map(|&zi| s.post_mean(zi)).sum::<f64>() / outside.len() as f64)
+            } else {
+                let b: Vec<f64> = z.iter().map(|&zi| s.m(zi) / (lambda * s.c(zi))).collect();
+                let beta: f64 = b.iter().sum();
+                let declare = r * (1.0 - s.p + s.p * beta) >= 1.0 - r;
+                declare.then(|| {
+                    let num: f64 = (1.0 - s.p) * s.mu
+                        + s.p
+                            * z.iter()
+                                .zip(&b)
+                                .map(|(&zi, &bi)| bi * s.post_mean(zi))
+                                .sum::<f64>();
+                    num / ((1.0 - s.p) + s.p * beta)
+                })
+            }
+        };
+        errs.push(match (exists, est) {
+            (true, Some(e)) => (x - e) * (x - e),
+            (true, None) => e1,
+            (false, Some(_)) => e0,
+            (false, None) => 0.0,
+        });
+    }
+    stats(&errs)
+}
+
+const SYS: Lg = Lg {
+    mu: 1.0,
+    var: 4.0,
+    noise: 1.0,
+    p: 0.8,
+    half_width: 10.0,
+};
+
+#[test]
+fn theorem_1_is_attained_by_map_detection_and_the_posterior_mean() {
+    let (e0, e1) = (6.0, 9.0);
+    let mut worst: f64 = 0.0;
+    let mut seed = 1;
+    for &r in &[0.2, 0.5, 0.8] {
+        for &p in &[0.5, 0.9] {
+            for &q in &[0.0, 0.3, 0.8] {
+                let s = Lg { p, ..SYS };
+                let (prior, obs, psi) = (s.prior(), s.obs(), s.flat());
+                let m = ModelI {
+                    existence: r,
+                    prior: &prior,
+                    observation: &obs,
+                    false_alarm_probability: q,
+                    false_alarm_density: &psi,
+                    false_alarm_error: e0,
+                    miss_error: e1,
+                };
+                let b = theorem1(&m, &Settings::default()).unwrap();
+                let mc = simulate_model_i(s, r, q, e0, e1, 60_000, seed);
+                seed += 1;
+                let z = (mc.mean - b.assembled.bound) / mc.se;
+                worst = worst.max(z.abs());
+                println!(
+                    "model I r {r} P {p} q {q}: bound {:.5} MC {:.5} ± {:.5} z {z:+.2}",
+                    b.assembled.bound, mc.mean, mc.se
+                );
+                assert!(z.abs() < 4.0, "r {r} p {p} q {q}: z = {z}");
+            }
+        }
+    }
+    println!("model I worst |z| = {worst:.2}");
+}
+
+#[test]
+fn theorem_2_lies_below_the_optimal_mse() {
+    let (e0, e1) = (6.0, 9.0);
+    let mut worst = f64::INFINITY;
+    let mut seed = 100;
+    for &r in &[0.3, 0.7] {
+        for &p in &[0.6, 0.95] {
+            for &lambda in &[0.5, 2.0] {
+                let s = Lg { p, ..SYS };
+                let (prior, obs, c) = (s.prior(), s.obs(), s.flat());
+                let m = ModelII {
+                    existence: r,
+                    prior: &prior,
+                    observation: &obs,
+                    clutter_rate: lambda,
+                    clutter_density: &c,
+                    false_alarm_error: e0,
+                    miss_error: e1,
+                };
+                let settings = Settings {
+                    samples: 4000,
+                    seed,
+                    ..Settings::default()
+                };
+                let b = theorem2(&m, &settings).unwrap();
+                let mc = simulate_model_ii(s, r, lambda, e0, e1, 40_000, seed);
+                seed += 1;
+                let z = (mc.mean - b.assembled.bound) / (mc.se * mc.se + b.error * b.error).sqrt();
+                worst = worst.min(z);
+                println!(
+                    "model II r {r} P {p} λ {lambda}: bound {:.5} (±{:.1e}) MC {:.5} ± {:.5} z {z:+.2}",
+                    b.assembled.bound, b.error, mc.mean, mc.se
+                );
+                assert!(z > -4.0, "r {r} p {p} λ {lambda}: z = {z}");
+            }
+        }
+    }
+    println!("model II lowest z = {worst:.2}");
+}
+
+#[test]
+fn no_clutter_theorems_reduce_to_corollary_3() {
+    let (e0, e1) = (6.0, 9.0);
+    for &r in &[0.0, 0.3, 0.7, 1.0] {
+        for &p in &[0.0, 0.4, 1.0] {
+            let s = Lg { p, ..SYS };
+            let (prior, obs, flat) = (s.prior(), s.obs(), s.flat());
+            let j = bounds::gaussian_fisher_information(s.var, 1.0, s.noise).unwrap();
+            let c3 = bounds::corollary3(r, p, 1.0 / j.information, s.var, e0, e1).unwrap();
+            let t1 = theorem1(
+                &ModelI {
+                    existence: r,
+                    prior: &prior,
+                    observation: &obs,
+                    false_alarm_probability: 0.0,
+                    false_alarm_density: &flat,
+                    false_alarm_error: e0,
+                    miss_error: e1,
+                },
+                &Settings::default(),
+            )
+            .unwrap();
+            let t2 = theorem2(
+                &ModelII {
+                    existence: r,
+                    prior: &prior,
+                    observation: &obs,
+                    clutter_rate: 0.0,
+                    clutter_density: &flat,
+                    false_alarm_error: e0,
+                    miss_error: e1,
+                },
+                &Settings::default(),
+            )
+            .unwrap();
+            for (name, b) in [("I", &t1), ("II", &t2)] {
+                assert!(
+                    (b.assembled.bound - c3.bound).abs() < 1e-10,
+                    "model {name} r {r} p {p}: {} vs {}",
+                    b.assembled.bound,
+                    c3.bound
+                );
+            }
+            if r == 1.0 {
+                let c1 = bounds::corollary1(p, 1.0 / j.information, s.var);
+                assert!((t1.assembled.bound - c1).abs() < 1e-10);
+            }
+        }
+    }
+}
+
+#[test]
+fn asserted_target_with_clutter_is_corollary_2() {
+    // r = 1: every region is the whole space, w_n = 1, η2 = 0: (23) is (28).
+    let s = Lg { p: 0.7, ..SYS };
+    let (prior, obs, c) = (s.prior(), s.obs(), s.flat());
+    let b = theorem2(
+        &ModelII {
+            existence: 1.0,
+            prior: &prior,
+            observation: &obs,
+            clutter_rate: 1.0,
+            clutter_density: &c,
+            false_alarm_error: 6.0,
+            miss_error: 9.0,
+        },
+        &Settings {
+            samples: 2000,
+            ..Settings::default()
+        },
+    )
+    .unwrap();
+    let inv: Vec<f64> = b
+        .cardinalities
+        .iter()
+        .map(|c| c.inverse_information)
+        .collect();
+    let c2 = bounds::corollary2(0.7, &inv, 1.0, b.undetected_variance).unwrap();
+    assert!(
+        (b.assembled.bound - c2).abs() < 1e-10,
+        "{} vs {c2}",
+        b.assembled.bound
+    );
+    assert!(b.cardinalities.iter().all(|c| (c.w - 1.0).abs() < 1e-9));
+    assert_eq!(b.eta, 0.0);
+    // J_1⁻¹ is the Gaussian posterior variance; more clutter points carry less information.
+    let j = bounds::gaussian_fisher_information(s.var, 1.0, s.noise).unwrap();
+    assert!((inv[0] - j.posterior_variance).abs() < 1e-10);
+    assert!(inv[1] > inv[0]);
+}
+
+#[test]
+fn example_2_is_reproduced_and_its_regularity_fails() {
+    let reg = bounds::example2_regularity();
+    assert!(
+        (reg.information - 5.2716).abs() < 5e-5,
+        "{}",
+        reg.information
+    );
+    assert!((reg.inverse_information - 0.1897).abs() < 5e-5);
+    assert!(
+        (reg.posterior_mean_mse - 0.0340).abs() < 5e-5,
+        "{}",
+        reg.posterior_mean_mse
+    );
+    assert!(
+        (reg.prior_variance - 0.0341).abs() < 5e-5,
+        "{}",
+        reg.prior_variance
+    );
+    // The "bound" 1/J_1 exceeds an MSE that an estimator attains: not a bound here.
+    assert!(reg.inverse_information > 5.0 * reg.posterior_mean_mse);
+    println!(
+        "Example 2: J1 {:.4}, 1/J1 {:.4}, posterior-mean MSE {:.4}, prior variance {:.4}",
+        reg.information, reg.inverse_information, reg.posterior_mean_mse, reg.prior_variance
+    );
+    // Fig. 2 right: r = 0.6, e0² = 1.2, e1² = e0² + σe².
+    for &p in &[0.1, 0.5, 0.9] {
+        let mut row = Vec::new();
+        for i in 0..=10 {
+            let q = i as f64 / 10.0;
+            let e = bounds::example2(0.6, p, q, 1.2, None).unwrap();
+            if e.w >= 1.0 - 1e-12 {
+                // Z'_0 = [0, 1]: (20) and (32) agree
+                assert!((e.bound - e.paper_bound).abs() < 1e-9);
+            }
+            if e.w > 0.0 {
+                // (32)'s J'_1 is (20)'s times w_1²
+                let a = e.information * e.w * e.w;
+                assert!((e.paper_information - a).abs() <= 1e-9 * a);
+            }
+            row.push((q, e.paper_bound, e.bound));
+        }
+        println!("Fig. 2 right P_o {p}: {row:.4?}");
+    }
+    // The extreme case of the text: P_o = 0, q = 1 leaves only r σe².
+    let e = bounds::example2(0.6, 0.0, 1.0, 1.2, None).unwrap();
+    assert!((e.paper_bound - 0.6 * e.undetected_variance).abs() < 1e-9);
+    // Low P_o: more false alarms can lower the bound (the paper's remark).
+    let lo = bounds::example2(0.6, 0.1, 0.0, 1.2, None).unwrap();
+    let hi = bounds::example2(0.6, 0.1, 1.0, 1.2, None).unwrap();
+    assert!(hi.paper_bound < lo.paper_bound);
+}
+
+#[test]
+fn a_non_gaussian_prior_and_variable_detection_stay_below_the_mse() {
+    // Mixture prior, tabulated P_o: the bound must not exceed the MSE of MAP + posterior mean
+    // (computed by quadrature per z here, in a Monte Carlo over the system).
+    let prior = Density1::mixture(&[(0.5, -2.0, 1.0), (0.5, 2.0, 1.5)]).unwrap();
+    let det = Detection::table(&[-4.0, 0.0, 4.0], &[0.5, 0.9, 0.6]).unwrap();
+    let obs = LinearGaussian::new(det, 1.0, 0.0, 0.5).unwrap();
+    let psi = Density1::uniform(-10.0, 10.0).unwrap();
+    let (r, q, e0, e1) = (0.6, 0.4, 6.0, 9.0);
+    let b = theorem1(
+        &ModelI {
+            existence: r,
+            prior: &prior,
+            observation: &obs,
+            false_alarm_probability: q,
+            false_alarm_density: &psi,
+            false_alarm_error: e0,
+            miss_error: e1,
+        },
+        &Settings::default(),
+    )
+    .unwrap();
+    use fisst::bounds::Observation;
+    let grid: Vec<f64> = (0..=800).map(|i| -12.0 + 24.0 * i as f64 / 800.0).collect();
+    let h = grid[1] - grid[0];
+    let post = |z: f64| {
+        let (mut m0, mut m1) = (0.0, 0.0);
+        for &x in &grid {
+            let w = prior.pdf(x) * obs.detection(x) * obs.likelihood(z, x);
+            m0 += w;
+            m1 += w * x;
+        }
+        (m0 * h, m1 / m0)
+    };
+    let mut rng = seeded(7);
+    let mut errs = Vec::new();
+    let declare_empty = {
+        let (u, x) = (b.mean_detection, b.undetected_variance);
+        (1.0 - r) * (1.0 - q) * e0 + r * (1.0 - u) * x <= r * (1.0 - u) * e1
+    };
+    for _ in 0..20_000 {
+        let exists = uniform(&mut rng) < r;
+        let x = prior.sample(&mut rng).unwrap();
+        let z = if exists {
+            (uniform(&mut rng) < obs.detection(x)).then(|| obs.sample(x, &mut rng).unwrap())
+        } else {
+            (uniform(&mut rng) < q).then(|| psi.sample(&mut rng).unwrap())
+        };
+        let est = match z {
+            None => declare_empty.then_some(b.undetected_mean),
+            Some(z) => {
+                let (m, mean) = post(z);
+                (r * m >= (1.0 - r) * q * psi.pdf(z)).then_some(mean)
+            }
+        };
+        errs.push(match (exists, est) {
+            (true, Some(e)) => (x - e) * (x - e),
+            (true, None) => e1,
+            (false, Some(_)) => e0,
+            (false, None) => 0.0,
+        });
+    }
+    let mc = stats(&errs);
+    let z = (mc.mean - b.assembled.bound) / mc.se;
+    println!(
+        "mixture prior: bound {:.5} MC {:.5} ± {:.5} z {z:+.2}",
+        b.assembled.bound, mc.mean, mc.se
+    );
+    assert!(z > -4.0);
+    assert!(b.regular);
+}
