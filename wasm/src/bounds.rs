@@ -6,6 +6,7 @@ use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, check_range, read, write};
+use crate::types::Numbers;
 use fisst::bounds;
 
 /// Options of `jdeBoundNoClutter`: Corollary 3 in the Gaussian form (31) (constant P_o,
@@ -176,4 +177,471 @@ pub fn jde_sequential_bound(
     )
     .or_throw_in("options")?;
     write(&JdeSequentialBoundResult { bound })
+}
+
+/// N(mean, variance).
+#[derive(Deserialize, Tsify)]
+pub struct GaussianShape {
+    /// The mean (finite).
+    pub mean: f64,
+    /// The variance (> 0).
+    pub variance: f64,
+}
+
+/// U[low, high].
+#[derive(Deserialize, Tsify)]
+pub struct UniformShape {
+    /// The lower end.
+    pub low: f64,
+    /// The upper end (> low).
+    pub high: f64,
+}
+
+/// One component of a Gaussian mixture.
+#[derive(Deserialize, Tsify)]
+pub struct MixtureShape {
+    /// Weight > 0 (the weights are normalised).
+    pub weight: f64,
+    /// Mean.
+    pub mean: f64,
+    /// Variance > 0.
+    pub variance: f64,
+}
+
+/// A tabulated density: linear interpolation between knots, 0 outside, normalised.
+#[derive(Deserialize, Tsify)]
+pub struct TableShape {
+    /// Knots, strictly increasing (2 to 10,000).
+    pub x: Numbers,
+    /// Density ≥ 0 at each knot (any positive scale: it is normalised).
+    pub density: Numbers,
+}
+
+/// A 1D density: `{ gaussian: { mean, variance } }`, `{ uniform: { low, high } }`,
+/// `{ mixture: [{ weight, mean, variance }, …] }` (1 to 1,000 components) or
+/// `{ table: { x, density } }`.
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub enum DensityShape {
+    /// Gaussian.
+    Gaussian(GaussianShape),
+    /// Uniform.
+    Uniform(UniformShape),
+    /// Gaussian mixture.
+    Mixture(Vec<MixtureShape>),
+    /// Tabulated.
+    Table(TableShape),
+}
+
+const MAX_KNOTS: usize = 10_000;
+const MAX_COMPONENTS: usize = 1_000;
+
+impl DensityShape {
+    fn into_core(self, path: &str) -> JsResult<bounds::Density1> {
+        match self {
+            DensityShape::Gaussian(g) => bounds::Density1::gaussian(g.mean, g.variance)
+                .or_throw_in(&format!("{path}.gaussian")),
+            DensityShape::Uniform(u) => {
+                bounds::Density1::uniform(u.low, u.high).or_throw_in(&format!("{path}.uniform"))
+            }
+            DensityShape::Mixture(c) => {
+                let p = format!("{path}.mixture");
+                check_range(&format!("{p}.length"), c.len(), 1, MAX_COMPONENTS)?;
+                let c: Vec<(f64, f64, f64)> =
+                    c.iter().map(|c| (c.weight, c.mean, c.variance)).collect();
+                bounds::Density1::mixture(&c).or_throw_in(&p)
+            }
+            DensityShape::Table(t) => {
+                let p = format!("{path}.table");
+                check_range(&format!("{p}.x.length"), t.x.0.len(), 2, MAX_KNOTS)?;
+                bounds::Density1::table(&t.x.0, &t.density.0).or_throw_in(&p)
+            }
+        }
+    }
+}
+
+/// A tabulated P_o(x): linear interpolation, held constant beyond the end knots.
+#[derive(Deserialize, Tsify)]
+pub struct DetectionTableShape {
+    /// Knots, strictly increasing (2 to 10,000).
+    pub x: Numbers,
+    /// P_o at each knot, in [0, 1].
+    pub probability: Numbers,
+}
+
+/// `{ table: { x, probability } }`.
+#[derive(Deserialize)]
+struct DetectionTableWrapper {
+    table: DetectionTableShape,
+}
+
+/// P_o(x): a number in [0, 1] (constant) or `{ table: { x, probability } }`.
+#[derive(Tsify)]
+#[tsify(type = "number | { table: DetectionTableShape }")]
+pub enum DetectionShape {
+    /// Constant.
+    Constant(f64),
+    /// Tabulated.
+    Table(DetectionTableShape),
+}
+
+impl<'de> Deserialize<'de> for DetectionShape {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> serde::de::Visitor<'de> for V {
+            type Value = DetectionShape;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("a probability or { table: { x, probability } }")
+            }
+            fn visit_f64<E: serde::de::Error>(self, x: f64) -> Result<Self::Value, E> {
+                Ok(DetectionShape::Constant(x))
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(
+                self,
+                map: A,
+            ) -> Result<Self::Value, A::Error> {
+                let w = DetectionTableWrapper::deserialize(
+                    serde::de::value::MapAccessDeserializer::new(map),
+                )?;
+                Ok(DetectionShape::Table(w.table))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+/// The observation: P_o(x) and g(z|x) = N(z; gain·x + offset, noiseVariance).
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct ObservationShape {
+    /// P_o(x): a number in [0, 1] or `{ table: { x, probability } }`.
+    pub detection_probability: DetectionShape,
+    /// a (default 1).
+    #[serde(default = "one")]
+    #[tsify(optional)]
+    pub gain: f64,
+    /// b (default 0).
+    #[serde(default)]
+    #[tsify(optional)]
+    pub offset: f64,
+    /// σ_v² > 0.
+    pub noise_variance: f64,
+}
+
+impl ObservationShape {
+    fn into_core(self, path: &str) -> JsResult<bounds::LinearGaussian> {
+        let det = match self.detection_probability {
+            DetectionShape::Constant(p) => bounds::Detection::constant(p).or_throw_in(path),
+            DetectionShape::Table(t) => {
+                let p = format!("{path}.detectionProbability.table");
+                check_range(&format!("{p}.x.length"), t.x.0.len(), 2, MAX_KNOTS)?;
+                bounds::Detection::table(&t.x.0, &t.probability.0).or_throw_in(&p)
+            }
+        }?;
+        bounds::LinearGaussian::new(det, self.gain, self.offset, self.noise_variance)
+            .or_throw_in(path)
+    }
+}
+
+/// Model I's false observations: probability q and density ψ.
+#[derive(Deserialize, Tsify)]
+pub struct FalseAlarmShape {
+    /// q in [0, 1].
+    pub probability: f64,
+    /// ψ.
+    pub density: DensityShape,
+}
+
+/// Model II's Poisson clutter: rate λ and the density of its points (v = λ · density).
+#[derive(Deserialize, Tsify)]
+pub struct ClutterShape {
+    /// λ ≥ 0 (at most 1000).
+    pub rate: f64,
+    /// v/λ.
+    pub density: DensityShape,
+}
+
+/// `'I'` (Theorem 1: Bernoulli observation with false alarms) or `'II'` (Theorem 2: Poisson
+/// clutter).
+#[derive(Deserialize, Tsify, Clone, Copy)]
+pub enum MeasurementModel {
+    /// Model I (13).
+    #[serde(rename = "I")]
+    One,
+    /// Model II (22).
+    #[serde(rename = "II")]
+    Two,
+}
+
+/// Options of `jdeBound`.
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct JdeBoundOptions {
+    /// `'I'` or `'II'`.
+    pub model: MeasurementModel,
+    /// r in [0, 1].
+    pub existence: f64,
+    /// f, the prior density of the state.
+    pub prior: DensityShape,
+    /// P_o and g.
+    pub observation: ObservationShape,
+    /// Model I: `{ probability, density }` (q, ψ); omitted: q = 0. Not allowed with model II.
+    #[tsify(optional)]
+    pub false_alarm: Option<FalseAlarmShape>,
+    /// Model II: `{ rate, density }` (λ, v/λ); omitted: λ = 0. Not allowed with model I.
+    #[tsify(optional)]
+    pub clutter: Option<ClutterShape>,
+    /// e_0² ≥ 0.
+    pub false_alarm_error: f64,
+    /// e_1² ≥ 0.
+    pub miss_error: f64,
+    /// l, the state dimension: only 1 here (the component bounds (70)–(72) of a vector state
+    /// are `jdeComponentBounds`).
+    #[tsify(optional)]
+    pub dims: Option<usize>,
+    /// Relative quadrature tolerance in [1e-14, 0.1] (default 1e-10).
+    #[tsify(optional)]
+    pub tolerance: Option<f64>,
+    /// Monte Carlo samples per cardinality n ≥ 2 (model II with clutter; 100 to 1,000,000,
+    /// default 20,000; samples × Σ n at most 10^7).
+    #[tsify(optional)]
+    pub samples: Option<usize>,
+    /// Seed of the Monte Carlo (integer; omitted: fresh entropy, returned as `seed`).
+    #[tsify(optional)]
+    pub seed: Option<u64>,
+}
+
+/// One summand of (17) or (23).
+#[derive(Serialize, Tsify)]
+pub struct BoundTerm {
+    /// `'estimation'`, `'undetected'`, `'missed'` or `'falseTarget'`.
+    pub name: &'static str,
+    /// Its value.
+    pub value: f64,
+}
+
+/// The n-point part of Theorem 2 (model I: only n = 1).
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct CardinalityTerm {
+    /// n = |Z|.
+    pub n: usize,
+    /// C_{n−1}, the probability of n − 1 clutter points.
+    pub probability: f64,
+    /// w_n (20)/(25).
+    pub w: f64,
+    /// J'_n⁻¹ (with the 1/w_n² of (20)/(25)).
+    pub inverse_information: f64,
+    /// Pr(the detector rejects n clutter-only points).
+    pub clutter_null: f64,
+    /// `'quadrature'` or `'monte-carlo'`.
+    pub method: &'static str,
+    /// Error estimate of `inverseInformation` (Monte Carlo: one standard error).
+    pub error: f64,
+}
+
+/// Result of `jdeBound`.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct JdeBoundResult {
+    /// The lower bound on E e²(X, X̂(Z)) (a valid one only when `regular`).
+    pub bound: f64,
+    /// The rule on Z = ∅ of the bound's estimator.
+    #[tsify(type = "'HPE' | 'LPE'")]
+    pub phase: &'static str,
+    /// r* (18)/(24) (may exceed 1; `Infinity` when HPE never wins).
+    pub existence_threshold: f64,
+    /// The summands of (17)/(23) in order: estimation, undetected, missed, falseTarget.
+    pub terms: Vec<BoundTerm>,
+    /// Error estimate of `bound` (quadrature, one Monte Carlo standard error).
+    pub error: f64,
+    /// The HPE bound.
+    pub hpe: f64,
+    /// The LPE bound.
+    pub lpe: f64,
+    /// P̄_o (14).
+    pub mean_detection: f64,
+    /// x*, the mean of f_d'.
+    pub undetected_mean: f64,
+    /// σ_e² (16).
+    pub undetected_variance: f64,
+    /// η1 or η2.
+    pub eta: f64,
+    /// The MAP region of one-point observations, `[low, high]` intervals.
+    pub region: Vec<(f64, f64)>,
+    /// Per cardinality n.
+    pub cardinalities: Vec<CardinalityTerm>,
+    /// false when f·P_o does not vanish at the prior's support ends (uniform, tables ending
+    /// above 0): the information inequality's regularity fails, the estimation term may not
+    /// be a bound.
+    pub regular: bool,
+    /// The Monte Carlo seed used (model II with clutter only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub seed: Option<u64>,
+}
+
+/// Theorems 1 and 2 of paper 002. Options `{ model, existence, prior, observation,
+/// falseAlarm?, clutter?, falseAlarmError, missError, dims?, tolerance?, samples?, seed? }`;
+/// returns `{ bound, phase, existenceThreshold, terms, error, … }`.
+#[wasm_bindgen(js_name = jdeBound, unchecked_return_type = "JdeBoundResult")]
+pub fn jde_bound(
+    #[wasm_bindgen(unchecked_param_type = "JdeBoundOptions")] options: JsValue,
+) -> JsResult<JsValue> {
+    let o: JdeBoundOptions = read(options, "options")?;
+    if let Some(l) = o.dims {
+        check_range("options.dims", l, 1, 1)?;
+    }
+    let prior = o.prior.into_core("options.prior")?;
+    let obs = o.observation.into_core("options.observation")?;
+    let mut settings = bounds::Settings::default();
+    if let Some(t) = o.tolerance {
+        settings.tolerance = t;
+    }
+    let (out, seed) = match o.model {
+        MeasurementModel::One => {
+            if o.clutter.is_some() {
+                return Err(crate::boundary::type_error(
+                    "options.clutter is for model 'II' (use falseAlarm with model 'I')",
+                ));
+            }
+            let (q, psi) = match o.false_alarm {
+                Some(f) => (
+                    f.probability,
+                    f.density.into_core("options.falseAlarm.density")?,
+                ),
+                None => (0.0, bounds::Density1::uniform(0.0, 1.0).or_throw()?),
+            };
+            let m = bounds::ModelI {
+                existence: o.existence,
+                prior: &prior,
+                observation: &obs,
+                false_alarm_probability: q,
+                false_alarm_density: &psi,
+                false_alarm_error: o.false_alarm_error,
+                miss_error: o.miss_error,
+            };
+            (
+                bounds::theorem1(&m, &settings).or_throw_in("options")?,
+                None,
+            )
+        }
+        MeasurementModel::Two => {
+            if o.false_alarm.is_some() {
+                return Err(crate::boundary::type_error(
+                    "options.falseAlarm is for model 'I' (use clutter with model 'II')",
+                ));
+            }
+            let (lambda, c) = match o.clutter {
+                Some(c) => (c.rate, c.density.into_core("options.clutter.density")?),
+                None => (0.0, bounds::Density1::uniform(0.0, 1.0).or_throw()?),
+            };
+            let samples = check_range(
+                "options.samples",
+                o.samples.unwrap_or(settings.samples),
+                100,
+                1_000_000,
+            )?;
+            settings.samples = samples;
+            // the Monte Carlo work: samples × Σ_{n=2}^{N+1} n
+            let mut last = 0usize;
+            let mut kept = bounds::poisson_pmf(lambda.max(0.0), 0);
+            while lambda.is_finite()
+                && 1.0 - kept > settings.series_tolerance
+                && last < settings.max_clutter
+            {
+                last += 1;
+                kept += bounds::poisson_pmf(lambda, last);
+            }
+            let points: usize = (2..=last + 1).sum();
+            if points.saturating_mul(samples) > 10_000_000 {
+                return Err(crate::boundary::range_error(format!(
+                    "options.samples: samples × Σ n = {} exceeds 10^7 at this clutter rate; pass fewer samples (at most {})",
+                    points.saturating_mul(samples),
+                    10_000_000 / points.max(1)
+                )));
+            }
+            let seed = if last > 0 {
+                Some(crate::boundary::seed_or_entropy(o.seed)?)
+            } else {
+                None
+            };
+            settings.seed = seed.unwrap_or(0);
+            let m = bounds::ModelII {
+                existence: o.existence,
+                prior: &prior,
+                observation: &obs,
+                clutter_rate: lambda,
+                clutter_density: &c,
+                false_alarm_error: o.false_alarm_error,
+                miss_error: o.miss_error,
+            };
+            (
+                bounds::theorem2(&m, &settings).or_throw_in("options")?,
+                seed,
+            )
+        }
+    };
+    write(&result(&out, seed))
+}
+
+fn result(b: &bounds::JdeBound, seed: Option<u64>) -> JdeBoundResult {
+    let a = &b.assembled;
+    let t = &a.terms;
+    JdeBoundResult {
+        bound: a.bound,
+        phase: match a.phase {
+            bounds::Phase::Hpe => "HPE",
+            bounds::Phase::Lpe => "LPE",
+        },
+        existence_threshold: a.existence_threshold,
+        terms: vec![
+            BoundTerm {
+                name: "estimation",
+                value: t.estimation,
+            },
+            BoundTerm {
+                name: "undetected",
+                value: t.undetected,
+            },
+            BoundTerm {
+                name: "missed",
+                value: t.missed,
+            },
+            BoundTerm {
+                name: "falseTarget",
+                value: t.false_target,
+            },
+        ],
+        error: b.error,
+        hpe: a.hpe,
+        lpe: a.lpe,
+        mean_detection: b.mean_detection,
+        undetected_mean: b.undetected_mean,
+        undetected_variance: b.undetected_variance,
+        eta: b.eta,
+        region: b.region.clone(),
+        cardinalities: b
+            .cardinalities
+            .iter()
+            .map(|c| CardinalityTerm {
+                n: c.n,
+                probability: c.probability,
+                w: c.w,
+                inverse_information: c.inverse_information,
+                clutter_null: c.clutter_null,
+                method: match c.method {
+                    bounds::Method::Quadrature => "quadrature",
+                    bounds::Method::MonteCarlo => "monte-carlo",
+                },
+                error: c.error,
+            })
+            .collect(),
+        regular: b.regular,
+        seed,
+    }
 }

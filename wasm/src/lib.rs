@@ -37,7 +37,9 @@ pub use bernoulli_filters::{
     GmBernoulliFilterJs, ParticleBernoulliFilterJs, airport_scenario, gm_bernoulli_predict,
     gm_bernoulli_update,
 };
-pub use bounds::{gaussian_fisher_information, jde_bound_no_clutter, jde_sequential_bound};
+pub use bounds::{
+    gaussian_fisher_information, jde_bound, jde_bound_no_clutter, jde_sequential_bound,
+};
 pub use fov::{fov_cardinality_js, fov_variance_map, mixture_density_grid_js, placement_scene_js};
 pub use metrics::{gospa, linear_assignment, ospa, uospa};
 pub use multi_bernoulli::{

@@ -13,6 +13,26 @@
 //! | [`gaussian_no_clutter`], [`gaussian_fisher_information`] | (30)–(31), Example 1 (with NOTES.md's erratum) |
 //! | [`map_threshold`], [`NoClutterBound::map_bound`] | Section IV-A: MAP detection on Z = ∅ moves r* to r_M* |
 //! | [`sequential_bound`] | IRF (35), Enumeration (37) |
+//! | [`Density`], [`Observation`] (closures with derivatives), [`Density1`], [`Detection`], [`LinearGaussian`] | f, P_o, g, ψ, v of models I (13) and II (22) |
+//! | [`theorem1`], [`ModelI`] | Theorem 1 (14)–(21) by quadrature: P̄o, f_d, f_d', σ_e², Z'_0 by root-finding, w_1, η_1, J'_1 (20) |
+//! | [`theorem2`], [`ModelII`] | Theorem 2 (22)–(26): n = 1 by quadrature, n ≥ 2 by Monte Carlo; η2 exact (see [`theorem2`]'s module) |
+//! | [`component_bound`], [`component_bounds_no_clutter`], [`component_corollary1`], [`gaussian_information_matrix`] | the vector extensions (63)–(72) |
+//! | [`example2`], [`example2_regularity`] | Example 2 (32), Fig. 2 right: (32) against (20), and the regularity failure |
+//!
+//! ## What is a bound, and what is returned
+//! - Every term is computed as the paper defines it except where NOTES.md or these docs say
+//!   otherwise: J'_n carries the 1/w_n² of (20)/(25) (Example 2's (32) drops it: both are in
+//!   [`Example2`]); (23) is read as NOTES.md says; η2 is the exact clutter-rejection
+//!   probability, not the product-region formula e^{−λ0} − e^{−λ}.
+//! - Truncation: Σ C_n J'⁻¹ is cut where the Poisson tail is below
+//!   [`Settings::series_tolerance`] (a valid lower bound: the terms are ≥ 0); Σ C_n w_{n+1} gets
+//!   the tail added (w ≤ 1), and the η2 tail is bracketed, so the returned number stays a lower
+//!   bound. Monte Carlo and quadrature errors are in [`JdeBound::error`]; the bound is the point
+//!   estimate (subtract `error` for a conservative one).
+//! - The information inequality needs p_1(·, z) to vanish at the ends of the prior's support;
+//!   [`JdeBound::regular`] is false when it does not (uniform priors, tables, Example 2, where
+//!   1/J_1 = 0.1897 exceeds the posterior mean's MSE 0.0340): there the estimation term, and so
+//!   the "bound", can exceed what an estimator attains.
 //!
 //! ```
 //! use fisst::bounds::{gaussian_no_clutter, gaussian_fisher_information};
@@ -42,4 +62,8 @@ mod example2;
 pub use example2::{
     Example2, Example2Observation, Example2Prior, Example2Regularity, UnitUniform, example2,
     example2_regularity,
+};
+mod vector;
+pub use vector::{
+    component_bound, component_bounds_no_clutter, component_corollary1, gaussian_information_matrix,
 };

@@ -328,6 +328,59 @@ export const specs = [
       .record({ existences: probabilities(20), missProbability: probability, costs, threshold: fc.double({ min: 0, max: 1, noNaN: true }) }, { requiredKeys: ['existences', 'missProbability', 'costs'] })
       .map((o) => [o]),
   },
+  {
+    name: 'jdeBoundNoClutter',
+    roots: ['options'],
+    args: fc
+      .tuple(probability, probability, fc.double({ min: 1e-6, max: 1e6, noNaN: true }), fc.double({ min: 0, max: 1, noNaN: true }), fc.double({ min: 0, max: 1e6, noNaN: true }), fc.double({ min: 0, max: 1e6, noNaN: true }))
+      .map(([r, p, f, frac, e0, e1]) => [{ existence: r, detectionProbability: p, priorVariance: f, posteriorVariance: Math.max(f * frac, 1e-300), falseAlarmError: e0, missError: e1 }]),
+  },
+  {
+    name: 'gaussianFisherInformation',
+    roots: ['options'],
+    args: fc.record({ priorVariance: fc.double({ min: 1e-6, max: 1e6, noNaN: true }), gain: coord, noiseVariance: fc.double({ min: 1e-6, max: 1e6, noNaN: true }) }).map((o) => [o]),
+  },
+  {
+    name: 'jdeSequentialBound',
+    roots: ['options'],
+    args: fc
+      .tuple(fc.constantFrom('enumeration', 'irf'), fc.double({ min: 1e-6, max: 1e3, noNaN: true }), fc.double({ min: 0, max: 1e3, noNaN: true }), probability, fc.integer({ min: 1, max: 200 }))
+      .map(([method, j0, extra, p, steps]) => [{ method, priorInformation: j0, detectedInformation: j0 + extra, detectionProbability: p, steps }]),
+  },
+  {
+    name: 'jdeBound',
+    roots: ['options'],
+    weight: 0.3,
+    maxMs: 2000,
+    args: fc
+      .tuple(
+        fc.constantFrom('I', 'II'),
+        probability,
+        fc.oneof(
+          fc.record({ gaussian: fc.record({ mean: fc.double({ min: -5, max: 5, noNaN: true }), variance: fc.double({ min: 0.01, max: 25, noNaN: true }) }) }),
+          fc.record({ uniform: fc.constantFrom({ low: -2, high: 2 }, { low: 0, high: 1 }) }),
+          fc.record({ mixture: fc.array(fc.record({ weight: fc.double({ min: 0.1, max: 1, noNaN: true }), mean: fc.double({ min: -5, max: 5, noNaN: true }), variance: fc.double({ min: 0.1, max: 4, noNaN: true }) }), { minLength: 1, maxLength: 3 }) }),
+          fc.constant({ table: { x: [-2, 0, 2], density: [0, 1, 0] } }),
+        ),
+        fc.oneof(probability, fc.constant({ table: { x: [-3, 3], probability: [0.3, 0.9] } })),
+        fc.double({ min: 0.01, max: 10, noNaN: true }),
+        probability,
+        fc.double({ min: 0, max: 2, noNaN: true }),
+        fc.double({ min: 0, max: 100, noNaN: true }),
+        fc.double({ min: 0, max: 100, noNaN: true }),
+      )
+      .map(([model, r, prior, det, noise, q, rate, e0, e1]) => [
+        {
+          model,
+          existence: r,
+          prior,
+          observation: { detectionProbability: det, noiseVariance: noise },
+          ...(model === 'I' ? { falseAlarm: { probability: q, density: { uniform: { low: -10, high: 10 } } } } : { clutter: { rate, density: { uniform: { low: -10, high: 10 } } }, samples: 200, seed: 1 }),
+          falseAlarmError: e0,
+          missError: e1,
+        },
+      ]),
+  },
   { name: 'version', roots: [], weight: 0.05, args: fc.constant([]) },
 ];
 
@@ -346,4 +399,6 @@ export const pastCaps = {
   negativeInformationScenario: [['0.step', 4], ['0.step', 0]],
   fovVarianceMap: [['0.grid.x.2', 4097]],
   mixtureDensityGrid: [['0.grid.y.2', 4097]],
+  jdeSequentialBound: [['0.steps', 10001]],
+  jdeBound: [['0.samples', 1e6 + 1], ['0.dims', 2]],
 };

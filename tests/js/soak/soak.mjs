@@ -15,6 +15,10 @@ const box = { box: { min: [-1, -1], max: [1, 1] } };
 /** Per function (or class, with a driver below): a few cheap valid argument lists and a few
  * malformed ones. */
 export const cases = {
+  jdeBoundNoClutter: [[{ existence: 0.7, detectionProbability: 0.4, priorVariance: 100, posteriorVariance: 25, falseAlarmError: 150, missError: 200 }], [{ existence: 2, detectionProbability: 0.4, priorVariance: 100, posteriorVariance: 25, falseAlarmError: 150, missError: 200 }]],
+  gaussianFisherInformation: [[{ priorVariance: 4, gain: 2, noiseVariance: 1 }], [{ priorVariance: 4, gain: 2 }]],
+  jdeSequentialBound: [[{ method: 'irf', priorInformation: 0.01, detectedInformation: 0.04, detectionProbability: 0.6, steps: 5 }], [{ method: 'crb', priorInformation: 0.01, detectedInformation: 0.04, detectionProbability: 0.6, steps: 5 }]],
+  jdeBound: [[{ model: 'I', existence: 0.6, prior: { gaussian: { mean: 0, variance: 4 } }, observation: { detectionProbability: 0.8, noiseVariance: 1 }, falseAlarmError: 6, missError: 9 }], [{ model: 'I', existence: 0.6, prior: { gaussian: { mean: 0, variance: -4 } }, observation: { detectionProbability: 0.8, noiseVariance: 1 }, falseAlarmError: 6, missError: 9 }]],
   gospa: [[[[0, 0], [1, 1]], [[0, 0.5]], { c: 2 }], [[[0]], [[1], [5]], { c: 3, p: 1, alpha: 1 }], [[[0, 0]], [[0, 0]], { c: 2, aplha: 1 }], [[[0, NaN]], [], { c: 1 }]],
   ospa: [[[[0], [5]], [[1]], { c: 10, p: 1 }], [[[0, 0]], 'x', { c: 1 }]],
   uospa: [[[[0], [5]], [[1]], { c: 10 }], [[[0]], [[1]], { c: -1 }]],

@@ -93,3 +93,25 @@ const cloud: number[][] = pfFilter.particles;
 pfFilter.free();
 // @ts-expect-error: a misspelt option ('existance') is not in GmBernoulliPredictOptions
 fisst.gmBernoulliPredict({ existance: 0.5, mixture: [], transition: airport.config.transition });
+
+// Paper 002: error bounds for joint detection and estimation.
+const nc: fisst.JdeBoundNoClutterResult = fisst.jdeBoundNoClutter({ existence: 0.7, detectionProbability: 0.4, priorVariance: 100, posteriorVariance: 25, falseAlarmError: 150, missError: 200 });
+const declares: boolean = nc.declareOnEmpty && nc.existenceThreshold > 0 && nc.mapBound >= nc.bound;
+const fi: fisst.GaussianFisherInformationResult = fisst.gaussianFisherInformation({ priorVariance: 100, gain: 1, noiseVariance: 100 / 3 });
+const seq: number[] = fisst.jdeSequentialBound({ method: 'enumeration', priorInformation: 1 / fi.information, detectedInformation: fi.information, detectionProbability: 0.5, steps: 10 }).bound;
+const tablePrior: fisst.DensityShape = { table: { x: [0, 1, 2], density: [0, 1, 0] } };
+const jb: fisst.JdeBoundResult = fisst.jdeBound({
+  model: 'I',
+  existence: 0.6,
+  prior: { gaussian: { mean: 0, variance: 4 } },
+  observation: { detectionProbability: { table: { x: [-3, 3], probability: [0.5, 0.9] } }, gain: 1, noiseVariance: 1 },
+  falseAlarm: { probability: 0.2, density: { uniform: { low: -10, high: 10 } } },
+  falseAlarmError: 6,
+  missError: 9,
+});
+const phase: 'HPE' | 'LPE' = jb.phase;
+const termNames: string[] = jb.terms.map((t) => t.name);
+const jb2: fisst.JdeBoundResult = fisst.jdeBound({ model: 'II', existence: 0.6, prior: tablePrior, observation: { detectionProbability: 0.9, noiseVariance: 0.5 }, clutter: { rate: 1, density: { mixture: [{ weight: 1, mean: 0, variance: 25 }] } }, falseAlarmError: 6, missError: 9, samples: 500, seed: 1 });
+const perN: number[] = jb2.cardinalities.map((c) => c.inverseInformation);
+// @ts-expect-error: a misspelt option ('existance') is not in JdeBoundNoClutterOptions
+fisst.jdeBoundNoClutter({ existance: 0.7, detectionProbability: 0.4, priorVariance: 100, posteriorVariance: 25, falseAlarmError: 150, missError: 200 });

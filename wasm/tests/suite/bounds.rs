@@ -1,5 +1,7 @@
 use super::{assert_throws, get, js, num, nums};
-use fisst_wasm::{gaussian_fisher_information, jde_bound_no_clutter, jde_sequential_bound};
+use fisst_wasm::{
+    gaussian_fisher_information, jde_bound, jde_bound_no_clutter, jde_sequential_bound,
+};
 use wasm_bindgen_test::wasm_bindgen_test;
 
 #[wasm_bindgen_test]
@@ -91,5 +93,128 @@ fn sequential_bounds_match_the_core() {
         )),
         "RangeError",
         "options.detectedInformation",
+    );
+}
+
+fn native_model_i(q: f64) -> fisst::bounds::JdeBound {
+    use fisst::bounds::*;
+    let prior = Density1::gaussian(1.0, 4.0).unwrap();
+    let obs = LinearGaussian::new(Detection::constant(0.8).unwrap(), 1.0, 0.0, 1.0).unwrap();
+    let psi = Density1::uniform(-10.0, 10.0).unwrap();
+    theorem1(
+        &ModelI {
+            existence: 0.6,
+            prior: &prior,
+            observation: &obs,
+            false_alarm_probability: q,
+            false_alarm_density: &psi,
+            false_alarm_error: 6.0,
+            miss_error: 9.0,
+        },
+        &Settings::default(),
+    )
+    .unwrap()
+}
+
+#[wasm_bindgen_test]
+fn jde_bound_model_i_matches_the_core() {
+    let r = jde_bound(js(
+        r#"{"model":"I","existence":0.6,"prior":{"gaussian":{"mean":1,"variance":4}},
+            "observation":{"detectionProbability":0.8,"noiseVariance":1},
+            "falseAlarm":{"probability":0.3,"density":{"uniform":{"low":-10,"high":10}}},
+            "falseAlarmError":6,"missError":9}"#,
+    ))
+    .unwrap();
+    let b = native_model_i(0.3);
+    assert_eq!(num(&r, "bound"), b.assembled.bound);
+    assert_eq!(num(&r, "eta"), b.eta);
+    let terms = js_sys::Array::from(&get(&r, "terms"));
+    assert_eq!(terms.length(), 4);
+    let sum: f64 = terms.iter().map(|t| num(&t, "value")).sum();
+    assert!((sum - num(&r, "bound")).abs() < 1e-12);
+    assert_eq!(
+        get(&terms.get(0), "name").as_string().as_deref(),
+        Some("estimation")
+    );
+    let phase = get(&r, "phase").as_string().unwrap();
+    assert!(phase == "HPE" || phase == "LPE");
+    assert_eq!(get(&r, "regular").as_bool(), Some(true));
+}
+
+#[wasm_bindgen_test]
+fn jde_bound_model_ii_is_seeded_and_reproducible() {
+    let opts = r#"{"model":"II","existence":0.7,"prior":{"mixture":[{"weight":1,"mean":-1,"variance":1},{"weight":1,"mean":2,"variance":2}]},
+            "observation":{"detectionProbability":{"table":{"x":[-3,3],"probability":[0.6,0.9]}},"gain":1.5,"noiseVariance":0.5},
+            "clutter":{"rate":1,"density":{"table":{"x":[-15,0,15],"density":[1,2,1]}}},
+            "falseAlarmError":6,"missError":9,"samples":500,"seed":3}"#;
+    let a = jde_bound(js(opts)).unwrap();
+    let b = jde_bound(js(opts)).unwrap();
+    assert_eq!(num(&a, "bound"), num(&b, "bound"));
+    assert_eq!(num(&a, "seed"), 3.0);
+    let cards = js_sys::Array::from(&get(&a, "cardinalities"));
+    assert!(cards.length() > 2);
+    assert_eq!(
+        get(&cards.get(1), "method").as_string().as_deref(),
+        Some("monte-carlo")
+    );
+    assert!(num(&a, "error") > 0.0);
+}
+
+#[wasm_bindgen_test]
+fn jde_bound_errors_name_the_field() {
+    let base = |extra: &str| {
+        js(&format!(
+            r#"{{"model":"I","existence":0.6,"prior":{{"gaussian":{{"mean":1,"variance":4}}}},
+                "observation":{{"detectionProbability":0.8,"noiseVariance":1}},
+                "falseAlarmError":6,"missError":9{extra}}}"#
+        ))
+    };
+    assert!(jde_bound(base("")).is_ok());
+    assert_throws(
+        jde_bound(base(r#","dims":2"#)),
+        "RangeError",
+        "options.dims",
+    );
+    assert_throws(
+        jde_bound(base(
+            r#","falseAlarm":{"probability":2,"density":{"uniform":{"low":0,"high":1}}}"#,
+        )),
+        "RangeError",
+        "options.falseAlarm.probability",
+    );
+    assert_throws(
+        jde_bound(base(
+            r#","falseAlarm":{"probability":0.2,"density":{"uniform":{"low":1,"high":0}}}"#,
+        )),
+        "RangeError",
+        "options.falseAlarm.density.uniform.high",
+    );
+    assert_throws(
+        jde_bound(base(
+            r#","clutter":{"rate":1,"density":{"uniform":{"low":0,"high":1}}}"#,
+        )),
+        "TypeError",
+        "options.clutter",
+    );
+    assert_throws(
+        jde_bound(js(
+            r#"{"model":"III","existence":0.6,"prior":{"gaussian":{"mean":1,"variance":4}},"observation":{"detectionProbability":0.8,"noiseVariance":1},"falseAlarmError":6,"missError":9}"#,
+        )),
+        "RangeError",
+        "options.model",
+    );
+    assert_throws(
+        jde_bound(js(
+            r#"{"model":"I","existence":0.6,"prior":{"table":{"x":[0,1],"density":[0,0]}},"observation":{"detectionProbability":0.8,"noiseVariance":1},"falseAlarmError":6,"missError":9}"#,
+        )),
+        "RangeError",
+        "options.prior.table.density",
+    );
+    assert_throws(
+        jde_bound(js(
+            r#"{"model":"I","existence":0.6,"prior":{"gaussian":{"mean":1,"variance":4}},"observation":{"detectionProbability":{"table":{"x":[0,1],"probability":[0.5,1.5]}},"noiseVariance":1},"falseAlarmError":6,"missError":9}"#,
+        )),
+        "RangeError",
+        "options.observation.detectionProbability.table.probability[1]",
     );
 }
