@@ -184,12 +184,16 @@ function drawSeq() {
 }
 
 // ---------------------------------------------------------------- Fig. 2 right: Example 2
+const REGULARITY = fisst.jdeExample2Regularity(); // r = 1, P_o = 1: 1/J_1 against the posterior mean's MSE
+$('right-j1').textContent = fmt(REGULARITY.inverseInformation, 4);
+$('right-mmse').textContent = fmt(REGULARITY.posteriorMeanMse, 4);
 const right = chart($('right'), {
   height: 380,
   x: { label: 'probability of false alarm q', range: [0, 1], format: (v) => fmt(v, 3) },
   y: { label: 'MSE: the curve (21) and the Monte Carlo', range: (lo, hi) => [0, hi], format: (v) => fmt(v, 4) },
   series: [
     ...RIGHT_PO.map((P, i) => ({ label: `P<sub>o</sub> = ${P}`, colour: RIGHT_COLOURS[i], width: 2 })),
+    ...RIGHT_PO.map((P, i) => ({ label: `with (20)'s J'<sub>1</sub>, P<sub>o</sub> = ${P}`, colour: RIGHT_COLOURS[i], width: 1.2, dash: [2, 3], legend: false })),
     ...RIGHT_PO.map((P) => ({ label: `● Monte Carlo, P<sub>o</sub> = ${P}`, colour: 'transparent', width: 0, legend: false })),
   ],
   overlay(o) {
@@ -199,31 +203,32 @@ const right = chart($('right'), {
   },
 });
 
-/** Example 2 as jdeBound takes it: f(x) = 2x(eˣ − 1), g(z|x) = x e^{xz}/(eˣ − 1) on [0, 1], ψ = 1. */
-const example2 = (r, P, q, e0) => fisst.jdeBound({
-  model: 'I', existence: r, example: 'example2', detectionProbability: P, falseAlarm: { probability: q }, falseAlarmError: e0,
-});
+/** Example 2 at one (r, P_o, q): the curve as (32) computes it (paperBound) and with (20)'s J'_1 (bound). */
+const example2 = (r, P, q, e0) => fisst.jdeExample2({ existence: r, detectionProbability: P, falseAlarmProbability: q, falseAlarmError: e0 });
 
 function drawRight() {
   const [r, e0] = [state.r2, state.e02];
   const curves = RIGHT_PO.map((P) => QS.map((q) => example2(r, P, q, e0)));
   const ve = curves[0][0].undetectedVariance;
-  const reference = example2(1, 1, 0, e0);
   const mc = results.mc.right;
   let below = 0;
   if (mc) {
     for (const p of mc.points) {
-      p.bound = curves[RIGHT_PO.indexOf(p.P)][Math.round(p.q * 50)].bound;
-      p.below = p.mse + 2 * p.se < p.bound;
+      const b = curves[RIGHT_PO.indexOf(p.P)][Math.round(p.q * 50)];
+      [p.bound, p.paperBound] = [b.bound, b.paperBound];
+      p.below = p.mse + 2 * p.se < Math.min(p.bound, p.paperBound);
       below += p.below;
     }
   }
-  results.right = { r, e0, variance: ve, curves: curves.map((c) => c.map((b) => b.bound)), phases: curves.map((c) => c.map((b) => b.phase)), inverseJ1: reference.bound, reference: mc?.reference ?? null, mc: mc?.points ?? null, below };
-  right.update([QS, ...results.right.curves, ...RIGHT_PO.map((P) => QS.map((q, k) => (mc && k % Q_EVERY === 0 ? mc.points.find((p) => p.P === P && p.q === q)?.mse ?? null : null)))]);
-  $('right-ve').textContent = `${fmt(ve, 4)}, ${fmt(e0 + ve, 4)}`;
-  $('right-j1').textContent = fmt(reference.bound, 4);
-  $('right-mmse').textContent = mc ? `${fmt(mc.reference.mse, 4)} ± ${fmt(2 * mc.reference.se, 1)}` : '…';
+  results.right = {
+    r, e0, variance: ve, missError: curves[0][0].missError, regularity: REGULARITY, reference: mc?.reference ?? null, mc: mc?.points ?? null, below,
+    paper: curves.map((c) => c.map((b) => b.paperBound)), curves: curves.map((c) => c.map((b) => b.bound)),
+  };
+  right.update([QS, ...results.right.paper, ...results.right.curves,
+    ...RIGHT_PO.map((P) => QS.map((q, k) => (mc && k % Q_EVERY === 0 ? mc.points.find((p) => p.P === P && p.q === q)?.mse ?? null : null)))]);
+  $('right-ve').textContent = `${fmt(ve, 4)}, ${fmt(results.right.missError, 4)}`;
   $('right-below').textContent = mc ? `${below} of ${mc.points.length}` : '…';
+  $('right-mc').textContent = mc ? `${fmt(mc.reference.mse, 4)} ± ${fmt(2 * mc.reference.se, 1)}` : '…';
 }
 
 // ---------------------------------------------------------------- state, updates, controls

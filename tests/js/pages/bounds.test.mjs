@@ -94,7 +94,7 @@ test('bounds: the figures are the package values, the sliders move them, and the
   await browser.done(page, 'bounds-sliders');
 });
 
-test('bounds: Fig. 2 right is jdeBound of Example 2, and the Monte Carlo falls below it where it is no bound', async () => {
+test('bounds: Fig. 2 right is jdeExample2, and the Monte Carlo falls below it where it is no bound', async () => {
   const page = await browser.open('bounds.html');
   let s = await settled(page);
   const check = async (st) => {
@@ -102,30 +102,31 @@ test('bounds: Fig. 2 right is jdeBound of Example 2, and the Monte Carlo falls b
     assert.equal(st.right.r, r);
     for (const [i, P] of [0.1, 0.4, 0.7, 1].entries()) {
       for (const k of [0, 10, 25, 50]) {
-        assert.equal(st.right.curves[i][k], fisst.jdeBound(example2Options(r, P, k / 50, e0)).bound, `P_o = ${P}, q = ${k / 50}`);
+        const e = fisst.jdeExample2({ existence: r, detectionProbability: P, falseAlarmProbability: k / 50, falseAlarmError: e0 });
+        assert.equal(st.right.paper[i][k], e.paperBound, `P_o = ${P}, q = ${k / 50}`);
+        assert.equal(st.right.curves[i][k], e.bound, `P_o = ${P}, q = ${k / 50}`);
       }
     }
     assert.equal(st.right.mc.length, 44);
+    for (const p of st.right.mc) assert.equal(p.below, p.mse + 2 * p.se < Math.min(p.bound, p.paperBound));
     assert.equal(await text(page, '#right-below'), `${st.right.below} of 44`);
     return st;
   };
   await check(s);
-  // NOTES.md: 1/J_1 = 0.1897, the MMSE 0.0340 at r = 1, P_o = 1.
-  assert.equal(await text(page, '#right-j1'), '0.1897');
-  assert.ok(Math.abs(s.right.reference.mse - 0.0340) < 4 * s.right.reference.se + 1e-4, `${s.right.reference.mse}`);
+  // NOTES.md: 1/J_1 = 0.1897, the MMSE 0.0340 at r = 1, P_o = 1; σe² = 0.0341.
+  const reg = fisst.jdeExample2Regularity();
+  assert.equal(await text(page, '#right-j1'), fmt(reg.inverseInformation, 4));
+  assert.equal(fmt(reg.inverseInformation, 4), '0.1897');
+  assert.equal(await text(page, '#right-mmse'), fmt(reg.posteriorMeanMse, 4));
+  assert.ok(Math.abs(s.right.reference.mse - reg.posteriorMeanMse) < 4 * s.right.reference.se + 1e-4, `${s.right.reference.mse}`);
   assert.ok(Math.abs(s.right.variance - 0.0341) < 1e-4);
-  // r = 1: the P_o = 1 dots sit far below their curve (the red rings).
+  // r = 1: every P_o = 1 dot sits far below its curve (red rings).
   await page.locator('#r2').fill('1');
   s = await check(await settled(page));
   assert.ok(s.right.mc.filter((p) => p.P === 1).every((p) => p.below), 'P_o = 1, r = 1: every dot below the curve');
   await page.locator('#e02').fill('2');
   await check(await settled(page));
   await browser.done(page, 'bounds-right');
-});
-
-/** Example 2 as the page passes it to jdeBound (keep in step with web/bounds.js). */
-const example2Options = (r, P, q, e0) => ({
-  model: 'I', existence: r, example: 'example2', detectionProbability: P, falseAlarm: { probability: q }, falseAlarmError: e0,
 });
 
 test('bounds: the settings are in the URL, and a malformed value falls back to the default', async () => {
