@@ -645,3 +645,112 @@ fn result(b: &bounds::JdeBound, seed: Option<u64>) -> JdeBoundResult {
         seed,
     }
 }
+
+/// Options of `jdeExample2` (paper 002 Example 2, Fig. 2 right).
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct JdeExample2Options {
+    /// r in [0, 1] (the figure: 0.6).
+    pub existence: f64,
+    /// P_o (constant) in [0, 1].
+    pub detection_probability: f64,
+    /// q, the false-alarm probability, in [0, 1] (the figure's abscissa).
+    pub false_alarm_probability: f64,
+    /// e_0² ≥ 0 (the figure: 1.2).
+    pub false_alarm_error: f64,
+    /// e_1² ≥ 0 (default e_0² + σ_e², the figure's choice).
+    #[tsify(optional)]
+    pub miss_error: Option<f64>,
+}
+
+/// Result of `jdeExample2`. Neither number is a lower bound where the estimation term
+/// matters: p_1 does not vanish at x = 1 (see `jdeExample2Regularity`).
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct JdeExample2Result {
+    /// Theorem 1 with J'_1 as (20) (with 1/w_1²).
+    pub bound: f64,
+    /// Theorem 1 with J'_1 as (32) prints it (no 1/w_1²): the paper's curve.
+    pub paper_bound: f64,
+    /// J'_1 of (20).
+    pub information: f64,
+    /// J'_1 of (32): ∫_{Z'_0} 4(e^z − 1)/z dz.
+    pub paper_information: f64,
+    /// w_1.
+    pub w: f64,
+    /// η_1.
+    pub eta: f64,
+    /// σ_e² (the prior variance, 0.0341).
+    pub undetected_variance: f64,
+    /// e_1² used.
+    pub miss_error: f64,
+    /// Z'_0 as `[low, high]` intervals of [0, 1].
+    pub region: Vec<(f64, f64)>,
+    /// The phase of the (20) bound.
+    #[tsify(type = "'HPE' | 'LPE'")]
+    pub phase: &'static str,
+}
+
+/// Example 2 of paper 002 at one (r, P_o, q): the bound with (20)'s J'_1 and with (32)'s.
+/// Options `{ existence, detectionProbability, falseAlarmProbability, falseAlarmError,
+/// missError? }`; returns `{ bound, paperBound, information, paperInformation, w, eta, … }`.
+#[wasm_bindgen(js_name = jdeExample2, unchecked_return_type = "JdeExample2Result")]
+pub fn jde_example2(
+    #[wasm_bindgen(unchecked_param_type = "JdeExample2Options")] options: JsValue,
+) -> JsResult<JsValue> {
+    let o: JdeExample2Options = read(options, "options")?;
+    let e = bounds::example2(
+        o.existence,
+        o.detection_probability,
+        o.false_alarm_probability,
+        o.false_alarm_error,
+        o.miss_error,
+    )
+    .or_throw_in("options")?;
+    write(&JdeExample2Result {
+        bound: e.bound,
+        paper_bound: e.paper_bound,
+        information: e.information,
+        paper_information: e.paper_information,
+        w: e.w,
+        eta: e.eta,
+        undetected_variance: e.undetected_variance,
+        miss_error: o
+            .miss_error
+            .unwrap_or(o.false_alarm_error + e.undetected_variance),
+        region: e.region,
+        phase: match e.assembled.0.phase {
+            bounds::Phase::Hpe => "HPE",
+            bounds::Phase::Lpe => "LPE",
+        },
+    })
+}
+
+/// Result of `jdeExample2Regularity`.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct JdeExample2RegularityResult {
+    /// J_1 = ∫₀¹ 4(e^z − 1)/z dz = 5.2716.
+    pub information: f64,
+    /// 1/J_1 = 0.1897, the information inequality's claim.
+    pub inverse_information: f64,
+    /// The MSE the posterior mean attains, 0.0340 (below 1/J_1: the inequality fails).
+    pub posterior_mean_mse: f64,
+    /// The prior variance 0.0341.
+    pub prior_variance: f64,
+}
+
+/// Example 2's regularity failure (r = 1, P_o = 1): 1/J_1 against the posterior mean's MSE.
+#[wasm_bindgen(
+    js_name = jdeExample2Regularity,
+    unchecked_return_type = "JdeExample2RegularityResult"
+)]
+pub fn jde_example2_regularity() -> JsResult<JsValue> {
+    let r = bounds::example2_regularity();
+    write(&JdeExample2RegularityResult {
+        information: r.information,
+        inverse_information: r.inverse_information,
+        posterior_mean_mse: r.posterior_mean_mse,
+        prior_variance: r.prior_variance,
+    })
+}

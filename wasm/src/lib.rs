@@ -38,7 +38,8 @@ pub use bernoulli_filters::{
     gm_bernoulli_update,
 };
 pub use bounds::{
-    gaussian_fisher_information, jde_bound, jde_bound_no_clutter, jde_sequential_bound,
+    gaussian_fisher_information, jde_bound, jde_bound_no_clutter, jde_example2,
+    jde_example2_regularity, jde_sequential_bound,
 };
 pub use fov::{fov_cardinality_js, fov_variance_map, mixture_density_grid_js, placement_scene_js};
 pub use metrics::{gospa, linear_assignment, ospa, uospa};

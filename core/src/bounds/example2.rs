@@ -139,6 +139,7 @@ pub fn example2(
     false_alarm_error: f64,
     miss_error: Option<f64>,
 ) -> Result<Example2> {
+    crate::error::check_probability(|| "falseAlarmProbability".into(), false_alarm_probability)?;
     let obs = Example2Observation {
         detection: Detection::constant(detection_probability)?,
     };

@@ -218,3 +218,24 @@ fn jde_bound_errors_name_the_field() {
         "options.observation.detectionProbability.table.probability[1]",
     );
 }
+
+#[wasm_bindgen_test]
+fn example_2_and_its_regularity_failure() {
+    let r = jde_example2_regularity().unwrap();
+    assert!((num(&r, "inverseInformation") - 0.1897).abs() < 5e-5);
+    assert!((num(&r, "posteriorMeanMse") - 0.0340).abs() < 5e-5);
+    let e = jde_example2(js(
+        r#"{"existence":0.6,"detectionProbability":0.9,"falseAlarmProbability":1,"falseAlarmError":1.2}"#,
+    ))
+    .unwrap();
+    let native = fisst::bounds::example2(0.6, 0.9, 1.0, 1.2, None).unwrap();
+    assert_eq!(num(&e, "bound"), native.bound);
+    assert_eq!(num(&e, "paperBound"), native.paper_bound);
+    assert_throws(
+        jde_example2(js(
+            r#"{"existence":0.6,"detectionProbability":0.9,"falseAlarmProbability":-1,"falseAlarmError":1.2}"#,
+        )),
+        "RangeError",
+        "options.falseAlarmProbability",
+    );
+}
