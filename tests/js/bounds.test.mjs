@@ -280,25 +280,27 @@ test('jdeBound model II (Theorem 2): the Monte Carlo MSE of MAP detection + post
 });
 
 // ------------------------------------------------------------------ Example 2 (32), Fig. 2 right
-/** ∫_a^b h by 24-point Gauss–Legendre, composite over 8 panels. */
-function quad(h, a, b) {
+/** The 24 Gauss–Legendre nodes and weights on [−1, 1]. */
+const GL24 = Array.from({ length: 24 }, (_, j) => {
   const n = 24;
+  let x = Math.cos((Math.PI * (j + 0.75)) / (n + 0.5));
+  let dp = 0;
+  for (let it = 0; it < 50; it++) {
+    let [p0, p1] = [1, x];
+    for (let k = 2; k <= n; k++) [p0, p1] = [p1, ((2 * k - 1) * x * p1 - (k - 1) * p0) / k];
+    dp = (n * (x * p1 - p0)) / (x * x - 1);
+    const dx = p1 / dp;
+    x -= dx;
+    if (Math.abs(dx) < 1e-15) break;
+  }
+  return [x, 2 / ((1 - x * x) * dp * dp)];
+});
+/** ∫_a^b h by 24-point Gauss–Legendre, composite over `panels` panels. */
+function quad(h, a, b, panels = 8) {
   let total = 0;
-  for (let p = 0; p < 8; p++) {
-    const [lo, hi] = [a + ((b - a) * p) / 8, a + ((b - a) * (p + 1)) / 8];
-    for (let i = 1; i <= n; i++) {
-      let x = Math.cos((Math.PI * (i - 0.25)) / (n + 0.5));
-      let dp = 0;
-      for (let it = 0; it < 50; it++) {
-        let [p0, p1] = [1, x];
-        for (let k = 2; k <= n; k++) [p0, p1] = [p1, ((2 * k - 1) * x * p1 - (k - 1) * p0) / k];
-        dp = (n * (x * p1 - p0)) / (x * x - 1);
-        const dx = p1 / dp;
-        x -= dx;
-        if (Math.abs(dx) < 1e-15) break;
-      }
-      total += ((hi - lo) / 2) * (2 / ((1 - x * x) * dp * dp)) * h(lo + ((hi - lo) * (1 + x)) / 2);
-    }
+  for (let p = 0; p < panels; p++) {
+    const [lo, hi] = [a + ((b - a) * p) / panels, a + ((b - a) * (p + 1)) / panels];
+    for (const [x, w] of GL24) total += ((hi - lo) / 2) * w * h(lo + ((hi - lo) * (1 + x)) / 2);
   }
   return total;
 }
@@ -311,7 +313,7 @@ function quad(h, a, b) {
 function example2Oracle(r, P, q, e0) {
   const ve = example2Prior.variance;
   const e1 = e0 + ve;
-  const m = (z) => quad((x) => 2 * x * x * Math.exp(x * z), 0, 1);
+  const m = (z) => quad((x) => 2 * x * x * Math.exp(x * z), 0, 1, 1); // smooth: one panel is exact to 1e-15
   const level = r * P > 0 ? (q * (1 - r)) / (r * P) : Infinity;
   let z0;
   if (level <= m(0)) z0 = 0;
@@ -324,11 +326,13 @@ function example2Oracle(r, P, q, e0) {
   const w1 = z0 < 1 ? quad(m, z0, 1) : 0;
   const info = z0 < 1 ? quad((z) => (z === 0 ? 4 : (4 * Math.expm1(z)) / z), z0, 1) : 0;
   const eta = q * z0;
-  const hpe = r >= ((1 - q) * e0) / ((1 - q) * e0 + (1 - P) * (e1 - ve));
-  const rest = hpe
-    ? r * (1 - P) * ve + r * (P - P * w1) * e1 + (1 - r) * (1 - eta) * e0
-    : r * (1 - P * w1) * e1 + (1 - r) * (q - eta) * e0;
-  return { w1, eta, paperInformation: info, information: w1 > 0 ? info / (w1 * w1) : Infinity, paperBound: (w1 > 0 ? (r * P) / info : 0) + rest, bound: (w1 > 0 ? (r * P * w1 * w1) / info : 0) + rest, hpe };
+  const restHpe = r * (1 - P) * ve + r * (P - P * w1) * e1 + (1 - r) * (1 - eta) * e0;
+  const restLpe = r * (1 - P * w1) * e1 + (1 - r) * (q - eta) * e0;
+  // r ≥ r₁* (18) is where the HPE piece is the lower; when Z = ∅ cannot happen (q = 1, P_o = 1)
+  // the two pieces are equal and either phase is right.
+  const hpe = restHpe <= restLpe;
+  const rest = Math.min(restHpe, restLpe);
+  return { w1, eta, paperInformation: info, information: w1 > 0 ? info / (w1 * w1) : Infinity, paperBound: (w1 > 0 ? (r * P) / info : 0) + rest, bound: (w1 > 0 ? (r * P * w1 * w1) / info : 0) + rest, hpe, tie: Math.abs(restHpe - restLpe) < 1e-12 };
 }
 
 test('jdeExample2 is Theorem 1 for Example 2 ((32) and (20)); its curve is no bound where the Monte Carlo falls below it', { skip: waiting('jdeExample2') }, () => {
@@ -344,7 +348,7 @@ test('jdeExample2 is Theorem 1 for Example 2 ((32) and (20)); its curve is no bo
         close(out.eta, want.eta, 1e-6, `η_1 ${what}`);
         close(out.undetectedVariance, example2Prior.variance, 1e-9, 'σe²');
         close(out.missError, 1.2 + example2Prior.variance, 1e-12, 'e1² = e0² + σe²');
-        assert.equal(out.phase, want.hpe ? 'HPE' : 'LPE', what);
+        if (!want.tie) assert.equal(out.phase, want.hpe ? 'HPE' : 'LPE', what);
       }
     }
   }
