@@ -16,8 +16,8 @@ const RIGHT_COLOURS = [RED, AMBER, GREEN, BLUE];
 const grid = (n) => Array.from({ length: n + 1 }, (_, k) => k / n);
 const RS = grid(200); // r of Fig. 2 left; the Monte Carlo every 10th
 const MC_EVERY = 10;
-const QS = grid(50); // q of Fig. 2 right; the Monte Carlo every 5th
-const Q_EVERY = 5;
+const QS = grid(20); // q of Fig. 2 right; the Monte Carlo every 2nd
+const Q_EVERY = 2;
 const SAMPLES = 20000;
 
 const url = urlState({ vf: 100, vh: 25, e0: 150, e1: 200, po: 0.5, steps: 20, r2: 0.6, e02: 1.2 });
@@ -198,37 +198,38 @@ const right = chart($('right'), {
   ],
   overlay(o) {
     const mc = results.mc.right;
-    if (!mc || !results.right) return;
+    if (!mc?.points[0]?.paperBound) return;
     RIGHT_PO.forEach((P, i) => drawDots(o, mc.points.filter((p) => p.P === P).map((p) => ({ x: p.q, ...p })), RIGHT_COLOURS[i], { ring: (p) => p.below }));
   },
 });
 
-/** Example 2 at one (r, P_o, q): the curve as (32) computes it (paperBound) and with (20)'s J'_1 (bound). */
-const example2 = (r, P, q, e0) => fisst.jdeExample2({ existence: r, detectionProbability: P, falseAlarmProbability: q, falseAlarmError: e0 });
-
+/** Fig. 2 right from the worker's answer: jdeExample2's curves over q, and the Monte Carlo. */
 function drawRight() {
-  const [r, e0] = [state.r2, state.e02];
-  const curves = RIGHT_PO.map((P) => QS.map((q) => example2(r, P, q, e0)));
-  const ve = curves[0][0].undetectedVariance;
   const mc = results.mc.right;
-  let below = 0;
-  if (mc) {
-    for (const p of mc.points) {
-      const b = curves[RIGHT_PO.indexOf(p.P)][Math.round(p.q * 50)];
-      [p.bound, p.paperBound] = [b.bound, b.paperBound];
-      p.below = p.mse + 2 * p.se < Math.min(p.bound, p.paperBound);
-      below += p.below;
-    }
+  if (!mc) {
+    results.right = null;
+    right.update([QS, ...Array.from({ length: 3 * RIGHT_PO.length }, () => QS.map(() => null))]);
+    for (const id of ['right-ve', 'right-below', 'right-mc']) $(id).textContent = '…';
+    return;
   }
+  const { curves, reference, points } = mc;
+  let below = 0;
+  for (const p of points) {
+    const b = curves[RIGHT_PO.indexOf(p.P)][Math.round(p.q * 20)];
+    [p.bound, p.paperBound] = [b.bound, b.paperBound];
+    p.below = p.mse + 2 * p.se < Math.min(p.bound, p.paperBound);
+    below += p.below;
+  }
+  const ve = curves[0][0].undetectedVariance;
   results.right = {
-    r, e0, variance: ve, missError: curves[0][0].missError, regularity: REGULARITY, reference: mc?.reference ?? null, mc: mc?.points ?? null, below,
+    r: state.r2, e0: state.e02, variance: ve, missError: curves[0][0].missError, regularity: REGULARITY, reference, mc: points, below,
     paper: curves.map((c) => c.map((b) => b.paperBound)), curves: curves.map((c) => c.map((b) => b.bound)),
   };
   right.update([QS, ...results.right.paper, ...results.right.curves,
-    ...RIGHT_PO.map((P) => QS.map((q, k) => (mc && k % Q_EVERY === 0 ? mc.points.find((p) => p.P === P && p.q === q)?.mse ?? null : null)))]);
+    ...RIGHT_PO.map((P) => QS.map((q, k) => (k % Q_EVERY === 0 ? points.find((p) => p.P === P && p.q === q)?.mse ?? null : null)))]);
   $('right-ve').textContent = `${fmt(ve, 4)}, ${fmt(results.right.missError, 4)}`;
-  $('right-below').textContent = mc ? `${below} of ${mc.points.length}` : '…';
-  $('right-mc').textContent = mc ? `${fmt(mc.reference.mse, 4)} ± ${fmt(2 * mc.reference.se, 1)}` : '…';
+  $('right-below').textContent = `${below} of ${points.length}`;
+  $('right-mc').textContent = `${fmt(reference.mse, 4)} ± ${fmt(2 * reference.se, 1)}`;
 }
 
 // ---------------------------------------------------------------- state, updates, controls
@@ -243,7 +244,7 @@ const DRAW = { left: drawLeft, seq: drawSeq, right: drawRight };
 function update(...panels) {
   timer.time('total', () => {
     for (const panel of panels) timer.time(panel, DRAW[panel]);
-    if (results.left && results.seq && results.right) publish();
+    if (results.left && results.seq) publish();
   });
   timer.show();
   url.save();
@@ -259,7 +260,7 @@ function recompute(...panels) {
     simulate('seq', { priorInformation: 1 / state.vf, detectedInformation: sys.information, detectionProbability: state.po, steps: state.steps, samples: SAMPLES, seed: 2 });
   }
   if (panels.includes('right')) {
-    simulate('right', { qs: QS.filter((_, k) => k % Q_EVERY === 0), detectionProbabilities: RIGHT_PO, existence: state.r2, falseAlarmError: state.e02, samples: SAMPLES / 2, seed: 3 });
+    simulate('right', { qs: QS, mcEvery: Q_EVERY, detectionProbabilities: RIGHT_PO, existence: state.r2, falseAlarmError: state.e02, samples: SAMPLES / 2, seed: 3 });
   }
   update(...panels);
 }

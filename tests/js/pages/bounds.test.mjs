@@ -101,10 +101,10 @@ test('bounds: Fig. 2 right is jdeExample2, and the Monte Carlo falls below it wh
     const { r2: r, e02: e0 } = st.settings;
     assert.equal(st.right.r, r);
     for (const [i, P] of [0.1, 0.4, 0.7, 1].entries()) {
-      for (const k of [0, 10, 25, 50]) {
-        const e = fisst.jdeExample2({ existence: r, detectionProbability: P, falseAlarmProbability: k / 50, falseAlarmError: e0 });
-        assert.equal(st.right.paper[i][k], e.paperBound, `P_o = ${P}, q = ${k / 50}`);
-        assert.equal(st.right.curves[i][k], e.bound, `P_o = ${P}, q = ${k / 50}`);
+      for (const k of [0, 5, 12, 20]) {
+        const e = fisst.jdeExample2({ existence: r, detectionProbability: P, falseAlarmProbability: k / 20, falseAlarmError: e0 });
+        assert.equal(st.right.paper[i][k], e.paperBound, `P_o = ${P}, q = ${k / 20}`);
+        assert.equal(st.right.curves[i][k], e.bound, `P_o = ${P}, q = ${k / 20}`);
       }
     }
     assert.equal(st.right.mc.length, 44);
@@ -149,7 +149,7 @@ test('bounds: the settings are in the URL, and a malformed value falls back to t
 test('bounds: download buttons give the figures as PNG and CSV; redraw times', async () => {
   const page = await browser.open('bounds.html');
   await settled(page);
-  for (const [figure, rows] of [['#left-figure', 202], ['#seq-figure', 21], ['#right-figure', 52]]) {
+  for (const [figure, rows] of [['#left-figure', 202], ['#seq-figure', 21], ['#right-figure', 22]]) {
     const csv = page.waitForEvent('download');
     await page.locator(`${figure} [data-download="csv"]`).click();
     const body = await (await csv).createReadStream().then((st) => st.toArray());
