@@ -18,6 +18,7 @@ const RS = grid(200); // r of Fig. 2 left; the Monte Carlo every 10th
 const MC_EVERY = 10;
 const QS = grid(20); // q of Fig. 2 right; the Monte Carlo every 2nd
 const Q_EVERY = 2;
+let rightTop = null; // the top of Fig. 2 right's y axis
 const SAMPLES = 20000;
 
 const url = urlState({ vf: 100, vh: 25, e0: 150, e1: 200, po: 0.5, steps: 20, r2: 0.6, e02: 1.2 });
@@ -73,7 +74,7 @@ const noClutter = (r, P, sys) => fisst.jdeBoundNoClutter({
 /** The bound with MAP detection on Z = ∅ (Section IV-A): the HPE piece from r_M* = 1/(2 − P̄o) on. */
 const mapBound = (b, r, P) => b.mapBound ?? (r >= 1 / (2 - P) ? b.hpe : b.lpe);
 
-/** Monte Carlo dots with ±2 SE bars, for an overlay; `ring` marks some of them in red. */
+/** Monte Carlo dots with ±2 SE bars, for an overlay; `ring` circles some of them in black. */
 function drawDots({ ctx, x, y }, points, colour, { filled = true, ring = () => false } = {}) {
   for (const p of points) {
     const [px, py] = [x(p.x), y(p.mse)];
@@ -89,7 +90,7 @@ function drawDots({ ctx, x, y }, points, colour, { filled = true, ring = () => f
     ctx.fill();
     ctx.stroke();
     if (ring(p)) {
-      ctx.strokeStyle = RED;
+      ctx.strokeStyle = BLACK;
       ctx.lineWidth = 2;
       ctx.beginPath();
       ctx.arc(px, py, 7.5, 0, 2 * Math.PI);
@@ -190,7 +191,8 @@ $('right-mmse').textContent = fmt(REGULARITY.posteriorMeanMse, 4);
 const right = chart($('right'), {
   height: 380,
   x: { label: 'probability of false alarm q', range: [0, 1], format: (v) => fmt(v, 3) },
-  y: { label: 'MSE: the curve (21) and the Monte Carlo', range: (lo, hi) => [0, hi], format: (v) => fmt(v, 4) },
+  // The (32) curve shoots up where Z'_0 shrinks (its J'_1 → 0): the range follows the rest.
+  y: { label: 'MSE: the curve (21) and the Monte Carlo', range: (lo, hi) => [0, rightTop ?? hi], format: (v) => fmt(v, 4) },
   series: [
     ...RIGHT_PO.map((P, i) => ({ label: `P<sub>o</sub> = ${P}`, colour: RIGHT_COLOURS[i], width: 2 })),
     ...RIGHT_PO.map((P, i) => ({ label: `with (20)'s J'<sub>1</sub>, P<sub>o</sub> = ${P}`, colour: RIGHT_COLOURS[i], width: 1.2, dash: [2, 3], legend: false })),
@@ -199,6 +201,15 @@ const right = chart($('right'), {
   overlay(o) {
     const mc = results.mc.right;
     if (!mc?.points[0]?.paperBound) return;
+    o.ctx.font = '11px system-ui, sans-serif';
+    o.ctx.textBaseline = 'top';
+    results.right.paper.forEach((c, i) => { // where a (32) curve leaves the chart, say so
+      const k = c.indexOf(Math.max(...c));
+      if (c[k] <= rightTop) return;
+      o.ctx.textAlign = QS[k] > 0.7 ? 'right' : 'left';
+      o.ctx.fillStyle = RIGHT_COLOURS[i];
+      o.ctx.fillText(`↑ (32) reaches ${fmt(c[k], 3)} at q = ${fmt(QS[k], 2)}: its J'₁ → 0 as Z'₀ shrinks`, o.x(QS[k]) + (QS[k] > 0.7 ? -6 : 6), 4 + 14 * i);
+    });
     RIGHT_PO.forEach((P, i) => drawDots(o, mc.points.filter((p) => p.P === P).map((p) => ({ x: p.q, ...p })), RIGHT_COLOURS[i], { ring: (p) => p.below }));
   },
 });
@@ -221,6 +232,7 @@ function drawRight() {
     below += p.below;
   }
   const ve = curves[0][0].undetectedVariance;
+  rightTop = 1.15 * Math.max(...curves.flat().map((b) => b.bound), ...points.map((p) => p.mse + 2 * p.se));
   results.right = {
     r: state.r2, e0: state.e02, variance: ve, missError: curves[0][0].missError, regularity: REGULARITY, reference, mc: points, below,
     paper: curves.map((c) => c.map((b) => b.paperBound)), curves: curves.map((c) => c.map((b) => b.bound)),

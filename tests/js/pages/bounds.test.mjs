@@ -120,7 +120,7 @@ test('bounds: Fig. 2 right is jdeExample2, and the Monte Carlo falls below it wh
   assert.equal(await text(page, '#right-mmse'), fmt(reg.posteriorMeanMse, 4));
   assert.ok(Math.abs(s.right.reference.mse - reg.posteriorMeanMse) < 4 * s.right.reference.se + 1e-4, `${s.right.reference.mse}`);
   assert.ok(Math.abs(s.right.variance - 0.0341) < 1e-4);
-  // r = 1: every P_o = 1 dot sits far below its curve (red rings).
+  // r = 1: every P_o = 1 dot sits far below its curve (ringed).
   await page.locator('#r2').fill('1');
   s = await check(await settled(page));
   assert.ok(s.right.mc.filter((p) => p.P === 1).every((p) => p.below), 'P_o = 1, r = 1: every dot below the curve');
@@ -164,5 +164,5 @@ test('bounds: download buttons give the figures as PNG and CSV; redraw times', a
   await settled(page);
   const t = await browser.timing(page);
   console.log(`redraw (Chromium): ${timeLine('Fig. 2 left', t.history.left)}; ${timeLine('Fig. 3', t.history.seq)}; ${timeLine('Fig. 2 right', t.history.right)}`);
-  await browser.done(page, 'bounds');
+  await browser.done(page, 'bounds-po1');
 });
