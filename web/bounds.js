@@ -1,7 +1,8 @@
 // Error bounds for joint detection and estimation (paper 002: Rezaeian & Vo; Fig. 2 left and
 // right, Fig. 3, Corollary 3, (31), (35), (37), Theorem 1, Example 2). Every bound comes from
-// the fisst package (jdeBoundNoClutter, gaussianFisherInformation, jdeSequentialBound,
-// jdeBound); the Monte Carlo of the detector-estimators runs in bounds-worker.js.
+// the fisst package (jdeBoundNoClutter, gaussianFisherInformation, jdeSequentialBound on this
+// thread; jdeExample2, about 10 ms a point, in bounds-worker.js, with the seeded Monte Carlo
+// of the detector-estimators of bounds-mc.js; jdeExample2Regularity).
 import init, * as fisst from 'fisst';
 import { chart, markX } from './lib/chart.js';
 import { $, downloads, fmt, pageReady, progressBar, slider, timings, urlState } from './lib/page.js';
@@ -24,7 +25,7 @@ const SAMPLES = 20000;
 const url = urlState({ vf: 100, vh: 25, e0: 150, e1: 200, po: 0.5, steps: 20, r2: 0.6, e02: 1.2 });
 const state = url.values;
 const timer = timings('bounds');
-timer.badge($('redraw-ms'), { left: 'Fig. 2 left', seq: 'Fig. 3', right: 'Fig. 2 right', total: 'whole update' });
+timer.badge($('redraw-ms'), { left: 'Fig. 2 left', seq: 'Fig. 3', right: 'Fig. 2 right', total: 'whole update', worker: 'last worker job' });
 const results = { left: null, seq: null, right: null, mc: { left: null, seq: null, right: null } };
 
 // ---------------------------------------------------------------- the Monte Carlo worker
@@ -32,6 +33,7 @@ const worker = new Worker(new URL('./bounds-worker.js', import.meta.url), { type
 const bars = { left: progressBar($('left-progress'), { label: 'Monte Carlo' }), seq: progressBar($('seq-progress'), { label: 'Monte Carlo' }), right: progressBar($('right-progress'), { label: 'Monte Carlo' }) };
 const jobs = { left: 0, seq: 0, right: 0 };
 const samplesOf = {};
+const sentAt = {};
 const KIND = { left: 'fig2left', seq: 'fig3', right: 'example2' };
 let nextId = 1;
 let ready = false;
@@ -39,6 +41,7 @@ let ready = false;
 function simulate(panel, params) {
   jobs[panel] = nextId++;
   samplesOf[panel] = params.samples;
+  sentAt[panel] = performance.now();
   results.mc[panel] = null;
   bars[panel].set(0, 'Monte Carlo …');
   worker.postMessage({ id: jobs[panel], kind: KIND[panel], params });
@@ -51,6 +54,7 @@ worker.onmessage = ({ data }) => {
     return;
   }
   results.mc[panel] = data.result;
+  timer.record('worker', performance.now() - sentAt[panel]);
   bars[panel].done(`Monte Carlo: ${samplesOf[panel].toLocaleString('en')} samples a dot`);
   update(panel);
   if (!ready && Object.values(results.mc).every((m) => m !== null)) {
