@@ -121,7 +121,13 @@ const left = chart($('left'), {
     const f = results.left;
     if (!f) return;
     markX(o, f.rstar, { colour: '#323f4b', text: `r* = ${fmt(f.rstar, 3)}`, align: f.rstar > 0.8 ? 'right' : 'left' });
-    if (Math.abs(f.rmap - f.rstar) > 0.02) markX(o, f.rmap, { colour: '#7b8794', text: `r_M* = ${fmt(f.rmap, 3)}`, align: f.rmap > f.rstar ? 'left' : 'right', dash: [2, 3] });
+    if (Math.abs(f.rmap - f.rstar) > 0.02) { // its label a line lower, clear of r*'s
+      markX(o, f.rmap, { colour: '#7b8794', dash: [2, 3] });
+      const right = f.rmap > 0.8;
+      o.ctx.textAlign = right ? 'right' : 'left';
+      o.ctx.fillStyle = '#52606d';
+      o.ctx.fillText(`r_M* = ${fmt(f.rmap, 3)}`, o.x(f.rmap) + (right ? -4 : 4), 18);
+    }
     const mc = results.mc.left;
     if (!mc) return;
     drawDots(o, mc.map((p) => ({ x: p.r, ...p.map })), BLACK, { filled: false });
@@ -154,7 +160,7 @@ function drawLeft() {
   $('left-z').textContent = zText(zs);
   $('system-text').innerHTML = `As z = ${sys.gain ? 'x + v' : 'v (no information)'} with σ<sub>v</sub>² = ${fmt(sys.noiseVariance, 4)}: `
     + `J<sub>1</sub> = 1/σ<sub>f</sub>² + a²/σ<sub>v</sub>² = ${fmt(sys.information, 5)}, σ<sub>h</sub>² = 1/J<sub>1</sub> = ${fmt(sys.posteriorVariance, 4)}`
-    + `${state.vh > state.vf ? ' (σ<sub>h</sub>² cannot exceed σ<sub>f</sub>²: clamped)' : ''}. The paper's Fig. 2: σ<sub>f</sub>² = 100, σ<sub>h</sub>² = 25, e<sub>0</sub>² = 150, e<sub>1</sub>² = 200.`;
+    + `. The paper's Fig. 2: σ<sub>f</sub>² = 100, σ<sub>h</sub>² = 25, e<sub>0</sub>² = 150, e<sub>1</sub>² = 200.`;
 }
 
 // ---------------------------------------------------------------- Fig. 3
@@ -286,8 +292,19 @@ const on = (key, ...panels) => (v) => {
   state[key] = v;
   recompute(...panels);
 };
-state.vf = slider('vf', { value: state.vf, format: num, onInput: on('vf', 'left', 'seq') }).value;
-state.vh = slider('vh', { value: state.vh, format: num, onInput: on('vh', 'left', 'seq') }).value;
+state.vf = slider('vf', {
+  value: state.vf,
+  format: num,
+  onInput(v) {
+    state.vf = v;
+    $('vh').max = String(v);
+    state.vh = vhSlider.set(Math.min(state.vh, v));
+    recompute('left', 'seq');
+  },
+}).value;
+$('vh').max = String(state.vf); // σh² ≤ σf²: a measurement cannot add uncertainty
+const vhSlider = slider('vh', { value: state.vh, format: num, onInput: on('vh', 'left', 'seq') });
+state.vh = vhSlider.value;
 state.e0 = slider('e0', { value: state.e0, format: num, onInput: on('e0', 'left') }).value;
 state.e1 = slider('e1', { value: state.e1, format: num, onInput: on('e1', 'left') }).value;
 state.po = slider('po', { value: state.po, format: num, onInput: on('po', 'left', 'seq') }).value;

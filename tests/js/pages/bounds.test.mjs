@@ -84,9 +84,10 @@ test('bounds: the figures are the package values, the sliders move them, and the
   }
   assert.equal(s.seq.enumeration.length, 40);
   assert.equal(s.system.posteriorVariance, fisst.gaussianFisherInformation({ priorVariance: 200, gain: 1, noiseVariance: 200 * 50 / 150 }).posteriorVariance);
-  // σh² > σf² is clamped to σf² (no information: the bound at r = 1 is σf² whatever P̄o).
+  // The σh² slider stops at σf² (no information: the bound at r = 1 is σf² whatever P̄o).
   await page.locator('#vh').fill('300');
   s = await settled(page);
+  assert.equal(s.settings.vh, 200);
   assert.equal(s.system.gain, 0);
   assert.ok(Math.abs(s.left.boundAt1 - 200) < 1e-9, `${s.left.boundAt1}`);
   zs.push(checkLeft(s), checkSeq(s));
@@ -139,10 +140,11 @@ test('bounds: the settings are in the URL, and a malformed value falls back to t
   await settled(page);
   const again = await reopen(browser, page);
   assert.equal((await settled(again)).settings.po, 0.65);
-  const bad = await browser.open('bounds.html?po=abc&steps=-4');
+  const bad = await browser.open('bounds.html?po=abc&steps=-4&vf=50&vh=80');
   const s3 = await settled(bad);
   assert.equal(s3.settings.po, 0.5);
-  assert.equal(s3.settings.steps, 2); // the slider clamps
+  assert.equal(s3.settings.steps, 2); // the sliders clamp
+  assert.equal(s3.settings.vh, 50); // σh² ≤ σf²
   await Promise.all([browser.done(page), browser.done(again), browser.done(bad)]);
 });
 
