@@ -17,7 +17,9 @@ fn bounds(c: &mut Criterion) {
         b.iter(|| gaussian_no_clutter(black_box(0.7), 0.4, 100.0, 25.0, 150.0, 200.0).unwrap())
     });
     group.bench_function("sequential_enumeration_1000", |b| {
-        b.iter(|| sequential_bound(Sequential::Enumeration, 0.01, 0.04, black_box(0.6), 1000).unwrap())
+        b.iter(|| {
+            sequential_bound(Sequential::Enumeration, 0.01, 0.04, black_box(0.6), 1000).unwrap()
+        })
     });
     group.bench_function("theorem1_q0.3", |b| {
         b.iter(|| {
@@ -36,7 +38,10 @@ fn bounds(c: &mut Criterion) {
             .unwrap()
         })
     });
-    for (name, samples) in [("theorem2_lambda1_mc2000", 2000), ("theorem2_lambda1_mc20000", 20_000)] {
+    for (name, samples) in [
+        ("theorem2_lambda1_mc2000", 2000),
+        ("theorem2_lambda1_mc20000", 20_000),
+    ] {
         group.bench_function(name, |b| {
             b.iter(|| {
                 theorem2(

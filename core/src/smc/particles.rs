@@ -34,11 +34,11 @@ impl Area {
     /// coordinate (rounding of a move that ends on an edge); otherwise `p` unchanged.
     pub fn snap_to_edge(&self, p: State, tol: f64) -> State {
         let mut q = p;
-        for d in 0..2 {
-            if q[d] < self.lo[d] && self.lo[d] - q[d] <= tol {
-                q[d] = self.lo[d];
-            } else if q[d] > self.hi[d] && q[d] - self.hi[d] <= tol {
-                q[d] = self.hi[d];
+        for ((x, lo), hi) in q.iter_mut().zip(self.lo).zip(self.hi) {
+            if *x < lo && lo - *x <= tol {
+                *x = lo;
+            } else if *x > hi && *x - hi <= tol {
+                *x = hi;
             }
         }
         q
