@@ -12,7 +12,9 @@ use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::bernoulli::{BernoulliCosts, BernoulliEstimateResult, estimate_out};
-use crate::boundary::{JsResult, OrThrow, check_range, range_error, read, seed_or_entropy, write};
+use crate::boundary::{
+    JsResult, OrThrow, check_range, core_error, range_error, read, seed_or_entropy, write,
+};
 use crate::types::{
     self, BoxRegion, DiscRegion, MixtureComponent, Point, Region, WeightedGaussian,
 };
@@ -659,6 +661,20 @@ fn scan(value: JsValue) -> JsResult<Scan> {
     }
 }
 
+/// The error of a class's `update`: a field of the scan (`reports[i]`, `reports`,
+/// `measurements[i]`) under the argument `reports`, any other (the clutter, the exclusions, the
+/// likelihood, the filter's mixture) under `config`, where it was set.
+fn scan_error(e: fisst::Error) -> JsValue {
+    let field = e.field();
+    if field.starts_with("reports") {
+        core_error(e)
+    } else if field.starts_with("measurements") {
+        core_error(e.within("reports"))
+    } else {
+        core_error(e.within("config"))
+    }
+}
+
 /// Options of `estimate`: the loss (7) of the optimal Bernoulli estimate; omitted: no
 /// `report`.
 #[derive(Deserialize, Tsify, Default)]
@@ -750,9 +766,10 @@ impl GmBernoulliFilterJs {
         let s = scan(reports)?;
         let mut next = self.inner.clone();
         let info = match s {
-            Scan::Reports(r) => next.update(&r).or_throw_in("reports")?,
-            Scan::Measurements(z) => next.update_measurements(&z).or_throw_in("reports")?,
-        };
+            Scan::Reports(r) => next.update(&r),
+            Scan::Measurements(z) => next.update_measurements(&z),
+        }
+        .map_err(scan_error)?;
         self.inner = next;
         write(&UpdateInfoJs {
             delta: info.delta,
@@ -838,9 +855,10 @@ impl ParticleBernoulliFilterJs {
         let s = scan(reports)?;
         let mut next = self.inner.clone();
         let info = match s {
-            Scan::Reports(r) => next.update(&r).or_throw_in("reports")?,
-            Scan::Measurements(z) => next.update_measurements(&z).or_throw_in("reports")?,
-        };
+            Scan::Reports(r) => next.update(&r),
+            Scan::Measurements(z) => next.update_measurements(&z),
+        }
+        .map_err(scan_error)?;
         self.inner = next;
         write(&UpdateInfoJs {
             delta: info.delta,
@@ -856,9 +874,16 @@ impl ParticleBernoulliFilterJs {
         options: JsValue,
     ) -> JsResult<JsValue> {
         let o = estimate_options(options)?;
-        write(&estimate_result(
-            self.inner.estimate(&o).or_throw_in("options")?,
-        ))
+        // `transition`: the particles overflowed in a prediction (a fault of the config's model).
+        let e = self.inner.estimate(&o).map_err(|e| {
+            let root = if e.field() == "transition" {
+                "config"
+            } else {
+                "options"
+            };
+            core_error(e.within(root))
+        })?;
+        write(&estimate_result(e))
     }
 
     /// r.

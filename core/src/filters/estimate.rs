@@ -5,10 +5,9 @@ use alloc::vec::Vec;
 
 use super::config::GmBernoulli;
 use crate::bernoulli::{ApplicationLoss, BernoulliEstimate, ParticleSet, SpatialDensity, estimate};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::math::sum::NeumaierSum;
-use crate::mixture::moments;
 
 /// What [`GmBernoulliFilter::estimate`](super::GmBernoulliFilter::estimate) and
 /// [`ParticleBernoulliFilter::estimate`](super::ParticleBernoulliFilter::estimate) compute
@@ -43,10 +42,60 @@ impl FilterEstimate {
     }
 }
 
-fn rows(p: &nalgebra::DMatrix<f64>) -> Vec<Vec<f64>> {
-    (0..p.nrows())
-        .map(|i| (0..p.ncols()).map(|j| p[(i, j)]).collect())
-        .collect()
+/// The smallest power of two ≥ `t` (1 for 0 or a non-finite `t`): dividing by it is exact.
+fn pow2_above(t: f64) -> f64 {
+    if !(t > 0.0 && t.is_finite()) {
+        return 1.0;
+    }
+    let (_, e) = libm::frexp(t);
+    libm::ldexp(1.0, e)
+}
+
+/// The covariance Σ_k a_k (P_k + d_k d_kᵀ), d_k = m_k − mean (shares a_k summing to 1; P_k
+/// omitted for points), computed so that a second moment beyond the f64 range is ±∞ with
+/// its sign and never ∞ − ∞ or 0 · ∞ (NaN): each coordinate is scaled by a power of two
+/// t_i ≥ max_k(|d_ki|/2, √P_k,ii / 2) — d_k/2 = m_k/2 − mean/2 cannot overflow — so every
+/// term of the sum is at most 2 in magnitude, and the sum is scaled back at the end
+/// (cov_ij = 4 t_i t_j S_ij); items of share 0 are skipped. Scaling by powers of two is
+/// exact: in range the result is the plain formula's, bit for bit (a term below 2⁻¹⁰⁷⁴ of
+/// the largest one underflows to 0, far below the rounding of the sum).
+fn spread_cov<'a>(
+    items: impl Iterator<Item = (f64, &'a [f64], Option<&'a nalgebra::DMatrix<f64>>)> + Clone,
+    mean: &[f64],
+) -> Vec<Vec<f64>> {
+    let n = mean.len();
+    let half = |m: &[f64], i: usize| 0.5 * m[i] - 0.5 * mean[i];
+    let mut t = alloc::vec![0.0_f64; n];
+    // Weightless items add exactly 0: they must not set the scale (their 0 · ∞ is the NaN).
+    let items = items.filter(|(a, _, _)| *a != 0.0);
+    for (_, m, p) in items.clone() {
+        for (i, ti) in t.iter_mut().enumerate() {
+            let pii = p.map_or(0.0, |p| crate::math::fns::sqrt(p[(i, i)].max(0.0)) * 0.5);
+            *ti = ti.max(crate::math::fns::abs(half(m, i))).max(pii);
+        }
+    }
+    let t: Vec<f64> = t.into_iter().map(pow2_above).collect();
+    let mut cov = alloc::vec![alloc::vec![0.0; n]; n];
+    for (a, m, p) in items {
+        for i in 0..n {
+            let hi = half(m, i) / t[i];
+            for j in 0..=i {
+                let hj = half(m, j) / t[j];
+                cov[i][j] += match p {
+                    Some(p) => a * (0.5 * (p[(i, j)] + p[(j, i)]) / t[i] / t[j] * 0.25 + hi * hj),
+                    None => a * hi * hj,
+                };
+            }
+        }
+    }
+    for i in 0..n {
+        for j in 0..=i {
+            let v = 4.0 * cov[i][j] * t[j] * t[i];
+            cov[i][j] = v;
+            cov[j][i] = v;
+        }
+    }
+    cov
 }
 
 /// The position marginal Σ_ℓ w_ℓ N(m_ℓ[..n_s], P_ℓ[..n_s, ..n_s]).
@@ -71,12 +120,25 @@ pub fn gm_estimate(
     position_dims: usize,
     options: &EstimateOptions,
 ) -> Result<FilterEstimate> {
+    // The moments Σ a_ℓ m_ℓ and Σ a_ℓ (P_ℓ + d_ℓ d_ℓᵀ) with a_ℓ = w_ℓ / Σ w (equal shares
+    // when Σ w = 0), as `crate::mixture::moments`, but with `spread_cov` (no NaN on overflow).
     let n = state.dim();
-    let (_, mean, cov) = moments(&state.mixture).unwrap_or((
-        0.0,
-        nalgebra::DVector::zeros(n),
-        nalgebra::DMatrix::zeros(n, n),
-    ));
+    let comps = state.mixture.components();
+    let total = crate::math::sum::sum(comps.iter().map(|(w, _)| *w));
+    let count = comps.len() as f64;
+    let share = |w: f64| if total > 0.0 { w / total } else { 1.0 / count };
+    let mut mean = alloc::vec![0.0; n];
+    for (w, g) in comps {
+        for (acc, m) in mean.iter_mut().zip(g.mean().iter()) {
+            *acc += share(*w) * m;
+        }
+    }
+    let cov = spread_cov(
+        comps
+            .iter()
+            .map(|(w, g)| (share(*w), g.mean().as_slice(), Some(g.cov()))),
+        &mean,
+    );
     let report = match &options.loss {
         Some(loss) => {
             let marginal = position_marginal(&state.mixture, position_dims)?;
@@ -87,13 +149,17 @@ pub fn gm_estimate(
     };
     Ok(FilterEstimate {
         existence: state.existence,
-        mean: mean.iter().copied().collect(),
-        cov: rows(&cov),
+        mean,
+        cov,
         report,
     })
 }
 
 /// The estimate of a weighted particle set (flat rows of `dim` numbers, normalised weights).
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming `transition` when a particle is not finite (the
+/// prediction overflowed); those of [`crate::bernoulli::estimate`].
 pub(crate) fn particle_estimate(
     existence: f64,
     particles: &[f64],
@@ -102,6 +168,15 @@ pub(crate) fn particle_estimate(
     position_dims: usize,
     options: &EstimateOptions,
 ) -> Result<FilterEstimate> {
+    // A prediction whose F x or noise left the f64 range leaves ±∞ particles, whose mean
+    // and covariance are ∞ − ∞: an error naming the model rather than NaN.
+    if particles.iter().any(|x| !x.is_finite()) {
+        return Err(Error::parameter(
+            "transition",
+            f64::INFINITY,
+            "a model whose predicted particles stay finite (a prediction overflowed f64)",
+        ));
+    }
     let mut mean = alloc::vec![NeumaierSum::new(); dim];
     for (p, w) in particles.chunks_exact(dim).zip(weights) {
         for (acc, x) in mean.iter_mut().zip(p) {
@@ -109,21 +184,13 @@ pub(crate) fn particle_estimate(
         }
     }
     let mean: Vec<f64> = mean.iter().map(NeumaierSum::total).collect();
-    let mut cov = alloc::vec![alloc::vec![0.0; dim]; dim];
-    for (p, w) in particles.chunks_exact(dim).zip(weights) {
-        for i in 0..dim {
-            let di = p[i] - mean[i];
-            for j in 0..=i {
-                cov[i][j] += w * di * (p[j] - mean[j]);
-            }
-        }
-    }
-    let lower = cov.clone();
-    for (i, row) in lower.iter().enumerate() {
-        for (j, v) in row.iter().enumerate().take(i) {
-            cov[j][i] = *v;
-        }
-    }
+    let cov = spread_cov(
+        particles
+            .chunks_exact(dim)
+            .zip(weights)
+            .map(|(p, w)| (*w, p, None)),
+        &mean,
+    );
     let report = match &options.loss {
         Some(loss) => {
             let points: Vec<&[f64]> = particles
@@ -141,4 +208,80 @@ pub(crate) fn particle_estimate(
         cov,
         report,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn gm(components: &[(f64, [f64; 2], f64)]) -> GmBernoulli {
+        let comps = components
+            .iter()
+            .map(|(w, m, v)| {
+                (
+                    *w,
+                    Gaussian::from_slices(m, &[*v, 0.1 * v, 0.1 * v, *v], "c").unwrap(),
+                )
+            })
+            .collect();
+        GmBernoulli::new(0.5, GaussianMixture::new(comps, "m").unwrap()).unwrap()
+    }
+
+    #[test]
+    fn moments_in_range_are_the_moment_matched_merge_bit_for_bit() {
+        let s = gm(&[
+            (0.3, [1.0, -2.0], 0.7),
+            (0.5, [4.5, 3.0], 2.0),
+            (0.2, [-3.0, 0.25], 1e-3),
+        ]);
+        let e = gm_estimate(&s, 2, &EstimateOptions::default()).unwrap();
+        let (_, mean, cov) = crate::mixture::moments(&s.mixture).unwrap();
+        assert_eq!(e.mean, mean.as_slice());
+        for i in 0..2 {
+            for j in 0..2 {
+                assert_eq!(e.cov[i][j], cov[(i, j)], "cov[{i}][{j}]");
+            }
+        }
+        // Particles: Σ w (x − x̄)(x − x̄)ᵀ, the two-pass formula.
+        let pts = [0.5, 1.0, -1.5, 2.0, 3.25, -0.75];
+        let w = [0.2, 0.5, 0.3];
+        let p = particle_estimate(0.5, &pts, &w, 2, 2, &EstimateOptions::default()).unwrap();
+        for i in 0..2 {
+            for j in 0..2 {
+                let plain: f64 = (0..3)
+                    .map(|k| w[k] * (pts[2 * k + i] - p.mean[i]) * (pts[2 * k + j] - p.mean[j]))
+                    .sum();
+                assert!((p.cov[i][j] - plain).abs() <= 1e-15 * plain.abs().max(1.0));
+            }
+        }
+    }
+
+    #[test]
+    fn overflowing_second_moments_are_infinite_not_nan() {
+        // A weightless component 1e300 away: 0 · ∞ in the plain formula (fuzz #6).
+        let s = gm(&[(1.0, [0.0, 0.0], 1.0), (0.0, [1e300, 0.0], 1.0)]);
+        let e = gm_estimate(&s, 2, &EstimateOptions::default()).unwrap();
+        assert_eq!(e.cov[0][0], 1.0);
+        assert!(e.cov.iter().flatten().all(|v| !v.is_nan()));
+        // A light one: the variance is w(1 − w)·1e600, beyond f64: +∞.
+        let s = gm(&[(1.0 - 1e-9, [0.0, 0.0], 1.0), (1e-9, [1e300, -1e300], 1.0)]);
+        let e = gm_estimate(&s, 2, &EstimateOptions::default()).unwrap();
+        assert_eq!(e.cov[0][0], f64::INFINITY);
+        assert_eq!(e.cov[0][1], f64::NEG_INFINITY);
+        // Particles spread beyond f64 in both signs (∞ − ∞ in the plain sum).
+        let pts = [0.0, 1e300, 1e200, -1e300, -1e200, 0.0];
+        let p = particle_estimate(
+            0.5,
+            &pts,
+            &[1.0 / 3.0; 3],
+            2,
+            2,
+            &EstimateOptions::default(),
+        )
+        .unwrap();
+        assert!(p.cov.iter().flatten().all(|v| !v.is_nan()), "{:?}", p.cov);
+        assert_eq!(p.cov[1][1], f64::INFINITY);
+        // x: {0, 1e200, −1e200}, variance 2/3 · 1e400: +∞.
+        assert_eq!(p.cov[0][0], f64::INFINITY);
+    }
 }

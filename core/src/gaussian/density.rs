@@ -80,8 +80,10 @@ impl Gaussian {
             }
         }
         // Symmetrise exactly so that downstream results do not depend on which triangle
-        // carried the rounding.
-        let cov = (&cov + cov.transpose()) * 0.5;
+        // carried the rounding: A/2 + Aᵀ/2, which is (A + Aᵀ)/2 bit for bit but cannot
+        // overflow for entries near f64::MAX (1e308 + 1e308 = ∞ gave an infinite Cholesky
+        // factor and infinite samples).
+        let cov = &cov * 0.5 + cov.transpose() * 0.5;
         let chol = cov
             .clone()
             .cholesky()
@@ -247,6 +249,16 @@ impl Gaussian {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_variance_near_f64_max_stays_finite() {
+        // Found by the fuzzer (fuzz #7): the symmetrisation overflowed.
+        let g = Gaussian::from_slices(&[0.0, 0.0], &[1.0, 0.0, 0.0, 1e308], "g").unwrap();
+        assert_eq!(g.cov()[(1, 1)], 1e308);
+        assert_eq!(g.chol()[(1, 1)], fns::sqrt(1e308));
+        let x = g.sample(&mut crate::math::rng::seeded(0));
+        assert!(x.iter().all(|v| v.is_finite()), "{x:?}");
+    }
 
     #[test]
     fn astronomically_far_points_have_zero_density_not_nan() {

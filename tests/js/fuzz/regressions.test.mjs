@@ -63,3 +63,111 @@ test('fuzz #4: a Bernoulli estimate of a mixture with a Dirac-like 3D component 
   assert.equal(e.declare, false);
   assert.ok(ms < 5000, `took ${ms.toFixed(0)} ms`);
 });
+
+test('fuzz #5: a filter class names the config, not the scan, for an update error about the config', () => {
+  // GmBernoulliFilter/ParticleBernoulliFilter.update put every core error under `reports`
+  // ("reports.exclusions …", "reports.clutter.rate …"); now only the scan's own fields are
+  // (wasm/src/bernoulli_filters.rs, scan_error).
+  const prior = { weight: 1, mean: [0, 0], cov: [[1, 0], [0, 1]] };
+  const base = { existence: 0.5, mixture: [prior], transition: { F: [[1, 0], [0, 1]], Q: [[0.1, 0], [0, 0.1]] }, detection: { probability: 0.9 }, particles: 50, seed: 1 };
+  const two = [{ disc: { center: [0, 0], radius: 1 } }, { disc: { center: [1, 0], radius: 1 } }];
+  const wall = { exclusions: [{ box: { min: [-1e3, -1e3], max: [1e3, 1e3] } }] };
+  for (const C of [fisst.GmBernoulliFilter, fisst.ParticleBernoulliFilter]) {
+    const f = new C({ ...base, clutter: { rate: 0, density: 0.1 } });
+    const g = new C({ ...base, clutter: { rate: 0.25, density: 0.1 }, ...wall });
+    try {
+      assert.throws(() => f.update(two), (e) => e instanceof RangeError && e.message.startsWith('config.clutter.rate'), C.name);
+      assert.throws(() => g.update([]), (e) => e instanceof RangeError && e.message.startsWith('config.exclusions'), C.name);
+      assert.throws(() => f.update([{ disc: { center: [0, 0, 0], radius: 1 } }]), (e) => e instanceof RangeError && e.message.startsWith('reports[0]'), C.name);
+      assert.throws(() => f.update({ measurements: [[0, 0]] }), (e) => e instanceof RangeError && /^(config|reports)\b/.test(e.message), C.name);
+      assert.equal(f.existence, 0.5);
+    } finally {
+      f.free();
+      g.free();
+    }
+  }
+});
+
+test('fuzz #6: a filter estimate with components or particles 1e300 apart is ±Infinity or finite, not NaN', () => {
+  // The MMSE covariance took 0 · ∞ (a weightless component far away) and ∞ − ∞ (particles
+  // spread beyond f64 in both signs); core/src/filters/estimate.rs (spread_cov) scales by
+  // powers of two and skips weightless terms.
+  const eye = [[1, 0], [0, 1]];
+  const gm = new fisst.GmBernoulliFilter({
+    existence: 0.5, mixture: [{ weight: 1 - 3e-9, mean: [0, 0], cov: eye }, { weight: 3e-9, mean: [1e300, 0], cov: eye }],
+    transition: { F: [[3e-80, 0], [0, 4e-74]], Q: [[5, 0], [0, 1]] }, detection: { probability: 1 - 1e-16 },
+    reduction: { maxComponents: 2 }, clutter: { rate: 1, density: 1e-300 }, likelihood: { H: eye, R: eye },
+  });
+  const pf = new fisst.ParticleBernoulliFilter({
+    existence: 0, mixture: [{ weight: 1, mean: [0, 0, 0, 0], cov: [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]] }],
+    transition: { F: [[1, 0, 1, 0], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]], Q: [[1 / 3, 0, 0.5, 0], [0, 1 / 3, 0, 0.5], [0.5, 0, 1, 0], [0, 0.5, 0, 1]] },
+    birth: { probability: 1 - 1e-16, mixture: [{ weight: 0.5, mean: [0, 0, 0, 0], cov: [[1e150, 0, 0, 0], [0, 1e150, 0, 0], [0, 0, 1e150, 0], [0, 0, 0, 1e150]] }, { weight: 0.5, mean: [0, 1e300, 0, 0], cov: [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]] }] },
+    detection: { probability: 0 }, clutter: { rate: 0, density: 0 }, particles: 3, birthParticles: 12, seed: 0,
+  });
+  try {
+    gm.predict();
+    gm.update({ measurements: [[0, 0], [0, 0], [0, 0]] });
+    noNaN(gm.estimate());
+    pf.predict();
+    pf.update([]);
+    noNaN(pf.estimate());
+    // In range the covariance is unchanged: one Gaussian's own.
+    const one = new fisst.GmBernoulliFilter({ existence: 0.5, mixture: [{ weight: 1, mean: [1, 2], cov: [[2, 0.5], [0.5, 1]] }], transition: { F: eye, Q: [[0, 0], [0, 0]] }, detection: { probability: 0.5 }, clutter: { rate: 0, density: 0 } });
+    assert.deepEqual(one.estimate().cov, [[2, 0.5], [0.5, 1]]);
+    one.free();
+  } finally {
+    gm.free();
+    pf.free();
+  }
+});
+
+test('fuzz #7: a covariance entry near f64::MAX gives finite particles, not infinite ones', () => {
+  // Gaussian::new symmetrised as (A + Aᵀ)/2: 1e308 + 1e308 = ∞, so the Cholesky factor and
+  // every sample were infinite (the particle filter's mean then NaN); now A/2 + Aᵀ/2
+  // (core/src/gaussian/density.rs).
+  const pf = new fisst.ParticleBernoulliFilter({
+    existence: 0, mixture: [{ weight: 1, mean: [0, 0], cov: [[1, 0], [0, 1e308]] }],
+    transition: { F: [[-5.8e-101, 3e-323], [1.3e-268, -1.5e-302]], Q: [[1e150, 0], [0, 1e150]] },
+    detection: { probability: 0 }, clutter: { rate: 0, density: 0 }, particles: 1, seed: 0,
+  });
+  try {
+    assert.ok(pf.particles.flat().every(Number.isFinite), JSON.stringify(pf.particles));
+    pf.predict();
+    pf.update([]);
+    noNaN(pf.estimate());
+  } finally {
+    pf.free();
+  }
+});
+
+// Not fixed (found through GmBernoulliFilter.estimate({ radius, costs })): the MMUC search of
+// core/src/bernoulli/mmuc.rs runs its local searches to steps of 1e-7 · min(r0, σ_min), so one
+// component with σ = 1e-75 makes a 5-component 2D mixture take 22 s in Node (2026-12-02).
+// Skipped so that the suite stays fast; un-skip it to check a fix.
+test('fuzz #8: bernoulliEstimate of a mixture with one near-degenerate component returns promptly', { skip: 'known: MMUC creeps at the smallest σ (22 s)' }, () => {
+  const wide = (weight, y) => ({ weight, mean: [-0.1, y], cov: [[0.00041340382013338505, 0], [0, 0.001]] });
+  const t0 = performance.now();
+  const e = fisst.bernoulliEstimate({
+    existence: 0.5, radius: 0.2508888387473499, costs: 'mpe',
+    density: { mixture: [{ weight: 0.5, mean: [0, -1], cov: [[1e-150, 0], [0, 1.0000014426379469e-150]] }, wide(0.0435, 0.1), wide(0.2065, 0.2), wide(0.2065, 0.3), wide(0.0435, 0.4)] },
+  });
+  noNaN(e);
+  assert.ok(performance.now() - t0 < 2000);
+});
+
+test('fuzz #9: a particle prediction that overflows f64 is an error naming config.transition, not a NaN estimate', () => {
+  // F = [[0, 1e308], …] sends the particles to ±∞; estimate() now throws (core/src/filters/
+  // estimate.rs, particle_estimate) instead of returning NaN means.
+  const pf = new fisst.ParticleBernoulliFilter({
+    existence: 0, mixture: [{ weight: 1, mean: [0, -2], cov: [[1, 0], [0, 1]] }],
+    transition: { F: [[0, 1e308], [-0.86, 0]], Q: [[1e-150, 0], [0, 1e-150]] }, survival: 0,
+    detection: { probability: 0 }, clutter: { rate: 1, density: 0.1 }, particles: 1, birthParticles: 0, mcmcMoves: 0, seed: 0,
+  });
+  try {
+    pf.predict();
+    pf.update([{ disc: { center: [0, 0], radius: 1e-9 } }]);
+    assert.throws(() => pf.estimate(), (e) => e instanceof RangeError && e.message.startsWith('config.transition'));
+  } finally {
+    pf.free();
+  }
+});

@@ -11,6 +11,9 @@ import init, * as fisst from 'fisst';
 const g2 = { mean: [0.1, -0.2], cov: [[1, 0.2], [0.2, 0.5]] };
 const comp = { weight: 1, ...g2 };
 const box = { box: { min: [-1, -1], max: [1, 1] } };
+const NCV = { F: [[1, 0, 1, 0], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]], Q: [[0.01, 0, 0.01, 0], [0, 0.01, 0, 0.01], [0.01, 0, 0.02, 0], [0, 0.01, 0, 0.02]] };
+/** A small 2D filter config for both classes (50 particles, a fixed seed). */
+const FILTER = { existence: 0.7, mixture: [comp], transition: { F: [[1, 0], [0, 1]], Q: [[0.1, 0], [0, 0.1]] }, detection: { probability: 0.9 }, clutter: { rate: 0.25, density: 0.1 }, exclusions: [{ box: { min: [3, 3], max: [4, 4] } }], particles: 50, seed: 3 };
 
 /** Per function (or class, with a driver below): a few cheap valid argument lists and a few
  * malformed ones. */
@@ -54,10 +57,32 @@ export const cases = {
   ],
   SensorControlRun: [[{ seed: 1, scheme: 'renyi', particles: 10, futureScans: 2, steps: 2 }], [{ scheme: 'best' }]],
   compareSchemes: [[{ runs: 1, steps: 1, seed: 1, schemes: ['pent'], particles: 5, futureScans: 1 }], [{ runs: 0, steps: 1 }]],
+  gmBernoulliPredict: [[{ existence: 0.6, mixture: [{ weight: 1, mean: [0, 0, 1, 0], cov: [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0.1, 0], [0, 0, 0, 0.1]] }], transition: NCV }], [{ existence: 0.6, mixture: [comp], transition: NCV }]],
+  gmBernoulliUpdate: [
+    [{ existence: 0.8, mixture: [comp], detection: { probability: 0.9, fov: box }, reports: [{ disc: { center: [0, 0], radius: 1 } }], clutter: { rate: 0.25, density: 0.1 } }],
+    [{ existence: 0.8, mixture: [comp], detection: { probability: 0.9 }, measurements: [[0, 0]], likelihood: { H: [[1, 0], [0, 1]], R: [[0.1, 0], [0, 0.1]] }, clutter: { rate: 0.25, density: 0.1 } }],
+    [{ existence: 0.8, mixture: [comp], detection: { probability: 0.9 }, reports: [{ disc: { center: [0, 0], radius: -1 } }], clutter: { rate: 0.25, density: 0.1 } }],
+  ],
+  GmBernoulliFilter: [[FILTER, [{ disc: { center: [0, 0], radius: 1 } }]], [FILTER, []], [FILTER, [{ disc: { center: [0, 0, 0], radius: 1 } }]], [{ ...FILTER, existence: 2 }, []]],
+  ParticleBernoulliFilter: [[FILTER, [{ disc: { center: [0, 0], radius: 1 } }]], [FILTER, { measurements: [[0, 0]] }], [{ ...FILTER, particles: 0 }, []]],
+  airportScenario: [[{ seed: 1, steps: 5 }], [{ steps: 2001 }]],
 };
 
 /** Drivers of classes: `drivers[name](fisst, args)` (construct, call methods, `free()`). */
+const driveFilter = (cls) => (fisst, [config, scan]) => {
+  const f = new fisst[cls](config);
+  try {
+    f.predict();
+    f.update(scan);
+    f.estimate(); // no loss: its MMUC search is bernoulliEstimate's, soaked there
+    return f.existence;
+  } finally {
+    f.free();
+  }
+};
 export const drivers = {
+  GmBernoulliFilter: driveFilter('GmBernoulliFilter'),
+  ParticleBernoulliFilter: driveFilter('ParticleBernoulliFilter'),
   SensorControlRun: (fisst, args) => {
     const run = new fisst.SensorControlRun(args[0]);
     try {

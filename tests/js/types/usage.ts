@@ -94,7 +94,16 @@ gmFilter.free();
 const pfFilter = new fisst.ParticleBernoulliFilter({ ...airport.config, particles: 100 });
 pfFilter.update({ measurements: [] });
 const cloud: number[][] = pfFilter.particles;
+pfFilter.predict();
+const info: { delta: number; splitComponents: number } = pfFilter.update([]);
+const pfEstimate: fisst.FilterEstimateResult = pfFilter.estimate(undefined);
+const pfWeights: Float64Array = pfFilter.weights;
+const pfSeed: number = pfFilter.seed;
 pfFilter.free();
+const gmMixture: fisst.MixtureComponent[] = new fisst.GmBernoulliFilter(airport.config).mixture;
+const truthNow: [number, number, number, number] = airport.truth[0].state;
+const missedSteps: (number | null)[] = airport.trueReports;
+export const usedFilters = [delta, filterEstimate, existenceNow, cloud, info, pfEstimate, pfWeights, pfSeed, gmMixture, truthNow, missedSteps];
 // @ts-expect-error: a misspelt option ('existance') is not in GmBernoulliPredictOptions
 fisst.gmBernoulliPredict({ existance: 0.5, mixture: [], transition: airport.config.transition });
 const mol: fisst.MultiObjectLikelihoodResult = fisst.multiObjectLikelihood({

@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 mod bernoulli;
+mod bernoulli_filters;
 mod boundary;
 mod bounds;
 mod control;
