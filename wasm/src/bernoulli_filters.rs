@@ -781,8 +781,7 @@ impl GmBernoulliFilterJs {
     #[wasm_bindgen(unchecked_return_type = "FilterEstimateResult")]
     pub fn estimate(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "FilterEstimateOptions | undefined")]
-        options: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "FilterEstimateOptions")] options: JsValue,
     ) -> JsResult<JsValue> {
         let o = estimate_options(options)?;
         write(&estimate_result(
@@ -870,8 +869,7 @@ impl ParticleBernoulliFilterJs {
     #[wasm_bindgen(unchecked_return_type = "FilterEstimateResult")]
     pub fn estimate(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "FilterEstimateOptions | undefined")]
-        options: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "FilterEstimateOptions")] options: JsValue,
     ) -> JsResult<JsValue> {
         let o = estimate_options(options)?;
         // `transition`: the particles overflowed in a prediction (a fault of the config's model).

@@ -96,7 +96,7 @@ pfFilter.update({ measurements: [] });
 const cloud: number[][] = pfFilter.particles;
 pfFilter.predict();
 const info: { delta: number; splitComponents: number } = pfFilter.update([]);
-const pfEstimate: fisst.FilterEstimateResult = pfFilter.estimate(undefined);
+const pfEstimate: fisst.FilterEstimateResult = pfFilter.estimate();
 const pfWeights: Float64Array = pfFilter.weights;
 const pfSeed: number = pfFilter.seed;
 pfFilter.free();
