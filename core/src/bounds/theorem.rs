@@ -23,6 +23,10 @@ pub struct Settings {
     pub series_tolerance: f64,
     /// … or at this many clutter points N (default 40).
     pub max_clutter: usize,
+    /// Theorem 2: the largest |Z| = n whose terms are integrated by deterministic quadrature
+    /// (default 2: n = 1 by 1D quadrature, n = 2 by 2D cubature over Z²; 1 puts n = 2 under
+    /// Monte Carlo too; values above 2 act as 2). Every larger n is Monte Carlo.
+    pub quadrature_cardinality: usize,
 }
 
 impl Default for Settings {
@@ -33,6 +37,7 @@ impl Default for Settings {
             seed: 0,
             series_tolerance: 1e-6,
             max_clutter: 40,
+            quadrature_cardinality: 2,
         }
     }
 }
