@@ -15,7 +15,7 @@
 //! | [`sequential_bound`] | IRF (35), Enumeration (37) |
 //! | [`Density`], [`Observation`] (closures with derivatives), [`Density1`], [`Detection`], [`LinearGaussian`] | f, P_o, g, ψ, v of models I (13) and II (22) |
 //! | [`theorem1`], [`ModelI`] | Theorem 1 (14)–(21) by quadrature: P̄o, f_d, f_d', σ_e², Z'_0 by root-finding, w_1, η_1, J'_1 (20) |
-//! | [`theorem2`], [`ModelII`] | Theorem 2 (22)–(26): n = 1 by quadrature, n ≥ 2 by Monte Carlo; η2 exact (see [`theorem2`]'s module) |
+//! | [`theorem2`], [`ModelII`] | Theorem 2 (22)–(26): n = 1 by quadrature, n = 2 by Monte Carlo or (opt-in, [`Settings::quadrature_cardinality`]) 2D cubature over Z², n ≥ 3 by Monte Carlo; η2 exact (see [`theorem2`]'s module) |
 //! | [`component_bound`], [`component_bounds_no_clutter`], [`component_corollary1`], [`gaussian_information_matrix`] | the vector extensions (63)–(72) |
 //! | [`example2`], [`example2_regularity`] | Example 2 (32), Fig. 2 right: (32) against (20), and the regularity failure |
 //!
