@@ -12,7 +12,7 @@ use super::actions::{Action, ActionGrid};
 use super::rewards::{fisher_reward, ln_normal, pent_reward, renyi_divergence};
 use crate::error::{Error, Result};
 use crate::gaussian::normal;
-use crate::math::fns::{exp, ln};
+use crate::math::fns::{exp, ln, sqrt};
 use crate::math::rng::{SeededRng, index, seeded, uniform};
 use crate::metrics::Ospa;
 use crate::smc::{
@@ -468,7 +468,167 @@ impl FutureScans {
 }
 
 /// E[D(u)] (17) as the plain mean over the ideal future scans (see [`super::rewards`]).
+///
+/// Per action everything that depends only on the particles and u (the ranges h, 1/σ and
+/// ln of the normal's constant of every object) is computed once, per future scan what depends
+/// only on Z^j (λ c(z_j)); (20) is then evaluated in plain arithmetic from the factors
+/// p_D g(z_j | x) = e^{ln p_D + ln g} (one exp per pair, none when it is exactly 0, no
+/// exp-then-ln) by `MultiObjectLikelihood::scaled_likelihood_small`, and the divergence (15)
+/// from those plain values by [`renyi_plain`] (√ for α = 1/2, no exp or ln per particle).
+/// Whenever either declines (large sets, factors above 1, possible underflow) the scan is
+/// redone in log space, exact at every scale. The same numbers as the reference
+/// `renyi_reward_reference` (the former evaluation, kept in the tests) to rounding.
 fn renyi_reward(
+    cfg: &ControlConfig,
+    model: &MultiObjectLikelihood,
+    p: &MultiObjectParticles,
+    u: State,
+    scans: &FutureScans,
+    ws: &mut LikelihoodWorkspace,
+) -> f64 {
+    let sensor = cfg.sensor;
+    // Per object of every particle: the range h, 1/σ and ln of the normal's constant.
+    let mut offsets = Vec::with_capacity(p.len() + 1);
+    let total: usize = p.sets.iter().map(|s| s.len()).sum();
+    let (mut h, mut s, mut c) = (
+        Vec::with_capacity(total),
+        Vec::with_capacity(total),
+        Vec::with_capacity(total),
+    );
+    offsets.push(0);
+    for set in &p.sets {
+        for x in set {
+            let d = libm::hypot(x[0] - u[0], x[1] - u[1]);
+            let sig = sensor.sigma(d);
+            h.push(d);
+            s.push(1.0 / sig);
+            c.push(-ln(sig) - 0.918_938_533_204_672_8);
+        }
+        offsets.push(h.len());
+    }
+    let ln_pd = ln(model.detection());
+    let ln_rate = ln(model.clutter_rate());
+    // The plain-arithmetic path needs every factor in [0, 1]: p_D g ≤ p_D/(σ√(2π)).
+    let pairs_below_one = c.iter().all(|&ci| ln_pd + ci <= 0.0);
+    let ln_w: Vec<f64> = p.weights.iter().map(|&w| ln(w)).collect();
+    let mut ln_l = vec![0.0; p.len()];
+    // e^{λ} g(Z^j | X_i) from the plain path, NaN where it declined.
+    let mut lin_l = vec![0.0; p.len()];
+    let (mut z, mut ln_c, mut lin_c, mut ln_g, mut pair) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut sum, mut count) = (0.0, 0usize);
+    for (j, &pick) in scans.picks.iter().enumerate() {
+        z.clear();
+        for o in offsets[pick]..offsets[pick + 1] {
+            let e = scans.noise[j * scans.stride + (o - offsets[pick])];
+            z.push(h[o] + e / s[o]);
+        }
+        ln_c.clear();
+        ln_c.extend(z.iter().map(|&zj| sensor.ln_clutter_density(zj)));
+        lin_c.clear();
+        lin_c.extend(ln_c.iter().map(|&l| exp(ln_rate + l)));
+        let fast = pairs_below_one && lin_c.iter().all(|&v| v <= 1.0);
+        let mut all_plain = fast;
+        for (i, t) in lin_l.iter_mut().enumerate() {
+            *t = f64::NAN;
+            if !fast {
+                continue;
+            }
+            pair.clear();
+            for o in offsets[i]..offsets[i + 1] {
+                let (ho, so, co) = (h[o], s[o], c[o] + ln_pd);
+                for &zj in &z {
+                    let v = (zj - ho) * so;
+                    let q = co - 0.5 * v * v;
+                    // exp is exactly 0 below −745.14: skip it.
+                    pair.push(if q < -746.0 { 0.0 } else { exp(q) });
+                }
+            }
+            match model.scaled_likelihood_small(offsets[i + 1] - offsets[i], &pair, &lin_c) {
+                Some(v) => *t = v,
+                None => all_plain = false,
+            }
+        }
+        let plain = if all_plain {
+            renyi_plain(&p.weights, &lin_l, cfg.alpha)
+        } else {
+            None
+        };
+        let d = match plain {
+            Some(d) => Some(d),
+            None => {
+                for (i, l) in ln_l.iter_mut().enumerate() {
+                    let t = lin_l[i];
+                    if !t.is_nan() {
+                        *l = -model.clutter_rate() + ln(t);
+                        continue;
+                    }
+                    ln_g.clear();
+                    for o in offsets[i]..offsets[i + 1] {
+                        for &zj in &z {
+                            let v = (zj - h[o]) * s[o];
+                            ln_g.push(c[o] - 0.5 * v * v);
+                        }
+                    }
+                    *l = model.ln_likelihood_from_logs(
+                        offsets[i + 1] - offsets[i],
+                        &ln_g,
+                        &ln_c,
+                        ws,
+                    );
+                }
+                renyi_divergence(&ln_w, &ln_l, cfg.alpha)
+            }
+        };
+        if let Some(d) = d {
+            sum += d;
+            count += 1;
+        }
+    }
+    if count == 0 { 0.0 } else { sum / count as f64 }
+}
+
+/// [`renyi_divergence`] (15) from the prior weights w_i and T_i = e^{λ} g(Z | X_i) in plain
+/// arithmetic: the factor e^{−λ} cancels in ln γ_α − α ln γ_1, so
+/// D = (ln Σ w_i T_i^α − α ln Σ w_i T_i)/(α − 1), and KL(π ‖ w) = Σ π_i (ln T_i − ln Σ w T)
+/// for |α − 1| < 10⁻⁶. T_i^α is √T_i for α = 1/2 (no exp or ln per particle). `None` when
+/// a sum is below 10⁻²⁸⁰ or not finite (gradual underflow could matter): the caller then
+/// takes the log-space path.
+fn renyi_plain(weights: &[f64], t: &[f64], alpha: f64) -> Option<f64> {
+    let g1: f64 = weights.iter().zip(t).map(|(w, t)| w * t).sum();
+    if !(g1.is_finite() && g1 > 1e-280) {
+        return None;
+    }
+    if (alpha - 1.0).abs() < 1e-6 {
+        let ln_g1 = ln(g1);
+        let mut kl = 0.0;
+        for (w, &t) in weights.iter().zip(t) {
+            let post = w * t / g1;
+            if post > 0.0 {
+                kl += post * (ln(t) - ln_g1);
+            }
+        }
+        return Some(kl.max(0.0));
+    }
+    let ga: f64 = if alpha == 0.5 {
+        weights.iter().zip(t).map(|(w, &t)| w * sqrt(t)).sum()
+    } else {
+        weights
+            .iter()
+            .zip(t)
+            .map(|(w, &t)| if t > 0.0 { w * exp(alpha * ln(t)) } else { 0.0 })
+            .sum()
+    };
+    if !(ga.is_finite() && ga > 1e-280) {
+        return None;
+    }
+    Some(((ln(ga) - alpha * ln(g1)) / (alpha - 1.0)).max(0.0))
+}
+
+/// The straightforward evaluation of [`renyi_reward`], kept as its reference: (20) in log
+/// space by `MultiObjectLikelihood::ln_likelihood_from_logs` for every particle and scan.
+#[cfg(test)]
+fn renyi_reward_reference(
     cfg: &ControlConfig,
     model: &MultiObjectLikelihood,
     p: &MultiObjectParticles,
@@ -524,6 +684,72 @@ fn renyi_reward(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The fast evaluation of (17) gives the rewards of the straightforward one to rounding,
+    /// on the paper's settings, with n_max = 6 (sets beyond the fixed-size table), α = 1,
+    /// σ₀ = 0.1 (factors above 1: the log path) and far-off future scans (underflow).
+    #[test]
+    fn renyi_reward_matches_the_reference() {
+        let mut cases = Vec::new();
+        let base = {
+            let mut c = ControlConfig::paper(Scheme::Renyi, 6);
+            c.particles = 200;
+            c.future_scans = 30;
+            c
+        };
+        cases.push(base.clone());
+        let mut c = base.clone();
+        c.max_objects = 6;
+        cases.push(c);
+        let mut c = base.clone();
+        c.alpha = 1.0;
+        cases.push(c);
+        let mut c = base.clone();
+        c.sensor.sigma0 = 0.1;
+        c.sensor.sigma_slope = 1e-7;
+        cases.push(c);
+        let (mut fast_total, mut checked) = (0usize, 0usize);
+        for (ci, cfg) in cases.into_iter().enumerate() {
+            let mut run = ControlRun::new(cfg.clone(), 11 + ci as u64).unwrap();
+            for _ in 0..4 {
+                run.step().unwrap();
+            }
+            let model = run.model;
+            let mut rng = seeded(99);
+            let mut scans =
+                FutureScans::draw(&run.particles, cfg.future_scans, cfg.max_objects, &mut rng);
+            if ci == 0 {
+                // Noise of 40σ on some scans: pair factors underflow to 0.
+                for (k, e) in scans.noise.iter_mut().enumerate() {
+                    if k % 3 == 0 {
+                        *e *= 40.0;
+                    }
+                }
+            }
+            let from = *run.sensor_path().last().unwrap();
+            let mut ws = LikelihoodWorkspace::new();
+            for a in cfg.actions.actions(from, &cfg.area) {
+                if !a.inside {
+                    continue;
+                }
+                let u = a.position;
+                let fast = renyi_reward(&cfg, &model, &run.particles, u, &scans, &mut ws);
+                let exact =
+                    renyi_reward_reference(&cfg, &model, &run.particles, u, &scans, &mut ws);
+                assert!(
+                    (fast - exact).abs() <= 1e-12 * exact.abs().max(1e-300),
+                    "case {ci}, action {}: {fast} vs {exact}",
+                    a.index
+                );
+                assert!(exact > 0.0, "case {ci}: {exact}");
+                checked += 1;
+                fast_total += usize::from(fast.to_bits() != exact.to_bits());
+            }
+        }
+        assert!(checked > 40, "{checked}");
+        // The fast path was taken (its rounding differs somewhere).
+        assert!(fast_total > 0);
+    }
 
     #[test]
     fn a_reduced_run_localises_both_sources() {

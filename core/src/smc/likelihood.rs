@@ -200,6 +200,60 @@ pub(crate) fn ln_sum_matchings(
     ln_sum_matchings_log(rows, cols, ln_pair, ln_row_miss, ln_col_miss, dp)
 }
 
+/// The largest smaller side [`sum_matchings_small`] handles (a fixed 16-entry table).
+pub(crate) const SMALL_SIDE: usize = 4;
+
+/// The sum of [`ln_sum_matchings`] in plain arithmetic, for the small sizes of the sensor
+/// control's future scans: `pair`, `row_miss`, `col_miss` are the factors themselves (not
+/// their logs), all in [0, 1], and `cols ≤ SMALL_SIDE`. No scaling is needed: with factors
+/// ≤ 1 no partial product overflows, and the only loss beyond rounding is gradual
+/// underflow, bounded as in [`ln_sum_matchings`] by e^{−700} (rows·(k+1)·2^k ≤ e^44 roundings
+/// of ≤ 2^{−1074} each, none amplified). `None` when the sum is not e^{30} above that bound
+/// (the caller then takes the exact log-space path), else `Some(Σ)` with Σ > 0.
+#[inline]
+pub(crate) fn sum_matchings_small(
+    rows: usize,
+    cols: usize,
+    pair: &[f64],
+    row_miss: &[f64],
+    col_miss: &[f64],
+) -> Option<f64> {
+    debug_assert!(cols <= SMALL_SIDE && rows < 1 << 20);
+    debug_assert_eq!(pair.len(), rows * cols);
+    let states = 1usize << cols;
+    let full = states - 1;
+    let mut dp = [0.0f64; 1 << SMALL_SIDE];
+    dp[0] = 1.0;
+    for (r, &m) in row_miss.iter().enumerate().take(rows) {
+        let row = &pair[r * cols..(r + 1) * cols];
+        // Descending in place: dp[S \ {c}] < S is still the previous row's value.
+        for s in (1..states).rev() {
+            let mut v = dp[s] * m;
+            let mut bits = s;
+            while bits != 0 {
+                let c = bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                v += dp[s & !(1 << c)] * row[c];
+            }
+            dp[s] = v;
+        }
+        dp[0] *= m;
+    }
+    let mut total = 0.0;
+    for (s, &d) in dp.iter().enumerate().take(states) {
+        let mut f = d;
+        let mut out = full & !s;
+        while out != 0 {
+            let c = out.trailing_zeros() as usize;
+            out &= out - 1;
+            f *= col_miss[c];
+        }
+        total += f;
+    }
+    // e^{−670} = e^{30} · e^{−700}, the acceptance margin of `ln_sum_matchings`.
+    if total > 1.1e-291 { Some(total) } else { None }
+}
+
 /// The same sum with log-sum-exp arithmetic throughout (no underflow at any scale).
 fn ln_sum_matchings_log(
     rows: usize,
@@ -280,6 +334,56 @@ impl MultiObjectLikelihood {
     /// λ.
     pub fn clutter_rate(&self) -> f64 {
         self.clutter_rate
+    }
+
+    /// ln g(Z | X) of (20) from [`Self::scaled_likelihood_small`] (the tests' handle on it).
+    #[cfg(test)]
+    pub(crate) fn ln_likelihood_small(
+        &self,
+        n: usize,
+        pair: &[f64],
+        clutter: &[f64],
+    ) -> Option<f64> {
+        self.scaled_likelihood_small(n, pair, clutter)
+            .map(|t| -self.clutter_rate + ln(t))
+    }
+
+    /// e^{λ} g(Z | X) of (20) (above e^{−670}) for small sets in plain arithmetic:
+    /// `pair[i·m + j]` = p_D g(z_j | x_i) and `clutter[j]` = λ c(z_j) (m = `clutter.len()`), all
+    /// in [0, 1]. `None` when a factor is outside [0, 1] (or NaN), min(n, m) > 4,
+    /// max(n, m) > 16, or gradual underflow could matter (see [`sum_matchings_small`]): the
+    /// caller then evaluates
+    /// [`Self::ln_likelihood_from_logs`], which is exact at every scale. Agrees with its
+    /// e^{λ + value} to rounding otherwise.
+    pub(crate) fn scaled_likelihood_small(
+        &self,
+        n: usize,
+        pair: &[f64],
+        clutter: &[f64],
+    ) -> Option<f64> {
+        let m = clutter.len();
+        const MAX_LARGER: usize = 16;
+        if n.min(m) > SMALL_SIDE || n.max(m) > MAX_LARGER || pair.len() != n * m {
+            return None;
+        }
+        let unit = |v: &f64| (0.0..=1.0).contains(v);
+        if !(pair.iter().all(unit) && clutter.iter().all(unit)) {
+            return None;
+        }
+        let miss = [1.0 - self.detection; MAX_LARGER];
+        if n > m {
+            // Rows: objects (miss 1 − p_D); columns: measurements (miss λ c(z_j)).
+            sum_matchings_small(n, m, pair, &miss[..n], clutter)
+        } else {
+            // Rows: measurements; columns: objects.
+            let mut t = [0.0f64; MAX_LARGER * SMALL_SIDE];
+            for i in 0..n {
+                for j in 0..m {
+                    t[j * n + i] = pair[i * m + j];
+                }
+            }
+            sum_matchings_small(m, n, &t[..n * m], clutter, &miss[..n])
+        }
     }
 
     /// ln g(Z | X) of (20) from logs: `ln_g[i·m + j]` = ln g(z_j | x_i) for the n objects and
@@ -552,6 +656,67 @@ mod tests {
             .unwrap()
             .ln_likelihood_from_logs(2, &[-3000.0, -1e4, -1e4, -3000.0], &[0.0, 0.0], &mut ws);
         assert!(close(v, -6000.0, 1e-13), "{v}");
+    }
+
+    #[test]
+    fn small_plain_path_matches_the_log_path() {
+        let mut rng = seeded(41);
+        let mut ws = LikelihoodWorkspace::new();
+        let mut taken = 0;
+        for n in 0..=6 {
+            for m in 0..=6 {
+                for trial in 0..6 {
+                    let pd = [0.95, 1.0, 0.0, 0.5, 0.95, 0.3][trial];
+                    let rate = [0.8, 0.0, 2.5, 1e-3, 0.8, 0.8][trial];
+                    let spread = [40.0, 40.0, 40.0, 40.0, 900.0, 5.0][trial];
+                    let ln_g: Vec<f64> = (0..n * m)
+                        .map(|_| {
+                            let u = uniform(&mut rng);
+                            if u < 0.1 {
+                                f64::NEG_INFINITY
+                            } else {
+                                -spread * u - 1.0
+                            }
+                        })
+                        .collect();
+                    let ln_c: Vec<f64> = (0..m).map(|_| -7.0 * uniform(&mut rng)).collect();
+                    let model = MultiObjectLikelihood::new(pd, rate).unwrap();
+                    let pair: Vec<f64> = ln_g.iter().map(|g| pd * exp(*g)).collect();
+                    let clutter: Vec<f64> = ln_c.iter().map(|c| rate * exp(*c)).collect();
+                    let exact = model.ln_likelihood_from_logs(n, &ln_g, &ln_c, &mut ws);
+                    match model.ln_likelihood_small(n, &pair, &clutter) {
+                        Some(v) => {
+                            assert!(n.min(m) <= SMALL_SIDE);
+                            assert!(
+                                close(v, exact, 1e-13),
+                                "n={n} m={m} t={trial}: {v} vs {exact}"
+                            );
+                            taken += 1;
+                        }
+                        // Declined: too large, a factor above 1, or too small for the
+                        // plain sum (or zero).
+                        None => assert!(
+                            n.min(m) > SMALL_SIDE
+                                || clutter.iter().any(|&v| v > 1.0)
+                                || exact < -rate - 600.0,
+                            "n={n} m={m} t={trial}: {exact}"
+                        ),
+                    }
+                }
+            }
+        }
+        assert!(taken > 100, "{taken}");
+        // Underflow: the plain sum of 1e-200 · 1e-220 is 0; declined, the log path is exact.
+        let model = MultiObjectLikelihood::new(1.0, 0.0).unwrap();
+        assert_eq!(
+            model.ln_likelihood_small(2, &[1e-200, 0.0, 0.0, 1e-220], &[0.0, 0.0]),
+            None
+        );
+        // Factors above 1 are declined.
+        let model = MultiObjectLikelihood::new(0.9, 0.8).unwrap();
+        assert_eq!(model.ln_likelihood_small(1, &[2.0], &[0.5]), None);
+        assert_eq!(model.ln_likelihood_small(1, &[0.5], &[f64::NAN]), None);
+        assert!(model.ln_likelihood_small(1, &[0.5], &[0.5]).is_some());
     }
 
     #[test]
