@@ -12,7 +12,7 @@ use super::likelihood::{GeneralizedLikelihood, LinearGaussianLikelihood, RegionR
 use crate::error::{Error, Result};
 use crate::gaussian::{GaussianMixture, normal};
 use crate::math::fns;
-use crate::math::rng::{SeededRng, seeded, uniform};
+use crate::math::rng::{SeededRng, seeded, systematic, uniform};
 use crate::math::sum::NeumaierSum;
 use crate::regions::Region;
 
@@ -587,27 +587,6 @@ fn sample_mixture<R: Rng + ?Sized>(mixture: &GaussianMixture, rng: &mut R, out: 
     }
     let x = comps[pick].1.sample(rng);
     out.extend(x.iter());
-}
-
-/// Systematic resampling: n indices by one uniform offset (weights normalised).
-fn systematic<R: Rng + ?Sized>(weights: &[f64], n: usize, rng: &mut R) -> Vec<usize> {
-    let total: f64 = weights.iter().copied().collect::<NeumaierSum>().total();
-    let step = total / n as f64;
-    let mut u = uniform(rng) * step;
-    let mut out = Vec::with_capacity(n);
-    let mut acc = 0.0;
-    let mut i = 0;
-    // The last index with positive weight: rounding can never push a draw past it.
-    let last = weights.iter().rposition(|w| *w > 0.0).unwrap_or(0);
-    for _ in 0..n {
-        while i < last && acc + weights[i] <= u {
-            acc += weights[i];
-            i += 1;
-        }
-        out.push(i);
-        u += step;
-    }
-    out
 }
 
 fn gather(rows: &[f64], idx: &[usize], dim: usize) -> Vec<f64> {

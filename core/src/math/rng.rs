@@ -71,6 +71,38 @@ pub fn entropy_seed() -> crate::Result<u64> {
         })
 }
 
+/// Systematic resampling (Kitagawa 1996; Ristic, Arulampalam & Gordon 2004, Table 3.2): `n`
+/// indices into `weights` from one uniform offset and a stride of Σw/n (the weights need not
+/// be normalised; Σw is compensated). Shared by the particle Bernoulli filter and the SMC
+/// multi-object filter.
+pub fn systematic<R: Rng + ?Sized>(
+    weights: &[f64],
+    n: usize,
+    rng: &mut R,
+) -> alloc::vec::Vec<usize> {
+    let total: f64 = weights
+        .iter()
+        .copied()
+        .collect::<super::sum::NeumaierSum>()
+        .total();
+    let step = total / n as f64;
+    let mut u = uniform(rng) * step;
+    let mut out = alloc::vec::Vec::with_capacity(n);
+    let mut acc = 0.0;
+    let mut i = 0;
+    // The last index with positive weight: rounding can never push a draw past it.
+    let last = weights.iter().rposition(|w| *w > 0.0).unwrap_or(0);
+    for _ in 0..n {
+        while i < last && acc + weights[i] <= u {
+            acc += weights[i];
+            i += 1;
+        }
+        out.push(i);
+        u += step;
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -65,26 +65,7 @@ pub fn reweight(
     total
 }
 
-/// Systematic resampling (Kitagawa; Ristic et al. 2004, Table 3.2): n indices from one
-/// uniform offset. The weights are normalised.
-pub fn systematic<R: Rng + ?Sized>(weights: &[f64], n: usize, rng: &mut R) -> Vec<usize> {
-    let total: f64 = weights.iter().sum();
-    let step = total / n as f64;
-    let mut u = uniform(rng) * step;
-    let mut out = Vec::with_capacity(n);
-    let mut acc = 0.0;
-    let mut i = 0;
-    let last = weights.iter().rposition(|w| *w > 0.0).unwrap_or(0);
-    for _ in 0..n {
-        while i < last && acc + weights[i] <= u {
-            acc += weights[i];
-            i += 1;
-        }
-        out.push(i);
-        u += step;
-    }
-    out
-}
+pub use crate::math::rng::systematic;
 
 /// Resamples to the same N with [`systematic`]; the weights become 1/N.
 pub fn resample<R: Rng + ?Sized>(particles: &mut MultiObjectParticles, rng: &mut R) {
