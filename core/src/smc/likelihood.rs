@@ -112,18 +112,7 @@ pub(crate) fn ln_sum_matchings(
         for (f, &l) in group.iter_mut().zip(row) {
             *f = exp(l - t);
         }
-        // Descending in place: dp[S \ {c}] < S is still the previous row's value.
-        for s in (1..states).rev() {
-            let mut v = dp[s] * m;
-            let mut bits = s;
-            while bits != 0 {
-                let c = bits.trailing_zeros() as usize;
-                bits &= bits - 1;
-                v += dp[s & !(1 << c)] * group[c];
-            }
-            dp[s] = v;
-        }
-        dp[0] *= m;
+        dp_row(&mut dp[..states], m, group);
     }
     // Final factor of the unmatched columns, Σ_S dp[S] Π_{c∉S} e^{L_c}: linearly when the
     // e^{L_c} are moderate, else grouped by |S| with e^{(k−|S|) V} (V the largest L_c)
@@ -226,18 +215,7 @@ pub(crate) fn sum_matchings_small(
     dp[0] = 1.0;
     for (r, &m) in row_miss.iter().enumerate().take(rows) {
         let row = &pair[r * cols..(r + 1) * cols];
-        // Descending in place: dp[S \ {c}] < S is still the previous row's value.
-        for s in (1..states).rev() {
-            let mut v = dp[s] * m;
-            let mut bits = s;
-            while bits != 0 {
-                let c = bits.trailing_zeros() as usize;
-                bits &= bits - 1;
-                v += dp[s & !(1 << c)] * row[c];
-            }
-            dp[s] = v;
-        }
-        dp[0] *= m;
+        dp_row(&mut dp[..states], m, row);
     }
     let mut total = 0.0;
     for (s, &d) in dp.iter().enumerate().take(states) {
@@ -552,6 +530,24 @@ pub fn brute_force_ln_likelihood<R: AsRef<[f64]>>(
         &mut total,
     );
     total
+}
+
+/// One row of the subset DP of (20): dp[S] ← dp[S]·m + Σ_{c∈S} dp[S∖{c}]·row[c] for every
+/// subset S of the columns (`dp.len()` = 2^columns), in place and descending so that dp[S∖{c}]
+/// is still the previous row's value.
+#[inline]
+fn dp_row(dp: &mut [f64], m: f64, row: &[f64]) {
+    for s in (1..dp.len()).rev() {
+        let mut v = dp[s] * m;
+        let mut bits = s;
+        while bits != 0 {
+            let c = bits.trailing_zeros() as usize;
+            bits &= bits - 1;
+            v += dp[s & !(1 << c)] * row[c];
+        }
+        dp[s] = v;
+    }
+    dp[0] *= m;
 }
 
 #[cfg(test)]
