@@ -142,7 +142,9 @@ impl GaussianBall {
                     what: alloc::format!("{what}.cov"),
                 })?;
             let mut order: Vec<usize> = (0..d).collect();
-            order.sort_by(|&i, &j| eig.eigenvalues[i].total_cmp(&eig.eigenvalues[j]));
+            crate::math::sort::sort_by(&mut order, |&i, &j| {
+                eig.eigenvalues[i].total_cmp(&eig.eigenvalues[j])
+            });
             let sd = order
                 .iter()
                 .map(|&i| fns::sqrt(eig.eigenvalues[i].max(0.0)))

@@ -373,7 +373,7 @@ fn sweep_1d(p: &ParticleSet, radius: f64) -> Vec<f64> {
     let mut xs: Vec<(f64, f64)> = (0..p.len())
         .map(|i| (p.point(i)[0], p.weights()[i]))
         .collect();
-    xs.sort_by(|a, b| a.0.total_cmp(&b.0));
+    crate::math::sort::sort_by(&mut xs, |a, b| a.0.total_cmp(&b.0));
     let width = 2.0 * radius;
     let (mut best, mut best_c) = (-1.0, xs[0].0);
     let mut j = 0;
@@ -409,7 +409,7 @@ fn sweep_2d(p: &ParticleSet, radius: f64) -> Vec<f64> {
     let reach2 = 4.0 * radius * radius * (1.0 + COVER_SLACK);
     // Sort by x so that only particles within 2 r0 in x are visited.
     let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&a, &b| p.point(a)[0].total_cmp(&p.point(b)[0]));
+    crate::math::sort::sort_by(&mut order, |&a, &b| p.point(a)[0].total_cmp(&p.point(b)[0]));
     let xs: Vec<f64> = order.iter().map(|&i| p.point(i)[0]).collect();
     let mut best = -1.0;
     let mut best_center = p.point(order[0]).to_vec();
@@ -458,7 +458,9 @@ fn sweep_2d(p: &ParticleSet, radius: f64) -> Vec<f64> {
             }
         }
         // Arc starts before ends at equal angles: arcs are closed.
-        events.sort_by(|a, b| a.0.total_cmp(&b.0).then(b.1.total_cmp(&a.1)));
+        crate::math::sort::sort_by(&mut events, |a, b| {
+            a.0.total_cmp(&b.0).then(b.1.total_cmp(&a.1))
+        });
         let mut cur = base + wrapped;
         let candidate = |cur: f64, theta: f64, best: &mut f64, best_center: &mut Vec<f64>| {
             if cur > *best {

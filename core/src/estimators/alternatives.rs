@@ -93,7 +93,9 @@ fn check(existence: &[f64], ln_peak: &[f64]) -> Result<()> {
 /// Indices sorted by decreasing `key`, ties by index.
 fn ranked(key: &[f64]) -> Vec<usize> {
     let mut order: Vec<usize> = (0..key.len()).collect();
-    order.sort_by(|&i, &j| key[j].total_cmp(&key[i]).then(i.cmp(&j)));
+    crate::math::sort::sort_by(&mut order, |&i, &j| {
+        key[j].total_cmp(&key[i]).then(i.cmp(&j))
+    });
     order
 }
 

@@ -274,7 +274,9 @@ pub fn optimal_estimate(
     }
     // Components by decreasing existence, ties in index order.
     let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&i, &j| existence[j].total_cmp(&existence[i]).then(i.cmp(&j)));
+    crate::math::sort::sort_by(&mut order, |&i, &j| {
+        existence[j].total_cmp(&existence[i]).then(i.cmp(&j))
+    });
     let sorted: Vec<f64> = order.iter().map(|&i| existence[i]).collect();
     let rho = pmf_unchecked(existence);
     let (best_k, best) = match metric {

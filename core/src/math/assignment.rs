@@ -93,7 +93,7 @@ pub(crate) fn solve_unchecked(cost: &[f64], rows: usize, cols: usize) -> Assignm
             .enumerate()
             .map(|(j, i)| (i, j))
             .collect();
-        pairs.sort_unstable();
+        crate::math::sort::sort_by(&mut pairs, |a, b| a.cmp(b));
         pairs
     };
     let total = pairs

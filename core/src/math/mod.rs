@@ -5,6 +5,7 @@ pub mod assignment;
 pub mod fns;
 pub(crate) mod matching;
 pub mod rng;
+pub mod sort;
 pub mod sum;
 
 pub use assignment::{Assignment, linear_assignment};

@@ -170,7 +170,7 @@ pub(crate) fn cutoff_assignment_capped<T, M: Metric<T> + ?Sized>(
         })
         .collect();
     pairs.extend(completion);
-    pairs.sort_unstable_by_key(|q| q.truth);
+    crate::math::sort::sort_by(&mut pairs, |a, b| a.truth.cmp(&b.truth));
     let total = crate::math::sum::sum(pairs.iter().map(|q| q.cost));
     Ok(CutoffAssignment { pairs, total })
 }

@@ -160,7 +160,7 @@ impl Candidates {
                     .then(|| (span as u64 + 1, k))
             })
             .collect();
-        axes.sort_unstable_by(|a, b| b.0.cmp(&a.0).then(a.1.cmp(&b.1)));
+        crate::math::sort::sort_by(&mut axes, |a, b| b.0.cmp(&a.0).then(a.1.cmp(&b.1)));
         // Keep axes while the key space (cells + 2 per axis, for the ±1 guard cells) fits.
         let mut chosen: Vec<(u64, usize)> = Vec::new();
         let mut space: u64 = 1;

@@ -298,7 +298,7 @@ type Intervals = Vec<(f64, f64)>;
 
 fn merge(mut v: Intervals) -> Intervals {
     v.retain(|&(a, b)| a < b);
-    v.sort_by(|x, y| x.0.total_cmp(&y.0));
+    crate::math::sort::sort_by(&mut v, |x, y| x.0.total_cmp(&y.0));
     let mut out: Intervals = Vec::with_capacity(v.len());
     for (a, b) in v {
         match out.last_mut() {
@@ -678,7 +678,7 @@ fn leaf_segments(leaf: &RayLeaf, u: [f64; 2], v: [f64; 2]) -> Intervals {
                     }
                 }
             }
-            hits.sort_by(f64::total_cmp);
+            crate::math::sort::sort_f64(&mut hits);
             let mut out = Vec::with_capacity(hits.len() / 2 + 1);
             let mut k = 0;
             if hits.len() % 2 == 1 {
@@ -713,7 +713,7 @@ fn mass_ray_2d(shape: &Shape, m: &[f64], l: &[f64], tol: f64) -> Quad {
         }
     }
     angles.retain(|a| a.is_finite());
-    angles.sort_by(f64::total_cmp);
+    crate::math::sort::sort_f64(&mut angles);
     angles.dedup_by(|a, b| *a - *b <= 1e-15);
     let mut points = if angles.is_empty() {
         vec![-PI, -0.5 * PI, 0.0, 0.5 * PI]
@@ -758,7 +758,7 @@ fn mass_nested(shape: &Shape, m: &[f64], l: &[f64], tol: f64) -> Quad {
         .collect();
     pts.push(-Z_MAX);
     pts.push(Z_MAX);
-    pts.sort_by(f64::total_cmp);
+    crate::math::sort::sort_f64(&mut pts);
     pts.dedup();
     // Sub-block of L and the column that shifts the conditional mean.
     let k = n - 1;

@@ -355,7 +355,7 @@ pub fn airport_scenario(seed: u64, steps: usize) -> Result<AirportScenario> {
         for _ in 0..poisson(&mut rng, 0.25) {
             scan.push(index(&mut rng, anchors.len()));
         }
-        scan.sort_unstable();
+        crate::math::sort::sort_by(&mut scan, |a, b| a.cmp(b));
         reports.push(scan);
         true_reports.push(true_report);
     }

@@ -41,7 +41,7 @@ impl Eigen {
             .ok_or_else(not_pd)?;
         let mut order: Vec<usize> = (0..n).collect();
         // Stable sort: equal eigenvalues keep the solver's (deterministic) order.
-        order.sort_by(|&a, &b| {
+        crate::math::sort::sort_by(&mut order, |&a, &b| {
             eig.eigenvalues[b]
                 .partial_cmp(&eig.eigenvalues[a])
                 .unwrap_or(core::cmp::Ordering::Equal)

@@ -76,7 +76,7 @@ fn nelder_mead(
     for _ in 0..max_iter {
         // Order: best first (stable on ties, so the run is deterministic).
         let mut order: Vec<usize> = (0..=d).collect();
-        order.sort_by(|&a, &b| vals[a].total_cmp(&vals[b]));
+        crate::math::sort::sort_by(&mut order, |&a, &b| vals[a].total_cmp(&vals[b]));
         pts = order.iter().map(|&i| pts[i].clone()).collect();
         vals = order.iter().map(|&i| vals[i]).collect();
         if vals[d] - vals[0] <= 1e-17 {
