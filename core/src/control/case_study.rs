@@ -15,6 +15,7 @@ use crate::gaussian::normal;
 use crate::math::fns::{exp, ln, sqrt};
 use crate::math::rng::{SeededRng, index, seeded, uniform};
 use crate::metrics::Ospa;
+use crate::smc::likelihood::negligible_pair_bound;
 use crate::smc::{
     Area, LikelihoodWorkspace, MultiObjectLikelihood, MultiObjectParticles, Regularisation,
     SetEstimate, State, regularise, resample, reweight, systematic,
@@ -508,14 +509,18 @@ fn renyi_reward(
     }
     let ln_pd = ln(model.detection());
     let ln_rate = ln(model.clutter_rate());
-    // The plain-arithmetic path needs every factor in [0, 1]: p_D g ≤ p_D/(σ√(2π)).
-    let pairs_below_one = c.iter().all(|&ci| ln_pd + ci <= 0.0);
+    // ln of p_D/(σ√(2π)), the largest factor p_D g of every object.
+    let k: Vec<f64> = c.iter().map(|&ci| ci + ln_pd).collect();
+    // The plain-arithmetic path needs every factor in [0, 1].
+    let pairs_below_one = k.iter().all(|&ki| ki <= 0.0);
+    let mut tables = model.small_tables();
+    let ln_miss = ln(1.0 - model.detection());
+    let mut cutoff = Vec::new();
     let ln_w: Vec<f64> = p.weights.iter().map(|&w| ln(w)).collect();
     let mut ln_l = vec![0.0; p.len()];
     // e^{λ} g(Z^j | X_i) from the plain path, NaN where it declined.
     let mut lin_l = vec![0.0; p.len()];
-    let (mut z, mut ln_c, mut lin_c, mut ln_g, mut pair) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut z, mut ln_c, mut lin_c, mut ln_g) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     let (mut sum, mut count) = (0.0, 0usize);
     for (j, &pick) in scans.picks.iter().enumerate() {
         z.clear();
@@ -528,23 +533,35 @@ fn renyi_reward(
         lin_c.clear();
         lin_c.extend(ln_c.iter().map(|&l| exp(ln_rate + l)));
         let fast = pairs_below_one && lin_c.iter().all(|&v| v <= 1.0);
+        // Pair factors below `negligible_pair_bound` are replaced by 0 (they change each
+        // likelihood by less than 2^{−58} relatively, see there), and so are those below
+        // e^{−746}, where exp is exactly 0: neither needs an exp.
+        cutoff.clear();
+        cutoff.extend(
+            lin_c
+                .iter()
+                .map(|&c| negligible_pair_bound(ln_miss, ln(c)).max(-746.0)),
+        );
         let mut all_plain = fast;
         for (i, t) in lin_l.iter_mut().enumerate() {
             *t = f64::NAN;
             if !fast {
                 continue;
             }
-            pair.clear();
-            for o in offsets[i]..offsets[i + 1] {
-                let (ho, so, co) = (h[o], s[o], c[o] + ln_pd);
-                for &zj in &z {
-                    let v = (zj - ho) * so;
-                    let q = co - 0.5 * v * v;
-                    // exp is exactly 0 below −745.14: skip it.
-                    pair.push(if q < -746.0 { 0.0 } else { exp(q) });
-                }
-            }
-            match model.scaled_likelihood_small(offsets[i + 1] - offsets[i], &pair, &lin_c) {
+            let lo = offsets[i];
+            // p_D g(z_j | x_o) = e^{k_o − v²/2}, v = (z_j − h_o)/σ_o, or 0 below `cutoff[j]`.
+            let sum = model.scaled_likelihood_factors(
+                offsets[i + 1] - lo,
+                &lin_c,
+                &mut tables,
+                |o, jj| {
+                    let o = lo + o;
+                    let v = (z[jj] - h[o]) * s[o];
+                    let q = k[o] - 0.5 * v * v;
+                    if q < cutoff[jj] { 0.0 } else { exp(q) }
+                },
+            );
+            match sum {
                 Some(v) => *t = v,
                 None => all_plain = false,
             }

@@ -192,6 +192,39 @@ pub(crate) fn ln_sum_matchings(
 /// The largest smaller side [`sum_matchings_small`] handles (a fixed 16-entry table).
 pub(crate) const SMALL_SIDE: usize = 4;
 
+/// The largest larger side of [`MultiObjectLikelihood::scaled_likelihood_small`].
+pub(crate) const MAX_LARGER: usize = 16;
+
+/// ln of the largest pair factor that [`negligible_pair_bound`] lets one replace by 0, as a
+/// multiple of ln 2: 2^{−64}.
+const NEGLIGIBLE_LN: f64 = -64.0 * core::f64::consts::LN_2;
+
+/// ln of a bound below which the pair factor f_{ij} = p_D g(z_j | x_i) of (20) may be replaced
+/// by 0, given the logs of the two miss factors it competes with: row i's (object: 1 − p_D)
+/// and column j's (measurement: λ c(z_j)). `ln_row_miss + ln_col_miss − 64 ln 2`.
+///
+/// Why this changes the sum T = Σ_matchings Π factors of (20) only below rounding: T is
+/// affine in f_{ij}, T = T|_{f_{ij}=0} + f_{ij} T_{−i,−j} with T_{−i,−j} the sum over the
+/// matchings of the graph without row i and column j; each of those, extended by "i missed,
+/// j unassigned", is a matching of the full graph not using (i, j), so
+/// T|_{f_{ij}=0} ≥ r_i c_j T_{−i,−j}, and with f_{ij} ≤ 2^{−64} r_i c_j,
+/// T ≤ T|_{f_{ij}=0} (1 + 2^{−64}). Dropping the pairs one after the other (the argument holds
+/// whatever the other factors are), k dropped pairs change T by a relative amount below
+/// k·2^{−64} (< 2^{−58} for the ≤ 64 pairs of the small tables), far under the 2^{−53} of a
+/// single rounding, and only downwards. −∞ when a miss factor is 0 (nothing may be dropped).
+#[inline]
+pub(crate) fn negligible_pair_bound(ln_row_miss: f64, ln_col_miss: f64) -> f64 {
+    ln_row_miss + ln_col_miss + NEGLIGIBLE_LN
+}
+
+/// Scratch tables of [`MultiObjectLikelihood::scaled_likelihood_factors`]: the pair factors
+/// and the objects' miss factors 1 − p_D.
+#[derive(Clone, Debug)]
+pub(crate) struct SmallTables {
+    pair: [f64; MAX_LARGER * SMALL_SIDE],
+    miss: [f64; MAX_LARGER],
+}
+
 /// The sum of [`ln_sum_matchings`] in plain arithmetic, for the small sizes of the sensor
 /// control's future scans: `pair`, `row_miss`, `col_miss` are the factors themselves (not
 /// their logs), all in [0, 1], and `cols ≤ SMALL_SIDE`. No scaling is needed: with factors
@@ -209,16 +242,44 @@ pub(crate) fn sum_matchings_small(
 ) -> Option<f64> {
     debug_assert!(cols <= SMALL_SIDE && rows < 1 << 20);
     debug_assert_eq!(pair.len(), rows * cols);
-    let states = 1usize << cols;
-    let full = states - 1;
-    let mut dp = [0.0f64; 1 << SMALL_SIDE];
+    debug_assert!(row_miss.len() >= rows && col_miss.len() >= cols);
+    // One fixed-size table per column count, so that the compiler unrolls the subset loops;
+    // the operations and their order are those of `dp_row` on a 2^cols table (same bits).
+    let total = match cols {
+        0 => sum_small::<1>(rows, pair, row_miss, col_miss),
+        1 => sum_small::<2>(rows, pair, row_miss, col_miss),
+        2 => sum_small::<4>(rows, pair, row_miss, col_miss),
+        3 => sum_small::<8>(rows, pair, row_miss, col_miss),
+        _ => sum_small::<16>(rows, pair, row_miss, col_miss),
+    };
+    // e^{−670} = e^{30} · e^{−700}, the acceptance margin of `ln_sum_matchings`.
+    if total > 1.1e-291 { Some(total) } else { None }
+}
+
+/// The plain sum of [`sum_matchings_small`] on a table of `STATES` = 2^cols subsets.
+#[inline(always)]
+fn sum_small<const STATES: usize>(
+    rows: usize,
+    pair: &[f64],
+    row_miss: &[f64],
+    col_miss: &[f64],
+) -> f64 {
+    let cols = STATES.trailing_zeros() as usize;
+    let full = STATES - 1;
+    let mut dp = [0.0f64; STATES];
     dp[0] = 1.0;
-    for (r, &m) in row_miss.iter().enumerate().take(rows) {
-        let row = &pair[r * cols..(r + 1) * cols];
-        dp_row(&mut dp[..states], m, row);
+    for (row, &m) in pair.chunks_exact(cols.max(1)).zip(row_miss).take(rows) {
+        dp_row(&mut dp, m, &row[..cols]);
     }
+    if cols == 0 {
+        // No columns: the rows are all missed (the chunks above saw no pair).
+        for &m in row_miss.iter().take(rows) {
+            dp[0] *= m;
+        }
+    }
+    let col_miss = &col_miss[..cols];
     let mut total = 0.0;
-    for (s, &d) in dp.iter().enumerate().take(states) {
+    for (s, &d) in dp.iter().enumerate() {
         let mut f = d;
         let mut out = full & !s;
         while out != 0 {
@@ -228,8 +289,7 @@ pub(crate) fn sum_matchings_small(
         }
         total += f;
     }
-    // e^{−670} = e^{30} · e^{−700}, the acceptance margin of `ln_sum_matchings`.
-    if total > 1.1e-291 { Some(total) } else { None }
+    total
 }
 
 /// The same sum with log-sum-exp arithmetic throughout (no underflow at any scale).
@@ -333,6 +393,7 @@ impl MultiObjectLikelihood {
     /// caller then evaluates
     /// [`Self::ln_likelihood_from_logs`], which is exact at every scale. Agrees with its
     /// e^{λ + value} to rounding otherwise.
+    #[cfg(test)]
     pub(crate) fn scaled_likelihood_small(
         &self,
         n: usize,
@@ -340,27 +401,58 @@ impl MultiObjectLikelihood {
         clutter: &[f64],
     ) -> Option<f64> {
         let m = clutter.len();
-        const MAX_LARGER: usize = 16;
-        if n.min(m) > SMALL_SIDE || n.max(m) > MAX_LARGER || pair.len() != n * m {
+        if pair.len() != n * m {
             return None;
         }
         let unit = |v: &f64| (0.0..=1.0).contains(v);
         if !(pair.iter().all(unit) && clutter.iter().all(unit)) {
             return None;
         }
-        let miss = [1.0 - self.detection; MAX_LARGER];
+        let mut tables = self.small_tables();
+        self.scaled_likelihood_factors(n, clutter, &mut tables, |i, j| pair[i * m + j])
+    }
+
+    /// The scratch tables of [`Self::scaled_likelihood_factors`] (made once, reused).
+    pub(crate) fn small_tables(&self) -> SmallTables {
+        SmallTables {
+            pair: [0.0; MAX_LARGER * SMALL_SIDE],
+            miss: [1.0 - self.detection; MAX_LARGER],
+        }
+    }
+
+    /// [`Self::scaled_likelihood_small`] with the pair factors p_D g(z_j | x_i) given by
+    /// `factor(i, j)` (in [0, 1], the caller's invariant, as are the `clutter` values),
+    /// written straight into the orientation of the dynamic programme (the smaller side as
+    /// the columns). `tables` from [`Self::small_tables`] of this model.
+    #[inline(always)]
+    pub(crate) fn scaled_likelihood_factors(
+        &self,
+        n: usize,
+        clutter: &[f64],
+        tables: &mut SmallTables,
+        factor: impl Fn(usize, usize) -> f64,
+    ) -> Option<f64> {
+        let m = clutter.len();
+        if n.min(m) > SMALL_SIDE || n.max(m) > MAX_LARGER {
+            return None;
+        }
+        let SmallTables { pair, miss } = tables;
         if n > m {
             // Rows: objects (miss 1 − p_D); columns: measurements (miss λ c(z_j)).
-            sum_matchings_small(n, m, pair, &miss[..n], clutter)
-        } else {
-            // Rows: measurements; columns: objects.
-            let mut t = [0.0f64; MAX_LARGER * SMALL_SIDE];
             for i in 0..n {
                 for j in 0..m {
-                    t[j * n + i] = pair[i * m + j];
+                    pair[i * m + j] = factor(i, j);
                 }
             }
-            sum_matchings_small(m, n, &t[..n * m], clutter, &miss[..n])
+            sum_matchings_small(n, m, &pair[..n * m], &miss[..n], clutter)
+        } else {
+            // Rows: measurements; columns: objects.
+            for j in 0..m {
+                for i in 0..n {
+                    pair[j * n + i] = factor(i, j);
+                }
+            }
+            sum_matchings_small(m, n, &pair[..n * m], clutter, &miss[..n])
         }
     }
 
@@ -535,7 +627,7 @@ pub fn brute_force_ln_likelihood<R: AsRef<[f64]>>(
 /// One row of the subset DP of (20): dp[S] ← dp[S]·m + Σ_{c∈S} dp[S∖{c}]·row[c] for every
 /// subset S of the columns (`dp.len()` = 2^columns), in place and descending so that dp[S∖{c}]
 /// is still the previous row's value.
-#[inline]
+#[inline(always)]
 fn dp_row(dp: &mut [f64], m: f64, row: &[f64]) {
     for s in (1..dp.len()).rev() {
         let mut v = dp[s] * m;
