@@ -468,6 +468,10 @@ impl FutureScans {
     }
 }
 
+/// The most measurements of a future scan the plain path takes (a scan has one per object of
+/// a particle, at most n_max ≤ 8).
+const MAX_SCAN: usize = 16;
+
 /// E[D(u)] (17) as the plain mean over the ideal future scans (see [`super::rewards`]).
 ///
 /// Per action everything that depends only on the particles and u (the ranges h, 1/σ and
@@ -509,13 +513,12 @@ fn renyi_reward(
     }
     let ln_pd = ln(model.detection());
     let ln_rate = ln(model.clutter_rate());
-    // ln of p_D/(σ√(2π)), the largest factor p_D g of every object.
-    let k: Vec<f64> = c.iter().map(|&ci| ci + ln_pd).collect();
+    // Per object (h, 1/σ, k) with k = ln of p_D/(σ√(2π)), its largest factor p_D g.
+    let obj: Vec<[f64; 3]> = (0..h.len()).map(|o| [h[o], s[o], c[o] + ln_pd]).collect();
     // The plain-arithmetic path needs every factor in [0, 1].
-    let pairs_below_one = k.iter().all(|&ki| ki <= 0.0);
+    let pairs_below_one = obj.iter().all(|&[_, _, k]| k <= 0.0);
     let mut tables = model.small_tables();
     let ln_miss = ln(1.0 - model.detection());
-    let mut cutoff = Vec::new();
     let ln_w: Vec<f64> = p.weights.iter().map(|&w| ln(w)).collect();
     let mut ln_l = vec![0.0; p.len()];
     // e^{λ} g(Z^j | X_i) from the plain path, NaN where it declined.
@@ -532,35 +535,33 @@ fn renyi_reward(
         ln_c.extend(z.iter().map(|&zj| sensor.ln_clutter_density(zj)));
         lin_c.clear();
         lin_c.extend(ln_c.iter().map(|&l| exp(ln_rate + l)));
-        let fast = pairs_below_one && lin_c.iter().all(|&v| v <= 1.0);
+        let fast = pairs_below_one && z.len() <= MAX_SCAN && lin_c.iter().all(|&v| v <= 1.0);
         // Pair factors below `negligible_pair_bound` are replaced by 0 (they change each
         // likelihood by less than 2^{−58} relatively, see there), and so are those below
-        // e^{−746}, where exp is exactly 0: neither needs an exp.
-        cutoff.clear();
-        cutoff.extend(
-            lin_c
-                .iter()
-                .map(|&c| negligible_pair_bound(ln_miss, ln(c)).max(-746.0)),
-        );
+        // e^{−746}, where exp is exactly 0: neither needs an exp. Fixed-size copies of the
+        // scan for the inner loop.
+        let (mut zf, mut cutoff) = ([0.0f64; MAX_SCAN], [0.0f64; MAX_SCAN]);
+        if fast {
+            for (jj, (&zj, &cj)) in z.iter().zip(&lin_c).enumerate() {
+                zf[jj] = zj;
+                cutoff[jj] = negligible_pair_bound(ln_miss, ln(cj)).max(-746.0);
+            }
+        }
         let mut all_plain = fast;
         for (i, t) in lin_l.iter_mut().enumerate() {
             *t = f64::NAN;
             if !fast {
                 continue;
             }
-            let lo = offsets[i];
+            let objects = &obj[offsets[i]..offsets[i + 1]];
             // p_D g(z_j | x_o) = e^{k_o − v²/2}, v = (z_j − h_o)/σ_o, or 0 below `cutoff[j]`.
-            let sum = model.scaled_likelihood_factors(
-                offsets[i + 1] - lo,
-                &lin_c,
-                &mut tables,
-                |o, jj| {
-                    let o = lo + o;
-                    let v = (z[jj] - h[o]) * s[o];
-                    let q = k[o] - 0.5 * v * v;
+            let sum =
+                model.scaled_likelihood_factors(objects.len(), &lin_c, &mut tables, |o, jj| {
+                    let [ho, so, ko] = objects[o];
+                    let v = (zf[jj] - ho) * so;
+                    let q = ko - 0.5 * v * v;
                     if q < cutoff[jj] { 0.0 } else { exp(q) }
-                },
-            );
+                });
             match sum {
                 Some(v) => *t = v,
                 None => all_plain = false,

@@ -252,8 +252,66 @@ pub(crate) fn sum_matchings_small(
         3 => sum_small::<8>(rows, pair, row_miss, col_miss),
         _ => sum_small::<16>(rows, pair, row_miss, col_miss),
     };
-    // e^{−670} = e^{30} · e^{−700}, the acceptance margin of `ln_sum_matchings`.
-    if total > 1.1e-291 { Some(total) } else { None }
+    if total > SMALL_FLOOR {
+        Some(total)
+    } else {
+        None
+    }
+}
+
+/// e^{−670} = e^{30} · e^{−700}, the acceptance margin of `ln_sum_matchings`: plain sums
+/// below it are redone in log space.
+const SMALL_FLOOR: f64 = 1.1e-291;
+
+/// [`sum_matchings_small`] for N objects and M measurements known at compile time (so that
+/// every loop unrolls), the pair factors from `factor(i, j)`, the objects' miss factor `miss`
+/// and the measurements' `clutter[j]`: the smaller side as the columns, and the operations of
+/// `dp_row` and of the final sum in the same order, hence the same bits.
+#[inline(always)]
+#[allow(clippy::needless_range_loop)] // `clutter` is indexed by rows or by columns.
+fn sum_fixed<const N: usize, const M: usize>(
+    miss: f64,
+    clutter: &[f64],
+    factor: &impl Fn(usize, usize) -> f64,
+) -> f64 {
+    let objects_are_rows = N > M;
+    let (rows, cols) = if objects_are_rows { (N, M) } else { (M, N) };
+    let states = 1usize << cols;
+    let clutter = &clutter[..M];
+    let mut dp = [0.0f64; 1 << SMALL_SIDE];
+    dp[0] = 1.0;
+    for r in 0..rows {
+        let rm = if objects_are_rows { miss } else { clutter[r] };
+        let mut row = [0.0f64; SMALL_SIDE];
+        for (c, f) in row.iter_mut().enumerate().take(cols) {
+            *f = if objects_are_rows {
+                factor(r, c)
+            } else {
+                factor(c, r)
+            };
+        }
+        for s in (1..states).rev() {
+            let mut v = dp[s] * rm;
+            for (c, &f) in row.iter().enumerate().take(cols) {
+                if s & (1 << c) != 0 {
+                    v += dp[s & !(1 << c)] * f;
+                }
+            }
+            dp[s] = v;
+        }
+        dp[0] *= rm;
+    }
+    let mut total = 0.0;
+    for (s, &d) in dp.iter().enumerate().take(states) {
+        let mut f = d;
+        for c in 0..cols {
+            if s & (1 << c) == 0 {
+                f *= if objects_are_rows { clutter[c] } else { miss };
+            }
+        }
+        total += f;
+    }
+    total
 }
 
 /// The plain sum of [`sum_matchings_small`] on a table of `STATES` = 2^cols subsets.
@@ -437,6 +495,36 @@ impl MultiObjectLikelihood {
             return None;
         }
         let SmallTables { pair, miss } = tables;
+        // The common sizes (n, m ≤ 3) by a kernel unrolled for them, same operations.
+        macro_rules! fixed {
+            ($(($a:literal, $b:literal)),*) => {
+                match (n, m) {
+                    $(($a, $b) => {
+                        let t = sum_fixed::<$a, $b>(miss[0], clutter, &factor);
+                        return if t > SMALL_FLOOR { Some(t) } else { None };
+                    })*
+                    _ => {}
+                }
+            };
+        }
+        fixed!(
+            (0, 0),
+            (0, 1),
+            (0, 2),
+            (0, 3),
+            (1, 0),
+            (1, 1),
+            (1, 2),
+            (1, 3),
+            (2, 0),
+            (2, 1),
+            (2, 2),
+            (2, 3),
+            (3, 0),
+            (3, 1),
+            (3, 2),
+            (3, 3)
+        );
         if n > m {
             // Rows: objects (miss 1 − p_D); columns: measurements (miss λ c(z_j)).
             for i in 0..n {
@@ -805,6 +893,92 @@ mod tests {
         assert_eq!(model.ln_likelihood_small(1, &[2.0], &[0.5]), None);
         assert_eq!(model.ln_likelihood_small(1, &[0.5], &[f64::NAN]), None);
         assert!(model.ln_likelihood_small(1, &[0.5], &[0.5]).is_some());
+    }
+
+    /// The unrolled kernels give the bits of the table-driven programme, in both orientations.
+    #[test]
+    fn fixed_kernels_match_the_tables_bit_for_bit() {
+        let mut rng = seeded(77);
+        let model = MultiObjectLikelihood::new(0.9, 0.8).unwrap();
+        let mut tables = model.small_tables();
+        for n in 0..=3 {
+            for m in 0..=3 {
+                for _ in 0..20 {
+                    let pair: Vec<f64> = (0..n * m).map(|_| uniform(&mut rng)).collect();
+                    let clutter: Vec<f64> = (0..m).map(|_| uniform(&mut rng)).collect();
+                    let fixed = model
+                        .scaled_likelihood_factors(n, &clutter, &mut tables, |i, j| pair[i * m + j])
+                        .unwrap();
+                    let miss = [1.0 - 0.9; 3];
+                    let table = if n > m {
+                        sum_matchings_small(n, m, &pair, &miss[..n], &clutter)
+                    } else {
+                        let t: Vec<f64> = (0..m)
+                            .flat_map(|j| (0..n).map(move |i| (i, j)))
+                            .map(|(i, j)| pair[i * m + j])
+                            .collect();
+                        sum_matchings_small(m, n, &t, &clutter, &miss[..n])
+                    };
+                    assert_eq!(fixed.to_bits(), table.unwrap().to_bits(), "n={n} m={m}");
+                }
+            }
+        }
+    }
+
+    /// The inequality behind `negligible_pair_bound`: pair factors f_ij ≤ 2^{−b} r_i c_j set
+    /// to 0 lower the sum by a relative amount in [0, k·2^{−b}] (k of them), checked at
+    /// b = 20 where it is far above rounding, and tight for one pair.
+    #[test]
+    fn negligible_pairs_change_the_sum_by_at_most_the_bound() {
+        let mut rng = seeded(5);
+        let b = 20.0f64;
+        let eps = libm::exp2(-b);
+        let mut worst = 0.0f64;
+        for n in 1..=4 {
+            for m in 1..=4 {
+                for trial in 0..30 {
+                    let (pd, rate) = ([0.95, 0.5, 0.1][trial % 3], 0.8);
+                    let model = MultiObjectLikelihood::new(pd, rate).unwrap();
+                    let clutter: Vec<f64> =
+                        (0..m).map(|_| 1e-4 + 0.5 * uniform(&mut rng)).collect();
+                    let (mut full, mut dropped, mut k) = (vec![0.0; n * m], vec![0.0; n * m], 0);
+                    for i in 0..n {
+                        for j in 0..m {
+                            let f = if uniform(&mut rng) < 0.5 {
+                                // At most the bound (with the code's own formula).
+                                k += 1;
+                                let ln_b =
+                                    ln(1.0 - pd) + ln(clutter[j]) - b * core::f64::consts::LN_2;
+                                exp(ln_b) * (1.0 - 0.5 * uniform(&mut rng)) * (1.0 - 1e-12)
+                            } else {
+                                let f = 0.9 * uniform(&mut rng);
+                                dropped[i * m + j] = f;
+                                f
+                            };
+                            full[i * m + j] = f;
+                        }
+                    }
+                    let t_full = model.ln_likelihood_small(n, &full, &clutter).unwrap();
+                    let t_drop = model.ln_likelihood_small(n, &dropped, &clutter).unwrap();
+                    // ln T_full − ln T_dropped ∈ [0, ln(1 + ε)^k] up to rounding.
+                    let d = t_full - t_drop;
+                    assert!(d >= -1e-14, "n={n} m={m}: {d}");
+                    assert!(
+                        d <= k as f64 * eps + 1e-14,
+                        "n={n} m={m} k={k}: {d} vs {}",
+                        k as f64 * eps
+                    );
+                    if k > 0 {
+                        worst = worst.max(d / (k as f64 * eps));
+                    }
+                }
+            }
+        }
+        // Not vacuous: some case comes close to the bound.
+        assert!(worst > 0.1, "{worst}");
+        // The code's bound is this one at b = 64.
+        let ln_b = negligible_pair_bound(ln(0.05), ln(1e-3));
+        assert!((ln_b - (ln(0.05) + ln(1e-3) - 64.0 * core::f64::consts::LN_2)).abs() < 1e-12);
     }
 
     #[test]
