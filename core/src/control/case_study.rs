@@ -478,7 +478,7 @@ const MAX_SCAN: usize = 16;
 /// ln of the normal's constant of every object) is computed once, per future scan what depends
 /// only on Z^j (λ c(z_j)); (20) is then evaluated in plain arithmetic from the factors
 /// p_D g(z_j | x) = e^{ln p_D + ln g} (one exp per pair, none when it is exactly 0, no
-/// exp-then-ln) by `MultiObjectLikelihood::scaled_likelihood_small`, and the divergence (15)
+/// exp-then-ln, none below `negligible_pair_bound`) by `MultiObjectLikelihood::scaled_likelihood_factors`, and the divergence (15)
 /// from those plain values by [`renyi_plain`] (√ for α = 1/2, no exp or ln per particle).
 /// Whenever either declines (large sets, factors above 1, possible underflow) the scan is
 /// redone in log space, exact at every scale. The same numbers as the reference
