@@ -4,6 +4,17 @@
 //! programme with the enumeration of every association at n = 4, m = 6.
 //!
 //! `cargo bench --bench control -- --warm-up-time 1 --measurement-time 5`
+//!
+//! Measured (issue 14, 2 shared cores, `parallel` on, so 2 threads over the 17 actions):
+//! `control_step/renyi` 135.6 ms before (at 8b5859a), 53.2 ms [48.7, 56.0] after the
+//! unrolled small DP and the negligible-pair rule (beb2e8d); in instruction counts, one step
+//! (the `control_step` bin: Ir of 5 warm-up steps + 1 minus Ir of the 5 warm-up steps,
+//! `RAYON_NUM_THREADS=1 valgrind --tool=callgrind target/release/control_step 750 200 {0,1}`)
+//! went 1.725e9 → 0.622e9 Ir, of which ≈ 0.37e9 are the ≈ 5.8 M libm `exp` calls left (pairs
+//! within ≈ 10σ, which the exact evaluation needs). Interleaved wall clock of the bin:
+//! before 168–240 ms (1 thread) / 93–136 ms (2), after 58–80 ms / 33–49 ms. Node
+//! (`node benches/control_node.mjs renyi 9`, one thread): 171 ms before, 128 ms median
+//! (90 ms min) after. The rewards are the same bits as before on the bench's state.
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
 use fisst::control::{ControlConfig, ControlRun, Scheme};
 use fisst::smc::{brute_force_ln_likelihood, ln_likelihood};

@@ -15,6 +15,7 @@ use crate::gaussian::normal;
 use crate::math::fns::{exp, ln, sqrt};
 use crate::math::rng::{SeededRng, index, seeded, uniform};
 use crate::metrics::Ospa;
+use crate::smc::likelihood::negligible_pair_bound;
 use crate::smc::{
     Area, LikelihoodWorkspace, MultiObjectLikelihood, MultiObjectParticles, Regularisation,
     SetEstimate, State, regularise, resample, reweight, systematic,
@@ -467,13 +468,17 @@ impl FutureScans {
     }
 }
 
+/// The most measurements of a future scan the plain path takes (a scan has one per object of
+/// a particle, at most n_max ≤ 8).
+const MAX_SCAN: usize = 16;
+
 /// E[D(u)] (17) as the plain mean over the ideal future scans (see [`super::rewards`]).
 ///
 /// Per action everything that depends only on the particles and u (the ranges h, 1/σ and
 /// ln of the normal's constant of every object) is computed once, per future scan what depends
 /// only on Z^j (λ c(z_j)); (20) is then evaluated in plain arithmetic from the factors
 /// p_D g(z_j | x) = e^{ln p_D + ln g} (one exp per pair, none when it is exactly 0, no
-/// exp-then-ln) by `MultiObjectLikelihood::scaled_likelihood_small`, and the divergence (15)
+/// exp-then-ln, none below `negligible_pair_bound`) by `MultiObjectLikelihood::scaled_likelihood_factors`, and the divergence (15)
 /// from those plain values by [`renyi_plain`] (√ for α = 1/2, no exp or ln per particle).
 /// Whenever either declines (large sets, factors above 1, possible underflow) the scan is
 /// redone in log space, exact at every scale. The same numbers as the reference
@@ -508,14 +513,17 @@ fn renyi_reward(
     }
     let ln_pd = ln(model.detection());
     let ln_rate = ln(model.clutter_rate());
-    // The plain-arithmetic path needs every factor in [0, 1]: p_D g ≤ p_D/(σ√(2π)).
-    let pairs_below_one = c.iter().all(|&ci| ln_pd + ci <= 0.0);
+    // Per object (h, 1/σ, k) with k = ln of p_D/(σ√(2π)), its largest factor p_D g.
+    let obj: Vec<[f64; 3]> = (0..h.len()).map(|o| [h[o], s[o], c[o] + ln_pd]).collect();
+    // The plain-arithmetic path needs every factor in [0, 1].
+    let pairs_below_one = obj.iter().all(|&[_, _, k]| k <= 0.0);
+    let mut tables = model.small_tables();
+    let ln_miss = ln(1.0 - model.detection());
     let ln_w: Vec<f64> = p.weights.iter().map(|&w| ln(w)).collect();
     let mut ln_l = vec![0.0; p.len()];
     // e^{λ} g(Z^j | X_i) from the plain path, NaN where it declined.
     let mut lin_l = vec![0.0; p.len()];
-    let (mut z, mut ln_c, mut lin_c, mut ln_g, mut pair) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut z, mut ln_c, mut lin_c, mut ln_g) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     let (mut sum, mut count) = (0.0, 0usize);
     for (j, &pick) in scans.picks.iter().enumerate() {
         z.clear();
@@ -527,24 +535,34 @@ fn renyi_reward(
         ln_c.extend(z.iter().map(|&zj| sensor.ln_clutter_density(zj)));
         lin_c.clear();
         lin_c.extend(ln_c.iter().map(|&l| exp(ln_rate + l)));
-        let fast = pairs_below_one && lin_c.iter().all(|&v| v <= 1.0);
+        let fast = pairs_below_one && z.len() <= MAX_SCAN && lin_c.iter().all(|&v| v <= 1.0);
+        // Pair factors below `negligible_pair_bound` are replaced by 0 (they change each
+        // likelihood by less than 2^{−58} relatively, see there), and so are those below
+        // e^{−746}, where exp is exactly 0: neither needs an exp. Fixed-size copies of the
+        // scan for the inner loop.
+        let (mut zf, mut cutoff) = ([0.0f64; MAX_SCAN], [0.0f64; MAX_SCAN]);
+        if fast {
+            for (jj, (&zj, &cj)) in z.iter().zip(&lin_c).enumerate() {
+                zf[jj] = zj;
+                cutoff[jj] = negligible_pair_bound(ln_miss, ln(cj)).max(-746.0);
+            }
+        }
         let mut all_plain = fast;
         for (i, t) in lin_l.iter_mut().enumerate() {
             *t = f64::NAN;
             if !fast {
                 continue;
             }
-            pair.clear();
-            for o in offsets[i]..offsets[i + 1] {
-                let (ho, so, co) = (h[o], s[o], c[o] + ln_pd);
-                for &zj in &z {
-                    let v = (zj - ho) * so;
-                    let q = co - 0.5 * v * v;
-                    // exp is exactly 0 below −745.14: skip it.
-                    pair.push(if q < -746.0 { 0.0 } else { exp(q) });
-                }
-            }
-            match model.scaled_likelihood_small(offsets[i + 1] - offsets[i], &pair, &lin_c) {
+            let objects = &obj[offsets[i]..offsets[i + 1]];
+            // p_D g(z_j | x_o) = e^{k_o − v²/2}, v = (z_j − h_o)/σ_o, or 0 below `cutoff[j]`.
+            let sum =
+                model.scaled_likelihood_factors(objects.len(), &lin_c, &mut tables, |o, jj| {
+                    let [ho, so, ko] = objects[o];
+                    let v = (zf[jj] - ho) * so;
+                    let q = ko - 0.5 * v * v;
+                    if q < cutoff[jj] { 0.0 } else { exp(q) }
+                });
+            match sum {
                 Some(v) => *t = v,
                 None => all_plain = false,
             }

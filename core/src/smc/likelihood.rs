@@ -192,6 +192,39 @@ pub(crate) fn ln_sum_matchings(
 /// The largest smaller side [`sum_matchings_small`] handles (a fixed 16-entry table).
 pub(crate) const SMALL_SIDE: usize = 4;
 
+/// The largest larger side of [`MultiObjectLikelihood::scaled_likelihood_small`].
+pub(crate) const MAX_LARGER: usize = 16;
+
+/// ln of the largest pair factor that [`negligible_pair_bound`] lets one replace by 0, as a
+/// multiple of ln 2: 2^{−64}.
+const NEGLIGIBLE_LN: f64 = -64.0 * core::f64::consts::LN_2;
+
+/// ln of a bound below which the pair factor f_{ij} = p_D g(z_j | x_i) of (20) may be replaced
+/// by 0, given the logs of the two miss factors it competes with: row i's (object: 1 − p_D)
+/// and column j's (measurement: λ c(z_j)). `ln_row_miss + ln_col_miss − 64 ln 2`.
+///
+/// Why this changes the sum T = Σ_matchings Π factors of (20) only below rounding: T is
+/// affine in f_{ij}, T = T|_{f_{ij}=0} + f_{ij} T_{−i,−j} with T_{−i,−j} the sum over the
+/// matchings of the graph without row i and column j; each of those, extended by "i missed,
+/// j unassigned", is a matching of the full graph not using (i, j), so
+/// T|_{f_{ij}=0} ≥ r_i c_j T_{−i,−j}, and with f_{ij} ≤ 2^{−64} r_i c_j,
+/// T ≤ T|_{f_{ij}=0} (1 + 2^{−64}). Dropping the pairs one after the other (the argument holds
+/// whatever the other factors are), k dropped pairs change T by a relative amount below
+/// k·2^{−64} (< 2^{−58} for the ≤ 64 pairs of the small tables), far under the 2^{−53} of a
+/// single rounding, and only downwards. −∞ when a miss factor is 0 (nothing may be dropped).
+#[inline]
+pub(crate) fn negligible_pair_bound(ln_row_miss: f64, ln_col_miss: f64) -> f64 {
+    ln_row_miss + ln_col_miss + NEGLIGIBLE_LN
+}
+
+/// Scratch tables of [`MultiObjectLikelihood::scaled_likelihood_factors`]: the pair factors
+/// and the objects' miss factors 1 − p_D.
+#[derive(Clone, Debug)]
+pub(crate) struct SmallTables {
+    pair: [f64; MAX_LARGER * SMALL_SIDE],
+    miss: [f64; MAX_LARGER],
+}
+
 /// The sum of [`ln_sum_matchings`] in plain arithmetic, for the small sizes of the sensor
 /// control's future scans: `pair`, `row_miss`, `col_miss` are the factors themselves (not
 /// their logs), all in [0, 1], and `cols ≤ SMALL_SIDE`. No scaling is needed: with factors
@@ -209,16 +242,102 @@ pub(crate) fn sum_matchings_small(
 ) -> Option<f64> {
     debug_assert!(cols <= SMALL_SIDE && rows < 1 << 20);
     debug_assert_eq!(pair.len(), rows * cols);
+    debug_assert!(row_miss.len() >= rows && col_miss.len() >= cols);
+    // One fixed-size table per column count, so that the compiler unrolls the subset loops;
+    // the operations and their order are those of `dp_row` on a 2^cols table (same bits).
+    let total = match cols {
+        0 => sum_small::<1>(rows, pair, row_miss, col_miss),
+        1 => sum_small::<2>(rows, pair, row_miss, col_miss),
+        2 => sum_small::<4>(rows, pair, row_miss, col_miss),
+        3 => sum_small::<8>(rows, pair, row_miss, col_miss),
+        _ => sum_small::<16>(rows, pair, row_miss, col_miss),
+    };
+    if total > SMALL_FLOOR {
+        Some(total)
+    } else {
+        None
+    }
+}
+
+/// e^{−670} = e^{30} · e^{−700}, the acceptance margin of `ln_sum_matchings`: plain sums
+/// below it are redone in log space.
+const SMALL_FLOOR: f64 = 1.1e-291;
+
+/// [`sum_matchings_small`] for N objects and M measurements known at compile time (so that
+/// every loop unrolls), the pair factors from `factor(i, j)`, the objects' miss factor `miss`
+/// and the measurements' `clutter[j]`: the smaller side as the columns, and the operations of
+/// `dp_row` and of the final sum in the same order, hence the same bits.
+#[inline(always)]
+#[allow(clippy::needless_range_loop)] // `clutter` is indexed by rows or by columns.
+fn sum_fixed<const N: usize, const M: usize>(
+    miss: f64,
+    clutter: &[f64],
+    factor: &impl Fn(usize, usize) -> f64,
+) -> f64 {
+    let objects_are_rows = N > M;
+    let (rows, cols) = if objects_are_rows { (N, M) } else { (M, N) };
     let states = 1usize << cols;
-    let full = states - 1;
+    let clutter = &clutter[..M];
     let mut dp = [0.0f64; 1 << SMALL_SIDE];
     dp[0] = 1.0;
-    for (r, &m) in row_miss.iter().enumerate().take(rows) {
-        let row = &pair[r * cols..(r + 1) * cols];
-        dp_row(&mut dp[..states], m, row);
+    for r in 0..rows {
+        let rm = if objects_are_rows { miss } else { clutter[r] };
+        let mut row = [0.0f64; SMALL_SIDE];
+        for (c, f) in row.iter_mut().enumerate().take(cols) {
+            *f = if objects_are_rows {
+                factor(r, c)
+            } else {
+                factor(c, r)
+            };
+        }
+        for s in (1..states).rev() {
+            let mut v = dp[s] * rm;
+            for (c, &f) in row.iter().enumerate().take(cols) {
+                if s & (1 << c) != 0 {
+                    v += dp[s & !(1 << c)] * f;
+                }
+            }
+            dp[s] = v;
+        }
+        dp[0] *= rm;
     }
     let mut total = 0.0;
     for (s, &d) in dp.iter().enumerate().take(states) {
+        let mut f = d;
+        for c in 0..cols {
+            if s & (1 << c) == 0 {
+                f *= if objects_are_rows { clutter[c] } else { miss };
+            }
+        }
+        total += f;
+    }
+    total
+}
+
+/// The plain sum of [`sum_matchings_small`] on a table of `STATES` = 2^cols subsets.
+#[inline(always)]
+fn sum_small<const STATES: usize>(
+    rows: usize,
+    pair: &[f64],
+    row_miss: &[f64],
+    col_miss: &[f64],
+) -> f64 {
+    let cols = STATES.trailing_zeros() as usize;
+    let full = STATES - 1;
+    let mut dp = [0.0f64; STATES];
+    dp[0] = 1.0;
+    for (row, &m) in pair.chunks_exact(cols.max(1)).zip(row_miss).take(rows) {
+        dp_row(&mut dp, m, &row[..cols]);
+    }
+    if cols == 0 {
+        // No columns: the rows are all missed (the chunks above saw no pair).
+        for &m in row_miss.iter().take(rows) {
+            dp[0] *= m;
+        }
+    }
+    let col_miss = &col_miss[..cols];
+    let mut total = 0.0;
+    for (s, &d) in dp.iter().enumerate() {
         let mut f = d;
         let mut out = full & !s;
         while out != 0 {
@@ -228,8 +347,7 @@ pub(crate) fn sum_matchings_small(
         }
         total += f;
     }
-    // e^{−670} = e^{30} · e^{−700}, the acceptance margin of `ln_sum_matchings`.
-    if total > 1.1e-291 { Some(total) } else { None }
+    total
 }
 
 /// The same sum with log-sum-exp arithmetic throughout (no underflow at any scale).
@@ -333,6 +451,7 @@ impl MultiObjectLikelihood {
     /// caller then evaluates
     /// [`Self::ln_likelihood_from_logs`], which is exact at every scale. Agrees with its
     /// e^{λ + value} to rounding otherwise.
+    #[cfg(test)]
     pub(crate) fn scaled_likelihood_small(
         &self,
         n: usize,
@@ -340,27 +459,88 @@ impl MultiObjectLikelihood {
         clutter: &[f64],
     ) -> Option<f64> {
         let m = clutter.len();
-        const MAX_LARGER: usize = 16;
-        if n.min(m) > SMALL_SIDE || n.max(m) > MAX_LARGER || pair.len() != n * m {
+        if pair.len() != n * m {
             return None;
         }
         let unit = |v: &f64| (0.0..=1.0).contains(v);
         if !(pair.iter().all(unit) && clutter.iter().all(unit)) {
             return None;
         }
-        let miss = [1.0 - self.detection; MAX_LARGER];
+        let mut tables = self.small_tables();
+        self.scaled_likelihood_factors(n, clutter, &mut tables, |i, j| pair[i * m + j])
+    }
+
+    /// The scratch tables of [`Self::scaled_likelihood_factors`] (made once, reused).
+    pub(crate) fn small_tables(&self) -> SmallTables {
+        SmallTables {
+            pair: [0.0; MAX_LARGER * SMALL_SIDE],
+            miss: [1.0 - self.detection; MAX_LARGER],
+        }
+    }
+
+    /// [`Self::scaled_likelihood_small`] with the pair factors p_D g(z_j | x_i) given by
+    /// `factor(i, j)` (in [0, 1], the caller's invariant, as are the `clutter` values),
+    /// written straight into the orientation of the dynamic programme (the smaller side as
+    /// the columns). `tables` from [`Self::small_tables`] of this model.
+    #[inline(always)]
+    pub(crate) fn scaled_likelihood_factors(
+        &self,
+        n: usize,
+        clutter: &[f64],
+        tables: &mut SmallTables,
+        factor: impl Fn(usize, usize) -> f64,
+    ) -> Option<f64> {
+        let m = clutter.len();
+        if n.min(m) > SMALL_SIDE || n.max(m) > MAX_LARGER {
+            return None;
+        }
+        let SmallTables { pair, miss } = tables;
+        // The common sizes (n, m ≤ 3) by a kernel unrolled for them, same operations.
+        macro_rules! fixed {
+            ($(($a:literal, $b:literal)),*) => {
+                match (n, m) {
+                    $(($a, $b) => {
+                        let t = sum_fixed::<$a, $b>(miss[0], clutter, &factor);
+                        return if t > SMALL_FLOOR { Some(t) } else { None };
+                    })*
+                    _ => {}
+                }
+            };
+        }
+        fixed!(
+            (0, 0),
+            (0, 1),
+            (0, 2),
+            (0, 3),
+            (1, 0),
+            (1, 1),
+            (1, 2),
+            (1, 3),
+            (2, 0),
+            (2, 1),
+            (2, 2),
+            (2, 3),
+            (3, 0),
+            (3, 1),
+            (3, 2),
+            (3, 3)
+        );
         if n > m {
             // Rows: objects (miss 1 − p_D); columns: measurements (miss λ c(z_j)).
-            sum_matchings_small(n, m, pair, &miss[..n], clutter)
-        } else {
-            // Rows: measurements; columns: objects.
-            let mut t = [0.0f64; MAX_LARGER * SMALL_SIDE];
             for i in 0..n {
                 for j in 0..m {
-                    t[j * n + i] = pair[i * m + j];
+                    pair[i * m + j] = factor(i, j);
                 }
             }
-            sum_matchings_small(m, n, &t[..n * m], clutter, &miss[..n])
+            sum_matchings_small(n, m, &pair[..n * m], &miss[..n], clutter)
+        } else {
+            // Rows: measurements; columns: objects.
+            for j in 0..m {
+                for i in 0..n {
+                    pair[j * n + i] = factor(i, j);
+                }
+            }
+            sum_matchings_small(m, n, &pair[..n * m], clutter, &miss[..n])
         }
     }
 
@@ -535,7 +715,7 @@ pub fn brute_force_ln_likelihood<R: AsRef<[f64]>>(
 /// One row of the subset DP of (20): dp[S] ← dp[S]·m + Σ_{c∈S} dp[S∖{c}]·row[c] for every
 /// subset S of the columns (`dp.len()` = 2^columns), in place and descending so that dp[S∖{c}]
 /// is still the previous row's value.
-#[inline]
+#[inline(always)]
 fn dp_row(dp: &mut [f64], m: f64, row: &[f64]) {
     for s in (1..dp.len()).rev() {
         let mut v = dp[s] * m;
@@ -713,6 +893,92 @@ mod tests {
         assert_eq!(model.ln_likelihood_small(1, &[2.0], &[0.5]), None);
         assert_eq!(model.ln_likelihood_small(1, &[0.5], &[f64::NAN]), None);
         assert!(model.ln_likelihood_small(1, &[0.5], &[0.5]).is_some());
+    }
+
+    /// The unrolled kernels give the bits of the table-driven programme, in both orientations.
+    #[test]
+    fn fixed_kernels_match_the_tables_bit_for_bit() {
+        let mut rng = seeded(77);
+        let model = MultiObjectLikelihood::new(0.9, 0.8).unwrap();
+        let mut tables = model.small_tables();
+        for n in 0..=3 {
+            for m in 0..=3 {
+                for _ in 0..20 {
+                    let pair: Vec<f64> = (0..n * m).map(|_| uniform(&mut rng)).collect();
+                    let clutter: Vec<f64> = (0..m).map(|_| uniform(&mut rng)).collect();
+                    let fixed = model
+                        .scaled_likelihood_factors(n, &clutter, &mut tables, |i, j| pair[i * m + j])
+                        .unwrap();
+                    let miss = [1.0 - 0.9; 3];
+                    let table = if n > m {
+                        sum_matchings_small(n, m, &pair, &miss[..n], &clutter)
+                    } else {
+                        let t: Vec<f64> = (0..m)
+                            .flat_map(|j| (0..n).map(move |i| (i, j)))
+                            .map(|(i, j)| pair[i * m + j])
+                            .collect();
+                        sum_matchings_small(m, n, &t, &clutter, &miss[..n])
+                    };
+                    assert_eq!(fixed.to_bits(), table.unwrap().to_bits(), "n={n} m={m}");
+                }
+            }
+        }
+    }
+
+    /// The inequality behind `negligible_pair_bound`: pair factors f_ij ≤ 2^{−b} r_i c_j set
+    /// to 0 lower the sum by a relative amount in [0, k·2^{−b}] (k of them), checked at
+    /// b = 20 where it is far above rounding, and tight for one pair.
+    #[test]
+    fn negligible_pairs_change_the_sum_by_at_most_the_bound() {
+        let mut rng = seeded(5);
+        let b = 20.0f64;
+        let eps = libm::exp2(-b);
+        let mut worst = 0.0f64;
+        for n in 1..=4 {
+            for m in 1..=4 {
+                for trial in 0..30 {
+                    let (pd, rate) = ([0.95, 0.5, 0.1][trial % 3], 0.8);
+                    let model = MultiObjectLikelihood::new(pd, rate).unwrap();
+                    let clutter: Vec<f64> =
+                        (0..m).map(|_| 1e-4 + 0.5 * uniform(&mut rng)).collect();
+                    let (mut full, mut dropped, mut k) = (vec![0.0; n * m], vec![0.0; n * m], 0);
+                    for i in 0..n {
+                        for j in 0..m {
+                            let f = if uniform(&mut rng) < 0.5 {
+                                // At most the bound (with the code's own formula).
+                                k += 1;
+                                let ln_b =
+                                    ln(1.0 - pd) + ln(clutter[j]) - b * core::f64::consts::LN_2;
+                                exp(ln_b) * (1.0 - 0.5 * uniform(&mut rng)) * (1.0 - 1e-12)
+                            } else {
+                                let f = 0.9 * uniform(&mut rng);
+                                dropped[i * m + j] = f;
+                                f
+                            };
+                            full[i * m + j] = f;
+                        }
+                    }
+                    let t_full = model.ln_likelihood_small(n, &full, &clutter).unwrap();
+                    let t_drop = model.ln_likelihood_small(n, &dropped, &clutter).unwrap();
+                    // ln T_full − ln T_dropped ∈ [0, ln(1 + ε)^k] up to rounding.
+                    let d = t_full - t_drop;
+                    assert!(d >= -1e-14, "n={n} m={m}: {d}");
+                    assert!(
+                        d <= k as f64 * eps + 1e-14,
+                        "n={n} m={m} k={k}: {d} vs {}",
+                        k as f64 * eps
+                    );
+                    if k > 0 {
+                        worst = worst.max(d / (k as f64 * eps));
+                    }
+                }
+            }
+        }
+        // Not vacuous: some case comes close to the bound.
+        assert!(worst > 0.1, "{worst}");
+        // The code's bound is this one at b = 64.
+        let ln_b = negligible_pair_bound(ln(0.05), ln(1e-3));
+        assert!((ln_b - (ln(0.05) + ln(1e-3) - 64.0 * core::f64::consts::LN_2)).abs() < 1e-12);
     }
 
     #[test]
