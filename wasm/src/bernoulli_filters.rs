@@ -287,7 +287,7 @@ impl SplittingOptions {
 }
 
 /// The reduction after the update (the options of `reduceMixture`). Omitted: prune 1e-6,
-/// merge within Mahalanobis distance 1, Runnalls to 100.
+/// merge within Mahalanobis distance 2 (U = 4), Runnalls to 100.
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct ReductionOptionsJs {
@@ -424,7 +424,7 @@ pub struct GmBernoulliUpdateOptions {
     /// The splitting step; omitted: the defaults.
     #[tsify(optional)]
     pub splitting: Option<SplittingOptions>,
-    /// The reduction; omitted: prune 1e-6, merge within 1, Runnalls to 100.
+    /// The reduction; omitted: prune 1e-6, merge within 2, Runnalls to 100.
     #[tsify(optional)]
     pub reduction: Option<ReductionOptionsJs>,
     /// Regions the object cannot occupy (mass removed by the mean-based partition after

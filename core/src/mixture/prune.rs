@@ -47,10 +47,29 @@ pub(crate) fn prune_owned(mixture: GaussianMixture, threshold: f64) -> Result<Ga
     if !(threshold.is_finite() && threshold >= 0.0) {
         return Err(Error::parameter("pruneBelow", threshold, "finite and >= 0"));
     }
-    if mixture.components().iter().any(|(w, _)| *w < threshold) {
-        return prune(&mixture, threshold);
-    }
     let total = mixture.total_weight();
+    if mixture.components().iter().any(|(w, _)| *w < threshold) {
+        if mixture.components().iter().all(|(w, _)| *w < threshold) {
+            return prune(&mixture, threshold);
+        }
+        // Move the survivors out (in order) instead of copying them; the same numbers as
+        // `prune`'s `rescale`.
+        let mut kept: Vec<_> = mixture
+            .into_components()
+            .into_iter()
+            .filter(|(w, _)| *w >= threshold)
+            .collect();
+        let kept_total = sum(kept.iter().map(|(w, _)| *w));
+        let scale = if kept_total > 0.0 {
+            total / kept_total
+        } else {
+            1.0
+        };
+        for (w, _) in &mut kept {
+            *w *= scale;
+        }
+        return GaussianMixture::new(kept, "mixture");
+    }
     let mut components = mixture.into_components();
     if components.is_empty() {
         return GaussianMixture::new(components, "mixture");

@@ -37,8 +37,32 @@ impl Eigen {
         let not_pd = || Error::NotPositiveDefinite {
             what: String::from(what),
         };
-        let eig = SymmetricEigen::try_new(cov.clone(), f64::EPSILON, EIGEN_MAX_ITER)
-            .ok_or_else(not_pd)?;
+        if n == 2 {
+            return Self::closed_form_2x2(
+                cov[(0, 0)],
+                0.5 * (cov[(0, 1)] + cov[(1, 0)]),
+                cov[(1, 1)],
+            )
+            .ok_or_else(not_pd);
+        }
+        let (eigenvalues, eigenvectors) = if n == 4 {
+            // The same solver on a fixed-size matrix: no heap allocation.
+            let m = nalgebra::Matrix4::from_fn(|i, j| cov[(i, j)]);
+            let eig =
+                SymmetricEigen::try_new(m, f64::EPSILON, EIGEN_MAX_ITER).ok_or_else(not_pd)?;
+            (
+                DVector::from_column_slice(eig.eigenvalues.as_slice()),
+                DMatrix::from_column_slice(4, 4, eig.eigenvectors.as_slice()),
+            )
+        } else {
+            let eig = SymmetricEigen::try_new(cov.clone(), f64::EPSILON, EIGEN_MAX_ITER)
+                .ok_or_else(not_pd)?;
+            (eig.eigenvalues, eig.eigenvectors)
+        };
+        let eig = Decomposed {
+            eigenvalues,
+            eigenvectors,
+        };
         let mut order: Vec<usize> = (0..n).collect();
         // Stable sort: equal eigenvalues keep the solver's (deterministic) order.
         crate::math::sort::sort_by(&mut order, |&a, &b| {
@@ -68,6 +92,55 @@ impl Eigen {
         }
         Ok(Self { values, vectors })
     }
+
+    /// The closed form for a symmetric 2 × 2 matrix [[a, b], [b, c]] (the position block of
+    /// the airport example, eqs. (15)–(17) of `001_…`):
+    ///
+    /// ```text
+    /// λ₁ = (a + c)/2 + √(((a − c)/2)² + b²),   λ₂ = (a c − b²)/λ₁
+    /// v₁ ∝ (λ₁ − c, b) or (b, λ₁ − a) (the longer),   v₂ = v₁ turned by 90°
+    /// ```
+    ///
+    /// (λ₂ from the determinant, not by cancellation). With the conventions of
+    /// [`Eigen::new`]: descending values, the identity's columns when b = 0 and a = c, and
+    /// each vector's largest-magnitude entry positive. `None` unless λ₂ is finite and > 0.
+    fn closed_form_2x2(a: f64, b: f64, c: f64) -> Option<Self> {
+        let half = 0.5 * (a - c);
+        let radius = fns::sqrt(half * half + b * b);
+        let l1 = 0.5 * (a + c) + radius;
+        let l2 = (a * c - b * b) / l1;
+        if !(l1.is_finite() && l2.is_finite() && l2 > 0.0) {
+            return None;
+        }
+        let (mut x, mut y) = if b == 0.0 {
+            if a >= c { (1.0, 0.0) } else { (0.0, 1.0) }
+        } else {
+            let (p, q) = ((l1 - c, b), (b, l1 - a));
+            let (u, v) = if p.0 * p.0 + p.1 * p.1 >= q.0 * q.0 + q.1 * q.1 {
+                p
+            } else {
+                q
+            };
+            let norm = fns::sqrt(u * u + v * v);
+            (u / norm, v / norm)
+        };
+        let positive = |x: f64, y: f64| {
+            let big = if fns::abs(y) > fns::abs(x) { y } else { x };
+            if big < 0.0 { (-x, -y) } else { (x, y) }
+        };
+        (x, y) = positive(x, y);
+        let (x2, y2) = positive(-y, x);
+        Some(Self {
+            values: alloc::vec![l1, l2],
+            vectors: DMatrix::from_column_slice(2, 2, &[x, y, x2, y2]),
+        })
+    }
+}
+
+/// The solver's output before sorting.
+struct Decomposed {
+    eigenvalues: DVector<f64>,
+    eigenvectors: DMatrix<f64>,
 }
 
 /// Splits `weight · N(m, P)` into R components along the k-th eigenvector of P (eigenvalues

@@ -402,7 +402,11 @@ pub fn split_for_regions(
             break;
         }
         let mut count = items.len();
-        let mut next = Vec::with_capacity(items.len());
+        // Room for every pending item to split (R children each), within the size cap.
+        let pending = items.iter().filter(|it| !it.done).count();
+        let mut next = Vec::with_capacity(
+            (items.len() + pending * (r - 1)).min(options.max_components.max(items.len())),
+        );
         let mut split_here = false;
         for mut item in items {
             if item.done {
