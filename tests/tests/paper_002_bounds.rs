@@ -496,3 +496,251 @@ fn vector_bounds_reduce_to_the_scalar_ones() {
     let one = bounds::corollary3(0.6, 0.7, 0.8, 4.0, 5.0, 15.0).unwrap();
     assert_eq!(c[0], one);
 }
+
+/// The vector system of the tests: x ~ N(x0, P) in R^2 (correlated), a scalar measurement
+/// z = hᵀx + v, v ~ N(0, R), constant P_o; false alarms / clutter uniform on [−L, L].
+struct Lgv {
+    x0: [f64; 2],
+    p: [[f64; 2]; 2],
+    h: [f64; 2],
+    noise: f64,
+    det: f64,
+    half_width: f64,
+}
+
+const VSYS: Lgv = Lgv {
+    x0: [1.0, -1.0],
+    p: [[4.0, 1.5], [1.5, 2.0]],
+    h: [1.0, 0.5],
+    noise: 1.0,
+    det: 0.8,
+    half_width: 12.0,
+};
+
+impl Lgv {
+    fn prior(&self) -> bounds::GaussianPrior {
+        bounds::GaussianPrior::new(
+            &self.x0,
+            &[self.p[0][0], self.p[0][1], self.p[1][0], self.p[1][1]],
+        )
+        .unwrap()
+    }
+    fn sensor(&self) -> bounds::LinearGaussianSensor {
+        bounds::LinearGaussianSensor::new(self.det, &self.h, 2, &[0.0], &[self.noise]).unwrap()
+    }
+    fn ph(&self) -> [f64; 2] {
+        [
+            self.p[0][0] * self.h[0] + self.p[0][1] * self.h[1],
+            self.p[1][0] * self.h[0] + self.p[1][1] * self.h[1],
+        ]
+    }
+    fn zhat(&self) -> f64 {
+        self.h[0] * self.x0[0] + self.h[1] * self.x0[1]
+    }
+    /// hᵀPh + R, the variance of a target's measurement.
+    fn s(&self) -> f64 {
+        let ph = self.ph();
+        self.h[0] * ph[0] + self.h[1] * ph[1] + self.noise
+    }
+    fn m(&self, z: f64) -> f64 {
+        npdf(z, self.zhat(), self.s())
+    }
+    fn c(&self, z: f64) -> f64 {
+        if z.abs() <= self.half_width {
+            0.5 / self.half_width
+        } else {
+            0.0
+        }
+    }
+    /// The Kalman posterior mean of x given a target measurement z.
+    fn post_mean(&self, z: f64) -> [f64; 2] {
+        let (ph, k) = (self.ph(), (z - self.zhat()) / self.s());
+        [self.x0[0] + ph[0] * k, self.x0[1] + ph[1] * k]
+    }
+    fn draw(&self, rng: &mut SeededRng) -> [f64; 2] {
+        let l11 = self.p[0][0].sqrt();
+        let l21 = self.p[1][0] / l11;
+        let l22 = (self.p[1][1] - l21 * l21).sqrt();
+        let (u, v) = (normal(rng), normal(rng));
+        [self.x0[0] + l11 * u, self.x0[1] + l21 * u + l22 * v]
+    }
+}
+
+/// Per component i (and for the whole state, index 2) the MSE of MAP detection on Z ≠ ∅, the
+/// posterior mean, and on Z = ∅ the rule that is best for that component (component errors
+/// e0²/l, e1²/l, Section V). `model_ii`: Poisson(rate) clutter, else model I with q = rate.
+#[allow(clippy::too_many_arguments)] // the grid point, as simulate_model_i/ii
+fn simulate_vector(
+    s: &Lgv,
+    r: f64,
+    rate: f64,
+    model_ii: bool,
+    e0: f64,
+    e1: f64,
+    n: usize,
+    seed: u64,
+) -> [Mc; 3] {
+    let mut rng = seeded(seed);
+    let l = 2.0;
+    let eps = if model_ii { 1.0 } else { 1.0 - rate };
+    let var = [s.p[0][0], s.p[1][1], s.p[0][0] + s.p[1][1]];
+    let (e0c, e1c) = ([e0 / l, e0 / l, e0], [e1 / l, e1 / l, e1]);
+    let declare_empty: Vec<bool> = (0..3)
+        .map(|i| {
+            (1.0 - r) * eps * e0c[i] + r * (1.0 - s.det) * var[i] <= r * (1.0 - s.det) * e1c[i]
+        })
+        .collect();
+    let mut errs = [
+        Vec::with_capacity(n),
+        Vec::with_capacity(n),
+        Vec::with_capacity(n),
+    ];
+    let mut z = Vec::new();
+    for _ in 0..n {
+        let exists = uniform(&mut rng) < r;
+        let x = s.draw(&mut rng);
+        z.clear();
+        if exists && uniform(&mut rng) < s.det {
+            z.push(s.h[0] * x[0] + s.h[1] * x[1] + s.noise.sqrt() * normal(&mut rng));
+        }
+        let k = if model_ii {
+            let (mut k, mut pk, u) = (0usize, (-rate).exp(), uniform(&mut rng));
+            let mut cum = pk;
+            while u > cum && k < 200 {
+                k += 1;
+                pk *= rate / k as f64;
+                cum += pk;
+            }
+            k
+        } else {
+            usize::from(!exists && uniform(&mut rng) < rate)
+        };
+        for _ in 0..k {
+            z.push(s.half_width * (2.0 * uniform(&mut rng) - 1.0));
+        }
+        // Some(estimate) on Z ≠ ∅; None on Z = ∅ (each component's rule applies)
+        let est: Option<Option<[f64; 2]>> = if z.is_empty() {
+            None
+        } else if !model_ii {
+            let zz = z[0];
+            Some((r * s.det * s.m(zz) >= (1.0 - r) * rate * s.c(zz)).then(|| s.post_mean(zz)))
+        } else if let Some(&zz) = z.iter().find(|&&zi| s.c(zi) == 0.0) {
+            Some(Some(s.post_mean(zz)))
+        } else {
+            let b: Vec<f64> = z.iter().map(|&zi| s.m(zi) / (rate * s.c(zi))).collect();
+            let beta: f64 = b.iter().sum();
+            let declare = r * (1.0 - s.det + s.det * beta) >= 1.0 - r;
+            Some(declare.then(|| {
+                let mut num = [(1.0 - s.det) * s.x0[0], (1.0 - s.det) * s.x0[1]];
+                for (&zi, &bi) in z.iter().zip(&b) {
+                    let pm = s.post_mean(zi);
+                    num[0] += s.det * bi * pm[0];
+                    num[1] += s.det * bi * pm[1];
+                }
+                let d = (1.0 - s.det) + s.det * beta;
+                [num[0] / d, num[1] / d]
+            }))
+        };
+        for (i, e) in errs.iter_mut().enumerate() {
+            let choice = match est {
+                Some(c) => c,
+                None => declare_empty[i].then_some(s.x0),
+            };
+            e.push(match (exists, choice) {
+                (true, Some(xh)) => {
+                    let d = [x[0] - xh[0], x[1] - xh[1]];
+                    if i < 2 {
+                        d[i] * d[i]
+                    } else {
+                        d[0] * d[0] + d[1] * d[1]
+                    }
+                }
+                (true, None) => e1c[i],
+                (false, Some(_)) => e0c[i],
+                (false, None) => 0.0,
+            });
+        }
+    }
+    [stats(&errs[0]), stats(&errs[1]), stats(&errs[2])]
+}
+
+#[test]
+fn vector_bounds_against_the_optimal_detector_estimator() {
+    // Model I with constant P_o and a linear-Gaussian sensor: each component bound (63) and
+    // the whole-state bound are attained (|z| < 4); model II (64): never above the MSE.
+    let (e0, e1) = (6.0, 9.0);
+    let prior = VSYS.prior();
+    let flat = Density1::uniform(-VSYS.half_width, VSYS.half_width).unwrap();
+    let (mut worst_i, mut lowest_ii) = (0.0f64, f64::INFINITY);
+    let mut seed = 500;
+    for model_ii in [false, true] {
+        for &r in &[0.2, 0.5, 0.85] {
+            for &det in &[0.5, 0.9] {
+                let rates: &[f64] = if model_ii {
+                    &[0.5, 2.0]
+                } else {
+                    &[0.0, 0.3, 0.8]
+                };
+                for &rate in rates {
+                    let sys = Lgv { det, ..VSYS };
+                    let sensor = sys.sensor();
+                    let measurement = if model_ii {
+                        bounds::VectorMeasurement::II {
+                            clutter_rate: rate,
+                            clutter_density: &flat,
+                        }
+                    } else {
+                        bounds::VectorMeasurement::I {
+                            false_alarm_probability: rate,
+                            false_alarm_density: &flat,
+                        }
+                    };
+                    let settings = Settings {
+                        samples: 4000,
+                        seed,
+                        ..Settings::default()
+                    };
+                    let v = bounds::vector_bound(
+                        &bounds::VectorModel {
+                            existence: r,
+                            prior: &prior,
+                            sensor: &sensor,
+                            measurement,
+                            false_alarm_error: e0,
+                            miss_error: e1,
+                        },
+                        &settings,
+                    )
+                    .unwrap();
+                    let mc = simulate_vector(&sys, r, rate, model_ii, e0, e1, 50_000, seed);
+                    seed += 1;
+                    let bs = [
+                        (v.components[0].assembled.bound, v.components[0].error),
+                        (v.components[1].assembled.bound, v.components[1].error),
+                        (v.total.assembled.bound, v.total.error),
+                    ];
+                    for (i, ((b, err), mc)) in bs.iter().zip(&mc).enumerate() {
+                        let z = (mc.mean - b) / (mc.se * mc.se + err * err).sqrt();
+                        println!(
+                            "vector model {} r {r} P {det} rate {rate} {}: bound {b:.5} (±{err:.1e}) MC {:.5} ± {:.5} z {z:+.2}",
+                            if model_ii { "II" } else { "I" },
+                            ["x1", "x2", "|x|"][i],
+                            mc.mean,
+                            mc.se
+                        );
+                        if model_ii {
+                            lowest_ii = lowest_ii.min(z);
+                            assert!(z > -4.0, "II r {r} P {det} λ {rate} [{i}]: z = {z}");
+                        } else {
+                            worst_i = worst_i.max(z.abs());
+                            assert!(z.abs() < 4.0, "I r {r} P {det} q {rate} [{i}]: z = {z}");
+                        }
+                    }
+                    // Σ_i σ_i² = σ², and the whole-state bound is at least the sum of the parts
+                    assert!(v.total.assembled.bound >= bs[0].0 + bs[1].0 - 1e-9);
+                }
+            }
+        }
+    }
+    println!("vector model I worst |z| = {worst_i:.2}; model II lowest z = {lowest_ii:.2}");
+}

@@ -438,7 +438,9 @@ pub struct CardinalityTerm {
     pub inverse_information: f64,
     /// Pr(the detector rejects n clutter-only points).
     pub clutter_null: f64,
-    /// `'quadrature'` or `'monte-carlo'`.
+    /// `'quadrature'`, `'monte-carlo'` or (a vector state without false observations)
+    /// `'closed-form'`.
+    #[tsify(type = "'quadrature' | 'monte-carlo' | 'closed-form'")]
     pub method: &'static str,
     /// Error estimate of `inverseInformation` (Monte Carlo: one standard error).
     pub error: f64,
@@ -637,6 +639,7 @@ fn result(b: &bounds::JdeBound, seed: Option<u64>) -> JdeBoundResult {
                 method: match c.method {
                     bounds::Method::Quadrature => "quadrature",
                     bounds::Method::MonteCarlo => "monte-carlo",
+                    bounds::Method::ClosedForm => "closed-form",
                 },
                 error: c.error,
             })

@@ -52,6 +52,8 @@ pub enum Method {
     Quadrature,
     /// Monte Carlo (error: one standard error).
     MonteCarlo,
+    /// A closed form (no integration; error 0): the vector bounds without clutter.
+    ClosedForm,
 }
 
 /// The n-point part of Theorem 2 (or the one term of Theorem 1).
@@ -71,6 +73,10 @@ pub struct Cardinality {
     pub method: Method,
     /// Its error estimate (in J'_n⁻¹; quadrature estimate or one standard error).
     pub error: f64,
+    /// The error estimate of `w`.
+    pub w_error: f64,
+    /// The error estimate of `clutter_null`.
+    pub clutter_null_error: f64,
 }
 
 /// A bound of Theorem 1 or 2 with everything it was built from.
@@ -430,6 +436,8 @@ pub fn theorem1(m: &ModelI<'_>, s: &Settings) -> Result<JdeBound> {
             clutter_null: 1.0 - psi_in,
             method: Method::Quadrature,
             error: einv,
+            w_error: ew,
+            clutter_null_error: 0.0,
         }],
         error: fns::abs(error),
         regular: st.regular,

@@ -139,6 +139,8 @@ pub fn theorem2(m: &ModelII<'_>, s: &Settings) -> Result<JdeBound> {
         clutter_null: null1,
         method: Method::Quadrature,
         error: es1,
+        w_error: ew1,
+        clutter_null_error: 0.0,
     }];
     let mut w_errors = alloc::vec![ew1];
     let mut null_errors = alloc::vec![0.0];
@@ -161,6 +163,8 @@ pub fn theorem2(m: &ModelII<'_>, s: &Settings) -> Result<JdeBound> {
             clutter_null: c.null,
             method: Method::Quadrature,
             error: c.es,
+            w_error: c.ew,
+            clutter_null_error: c.enull,
         });
         w_errors.push(c.ew);
         null_errors.push(c.enull);
@@ -190,6 +194,8 @@ pub fn theorem2(m: &ModelII<'_>, s: &Settings) -> Result<JdeBound> {
                 clutter_null: c.null,
                 method: Method::MonteCarlo,
                 error: c.es,
+                w_error: c.ew,
+                clutter_null_error: c.enull,
             });
             w_errors.push(c.ew);
             null_errors.push(c.enull);
