@@ -4,7 +4,7 @@
 // serde boundary is faster.
 //
 //   benches/boundary_baseline.sh && node benches/boundary_node.mjs
-import { readFileSync } from 'node:fs';
+import { readdirSync, readFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -77,6 +77,10 @@ for (const [name, run] of cases) {
   console.log(`${name.padEnd(48)}${hw.toFixed(2).padStart(16)}${sd.toFixed(2).padStart(12)}${(sd / hw).toFixed(2).padStart(9)}`);
 }
 for (const [label, dir] of [['hand-written', pkgOld], ['serde', pkgNew]]) {
-  const wasm = readFileSync(path.join(dir, 'fisst_wasm_bg.wasm'));
-  console.log(`${label} wasm: ${wasm.length} bytes raw, ${gzipSync(wasm, { level: 9 }).length} gzipped`);
+  // One module before the package was split into parts, one per part after (summed).
+  const files = readdirSync(dir).filter((f) => f.endsWith('_bg.wasm'));
+  const wasm = files.map((f) => readFileSync(path.join(dir, f)));
+  const raw = wasm.reduce((n, w) => n + w.length, 0);
+  const gz = wasm.reduce((n, w) => n + gzipSync(w, { level: 9 }).length, 0);
+  console.log(`${label} wasm: ${raw} bytes raw, ${gz} gzipped (${files.length} module${files.length > 1 ? 's' : ''})`);
 }

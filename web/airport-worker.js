@@ -2,7 +2,7 @@
 // scenario (airportScenario), then the GM Bernoulli filter and the Bernoulli particle filter
 // on the same reports, one message per step, so that the page never waits for the particle
 // filter. A worker does not see the page's import map: it imports the package by path.
-import init, * as fisst from './pkg/fisst_wasm.js';
+import init, * as fisst from './pkg/filters.js';
 
 const ready = init();
 let current = 0; // the run being computed; a newer request stops the older one

@@ -5,7 +5,7 @@
 // same kind arrives (a slider drag sends many). Fig. 2 right's curves (jdeExample2, about
 // 10 ms a point) are computed here too: a worker does not see the page's import map, so it
 // imports the package by path and initialises it itself.
-import init, * as fisst from './pkg/fisst_wasm.js';
+import init, * as fisst from './pkg/bounds.js';
 import { example2Prior, mcExample2, mcGaussian, mcSequential } from './bounds-mc.js';
 
 const ready = init();

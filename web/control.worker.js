@@ -13,7 +13,7 @@
 //   { type: 'progress', done, total }                      (from compareSchemes' onProgress)
 //   { type: 'compare', runs, total, stats, ms }            (the statistics of the runs so far)
 //   { type: 'error', during, name, message }
-import init, * as fisst from './pkg/fisst_wasm.js';
+import init, * as fisst from './pkg/control.js';
 
 let run = null;
 const ready = init();

@@ -337,6 +337,7 @@ pub(crate) fn estimate_out(e: &BernoulliEstimate) -> BernoulliEstimateResult {
 /// exceeds Γ (11), else nothing. Options `{ existence, density, radius, costs }`; returns
 /// `{ declare, estimate, mmuc, threshold, missProbability, expectedLossEmpty,
 /// expectedLossSingleton }`.
+#[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = bernoulliEstimate, unchecked_return_type = "BernoulliEstimateResult")]
 pub fn bernoulli_estimate(
     #[wasm_bindgen(unchecked_param_type = "BernoulliEstimateOptions")] options: JsValue,
@@ -352,6 +353,7 @@ pub fn bernoulli_estimate(
 /// q(center) = P(‖x − center‖ > radius) for x drawn from `density`: exact in 1D, to 1e-10
 /// (absolute) by error-controlled quadrature or characteristic-function inversion in higher
 /// dimensions, the weighted sum for mixtures and the weighted count for particles.
+#[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = probabilityOutsideBall)]
 pub fn probability_outside_ball(
     #[wasm_bindgen(unchecked_param_type = "ProbabilityOutsideBallOptions")] options: JsValue,
@@ -364,6 +366,7 @@ pub fn probability_outside_ball(
 
 /// Γ (11) for each σ of an isotropic Gaussian N(a*, σ² I_dim) — Fig. 3 of the paper — from
 /// the closed form q = P(χ²_dim > (radius/σ)²). Options `{ sigmas, radius, costs, dim = 1 }`.
+#[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = bernoulliThresholdCurve, unchecked_return_type = "number[]")]
 pub fn bernoulli_threshold_curve(
     #[wasm_bindgen(unchecked_param_type = "BernoulliThresholdCurveOptions")] options: JsValue,
@@ -378,6 +381,7 @@ pub fn bernoulli_threshold_curve(
 
 /// The MMUC estimate a* = argmin_a q(a) (eq. (12)) alone. Options `{ density, radius }`;
 /// returns `{ center, missProbability, method }`.
+#[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = mmucEstimate, unchecked_return_type = "MmucEstimateResult")]
 pub fn mmuc_estimate(
     #[wasm_bindgen(unchecked_param_type = "MmucEstimateOptions")] options: JsValue,
@@ -401,6 +405,7 @@ pub fn mmuc_estimate(
 /// Theorem III.3 applied to each component of a multi-Bernoulli. Options
 /// `{ components: [{ existence, density }], radius, costs }`; returns
 /// `{ reported, estimates, components }`.
+#[cfg(feature = "bernoulli")]
 #[wasm_bindgen(
     js_name = multiBernoulliPointEstimate,
     unchecked_return_type = "MultiBernoulliPointEstimateResult"
@@ -430,6 +435,7 @@ pub fn multi_bernoulli_point_estimate(
 /// "report when p > threshold" (default: the optimal rule). Options
 /// `{ existences, missProbability, costs, threshold? }`; returns
 /// `{ empty, singleton, rule, threshold }`.
+#[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = bernoulliLossCurve, unchecked_return_type = "BernoulliLossCurveResult")]
 pub fn bernoulli_loss_curve(
     #[wasm_bindgen(unchecked_param_type = "BernoulliLossCurveOptions")] options: JsValue,

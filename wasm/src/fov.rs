@@ -156,6 +156,7 @@ pub struct MixtureDensityGridOptions {
 /// The pmf of the number of objects inside a field of view (Propositions 1–4 of the "Split
 /// happens!" paper): options `{ rfs, fov, detectionProbability = 1 }` (see the
 /// `FovCardinalityOptions` type); returns `{ pmf, mean, variance, massInFov }`.
+#[cfg(feature = "splitting")]
 #[wasm_bindgen(js_name = fovCardinality, unchecked_return_type = "FovCardinalityResult")]
 pub fn fov_cardinality_js(
     #[wasm_bindgen(unchecked_param_type = "FovCardinalityOptions")] options: JsValue,
@@ -230,6 +231,7 @@ pub fn fov_cardinality_js(
 /// (Section VII of the "Split happens!" paper): options
 /// `{ multiBernoulli, fovSize: [width, height], grid: { x: [min, max, count], y: [min, max,
 /// count] } }`; returns `{ variance: Float64Array (row-major, y outer), argmax: [x, y], max }`.
+#[cfg(feature = "splitting")]
 #[wasm_bindgen(js_name = fovVarianceMap, unchecked_return_type = "FovVarianceMapResult")]
 pub fn fov_variance_map(
     #[wasm_bindgen(unchecked_param_type = "FovVarianceMapOptions")] options: JsValue,
@@ -257,6 +259,7 @@ pub fn fov_variance_map(
 /// sigma = [0.1, 0.5] }` (see `PlacementSceneOptions`); returns `{ multiBernoulli: [{
 /// existence, mean: [x, y], cov: [[a, b], [b, c]] }, …] }`. The same seed gives the same
 /// scene on every platform, and a smaller `count` is a prefix of a larger one.
+#[cfg(feature = "splitting")]
 #[wasm_bindgen(js_name = placementScene, unchecked_return_type = "PlacementSceneResult")]
 pub fn placement_scene_js(
     #[wasm_bindgen(unchecked_optional_param_type = "PlacementSceneOptions")] options: Option<

@@ -17,38 +17,72 @@
 //! await init();
 //! ```
 
+// A build of some parts only leaves shared types and helpers unused; the full build (the
+// default, which clippy checks with `-D warnings`) uses every one.
+#![cfg_attr(
+    not(all(
+        feature = "bernoulli",
+        feature = "splitting",
+        feature = "filters",
+        feature = "bounds",
+        feature = "metrics",
+        feature = "control"
+    )),
+    allow(dead_code, unused_imports)
+)]
+
 pub mod boundary;
 pub mod de;
 pub mod types;
 
+// One module of bindings per part of the npm package (a Cargo feature each, all on by default;
+// `scripts/build-pkg.sh` builds one wasm module per part, see the README's "Parts").
+#[cfg(any(feature = "bernoulli", feature = "filters"))]
 mod bernoulli;
+#[cfg(feature = "filters")]
 mod bernoulli_filters;
+#[cfg(feature = "bounds")]
 mod bounds;
+#[cfg(feature = "control")]
 mod control;
+#[cfg(any(feature = "bernoulli", feature = "splitting"))]
 mod fov;
+#[cfg(feature = "metrics")]
 mod metrics;
+#[cfg(feature = "metrics")]
 mod multi_bernoulli;
+#[cfg(feature = "splitting")]
 mod splitting;
 
+#[cfg(feature = "bernoulli")]
 pub use bernoulli::{
     bernoulli_estimate, bernoulli_loss_curve, bernoulli_threshold_curve, mmuc_estimate,
     multi_bernoulli_point_estimate, probability_outside_ball,
 };
+#[cfg(feature = "filters")]
 pub use bernoulli_filters::{
     GmBernoulliFilterJs, ParticleBernoulliFilterJs, airport_scenario, gm_bernoulli_predict,
     gm_bernoulli_update,
 };
+#[cfg(feature = "bounds")]
 pub use bounds::{
     gaussian_fisher_information, jde_bound, jde_bound_no_clutter, jde_example2,
     jde_example2_regularity, jde_sequential_bound,
 };
+#[cfg(feature = "control")]
 pub use control::{SensorControlRunJs, compare_schemes, multi_object_likelihood};
-pub use fov::{fov_cardinality_js, fov_variance_map, mixture_density_grid_js, placement_scene_js};
+#[cfg(any(feature = "bernoulli", feature = "splitting"))]
+pub use fov::mixture_density_grid_js;
+#[cfg(feature = "splitting")]
+pub use fov::{fov_cardinality_js, fov_variance_map, placement_scene_js};
+#[cfg(feature = "metrics")]
 pub use metrics::{gospa, gospa_series, linear_assignment, ospa, ospa_series, uospa};
+#[cfg(feature = "metrics")]
 pub use multi_bernoulli::{
     mb_alternative_estimate, mb_decision_map, mb_identical_component_counts, mb_mean_square_error,
     mb_optimal_estimate, multi_bernoulli_cardinality_js, multi_bernoulli_leave_one_out,
 };
+#[cfg(feature = "splitting")]
 pub use splitting::{
     negative_information_scenario_js, reduce_mixture_js, split_for_regions_js, split_library_js,
 };
