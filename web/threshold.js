@@ -6,7 +6,7 @@ import init, * as fisst from 'fisst';
 import { chart, markX } from './lib/chart.js';
 import { clipTo, cross, dot, ellipsePath, haloText, labelPlacer, richText, richTextWidth, sceneView, starPath, thresholdGauge } from './lib/scene.js';
 import { cellGrid, colorbar, heatImage } from './lib/colormap.js';
-import { $, choice, downloads, fmt, pageReady, pointText, slider, timings, toCSV, urlState } from './lib/page.js';
+import { $, choice, downloads, fmt, nextFrame, pageReady, pointText, slider, timings, toCSV, urlState } from './lib/page.js';
 
 await init();
 
@@ -395,5 +395,8 @@ downloads($('view-figure'), {
 });
 
 showCosts();
-update('fig3', 'fig2', 'view');
+// Fig. 3 first, painted before the other two are computed.
+update('fig3');
+await nextFrame();
+update('fig2', 'view');
 pageReady();

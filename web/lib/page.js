@@ -250,6 +250,12 @@ export function markFigure() {
   performance.mark('fisst:first-figure');
 }
 
+/**
+ * Resolves after the browser has painted what is drawn so far: `await nextFrame()` between a
+ * page's first figure and the rest shows that figure at once instead of after all of them.
+ */
+export const nextFrame = () => new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
+
 /** Marks the page as ready for the tests (body[data-ready]) once its figures are drawn. */
 export function pageReady() {
   timingRecord().ready = performance.now();
