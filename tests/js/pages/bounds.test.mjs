@@ -7,7 +7,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as fisst from 'fisst';
 import { fmt } from '../../../web/lib/page.js';
-import { json, reopen, text, timeLine, useBrowser } from './harness.mjs';
+import { checkDownloads, json, reopen, text, timeLine, useBrowser } from './harness.mjs';
 
 const browser = useBrowser();
 const pageState = (page) => json(page, '#bounds-state');
@@ -151,16 +151,7 @@ test('bounds: the settings are in the URL, and a malformed value falls back to t
 test('bounds: download buttons give the figures as PNG and CSV; redraw times', async () => {
   const page = await browser.open('bounds.html');
   await settled(page);
-  for (const [figure, rows] of [['#left-figure', 202], ['#seq-figure', 21], ['#right-figure', 22]]) {
-    const csv = page.waitForEvent('download');
-    await page.locator(`${figure} [data-download="csv"]`).click();
-    const body = await (await csv).createReadStream().then((st) => st.toArray());
-    const lines = Buffer.concat(body).toString('utf8').trim().split('\n');
-    assert.equal(lines.length, rows, figure);
-    const png = page.waitForEvent('download');
-    await page.locator(`${figure} [data-download="png"]`).click();
-    assert.match((await png).suggestedFilename(), /^bounds-.*\.png$/);
-  }
+  await checkDownloads(page, [['#left-figure', 202], ['#seq-figure', 21], ['#right-figure', 22]], 'bounds');
   for (const v of ['0.2', '0.4', '0.6', '0.8', '1']) await page.locator('#po').fill(v);
   for (const v of ['0.2', '0.5', '0.9']) await page.locator('#r2').fill(v);
   await settled(page);

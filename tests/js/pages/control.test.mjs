@@ -5,17 +5,10 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as fisst from 'fisst';
-import { reopen, text, timeLine, useBrowser } from './harness.mjs';
+import { csvLines, reopen, text, timeLine, useBrowser } from './harness.mjs';
 
 const browser = useBrowser();
 
-/** The lines of the CSV that the figure's CSV button downloads. */
-async function csvLines(page, figure) {
-  const download = page.waitForEvent('download');
-  await page.locator(`${figure} [data-download="csv"]`).click();
-  const body = await (await download).createReadStream().then((st) => st.toArray());
-  return Buffer.concat(body).toString('utf8').trim().split('\n');
-}
 /** The state the page publishes (JSON, with −∞ rewards written as '-Infinity'). */
 const pageState = async (page) => JSON.parse(await text(page, '#control-state'), (_, v) => (v === '-Infinity' ? -Infinity : v));
 const SMALL = 'particles=100&futureScans=20&steps=6';

@@ -98,6 +98,27 @@ export function useBrowser() {
   };
 }
 
+/** The lines of the CSV that the CSV button of the figure `figure` (a selector) downloads. */
+export async function csvLines(page, figure) {
+  const download = page.waitForEvent('download');
+  await page.locator(`${figure} [data-download="csv"]`).click();
+  const body = await (await download).createReadStream().then((st) => st.toArray());
+  return Buffer.concat(body).toString('utf8').trim().split('\n');
+}
+
+/**
+ * Clicks the CSV and PNG download buttons of each figure `[selector, rows]` and checks the CSV
+ * has `rows` lines (header included) and the PNG's file name starts with `prefix`.
+ */
+export async function checkDownloads(page, figures, prefix) {
+  for (const [figure, rows] of figures) {
+    assert.equal((await csvLines(page, figure)).length, rows, figure);
+    const png = page.waitForEvent('download');
+    await page.locator(`${figure} [data-download="png"]`).click();
+    assert.match((await png).suggestedFilename(), new RegExp(`^${prefix}-.*\\.png$`), figure);
+  }
+}
+
 /** The text of the first element matching `sel`. */
 export const text = (page, sel) => page.locator(sel).textContent();
 

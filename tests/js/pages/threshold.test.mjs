@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as fisst from 'fisst';
 import { fmt } from '../../../web/lib/page.js';
-import { json, mouseDrag, pixelOf as viewPixel, reopen, text, timeLine, touchDrag, unitsPerPixel as upp, useBrowser } from './harness.mjs';
+import { checkDownloads, json, mouseDrag, pixelOf as viewPixel, reopen, text, timeLine, touchDrag, unitsPerPixel as upp, useBrowser } from './harness.mjs';
 
 const browser = useBrowser();
 const pageState = (page) => json(page, '#threshold-state');
@@ -327,16 +327,7 @@ test('threshold: the settings and the dragged means are in the URL', async () =>
 
 test('threshold: download buttons give the figures as PNG and CSV', async () => {
   const page = await browser.open('threshold.html');
-  for (const [figure, rows] of [['#fig3-figure', 402], ['#fig2-figure', 1002], ['#view-figure', 6]]) {
-    const csv = page.waitForEvent('download');
-    await page.locator(`${figure} [data-download="csv"]`).click();
-    const body = await (await csv).createReadStream().then((st) => st.toArray());
-    const lines = Buffer.concat(body).toString('utf8').trim().split('\n');
-    assert.equal(lines.length, rows, figure);
-    const png = page.waitForEvent('download');
-    await page.locator(`${figure} [data-download="png"]`).click();
-    assert.match((await png).suggestedFilename(), /^threshold-.*\.png$/);
-  }
+  await checkDownloads(page, [['#fig3-figure', 402], ['#fig2-figure', 1002], ['#view-figure', 6]], 'threshold');
   await browser.done(page);
 });
 
