@@ -79,7 +79,8 @@ export function chart(container, { x = {}, y = {}, series, height = 300, overlay
           overlay({ ctx, x: (v) => u.valToPos(v, 'x'), y: (v) => u.valToPos(v, 'y'), box, u });
           ctx.restore();
         }
-        markFigure();
+        // The first figure is the first chart drawn with data, not an empty frame.
+        if (u.data[0]?.length) markFigure();
       }],
     },
   };
