@@ -517,11 +517,28 @@ pub fn vector_bound(m: &VectorModel<'_>, s: &Settings) -> Result<VectorBound> {
         error,
         regular: true,
     })?;
-    Ok(VectorBound {
+    check_vector(VectorBound {
         total,
         components,
         inverse_information: row_major(&big_s),
     })
+}
+
+/// [`check_result`] for the components and the matrix too: a NaN anywhere is an error.
+fn check_vector(v: VectorBound) -> Result<VectorBound> {
+    let nan = v.components.iter().any(|c| {
+        let a = &c.assembled;
+        [a.bound, a.hpe, a.lpe, c.error, c.inverse_information]
+            .iter()
+            .any(|x| x.is_nan())
+    }) || v.inverse_information.iter().any(|x| x.is_nan());
+    if nan {
+        return Err(Error::Unsupported {
+            what: "prior".into(),
+            reason: "the integrals did not converge at this scale (NaN); rescale the problem",
+        });
+    }
+    Ok(v)
 }
 
 fn row_major(a: &DMatrix<f64>) -> Vec<f64> {
@@ -703,7 +720,7 @@ fn closed_form(m: &VectorModel<'_>) -> Result<VectorBound> {
         error: 0.0,
         regular: true,
     })?;
-    Ok(VectorBound {
+    check_vector(VectorBound {
         total,
         components,
         inverse_information: row_major(&inv),
