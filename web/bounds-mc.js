@@ -215,3 +215,134 @@ export function mcExample2({ existence: r, detectionProbability: P, falseAlarmPr
   }
   return { ...t.result(), declareOnEmpty: hpe };
 }
+
+// ------------------------------------------------------------------ a state in R^l (Section V)
+const matVec = (A, v) => A.map((row) => row.reduce((s, a, j) => s + a * v[j], 0));
+const transpose = (A) => A[0].map((_, j) => A.map((row) => row[j]));
+const matMul = (A, B) => A.map((row) => B[0].map((_, j) => row.reduce((s, a, k) => s + a * B[k][j], 0)));
+/** The lower Cholesky factor of a symmetric positive definite matrix. */
+function cholesky(A) {
+  const n = A.length;
+  const L = A.map(() => Array(n).fill(0));
+  for (let i = 0; i < n; i++) {
+    for (let j = 0; j <= i; j++) {
+      let s = A[i][j];
+      for (let k = 0; k < j; k++) s -= L[i][k] * L[j][k];
+      L[i][j] = i === j ? Math.sqrt(s) : s / L[j][j];
+    }
+  }
+  return L;
+}
+/** The inverse of a small matrix by Gauss–Jordan with partial pivoting. */
+function inverse(A) {
+  const n = A.length;
+  const M = A.map((row, i) => [...row, ...Array.from({ length: n }, (_, j) => (i === j ? 1 : 0))]);
+  for (let c = 0; c < n; c++) {
+    let p = c;
+    for (let r = c + 1; r < n; r++) if (Math.abs(M[r][c]) > Math.abs(M[p][c])) p = r;
+    [M[c], M[p]] = [M[p], M[c]];
+    const d = M[c][c];
+    for (let j = 0; j < 2 * n; j++) M[c][j] /= d;
+    for (let r = 0; r < n; r++) {
+      if (r === c) continue;
+      const f = M[r][c];
+      for (let j = 0; j < 2 * n; j++) M[r][j] -= f * M[c][j];
+    }
+  }
+  return M.map((row) => row.slice(n));
+}
+/** N(z; mean, S) for z in R^m, with S⁻¹ and det S given. */
+const mvnPdf = (z, mean, Sinv, det) => {
+  const d = z.map((v, i) => v - mean[i]);
+  const q = d.reduce((s, di, i) => s + di * Sinv[i].reduce((t, a, j) => t + a * d[j], 0), 0);
+  return Math.exp(-q / 2) / Math.sqrt((2 * Math.PI) ** z.length * det);
+};
+
+/**
+ * The optimal joint detector-estimator of a state in R^l (Section V): x ~ N(mean, cov),
+ * z = H x + b + v, v ~ N(0, R), constant P_o; model I (falseAlarm: { probability, mean,
+ * variance }, one measurement coordinate) or model II (clutter: { rate, mean, variance }, one
+ * measurement coordinate), or neither (any H). MAP detection on Z ≠ ∅ (z enters only through
+ * the marginal N(z; H x0 + b, H P Hᵀ + R)), the posterior mean x0 + K(z − H x0 − b) with
+ * K = P Hᵀ(H P Hᵀ + R)⁻¹ (model II: the mixture over which point is the target's), and on
+ * Z = ∅ both rules at once: `hpe` declares {x0}, `lpe` declares ∅. Returns, per rule, the
+ * component MSEs E e_i² (e_i(∅, {x'}) = e0/√l, e_i({x}, ∅) = e1/√l) with their standard errors,
+ * and the whole-state MSE E e² = Σ_i E e_i² (`total`).
+ */
+export function mcGaussianVector({
+  existence: r, prior, gain: H, offset = null, noiseCov: R, detectionProbability: P,
+  falseAlarm = null, clutter = null, falseAlarmError: e0, missError: e1, samples, seed,
+}) {
+  const g = rng(seed);
+  const { mean: x0, cov: Pm } = prior;
+  const l = x0.length;
+  const m = H.length;
+  const b = offset ?? Array(m).fill(0);
+  const Lp = cholesky(Pm);
+  const Lr = cholesky(R);
+  const Ht = transpose(H);
+  const S = matMul(matMul(H, Pm), Ht).map((row, i) => row.map((v, j) => v + R[i][j]));
+  const Sinv = inverse(S);
+  let detS = 1;
+  for (const d of cholesky(S).map((row, i) => row[i])) detS *= d * d;
+  const K = matMul(matMul(Pm, Ht), Sinv);
+  const zMean = matVec(H, x0).map((v, i) => v + b[i]);
+  const xhat = (z) => {
+    const innov = z.map((v, i) => v - zMean[i]);
+    return matVec(K, innov).map((v, i) => v + x0[i]);
+  };
+  const marginal = (z) => mvnPdf(z, zMean, Sinv, detS);
+  const q = falseAlarm ? falseAlarm.probability : 0;
+  const lambda = clutter ? clutter.rate : 0;
+  if ((q > 0 || lambda > 0) && m !== 1) throw new Error('false observations need one measurement coordinate');
+  const rules = ['hpe', 'lpe'];
+  const comp = Object.fromEntries(rules.map((k) => [k, Array.from({ length: l }, tally)]));
+  const total = Object.fromEntries(rules.map((k) => [k, tally()]));
+  const errs = (exists, x, declare, estimate) => Array.from({ length: l }, (_, i) => (exists ? (declare ? (x[i] - estimate[i]) ** 2 : e1 / l) : declare ? e0 / l : 0));
+  const add = (rule, e) => {
+    for (let i = 0; i < l; i++) comp[rule][i].add(e[i]);
+    total[rule].add(e.reduce((s, v) => s + v, 0));
+  };
+  const addBoth = (e) => { add('hpe', e); add('lpe', e); };
+  for (let k = 0; k < samples; k++) {
+    const exists = g.uniform() < r;
+    const x = exists ? matVec(Lp, Array.from({ length: l }, g.normal)).map((v, i) => v + x0[i]) : null;
+    const detected = exists && g.uniform() < P;
+    let zTarget = null;
+    if (detected) {
+      const noise = matVec(Lr, Array.from({ length: m }, g.normal));
+      zTarget = matVec(H, x).map((v, i) => v + b[i] + noise[i]);
+    }
+    const zs = zTarget ? [zTarget] : [];
+    if (lambda > 0) {
+      const n = g.poisson(lambda);
+      for (let i = 0; i < n; i++) zs.push([clutter.mean + Math.sqrt(clutter.variance) * g.normal()]);
+    } else if (!exists && q > 0 && g.uniform() < q) zs.push([falseAlarm.mean + Math.sqrt(falseAlarm.variance) * g.normal()]);
+    if (zs.length === 0) {
+      add('hpe', errs(exists, x, true, x0));
+      add('lpe', errs(exists, x, false, x0));
+      continue;
+    }
+    if (lambda === 0) {
+      // one point: MAP (39), declare iff r P̄o N(z; H x0 + b, S) ≥ (1 − r) q ψ(z)
+      const z = zs[0];
+      const declare = q === 0 || r * P * marginal(z) >= (1 - r) * q * gaussPdf(z[0], falseAlarm.mean, falseAlarm.variance);
+      addBoth(errs(exists, x, declare, xhat(z)));
+      continue;
+    }
+    // model II: β(Z) = Σ_i N(z_i; H x0 + b, S)/v(z_i); MAP (40); the posterior-mean mixture
+    let beta = 0;
+    const weighted = Array(l).fill(0);
+    for (const z of zs) {
+      const ratio = marginal(z) / (lambda * gaussPdf(z[0], clutter.mean, clutter.variance));
+      beta += ratio;
+      const xz = xhat(z);
+      for (let i = 0; i < l; i++) weighted[i] += ratio * xz[i];
+    }
+    const declare = r * (1 - P + P * beta) >= 1 - r;
+    const estimate = x0.map((v, i) => ((1 - P) * v + P * weighted[i]) / (1 - P + P * beta));
+    addBoth(errs(exists, x, declare, estimate));
+  }
+  const out = (t) => t.result();
+  return Object.fromEntries(rules.map((k) => [k, { components: comp[k].map(out), total: out(total[k]) }]));
+}

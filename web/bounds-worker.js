@@ -25,6 +25,20 @@ const JOBS = {
   * fig3(params) {
     yield mcSequential(params);
   },
+  /** Theorems 1 and 2 over r: jdeBound (model I with q, model II with λ) and the Monte Carlo. */
+  * theorems({ rs, system, falseAlarm, clutter, samples, seed }) {
+    const { prior, observation } = system;
+    const jb = { prior: { gaussian: prior }, observation, falseAlarmError: system.falseAlarmError, missError: system.missError };
+    const mc = { prior, gain: observation.gain, offset: observation.offset, noiseVariance: observation.noiseVariance, detectionProbability: observation.detectionProbability, falseAlarmError: system.falseAlarmError, missError: system.missError, samples };
+    for (const [i, r] of rs.entries()) {
+      const one = fisst.jdeBound({ ...jb, model: 'I', existence: r, falseAlarm: { probability: falseAlarm.probability, density: { gaussian: { mean: falseAlarm.mean, variance: falseAlarm.variance } } } });
+      const two = fisst.jdeBound({ ...jb, model: 'II', existence: r, clutter: { rate: clutter.rate, density: { gaussian: { mean: clutter.mean, variance: clutter.variance } } }, samples: 2000, seed: seed + i });
+      yield {
+        r, model1: { bound: one.bound, error: one.error, phase: one.phase }, model2: { bound: two.bound, error: two.error, phase: two.phase },
+        mc1: mcGaussian({ ...mc, existence: r, falseAlarm, seed: seed + 2 * i }), mc2: mcGaussian({ ...mc, existence: r, clutter, seed: seed + 2 * i + 1 }),
+      };
+    }
+  },
   /** Fig. 2 right: Example 2 over q for each P_o — jdeExample2's curves, then the Monte Carlo. */
   * example2({ qs, mcEvery, detectionProbabilities, existence, falseAlarmError, samples, seed }) {
     for (const P of detectionProbabilities) {
@@ -45,14 +59,14 @@ async function run({ id, kind, params }) {
   await ready;
   const out = [];
   const n = params.detectionProbabilities?.length;
-  const total = { fig2left: params.rs?.length, fig3: 1, example2: n * (1 + Math.ceil(params.qs?.length / params.mcEvery)) + 1 }[kind];
+  const total = { fig2left: params.rs?.length, theorems: params.rs?.length, fig3: 1, example2: n * (1 + Math.ceil(params.qs?.length / params.mcEvery)) + 1 }[kind];
   for (const point of JOBS[kind](params)) {
     out.push(point);
     postMessage({ id, kind, progress: out.length / total });
     await pause(); // let a newer job in
     if (latest[kind] !== id) return;
   }
-  const result = { fig2left: out, fig3: out[0], example2: { curves: out.slice(0, n), reference: out[n], points: out.slice(n + 1) } }[kind];
+  const result = { fig2left: out, theorems: out, fig3: out[0], example2: { curves: out.slice(0, n), reference: out[n], points: out.slice(n + 1) } }[kind];
   postMessage({ id, kind, result });
 }
 

@@ -1,7 +1,7 @@
 // Error bounds for joint detection and estimation (paper 002: Rezaeian & Vo; Fig. 2 left and
 // right, Fig. 3, Corollary 3, (31), (35), (37), Theorem 1, Example 2). Every bound comes from
 // the fisst package (jdeBoundNoClutter, gaussianFisherInformation, jdeSequentialBound on this
-// thread; jdeExample2, about 10 ms a point, in bounds-worker.js, with the seeded Monte Carlo
+// thread; jdeExample2, about 10 ms a point, and jdeBound (Theorems 1 and 2) in bounds-worker.js, with the seeded Monte Carlo
 // of the detector-estimators of bounds-mc.js; jdeExample2Regularity).
 import init, * as fisst from 'fisst';
 import { chart, markX } from './lib/chart.js';
@@ -22,19 +22,19 @@ const Q_EVERY = 2;
 let rightTop = null; // the top of Fig. 2 right's y axis
 const SAMPLES = 20000;
 
-const url = urlState({ vf: 100, vh: 25, e0: 150, e1: 200, po: 0.5, steps: 20, r2: 0.6, e02: 1.2 });
+const url = urlState({ vf: 100, vh: 25, e0: 150, e1: 200, po: 0.5, steps: 20, r2: 0.6, e02: 1.2, q: 0.5, lambda: 1 });
 const state = url.values;
 const timer = timings('bounds');
-timer.badge($('redraw-ms'), { left: 'Fig. 2 left', seq: 'Fig. 3', right: 'Fig. 2 right', total: 'whole update', worker: 'last worker job' });
-const results = { left: null, seq: null, right: null, mc: { left: null, seq: null, right: null } };
+timer.badge($('redraw-ms'), { left: 'Fig. 2 left', seq: 'Fig. 3', right: 'Fig. 2 right', thm: 'Theorems 1–2', total: 'whole update', worker: 'last worker job' });
+const results = { left: null, seq: null, right: null, thm: null, mc: { left: null, seq: null, right: null, thm: null } };
 
 // ---------------------------------------------------------------- the Monte Carlo worker
 const worker = new Worker(new URL('./bounds-worker.js', import.meta.url), { type: 'module' });
-const bars = { left: progressBar($('left-progress'), { label: 'Monte Carlo' }), seq: progressBar($('seq-progress'), { label: 'Monte Carlo' }), right: progressBar($('right-progress'), { label: 'Monte Carlo' }) };
-const jobs = { left: 0, seq: 0, right: 0 };
+const bars = Object.fromEntries(['left', 'seq', 'right', 'thm'].map((p) => [p, progressBar($(`${p}-progress`), { label: 'Monte Carlo' })]));
+const jobs = { left: 0, seq: 0, right: 0, thm: 0 };
 const samplesOf = {};
 const sentAt = {};
-const KIND = { left: 'fig2left', seq: 'fig3', right: 'example2' };
+const KIND = { left: 'fig2left', seq: 'fig3', right: 'example2', thm: 'theorems' };
 let nextId = 1;
 let ready = false;
 /** Sends the panel's Monte Carlo job; the answer to an older one is ignored. */
@@ -254,15 +254,55 @@ function drawRight() {
   $('right-mc').textContent = `${fmt(reference.mse, 4)} ± ${fmt(2 * reference.se, 1)}`;
 }
 
+// ---------------------------------------------------------------- Theorems 1 and 2 over r (jdeBound)
+// x ~ N(0.5, 4), z = x + v, σv² = 1, P̄o = 0.8, e0² = 6, e1² = 8; model I: a false alarm
+// N(1, 25) with probability q; model II: Poisson clutter of rate λ with density N(0, 25).
+const THM = { prior: { mean: 0.5, variance: 4 }, observation: { detectionProbability: 0.8, gain: 1, offset: 0, noiseVariance: 1 }, falseAlarmError: 6, missError: 8 };
+const THM_RS = grid(20);
+let thmTop = null; // the y axis covers the dots too
+const thmChart = chart($('thm'), {
+  height: 340,
+  x: { label: 'probability of existence r', range: [0, 1], format: (v) => fmt(v, 3) },
+  y: { label: 'bound on the MSE', range: (lo, hi) => [0, thmTop ?? hi], format: (v) => fmt(v, 4) },
+  series: [
+    { label: 'model I, Theorem 1 (17)', colour: BLUE, width: 2.5 },
+    { label: 'model II, Theorem 2 (23)', colour: RED, width: 2.5 },
+    { label: '● Monte Carlo, MAP + posterior mean', colour: 'transparent', width: 0 },
+  ],
+  overlay(o) {
+    const t = results.thm;
+    if (!t) return;
+    drawDots(o, t.points.map((p) => ({ x: p.r, ...p.mc1 })), BLUE);
+    drawDots(o, t.points.map((p) => ({ x: p.r, ...p.mc2 })), RED);
+  },
+});
+
+function drawThm() {
+  const pts = results.mc.thm;
+  if (!pts) {
+    results.thm = null;
+    thmChart.update([THM_RS, THM_RS.map(() => null), THM_RS.map(() => null), THM_RS.map(() => null)]);
+    return;
+  }
+  const z = (mc, b) => (mc.se > 0 ? (mc.mse - b.bound) / Math.hypot(mc.se, b.error) : 0);
+  const z1 = pts.map((p) => z(p.mc1, p.model1));
+  const z2 = pts.map((p) => z(p.mc2, p.model2));
+  thmTop = 1.08 * Math.max(...pts.flatMap((p) => [p.model1.bound, p.model2.bound, p.mc1.mse + 2 * p.mc1.se, p.mc2.mse + 2 * p.mc2.se]));
+  results.thm = { q: state.q, lambda: state.lambda, system: THM, points: pts, worstZ1: Math.max(...z1.map(Math.abs)), lowestZ2: Math.min(...z2) };
+  thmChart.update([THM_RS, pts.map((p) => p.model1.bound), pts.map((p) => p.model2.bound), THM_RS.map(() => null)]);
+  $('thm-z1').textContent = `within ${fmt(results.thm.worstZ1, 2)} standard errors at all ${pts.length} dots`;
+  $('thm-z2').textContent = `lowest z = ${fmt(results.thm.lowestZ2, 2)} (never below: z > −4)`;
+}
+
 // ---------------------------------------------------------------- state, updates, controls
 function publish() {
   $('bounds-state').textContent = JSON.stringify({
-    settings: { ...state }, system: system(), left: results.left, seq: results.seq, right: results.right,
+    settings: { ...state }, system: system(), left: results.left, seq: results.seq, right: results.right, thm: results.thm,
     mcDone: Object.fromEntries(Object.entries(results.mc).map(([k, v]) => [k, v !== null])),
   }, null, 1);
 }
 
-const DRAW = { left: drawLeft, seq: drawSeq, right: drawRight };
+const DRAW = { left: drawLeft, seq: drawSeq, right: drawRight, thm: drawThm };
 function update(...panels) {
   timer.time('total', () => {
     for (const panel of panels) timer.time(panel, DRAW[panel]);
@@ -283,6 +323,9 @@ function recompute(...panels) {
   }
   if (panels.includes('right')) {
     simulate('right', { qs: QS, mcEvery: Q_EVERY, detectionProbabilities: RIGHT_PO, existence: state.r2, falseAlarmError: state.e02, samples: SAMPLES / 2, seed: 3 });
+  }
+  if (panels.includes('thm')) {
+    simulate('thm', { rs: THM_RS, system: THM, falseAlarm: { probability: state.q, mean: 1, variance: 25 }, clutter: { rate: state.lambda, mean: 0, variance: 25 }, samples: SAMPLES, seed: 4 });
   }
   update(...panels);
 }
@@ -311,8 +354,11 @@ state.po = slider('po', { value: state.po, format: num, onInput: on('po', 'left'
 state.steps = slider('steps', { value: state.steps, format: String, onInput: on('steps', 'seq') }).value;
 state.r2 = slider('r2', { value: state.r2, format: num, onInput: on('r2', 'right') }).value;
 state.e02 = slider('e02', { value: state.e02, format: num, onInput: on('e02', 'right') }).value;
+state.q = slider('thm-q', { value: state.q, format: num, onInput: on('q', 'thm') }).value;
+state.lambda = slider('thm-lambda', { value: state.lambda, format: num, onInput: on('lambda', 'thm') }).value;
 downloads($('left-figure'), { name: 'bounds-fig2-left', png: () => left.canvas(), csv: () => left.csv() });
 downloads($('seq-figure'), { name: 'bounds-fig3', png: () => seq.canvas(), csv: () => seq.csv() });
 downloads($('right-figure'), { name: 'bounds-fig2-right', png: () => right.canvas(), csv: () => right.csv() });
+downloads($('thm-figure'), { name: 'bounds-theorems', png: () => thmChart.canvas(), csv: () => thmChart.csv() });
 
-recompute('left', 'seq', 'right');
+recompute('left', 'seq', 'right', 'thm');

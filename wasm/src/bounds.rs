@@ -6,7 +6,7 @@ use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, check_range, read, write};
-use crate::types::Numbers;
+use crate::types::{Covariance, Gaussian, Numbers};
 use fisst::bounds;
 
 /// Options of `jdeBoundNoClutter`: Corollary 3 in the Gaussian form (31) (constant P_o,
@@ -310,30 +310,152 @@ impl<'de> Deserialize<'de> for DetectionShape {
     }
 }
 
-fn one() -> f64 {
-    1.0
+/// The gain of g: a number a (z = a·x + b, a 1D state, the default 1) or the measurement
+/// matrix H as m rows of l numbers (z = H x + b, a `multivariateGaussian` prior).
+#[derive(Clone, Debug, Tsify)]
+#[tsify(type = "number | (number[] | Float64Array)[]")]
+pub enum GainShape {
+    /// a.
+    Scalar(f64),
+    /// H, row by row.
+    Rows(Vec<Vec<f64>>),
 }
 
-/// The observation: P_o(x) and g(z|x) = N(z; gain·x + offset, noiseVariance).
+impl Default for GainShape {
+    fn default() -> Self {
+        GainShape::Scalar(1.0)
+    }
+}
+
+impl<'de> Deserialize<'de> for GainShape {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> serde::de::Visitor<'de> for V {
+            type Value = GainShape;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("a number or an array of rows (arrays of numbers)")
+            }
+            fn visit_f64<E: serde::de::Error>(self, x: f64) -> Result<Self::Value, E> {
+                Ok(GainShape::Scalar(x))
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<Self::Value, A::Error> {
+                let mut rows = Vec::new();
+                while let Some(r) = seq.next_element::<Vec<f64>>()? {
+                    rows.push(r);
+                }
+                Ok(GainShape::Rows(rows))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// The offset b of g: a number (one measurement coordinate, the default 0) or m numbers.
+#[derive(Clone, Debug, Tsify)]
+#[tsify(type = "number | number[] | Float64Array")]
+pub enum OffsetShape {
+    /// b.
+    Scalar(f64),
+    /// b, one number per measurement coordinate.
+    Vector(Vec<f64>),
+}
+
+impl Default for OffsetShape {
+    fn default() -> Self {
+        OffsetShape::Scalar(0.0)
+    }
+}
+
+impl<'de> Deserialize<'de> for OffsetShape {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> serde::de::Visitor<'de> for V {
+            type Value = OffsetShape;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("a number or an array of numbers")
+            }
+            fn visit_f64<E: serde::de::Error>(self, x: f64) -> Result<Self::Value, E> {
+                Ok(OffsetShape::Scalar(x))
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<Self::Value, A::Error> {
+                let mut v = Vec::new();
+                while let Some(x) = seq.next_element::<f64>()? {
+                    v.push(x);
+                }
+                Ok(OffsetShape::Vector(v))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// At most this many state coordinates l, and this many measurement coordinates m.
+pub const MAX_DIMS: usize = 64;
+
+/// The observation: P_o(x) and g(z|x) = N(z; gain·x + offset, noiseVariance) for a 1D prior,
+/// or g(z|x) = N(z; H x + b, R) with H = `gain` (m rows of l numbers) and R = `noiseCov`
+/// (or, for m = 1, `noiseVariance`) for a `multivariateGaussian` prior.
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct ObservationShape {
-    /// P_o(x): a number in [0, 1] or `{ table: { x, probability } }`.
+    /// P_o(x): a number in [0, 1] or `{ table: { x, probability } }` (a
+    /// `multivariateGaussian` prior takes a constant only).
     pub detection_probability: DetectionShape,
-    /// a (default 1).
-    #[serde(default = "one")]
-    #[tsify(optional)]
-    pub gain: f64,
-    /// b (default 0).
+    /// a, a finite number (default 1); with a `multivariateGaussian` prior H, m rows of l
+    /// finite numbers (1 ≤ m ≤ 64; a number is H = [[a]] when l = 1). False alarms or
+    /// clutter need m = 1: their densities are on the measurement line.
     #[serde(default)]
     #[tsify(optional)]
-    pub offset: f64,
-    /// σ_v² > 0.
-    pub noise_variance: f64,
+    pub gain: GainShape,
+    /// b (default 0): a number, or with a `multivariateGaussian` prior m numbers (a number
+    /// serves m = 1).
+    #[serde(default)]
+    #[tsify(optional)]
+    pub offset: OffsetShape,
+    /// σ_v² > 0, the noise variance of a one-coordinate measurement (required with a 1D
+    /// prior; with a `multivariateGaussian` prior give it or `noiseCov`, and only for m = 1).
+    #[tsify(optional)]
+    pub noise_variance: Option<f64>,
+    /// R, the m × m noise covariance of a `multivariateGaussian` prior's measurement:
+    /// m rows of m numbers or m·m row-major numbers, symmetric positive definite.
+    #[tsify(optional)]
+    pub noise_cov: Option<Covariance>,
 }
 
 impl ObservationShape {
     fn into_core(self, path: &str) -> JsResult<bounds::LinearGaussian> {
+        let gain = match self.gain {
+            GainShape::Scalar(a) => a,
+            GainShape::Rows(_) => {
+                return Err(crate::boundary::type_error(format!(
+                    "{path}.gain must be a number with a 1D prior (gain rows are H for a multivariateGaussian prior)"
+                )));
+            }
+        };
+        let offset = match self.offset {
+            OffsetShape::Scalar(b) => b,
+            OffsetShape::Vector(_) => {
+                return Err(crate::boundary::type_error(format!(
+                    "{path}.offset must be a number with a 1D prior"
+                )));
+            }
+        };
+        if self.noise_cov.is_some() {
+            return Err(crate::boundary::type_error(format!(
+                "{path}.noiseCov is for a multivariateGaussian prior (use noiseVariance with a 1D prior)"
+            )));
+        }
+        let Some(noise) = self.noise_variance else {
+            return Err(crate::boundary::type_error(format!(
+                "{path}.noiseVariance is required"
+            )));
+        };
         let det = match self.detection_probability {
             DetectionShape::Constant(p) => bounds::Detection::constant(p).or_throw_in(path),
             DetectionShape::Table(t) => {
@@ -342,7 +464,87 @@ impl ObservationShape {
                 bounds::Detection::table(&t.x.0, &t.probability.0).or_throw_in(&p)
             }
         }?;
-        bounds::LinearGaussian::new(det, self.gain, self.offset, self.noise_variance)
+        bounds::LinearGaussian::new(det, gain, offset, noise).or_throw_in(path)
+    }
+
+    /// The sensor of a state in R^`dims`.
+    fn into_sensor(self, dims: usize, path: &str) -> JsResult<bounds::LinearGaussianSensor> {
+        let detection = match self.detection_probability {
+            DetectionShape::Constant(p) => p,
+            DetectionShape::Table(_) => {
+                return Err(crate::boundary::type_error(format!(
+                    "{path}.detectionProbability must be a number (a constant P_o) with a multivariateGaussian prior"
+                )));
+            }
+        };
+        let rows = match self.gain {
+            GainShape::Scalar(a) if dims == 1 => vec![vec![a]],
+            GainShape::Scalar(_) => {
+                return Err(crate::boundary::type_error(format!(
+                    "{path}.gain must be H, m rows of {dims} numbers, for a state in R^{dims}"
+                )));
+            }
+            GainShape::Rows(rows) => rows,
+        };
+        let m = rows.len();
+        if m == 0 || m > MAX_DIMS {
+            return Err(crate::boundary::range_error(format!(
+                "{path}.gain must have 1 to {MAX_DIMS} rows, got {m}"
+            )));
+        }
+        for (i, r) in rows.iter().enumerate() {
+            if r.len() != dims {
+                return Err(crate::boundary::range_error(format!(
+                    "{path}.gain[{i}] has length {}, expected {dims} (the state dimension)",
+                    r.len()
+                )));
+            }
+        }
+        let offset = match self.offset {
+            OffsetShape::Scalar(b) if m == 1 => vec![b],
+            OffsetShape::Scalar(0.0) => vec![0.0; m],
+            OffsetShape::Scalar(_) => {
+                return Err(crate::boundary::type_error(format!(
+                    "{path}.offset must be {m} numbers (gain has {m} rows)"
+                )));
+            }
+            OffsetShape::Vector(v) => {
+                if v.len() != m {
+                    return Err(crate::boundary::range_error(format!(
+                        "{path}.offset has length {}, expected {m} (gain has {m} rows)",
+                        v.len()
+                    )));
+                }
+                v
+            }
+        };
+        let noise = match (self.noise_variance, self.noise_cov) {
+            (Some(_), Some(_)) => {
+                return Err(crate::boundary::type_error(format!(
+                    "{path}.noiseVariance and {path}.noiseCov are alternatives: give one"
+                )));
+            }
+            (None, None) => {
+                return Err(crate::boundary::type_error(format!(
+                    "{path}.noiseCov is required (or noiseVariance when gain has one row)"
+                )));
+            }
+            (Some(v), None) => {
+                if m != 1 {
+                    return Err(crate::boundary::type_error(format!(
+                        "{path}.noiseVariance serves a gain of one row; gain has {m} rows: give noiseCov ({m} × {m})"
+                    )));
+                }
+                if v <= 0.0 {
+                    return Err(crate::boundary::range_error(format!(
+                        "{path}.noiseVariance must be > 0, got {v}"
+                    )));
+                }
+                vec![v]
+            }
+            (None, Some(c)) => c.row_major(m, &format!("{path}.noiseCov"))?,
+        };
+        bounds::LinearGaussianSensor::new(detection, &rows.concat(), dims, &offset, &noise)
             .or_throw_in(path)
     }
 }
@@ -377,6 +579,52 @@ pub enum MeasurementModel {
     Two,
 }
 
+/// The prior f of `jdeBound`: a 1D density (`{ gaussian }`, `{ uniform }`, `{ mixture }`,
+/// `{ table }`, as [`DensityShape`]) or, for a state in R^l, `{ multivariateGaussian: { mean,
+/// cov } }` (the vector bounds (63)–(72) of Section V).
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub enum PriorShape {
+    /// Gaussian N(mean, variance).
+    Gaussian(GaussianShape),
+    /// Uniform.
+    Uniform(UniformShape),
+    /// Gaussian mixture (1 to 1,000 components).
+    Mixture(Vec<MixtureShape>),
+    /// Tabulated.
+    Table(TableShape),
+    /// N(mean, cov) in R^l: `mean` l finite numbers (1 ≤ l ≤ 64), `cov` l rows of l numbers
+    /// (or l·l row-major numbers; a bare number when l = 1), symmetric positive definite.
+    /// The observation then has a constant P_o, gain rows H and `noiseCov`.
+    MultivariateGaussian(Gaussian),
+}
+
+/// A prior read from [`PriorShape`].
+enum Prior {
+    Scalar(bounds::Density1),
+    Vector(bounds::GaussianPrior),
+}
+
+impl PriorShape {
+    fn into_core(self, path: &str) -> JsResult<Prior> {
+        let scalar = |d: DensityShape| d.into_core(path).map(Prior::Scalar);
+        match self {
+            PriorShape::Gaussian(g) => scalar(DensityShape::Gaussian(g)),
+            PriorShape::Uniform(u) => scalar(DensityShape::Uniform(u)),
+            PriorShape::Mixture(m) => scalar(DensityShape::Mixture(m)),
+            PriorShape::Table(t) => scalar(DensityShape::Table(t)),
+            PriorShape::MultivariateGaussian(g) => {
+                let p = format!("{path}.multivariateGaussian");
+                let l = check_range(&format!("{p}.mean.length"), g.mean.0.len(), 1, MAX_DIMS)?;
+                let cov = g.cov.row_major(l, &format!("{p}.cov"))?;
+                bounds::GaussianPrior::new(&g.mean.0, &cov)
+                    .or_throw_in(&p)
+                    .map(Prior::Vector)
+            }
+        }
+    }
+}
+
 /// Options of `jdeBound`.
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
@@ -385,8 +633,10 @@ pub struct JdeBoundOptions {
     pub model: MeasurementModel,
     /// r in [0, 1].
     pub existence: f64,
-    /// f, the prior density of the state.
-    pub prior: DensityShape,
+    /// f, the prior density of the state: a 1D density, or `{ multivariateGaussian: { mean,
+    /// cov } }` for a state in R^l (then `result.components` holds the bound of each
+    /// coordinate).
+    pub prior: PriorShape,
     /// P_o and g.
     pub observation: ObservationShape,
     /// Model I: `{ probability, density }` (q, ψ); omitted: q = 0. Not allowed with model II.
@@ -395,24 +645,34 @@ pub struct JdeBoundOptions {
     /// Model II: `{ rate, density }` (λ, v/λ); omitted: λ = 0. Not allowed with model I.
     #[tsify(optional)]
     pub clutter: Option<ClutterShape>,
-    /// e_0² ≥ 0.
+    /// e_0² ≥ 0 (of the whole state; coordinate i of a vector state uses e_0²/l).
     pub false_alarm_error: f64,
-    /// e_1² ≥ 0.
+    /// e_1² ≥ 0 (of the whole state; coordinate i of a vector state uses e_1²/l).
     pub miss_error: f64,
-    /// l, the state dimension: only 1 here (the component bounds (70)–(72) of a vector state
-    /// are `jdeComponentBounds`).
+    /// l, the state dimension, an integer in [1, 64] (default: 1 for a 1D prior, the length
+    /// of `prior.multivariateGaussian.mean` otherwise, which it must equal; l > 1 needs a
+    /// `multivariateGaussian` prior).
     #[tsify(optional)]
     pub dims: Option<usize>,
     /// Relative quadrature tolerance in [1e-14, 0.1] (default 1e-10).
     #[tsify(optional)]
     pub tolerance: Option<f64>,
-    /// Monte Carlo samples per cardinality n ≥ 2 (model II with clutter; 100 to 1,000,000,
-    /// default 20,000; samples × Σ n at most 10^7).
+    /// Monte Carlo samples per cardinality n ≥ 2 (n ≥ 3 with `quadratureCardinality: 2`)
+    /// (model II with clutter; 100 to 1,000,000, default 20,000; samples × Σ n at most 10^7).
     #[tsify(optional)]
     pub samples: Option<usize>,
     /// Seed of the Monte Carlo (integer; omitted: fresh entropy, returned as `seed`).
     #[tsify(optional)]
     pub seed: Option<u64>,
+    /// Model II with clutter: the largest |Z| = n integrated by deterministic quadrature, 1
+    /// (default: n = 1 by 1D quadrature, every n ≥ 2 by Monte Carlo) or 2 (also n = 2, by
+    /// 2D cubature over Z² (Theorem 2), which removes the n = 2 Monte Carlo error). Cost:
+    /// the n = 2 cubature takes seconds (about 3.5 s natively; 6–15 s in wasm under Node on
+    /// a loaded 2-core machine, for λ = 1, an N(1, 4) prior and U[−10, 10] clutter, against
+    /// about 0.4 s with 1; a looser `tolerance` such as 1e-5 halves it): do not use it while
+    /// a slider moves. No effect on model I or without clutter.
+    #[tsify(optional, type = "1 | 2")]
+    pub quadrature_cardinality: Option<usize>,
 }
 
 /// One summand of (17) or (23).
@@ -434,7 +694,7 @@ pub struct CardinalityTerm {
     pub probability: f64,
     /// w_n (20)/(25).
     pub w: f64,
-    /// J'_n⁻¹ (with the 1/w_n² of (20)/(25)).
+    /// J'_n⁻¹ (with the 1/w_n² of (20)/(25)); for a vector state its trace.
     pub inverse_information: f64,
     /// Pr(the detector rejects n clutter-only points).
     pub clutter_null: f64,
@@ -446,11 +706,42 @@ pub struct CardinalityTerm {
     pub error: f64,
 }
 
+/// The bound (63)/(64) on the mean-square error σ_i² of one coordinate x_i of a vector
+/// state, with the component metric e_i (e_i(∅, {x'}) = e_0/√l, e_i({x}, ∅) = e_1/√l).
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct JdeComponentBound {
+    /// The lower bound on E e_i²: the smaller of `hpe` and `lpe`.
+    pub bound: f64,
+    /// This coordinate's rule on Z = ∅ (each coordinate may pick its own).
+    #[tsify(type = "'HPE' | 'LPE'")]
+    pub phase: &'static str,
+    /// r* of this coordinate (72): e_0²/(e_0² + (1 − P̄o)(e_1² − l σ_{e,i}²)) without false
+    /// observations (may exceed 1; `Infinity` when HPE never wins).
+    pub existence_threshold: f64,
+    /// The summands of (63)/(64) for this coordinate, named as the top-level `terms`.
+    pub terms: Vec<BoundTerm>,
+    /// Error estimate of `bound` (quadrature, one Monte Carlo standard error).
+    pub error: f64,
+    /// The HPE bound of this coordinate.
+    pub hpe: f64,
+    /// The LPE bound of this coordinate.
+    pub lpe: f64,
+    /// [J'_1⁻¹]_ii (63), or Σ_n C_n [J'_{1+n}⁻¹]_ii (64).
+    pub inverse_information: f64,
+    /// x*_i, the prior mean of this coordinate (P_o is constant, so f_d' = f).
+    pub undetected_mean: f64,
+    /// σ_{e,i}² = P_ii, the prior variance of this coordinate.
+    pub undetected_variance: f64,
+}
+
 /// Result of `jdeBound`.
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct JdeBoundResult {
-    /// The lower bound on E e²(X, X̂(Z)) (a valid one only when `regular`).
+    /// The lower bound on E e²(X, X̂(Z)) (a valid one only when `regular`); for a vector
+    /// state with the Euclidean metric, one rule on Z = ∅ for the whole state (≥ the sum of
+    /// `components[i].bound`, which may each pick their own rule).
     pub bound: f64,
     /// The rule on Z = ∅ of the bound's estimator.
     #[tsify(type = "'HPE' | 'LPE'")]
@@ -467,13 +758,16 @@ pub struct JdeBoundResult {
     pub lpe: f64,
     /// P̄_o (14).
     pub mean_detection: f64,
-    /// x*, the mean of f_d'.
+    /// x*, the mean of f_d' (a vector state: of its first coordinate; see
+    /// `components[i].undetectedMean`).
     pub undetected_mean: f64,
-    /// σ_e² (16).
+    /// σ_e² (16) (a vector state: tr P).
     pub undetected_variance: f64,
     /// η1 or η2.
     pub eta: f64,
-    /// The MAP region of one-point observations, `[low, high]` intervals.
+    /// The MAP region of one-point observations, `[low, high]` intervals (a vector state:
+    /// of the measurement line; empty when the gain has more than one row, where there are
+    /// no false observations and every measurement is kept).
     pub region: Vec<(f64, f64)>,
     /// Per cardinality n.
     pub cardinalities: Vec<CardinalityTerm>,
@@ -485,26 +779,109 @@ pub struct JdeBoundResult {
     #[serde(skip_serializing_if = "Option::is_none")]
     #[tsify(optional)]
     pub seed: Option<u64>,
+    /// A `multivariateGaussian` prior only: the bound of each coordinate x_i, i = 0 … l − 1
+    /// ((63)/(64), (70)–(72)).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub components: Option<Vec<JdeComponentBound>>,
+    /// A `multivariateGaussian` prior only: J'_1⁻¹ (model I), or Σ_n C_n J'_{1+n}⁻¹
+    /// (model II), l rows of l numbers, whose diagonal enters `components[i]`'s estimation
+    /// term (without false observations, (P⁻¹ + HᵀR⁻¹H)⁻¹, the posterior covariance).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    pub inverse_information_matrix: Option<Vec<Vec<f64>>>,
 }
 
-/// Theorems 1 and 2 of paper 002. Options `{ model, existence, prior, observation,
-/// falseAlarm?, clutter?, falseAlarmError, missError, dims?, tolerance?, samples?, seed? }`;
-/// returns `{ bound, phase, existenceThreshold, terms, error, … }`.
+/// The false observations of `jdeBound`, read from `falseAlarm` or `clutter`.
+enum FalseObservations {
+    I { q: f64, psi: bounds::Density1 },
+    II { lambda: f64, c: bounds::Density1 },
+}
+
+/// The Monte Carlo budget of model II: `samples` × Σ n over the cardinalities it samples
+/// (n = 2 … N + 1, or n = 3 … with the n = 2 cubature) at most 10^7. Sets `settings.samples`
+/// and `settings.seed` and returns the seed used when clutter is sampled at all.
+fn monte_carlo_settings(
+    settings: &mut bounds::Settings,
+    lambda: f64,
+    samples: Option<usize>,
+    seed: Option<u64>,
+) -> JsResult<Option<u64>> {
+    let samples = check_range(
+        "options.samples",
+        samples.unwrap_or(settings.samples),
+        100,
+        1_000_000,
+    )?;
+    settings.samples = samples;
+    // N, the last clutter count kept
+    let mut last = 0usize;
+    let mut kept = bounds::poisson_pmf(lambda.max(0.0), 0);
+    while lambda.is_finite()
+        && 1.0 - kept > settings.series_tolerance
+        && last < settings.max_clutter
+    {
+        last += 1;
+        kept += bounds::poisson_pmf(lambda, last);
+    }
+    let first = if settings.quadrature_cardinality >= 2 {
+        3
+    } else {
+        2
+    };
+    let points: usize = (first..=last + 1).sum();
+    if points.saturating_mul(samples) > 10_000_000 {
+        return Err(crate::boundary::range_error(format!(
+            "options.samples: samples × Σ n = {} exceeds 10^7 at this clutter rate; pass fewer samples (at most {})",
+            points.saturating_mul(samples),
+            10_000_000 / points.max(1)
+        )));
+    }
+    let seed = if last > 0 {
+        Some(crate::boundary::seed_or_entropy(seed)?)
+    } else {
+        None
+    };
+    settings.seed = seed.unwrap_or(0);
+    Ok(seed)
+}
+
+/// Theorems 1 and 2 of paper 002, and their vector extensions (63)–(72) for a
+/// `multivariateGaussian` prior. Options `{ model, existence, prior, observation,
+/// falseAlarm?, clutter?, falseAlarmError, missError, dims?, tolerance?, samples?, seed?,
+/// quadratureCardinality? }`; returns `{ bound, phase, existenceThreshold, terms, error, … }`
+/// and, for a vector state, `components` and `inverseInformationMatrix`.
 #[wasm_bindgen(js_name = jdeBound, unchecked_return_type = "JdeBoundResult")]
 pub fn jde_bound(
     #[wasm_bindgen(unchecked_param_type = "JdeBoundOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: JdeBoundOptions = read(options, "options")?;
     if let Some(l) = o.dims {
-        check_range("options.dims", l, 1, 1)?;
+        check_range("options.dims", l, 1, MAX_DIMS)?;
     }
     let prior = o.prior.into_core("options.prior")?;
-    let obs = o.observation.into_core("options.observation")?;
+    match (&prior, o.dims) {
+        (Prior::Scalar(_), Some(l)) if l != 1 => {
+            return Err(crate::boundary::range_error(format!(
+                "options.dims is {l}, but options.prior is a 1D density: a state in R^{l} needs prior: {{ multivariateGaussian: {{ mean, cov }} }}"
+            )));
+        }
+        (Prior::Vector(g), Some(l)) if l != g.dims() => {
+            return Err(crate::boundary::range_error(format!(
+                "options.dims is {l}, but options.prior.multivariateGaussian.mean has length {}",
+                g.dims()
+            )));
+        }
+        _ => {}
+    }
     let mut settings = bounds::Settings::default();
     if let Some(t) = o.tolerance {
         settings.tolerance = t;
     }
-    let (out, seed) = match o.model {
+    if let Some(k) = o.quadrature_cardinality {
+        settings.quadrature_cardinality = check_range("options.quadratureCardinality", k, 1, 2)?;
+    }
+    let (false_obs, seed) = match o.model {
         MeasurementModel::One => {
             if o.clutter.is_some() {
                 return Err(crate::boundary::type_error(
@@ -518,19 +895,7 @@ pub fn jde_bound(
                 ),
                 None => (0.0, bounds::Density1::uniform(0.0, 1.0).or_throw()?),
             };
-            let m = bounds::ModelI {
-                existence: o.existence,
-                prior: &prior,
-                observation: &obs,
-                false_alarm_probability: q,
-                false_alarm_density: &psi,
-                false_alarm_error: o.false_alarm_error,
-                miss_error: o.miss_error,
-            };
-            (
-                bounds::theorem1(&m, &settings).or_throw_in("options")?,
-                None,
-            )
+            (FalseObservations::I { q, psi }, None)
         }
         MeasurementModel::Two => {
             if o.false_alarm.is_some() {
@@ -542,83 +907,133 @@ pub fn jde_bound(
                 Some(c) => (c.rate, c.density.into_core("options.clutter.density")?),
                 None => (0.0, bounds::Density1::uniform(0.0, 1.0).or_throw()?),
             };
-            let samples = check_range(
-                "options.samples",
-                o.samples.unwrap_or(settings.samples),
-                100,
-                1_000_000,
-            )?;
-            settings.samples = samples;
-            // the Monte Carlo work: samples × Σ_{n=2}^{N+1} n
-            let mut last = 0usize;
-            let mut kept = bounds::poisson_pmf(lambda.max(0.0), 0);
-            while lambda.is_finite()
-                && 1.0 - kept > settings.series_tolerance
-                && last < settings.max_clutter
-            {
-                last += 1;
-                kept += bounds::poisson_pmf(lambda, last);
-            }
-            let points: usize = (2..=last + 1).sum();
-            if points.saturating_mul(samples) > 10_000_000 {
-                return Err(crate::boundary::range_error(format!(
-                    "options.samples: samples × Σ n = {} exceeds 10^7 at this clutter rate; pass fewer samples (at most {})",
-                    points.saturating_mul(samples),
-                    10_000_000 / points.max(1)
-                )));
-            }
-            let seed = if last > 0 {
-                Some(crate::boundary::seed_or_entropy(o.seed)?)
-            } else {
-                None
-            };
-            settings.seed = seed.unwrap_or(0);
-            let m = bounds::ModelII {
-                existence: o.existence,
-                prior: &prior,
-                observation: &obs,
-                clutter_rate: lambda,
-                clutter_density: &c,
-                false_alarm_error: o.false_alarm_error,
-                miss_error: o.miss_error,
-            };
-            (
-                bounds::theorem2(&m, &settings).or_throw_in("options")?,
-                seed,
-            )
+            let seed = monte_carlo_settings(&mut settings, lambda, o.samples, o.seed)?;
+            (FalseObservations::II { lambda, c }, seed)
         }
     };
-    write(&result(&out, seed))
+    match prior {
+        Prior::Scalar(prior) => {
+            let obs = o.observation.into_core("options.observation")?;
+            let out = match &false_obs {
+                FalseObservations::I { q, psi } => bounds::theorem1(
+                    &bounds::ModelI {
+                        existence: o.existence,
+                        prior: &prior,
+                        observation: &obs,
+                        false_alarm_probability: *q,
+                        false_alarm_density: psi,
+                        false_alarm_error: o.false_alarm_error,
+                        miss_error: o.miss_error,
+                    },
+                    &settings,
+                ),
+                FalseObservations::II { lambda, c } => bounds::theorem2(
+                    &bounds::ModelII {
+                        existence: o.existence,
+                        prior: &prior,
+                        observation: &obs,
+                        clutter_rate: *lambda,
+                        clutter_density: c,
+                        false_alarm_error: o.false_alarm_error,
+                        miss_error: o.miss_error,
+                    },
+                    &settings,
+                ),
+            }
+            .or_throw_in("options")?;
+            write(&result(&out, seed))
+        }
+        Prior::Vector(prior) => {
+            let sensor = o
+                .observation
+                .into_sensor(prior.dims(), "options.observation")?;
+            let measurement = match &false_obs {
+                FalseObservations::I { q, psi } => bounds::VectorMeasurement::I {
+                    false_alarm_probability: *q,
+                    false_alarm_density: psi,
+                },
+                FalseObservations::II { lambda, c } => bounds::VectorMeasurement::II {
+                    clutter_rate: *lambda,
+                    clutter_density: c,
+                },
+            };
+            let v = bounds::vector_bound(
+                &bounds::VectorModel {
+                    existence: o.existence,
+                    prior: &prior,
+                    sensor: &sensor,
+                    measurement,
+                    false_alarm_error: o.false_alarm_error,
+                    miss_error: o.miss_error,
+                },
+                &settings,
+            )
+            .or_throw_in("options")?;
+            let l = prior.dims();
+            let mut out = result(&v.total, seed);
+            out.components = Some(
+                v.components
+                    .iter()
+                    .map(|c| JdeComponentBound {
+                        bound: c.assembled.bound,
+                        phase: phase_name(c.assembled.phase),
+                        existence_threshold: c.assembled.existence_threshold,
+                        terms: terms(&c.assembled.terms),
+                        error: c.error,
+                        hpe: c.assembled.hpe,
+                        lpe: c.assembled.lpe,
+                        inverse_information: c.inverse_information,
+                        undetected_mean: c.undetected_mean,
+                        undetected_variance: c.undetected_variance,
+                    })
+                    .collect(),
+            );
+            out.inverse_information_matrix = Some(
+                v.inverse_information
+                    .chunks(l)
+                    .map(<[f64]>::to_vec)
+                    .collect(),
+            );
+            write(&out)
+        }
+    }
+}
+
+fn phase_name(p: bounds::Phase) -> &'static str {
+    match p {
+        bounds::Phase::Hpe => "HPE",
+        bounds::Phase::Lpe => "LPE",
+    }
+}
+
+fn terms(t: &bounds::Terms) -> Vec<BoundTerm> {
+    vec![
+        BoundTerm {
+            name: "estimation",
+            value: t.estimation,
+        },
+        BoundTerm {
+            name: "undetected",
+            value: t.undetected,
+        },
+        BoundTerm {
+            name: "missed",
+            value: t.missed,
+        },
+        BoundTerm {
+            name: "falseTarget",
+            value: t.false_target,
+        },
+    ]
 }
 
 fn result(b: &bounds::JdeBound, seed: Option<u64>) -> JdeBoundResult {
     let a = &b.assembled;
-    let t = &a.terms;
     JdeBoundResult {
         bound: a.bound,
-        phase: match a.phase {
-            bounds::Phase::Hpe => "HPE",
-            bounds::Phase::Lpe => "LPE",
-        },
+        phase: phase_name(a.phase),
         existence_threshold: a.existence_threshold,
-        terms: vec![
-            BoundTerm {
-                name: "estimation",
-                value: t.estimation,
-            },
-            BoundTerm {
-                name: "undetected",
-                value: t.undetected,
-            },
-            BoundTerm {
-                name: "missed",
-                value: t.missed,
-            },
-            BoundTerm {
-                name: "falseTarget",
-                value: t.false_target,
-            },
-        ],
+        terms: terms(&a.terms),
         error: b.error,
         hpe: a.hpe,
         lpe: a.lpe,
@@ -646,6 +1061,8 @@ fn result(b: &bounds::JdeBound, seed: Option<u64>) -> JdeBoundResult {
             .collect(),
         regular: b.regular,
         seed,
+        components: None,
+        inverse_information_matrix: None,
     }
 }
 

@@ -390,8 +390,13 @@ pub fn vector_bound(m: &VectorModel<'_>, s: &Settings) -> Result<VectorBound> {
         let h = sensor.gain.row(0).transpose();
         let ph = p * &h;
         let var_s = h.dot(&ph);
-        let trace = p.trace();
-        (var_s > 1e-12 * trace * h.dot(&h)).then_some((h, ph, var_s))
+        // h is "zero" when hᵀPh is negligible against tr P |h|² (compared with h scaled to
+        // max |h_i| = 1, so that neither side underflows), or when σ_s² itself is not a normal
+        // number (a subnormal prior variance makes the scalar quadratures crawl: seconds).
+        let big = h.amax();
+        let hu = if big > 0.0 { &h / big } else { h.clone() };
+        let relative = hu.dot(&(p * &hu)) > 1e-12 * p.trace() * hu.dot(&hu);
+        (relative && var_s.is_normal()).then_some((h, ph, var_s))
     } else {
         None
     };
@@ -517,11 +522,28 @@ pub fn vector_bound(m: &VectorModel<'_>, s: &Settings) -> Result<VectorBound> {
         error,
         regular: true,
     })?;
-    Ok(VectorBound {
+    check_vector(VectorBound {
         total,
         components,
         inverse_information: row_major(&big_s),
     })
+}
+
+/// [`check_result`] for the components and the matrix too: a NaN anywhere is an error.
+fn check_vector(v: VectorBound) -> Result<VectorBound> {
+    let nan = v.components.iter().any(|c| {
+        let a = &c.assembled;
+        [a.bound, a.hpe, a.lpe, c.error, c.inverse_information]
+            .iter()
+            .any(|x| x.is_nan())
+    }) || v.inverse_information.iter().any(|x| x.is_nan());
+    if nan {
+        return Err(Error::Unsupported {
+            what: "prior".into(),
+            reason: "the integrals did not converge at this scale (NaN); rescale the problem",
+        });
+    }
+    Ok(v)
 }
 
 fn row_major(a: &DMatrix<f64>) -> Vec<f64> {
@@ -703,7 +725,7 @@ fn closed_form(m: &VectorModel<'_>) -> Result<VectorBound> {
         error: 0.0,
         regular: true,
     })?;
-    Ok(VectorBound {
+    check_vector(VectorBound {
         total,
         components,
         inverse_information: row_major(&inv),
@@ -994,6 +1016,31 @@ mod tests {
                 assert!((v.inverse_information[3 * i + j] - inv[(i, j)]).abs() < 1e-9);
             }
         }
+    }
+
+    #[test]
+    fn a_negligible_gain_is_no_gain() {
+        // σ_s² = hᵀPh underflows to a subnormal: without false observations the closed form
+        // (h = 0, the prior), with clutter an error naming the gain, both at once.
+        let prior = GaussianPrior::new(&[0.0, 0.0], &[6e-208, 0.0, 0.0, 1.5e-223]).unwrap();
+        let sensor =
+            LinearGaussianSensor::new(0.5, &[-6.4e-59, -6e-107], 2, &[0.0], &[1e150]).unwrap();
+        let psi = Density1::gaussian(0.0, 25.0).unwrap();
+        let m = |lambda| VectorModel {
+            existence: 0.5,
+            prior: &prior,
+            sensor: &sensor,
+            measurement: VectorMeasurement::II {
+                clutter_rate: lambda,
+                clutter_density: &psi,
+            },
+            false_alarm_error: 1.0,
+            miss_error: 1.0,
+        };
+        let v = vector_bound(&m(0.0), &Settings::default()).unwrap();
+        assert_eq!(v.total.cardinalities[0].method, Method::ClosedForm);
+        let e = vector_bound(&m(1e-113), &Settings::default()).unwrap_err();
+        assert_eq!(e.field(), "observation.gain");
     }
 
     #[test]

@@ -171,3 +171,14 @@ test('fuzz #9: a particle prediction that overflows f64 is an error naming confi
     pf.free();
   }
 });
+
+test('fuzz #10: jdeBound with a negligible gain (hᵀPh subnormal) returns promptly: no gain, not seconds of quadrature', () => {
+  // vector_bound treats h as zero when σ_s² = hᵀPh is not a normal number (it took 11 s).
+  const cx = { model: 'II', existence: 0, prior: { multivariateGaussian: { mean: [0, 0], cov: [[5.978381385528621e-208, 3.8677176674982933e-280], [3.8677176674982933e-280, 1.4682132801569165e-223]] } }, observation: { detectionProbability: 6.6620561364315225e-68, gain: [[-6.433072886419347e-59, -5.972398038515846e-107]], offset: [6.028765786271736e-221], noiseCov: [[1.0009999999999998e+150]] }, falseAlarmError: 1.10051691993192e-191, missError: 6.4e-323, dims: 2, clutter: { rate: 2.4757454418458292e-113, density: { gaussian: { mean: 0, variance: 25 } } }, samples: 200, seed: 1, quadratureCardinality: 1 };
+  const t = performance.now();
+  assert.throws(() => fisst.jdeBound(cx), (e) => e instanceof RangeError && e.message.startsWith('options.observation.gain'));
+  const out = fisst.jdeBound({ ...cx, clutter: undefined, samples: undefined, seed: undefined });
+  noNaN(out);
+  assert.equal(out.cardinalities[0].method, 'closed-form');
+  assert.ok(performance.now() - t < 1000, `${performance.now() - t} ms`);
+});

@@ -170,6 +170,78 @@ const multiObjectDensity = (n) =>
 const axis = fc.tuple(fc.double({ min: -5, max: 0, noNaN: true }), fc.double({ min: 0, max: 5, noNaN: true }), fc.integer({ min: 1, max: 12 }));
 const grid = fc.record({ x: axis, y: axis });
 
+// ------------------------------------------------------------------ jdeBound (paper 002)
+/** jdeBound with a 1D prior (Theorems 1 and 2). */
+const jdeScalar = fc
+  .tuple(
+    fc.constantFrom('I', 'II'),
+    probability,
+    fc.oneof(
+      fc.record({ gaussian: fc.record({ mean: fc.double({ min: -5, max: 5, noNaN: true }), variance: fc.double({ min: 0.01, max: 25, noNaN: true }) }) }),
+      fc.record({ uniform: fc.constantFrom({ low: -2, high: 2 }, { low: 0, high: 1 }) }),
+      fc.record({ mixture: fc.array(fc.record({ weight: fc.double({ min: 0.1, max: 1, noNaN: true }), mean: fc.double({ min: -5, max: 5, noNaN: true }), variance: fc.double({ min: 0.1, max: 4, noNaN: true }) }), { minLength: 1, maxLength: 3 }) }),
+      fc.constant({ table: { x: [-2, 0, 2], density: [0, 1, 0] } }),
+    ),
+    fc.oneof(probability, fc.constant({ table: { x: [-3, 3], probability: [0.3, 0.9] } })),
+    fc.double({ min: 0.01, max: 10, noNaN: true }),
+    probability,
+    fc.double({ min: 0, max: 2, noNaN: true }),
+    fc.double({ min: 0, max: 100, noNaN: true }),
+    fc.double({ min: 0, max: 100, noNaN: true }),
+  )
+  .map(([model, r, prior, det, noise, q, rate, e0, e1]) => [
+    {
+      model,
+      existence: r,
+      prior,
+      observation: { detectionProbability: det, noiseVariance: noise },
+      ...(model === 'I' ? { falseAlarm: { probability: q, density: { uniform: { low: -10, high: 10 } } } } : { clutter: { rate, density: { uniform: { low: -10, high: 10 } } }, samples: 200, seed: 1 }),
+      falseAlarmError: e0,
+      missError: e1,
+    },
+  ]);
+
+/** jdeBound with a multivariateGaussian prior in R^l (Section V): gain rows H (one row when
+ * there are false observations, 1 to 3 otherwise), noiseCov or noiseVariance, dims sometimes. */
+const jdeVector = fc
+  .tuple(fc.constantFrom('I', 'II'), fc.integer({ min: 1, max: 3 }), fc.integer({ min: 1, max: 3 }), fc.boolean())
+  .chain(([model, l, rows, clutterFree]) => {
+    const m = clutterFree ? rows : 1;
+    return fc.tuple(
+      fc.constant(model),
+      probability,
+      fc.array(fc.double({ min: -5, max: 5, noNaN: true }), { minLength: l, maxLength: l }),
+      covRows(l),
+      fc.array(fc.array(fc.double({ min: -3, max: 3, noNaN: true }), { minLength: l, maxLength: l }), { minLength: m, maxLength: m }),
+      covRows(m),
+      fc.option(fc.array(fc.double({ min: -2, max: 2, noNaN: true }), { minLength: m, maxLength: m }), { nil: undefined }),
+      probability,
+      fc.constant(clutterFree),
+      probability,
+      fc.double({ min: 0, max: 2, noNaN: true }),
+      fc.double({ min: 0, max: 100, noNaN: true }),
+      fc.double({ min: 0, max: 100, noNaN: true }),
+      fc.constantFrom(undefined, l, 'noiseVariance'),
+    );
+  })
+  .map(([model, r, mean, cov, gain, noiseCov, offset, det, clutterFree, q, rate, e0, e1, extra]) => {
+    const noise = extra === 'noiseVariance' && gain.length === 1 ? { noiseVariance: noiseCov[0][0] } : { noiseCov };
+    const options = {
+      model,
+      existence: r,
+      prior: { multivariateGaussian: { mean, cov } },
+      observation: { detectionProbability: det, gain, ...(offset ? { offset } : {}), ...noise },
+      falseAlarmError: e0,
+      missError: e1,
+      ...(typeof extra === 'number' ? { dims: extra } : {}),
+    };
+    if (!clutterFree) {
+      if (model === 'I') options.falseAlarm = { probability: q, density: { uniform: { low: -10, high: 10 } } };
+      else Object.assign(options, { clutter: { rate, density: { gaussian: { mean: 0, variance: 25 } } }, samples: 200, seed: 1, quadratureCardinality: 1 });
+    }
+    return [options];
+  });
+
 // ------------------------------------------------------------------ the specs
 /**
  * Each spec: `name` (the export), `roots` (its argument names, which begin every error
@@ -432,34 +504,7 @@ export const specs = [
     roots: ['options'],
     weight: 0.3,
     maxMs: 2000,
-    args: fc
-      .tuple(
-        fc.constantFrom('I', 'II'),
-        probability,
-        fc.oneof(
-          fc.record({ gaussian: fc.record({ mean: fc.double({ min: -5, max: 5, noNaN: true }), variance: fc.double({ min: 0.01, max: 25, noNaN: true }) }) }),
-          fc.record({ uniform: fc.constantFrom({ low: -2, high: 2 }, { low: 0, high: 1 }) }),
-          fc.record({ mixture: fc.array(fc.record({ weight: fc.double({ min: 0.1, max: 1, noNaN: true }), mean: fc.double({ min: -5, max: 5, noNaN: true }), variance: fc.double({ min: 0.1, max: 4, noNaN: true }) }), { minLength: 1, maxLength: 3 }) }),
-          fc.constant({ table: { x: [-2, 0, 2], density: [0, 1, 0] } }),
-        ),
-        fc.oneof(probability, fc.constant({ table: { x: [-3, 3], probability: [0.3, 0.9] } })),
-        fc.double({ min: 0.01, max: 10, noNaN: true }),
-        probability,
-        fc.double({ min: 0, max: 2, noNaN: true }),
-        fc.double({ min: 0, max: 100, noNaN: true }),
-        fc.double({ min: 0, max: 100, noNaN: true }),
-      )
-      .map(([model, r, prior, det, noise, q, rate, e0, e1]) => [
-        {
-          model,
-          existence: r,
-          prior,
-          observation: { detectionProbability: det, noiseVariance: noise },
-          ...(model === 'I' ? { falseAlarm: { probability: q, density: { uniform: { low: -10, high: 10 } } } } : { clutter: { rate, density: { uniform: { low: -10, high: 10 } } }, samples: 200, seed: 1 }),
-          falseAlarmError: e0,
-          missError: e1,
-        },
-      ]),
+    args: fc.oneof({ weight: 3, arbitrary: jdeScalar }, { weight: 2, arbitrary: jdeVector }),
   },
   {
     name: 'jdeExample2',
@@ -606,7 +651,7 @@ export const pastCaps = {
   SensorControlRun: [['0.particles', 20001], ['0.steps', 1001], ['0.maxObjects', 9]],
   compareSchemes: [['0.runs', 1001], ['0.steps', 1001]],
   jdeSequentialBound: [['0.steps', 5001]],
-  jdeBound: [['0.samples', 1e6 + 1], ['0.dims', 2]],
+  jdeBound: [['0.samples', 1e6 + 1], ['0.dims', 2], ['0.dims', 65], ['0.quadratureCardinality', 3], ['0.observation.gain', Array.from({ length: 65 }, () => [1])]],
   gmBernoulliUpdate: [['0.positionDims', 9], ['0.splitting.maxComponents', 50001], ['0.splitting.maxDepth', 65], ['0.splitting.components', 17], ['0.splitting.gridPoints', 20001], ['0.reduction.maxComponents', 1e6 + 1], ['0.reports', Array.from({ length: 1001 }, () => ({ disc: { center: [0, 0], radius: 1 } }))], ['0.measurements', Array.from({ length: 10001 }, () => [0, 0])]],
   GmBernoulliFilter: [['0.positionDims', 9], ['0.splitting.maxDepth', 65], ['0.transition.F', Array.from({ length: 65 }, () => Array(65).fill(0))], ['1', Array.from({ length: 1001 }, () => ({ disc: { center: [0, 0], radius: 1 } }))]],
   ParticleBernoulliFilter: [['0.particles', 200001], ['0.mcmcMoves', 11], ['0.birthParticles', 200001], ['0.seed', 2 ** 53]],

@@ -61,7 +61,7 @@ function checkSeq(s) {
 test('bounds: the figures are the package values, the sliders move them, and the Monte Carlo attains the Gaussian bounds', async () => {
   const page = await browser.open('bounds.html');
   let s = await settled(page);
-  assert.deepEqual(s.settings, { vf: 100, vh: 25, e0: 150, e1: 200, po: 0.5, steps: 20, r2: 0.6, e02: 1.2 });
+  assert.deepEqual(s.settings, { vf: 100, vh: 25, e0: 150, e1: 200, po: 0.5, steps: 20, r2: 0.6, e02: 1.2, q: 0.5, lambda: 1 });
   // The paper's Fig. 2 left at P̄o = 0.5: σh² = 25, r* = 0.75, bound 62.5 at r = 1.
   assert.equal(s.system.posteriorVariance, 25);
   assert.equal(await text(page, '#rstar'), '0.75');
@@ -130,10 +130,47 @@ test('bounds: Fig. 2 right is jdeExample2, and the Monte Carlo falls below it wh
   await browser.done(page, 'bounds-right');
 });
 
+/** Theorems 1 and 2 over r: the page's curves are jdeBound in Node; the Monte Carlo attains
+ * model I within 4 SE and never falls 4 SE below model II. */
+function checkThm(s) {
+  const { q, lambda } = s.settings;
+  assert.equal(s.thm.q, q);
+  assert.equal(s.thm.lambda, lambda);
+  const { prior, observation, falseAlarmError, missError } = s.thm.system;
+  const base = { prior: { gaussian: prior }, observation, falseAlarmError, missError };
+  assert.equal(s.thm.points.length, 21);
+  for (const [i, p] of s.thm.points.entries()) {
+    const one = fisst.jdeBound({ ...base, model: 'I', existence: p.r, falseAlarm: { probability: q, density: { gaussian: { mean: 1, variance: 25 } } } });
+    const two = fisst.jdeBound({ ...base, model: 'II', existence: p.r, clutter: { rate: lambda, density: { gaussian: { mean: 0, variance: 25 } } }, samples: 2000, seed: 4 + i });
+    assert.equal(p.model1.bound, one.bound, `model I r = ${p.r}`);
+    assert.equal(p.model2.bound, two.bound, `model II r = ${p.r}`);
+    const z1 = p.mc1.se > 0 ? (p.mc1.mse - one.bound) / Math.hypot(p.mc1.se, one.error) : 0;
+    const z2 = p.mc2.se > 0 ? (p.mc2.mse - two.bound) / Math.hypot(p.mc2.se, two.error) : 0;
+    assert.ok(Math.abs(z1) < 4, `model I r = ${p.r}: ${p.mc1.mse} ± ${p.mc1.se} vs ${one.bound}`);
+    assert.ok(z2 > -4, `model II r = ${p.r}: ${p.mc2.mse} ± ${p.mc2.se} below ${two.bound}`);
+  }
+  return [s.thm.worstZ1, s.thm.lowestZ2];
+}
+
+test('bounds: Theorems 1 and 2 against r are jdeBound, attained by the Monte Carlo for model I and never undercut for model II', async () => {
+  const page = await browser.open('bounds.html');
+  let s = await settled(page);
+  const seen = [checkThm(s)];
+  await page.locator('#thm-q').fill('0.9');
+  s = await settled(page);
+  seen.push(checkThm(s));
+  await page.locator('#thm-lambda').fill('2.5');
+  s = await settled(page);
+  assert.equal(s.settings.lambda, 2.5);
+  seen.push(checkThm(s));
+  console.log(`Theorems 1–2 on the page: model I worst |z| ${fmt(Math.max(...seen.map((v) => v[0])), 3)}, model II lowest z ${fmt(Math.min(...seen.map((v) => v[1])), 3)} over ${seen.length} settings`);
+  await browser.done(page, 'bounds-theorems');
+});
+
 test('bounds: the settings are in the URL, and a malformed value falls back to the default', async () => {
   const page = await browser.open('bounds.html?vf=150&vh=30&e0=100&e1=250&po=0.3&steps=12&r2=0.8&e02=0.5');
   const s = await settled(page);
-  assert.deepEqual(s.settings, { vf: 150, vh: 30, e0: 100, e1: 250, po: 0.3, steps: 12, r2: 0.8, e02: 0.5 });
+  assert.deepEqual(s.settings, { vf: 150, vh: 30, e0: 100, e1: 250, po: 0.3, steps: 12, r2: 0.8, e02: 0.5, q: 0.5, lambda: 1 });
   checkLeft(s);
   checkSeq(s);
   await page.locator('#po').fill('0.65');
@@ -151,7 +188,7 @@ test('bounds: the settings are in the URL, and a malformed value falls back to t
 test('bounds: download buttons give the figures as PNG and CSV; redraw times', async () => {
   const page = await browser.open('bounds.html');
   await settled(page);
-  await checkDownloads(page, [['#left-figure', 202], ['#seq-figure', 21], ['#right-figure', 22]], 'bounds');
+  await checkDownloads(page, [['#left-figure', 202], ['#seq-figure', 21], ['#right-figure', 22], ['#thm-figure', 22]], 'bounds');
   for (const v of ['0.2', '0.4', '0.6', '0.8', '1']) await page.locator('#po').fill(v);
   for (const v of ['0.2', '0.5', '0.9']) await page.locator('#r2').fill(v);
   await settled(page);

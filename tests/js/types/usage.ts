@@ -155,6 +155,27 @@ const phase: 'HPE' | 'LPE' = jb.phase;
 const termNames: string[] = jb.terms.map((t) => t.name);
 const jb2: fisst.JdeBoundResult = fisst.jdeBound({ model: 'II', existence: 0.6, prior: tablePrior, observation: { detectionProbability: 0.9, noiseVariance: 0.5 }, clutter: { rate: 1, density: { mixture: [{ weight: 1, mean: 0, variance: 25 }] } }, falseAlarmError: 6, missError: 9, samples: 500, seed: 1 });
 const perN: number[] = jb2.cardinalities.map((c) => c.inverseInformation);
+// a state in R^2: a multivariateGaussian prior, gain rows H and noiseCov; per-coordinate bounds
+const jbv: fisst.JdeBoundResult = fisst.jdeBound({
+  model: 'I',
+  existence: 0.6,
+  prior: { multivariateGaussian: { mean: [0.5, -1], cov: [[4, 1.2], [1.2, 2]] } },
+  observation: { detectionProbability: 0.8, gain: [[1, 0.5]], offset: [0.2], noiseCov: [[1]] },
+  falseAlarm: { probability: 0.3, density: { gaussian: { mean: 1, variance: 25 } } },
+  falseAlarmError: 6,
+  missError: 8,
+  dims: 2,
+});
+const perCoordinate: number[] = (jbv.components ?? []).map((c: fisst.JdeComponentBound) => c.bound);
+const coordinatePhases: ('HPE' | 'LPE')[] = (jbv.components ?? []).map((c) => c.phase);
+const posteriorCov: number[][] | undefined = jbv.inverseInformationMatrix;
+const vectorPrior: fisst.PriorShape = { multivariateGaussian: { mean: new Float64Array([0, 0]), cov: [1, 0, 0, 1] } };
+const twoRows: fisst.ObservationShape = { detectionProbability: 0.9, gain: [[1, 0], [0, 1]], noiseCov: [[1, 0], [0, 1]] };
+const jbq: fisst.JdeBoundResult = fisst.jdeBound({ model: 'II', existence: 0.6, prior: vectorPrior, observation: twoRows, falseAlarmError: 6, missError: 9, quadratureCardinality: 2 });
+// @ts-expect-error: quadratureCardinality is 1 or 2
+fisst.jdeBound({ model: 'II', existence: 0.6, prior: vectorPrior, observation: twoRows, falseAlarmError: 6, missError: 9, quadratureCardinality: 3 });
+// @ts-expect-error: a multivariateGaussian is a prior, not a false-alarm density
+fisst.jdeBound({ model: 'I', existence: 0.6, prior: vectorPrior, observation: twoRows, falseAlarm: { probability: 0.1, density: vectorPrior }, falseAlarmError: 6, missError: 9 });
 // @ts-expect-error: a misspelt option ('existance') is not in JdeBoundNoClutterOptions
 fisst.jdeBoundNoClutter({ existance: 0.7, detectionProbability: 0.4, priorVariance: 100, posteriorVariance: 25, falseAlarmError: 150, missError: 200 });
 const ex2: fisst.JdeExample2Result = fisst.jdeExample2({ existence: 0.6, detectionProbability: 0.5, falseAlarmProbability: 0.3, falseAlarmError: 1.2 });

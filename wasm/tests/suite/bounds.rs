@@ -240,3 +240,132 @@ fn example_2_and_its_regularity_failure() {
         "options.falseAlarmProbability",
     );
 }
+
+fn native_vector(q: f64) -> fisst::bounds::VectorBound {
+    use fisst::bounds::*;
+    let prior = GaussianPrior::new(&[0.5, -1.0], &[4.0, 1.2, 1.2, 2.0]).unwrap();
+    let sensor = LinearGaussianSensor::new(0.8, &[1.0, 0.5], 2, &[0.2], &[1.0]).unwrap();
+    let psi = Density1::uniform(-10.0, 10.0).unwrap();
+    vector_bound(
+        &VectorModel {
+            existence: 0.6,
+            prior: &prior,
+            sensor: &sensor,
+            measurement: VectorMeasurement::I {
+                false_alarm_probability: q,
+                false_alarm_density: &psi,
+            },
+            false_alarm_error: 6.0,
+            miss_error: 9.0,
+        },
+        &Settings::default(),
+    )
+    .unwrap()
+}
+
+#[wasm_bindgen_test]
+fn jde_bound_vector_state_matches_the_core() {
+    let r = jde_bound(js(
+        r#"{"model":"I","existence":0.6,"prior":{"multivariateGaussian":{"mean":[0.5,-1],"cov":[[4,1.2],[1.2,2]]}},
+            "observation":{"detectionProbability":0.8,"gain":[[1,0.5]],"offset":[0.2],"noiseCov":[[1]]},
+            "falseAlarm":{"probability":0.3,"density":{"uniform":{"low":-10,"high":10}}},
+            "falseAlarmError":6,"missError":9,"dims":2}"#,
+    ))
+    .unwrap();
+    let v = native_vector(0.3);
+    assert_eq!(num(&r, "bound"), v.total.assembled.bound);
+    assert_eq!(num(&r, "undetectedVariance"), 6.0);
+    let comps = js_sys::Array::from(&get(&r, "components"));
+    assert_eq!(comps.length(), 2);
+    for (i, c) in v.components.iter().enumerate() {
+        let got = comps.get(i as u32);
+        assert_eq!(num(&got, "bound"), c.assembled.bound);
+        assert_eq!(num(&got, "hpe"), c.assembled.hpe);
+        assert_eq!(num(&got, "lpe"), c.assembled.lpe);
+        assert_eq!(num(&got, "inverseInformation"), c.inverse_information);
+        assert_eq!(num(&got, "error"), c.error);
+        let terms = js_sys::Array::from(&get(&got, "terms"));
+        let sum: f64 = terms.iter().map(|t| num(&t, "value")).sum();
+        assert!((sum - c.assembled.bound).abs() < 1e-12);
+    }
+    let rows = js_sys::Array::from(&get(&r, "inverseInformationMatrix"));
+    assert_eq!(rows.length(), 2);
+    for i in 0..2 {
+        assert_eq!(
+            nums(&rows.get(i as u32)),
+            v.inverse_information[2 * i..2 * i + 2]
+        );
+    }
+    // A 1D prior has neither field.
+    let s = jde_bound(js(
+        r#"{"model":"I","existence":0.6,"prior":{"gaussian":{"mean":1,"variance":4}},
+            "observation":{"detectionProbability":0.8,"noiseVariance":1},"falseAlarmError":6,"missError":9}"#,
+    ))
+    .unwrap();
+    assert!(get(&s, "components").is_undefined());
+    assert!(get(&s, "inverseInformationMatrix").is_undefined());
+}
+
+#[wasm_bindgen_test]
+fn jde_bound_vector_errors_name_the_field() {
+    let base = |prior: &str, obs: &str, extra: &str| {
+        js(&format!(
+            r#"{{"model":"II","existence":0.6,"prior":{{"multivariateGaussian":{prior}}},
+                "observation":{obs},"falseAlarmError":6,"missError":9{extra}}}"#
+        ))
+    };
+    let good_prior = r#"{"mean":[0,0],"cov":[[1,0],[0,1]]}"#;
+    let two = r#"{"detectionProbability":0.8,"gain":[[1,0],[0,1]],"noiseCov":[[1,0],[0,1]]}"#;
+    assert!(jde_bound(base(good_prior, two, "")).is_ok());
+    assert_throws(
+        jde_bound(base(good_prior, two, r#","dims":3"#)),
+        "RangeError",
+        "options.dims",
+    );
+    assert_throws(
+        jde_bound(base(
+            good_prior,
+            two,
+            r#","clutter":{"rate":1,"density":{"uniform":{"low":0,"high":1}}}"#,
+        )),
+        "RangeError",
+        "options.observation.gain",
+    );
+    assert_throws(
+        jde_bound(base(r#"{"mean":[0,0],"cov":[[1,2],[2,1]]}"#, two, "")),
+        "RangeError",
+        "options.prior.multivariateGaussian.cov",
+    );
+    assert_throws(
+        jde_bound(base(
+            good_prior,
+            r#"{"detectionProbability":0.8,"gain":[[1,0,0]],"noiseVariance":1}"#,
+            "",
+        )),
+        "RangeError",
+        "options.observation.gain[0]",
+    );
+    assert_throws(
+        jde_bound(base(
+            good_prior,
+            r#"{"detectionProbability":0.8,"gain":[[1,0],[0,1]],"noiseVariance":1}"#,
+            "",
+        )),
+        "TypeError",
+        "options.observation.noiseVariance",
+    );
+    assert_throws(
+        jde_bound(base(
+            good_prior,
+            r#"{"detectionProbability":0.8,"gain":[[1,0],[0,1]],"noiseCov":[[1,0],[0,-1]]}"#,
+            "",
+        )),
+        "RangeError",
+        "options.observation.noiseCov",
+    );
+    assert_throws(
+        jde_bound(base(good_prior, two, r#","quadratureCardinality":3"#)),
+        "RangeError",
+        "options.quadratureCardinality",
+    );
+}
