@@ -184,7 +184,7 @@ pub fn jde_sequential_bound(
 pub struct GaussianShape {
     /// The mean (finite).
     pub mean: f64,
-    /// The variance (> 0).
+    /// The variance (> 0, a normal float: at least 2.2250738585072014e-308).
     pub variance: f64,
 }
 

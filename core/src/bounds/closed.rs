@@ -149,6 +149,21 @@ pub(crate) fn check_positive(what: &str, value: f64) -> Result<f64> {
     }
 }
 
+/// A variance that the quadrature of a density uses: finite and at least `f64::MIN_POSITIVE`
+/// (≈ 2.2e-308). A subnormal variance is rejected: its density's width is below every float
+/// spacing near the mean, and the adaptive quadrature would subdivide for seconds to find it.
+pub(crate) fn check_variance(what: &str, value: f64) -> Result<f64> {
+    if value.is_finite() && value >= f64::MIN_POSITIVE {
+        Ok(value)
+    } else {
+        Err(Error::parameter(
+            what,
+            value,
+            "finite and >= 2.2250738585072014e-308 (a normal float)",
+        ))
+    }
+}
+
 pub(crate) fn check_nonnegative(what: &str, value: f64) -> Result<f64> {
     if value.is_finite() && value >= 0.0 {
         Ok(value)

@@ -182,3 +182,31 @@ test('fuzz #10: jdeBound with a negligible gain (hᵀPh subnormal) returns promp
   assert.equal(out.cardinalities[0].method, 'closed-form');
   assert.ok(performance.now() - t < 1000, `${performance.now() - t} ms`);
 });
+
+test('fuzz #11: jdeBound with a subnormal prior variance is a RangeError naming it, not 37 s of quadrature', () => {
+  // Found by the helper that wrote the vector bounds: variance 5e-324, model II, λ = 0.5 took
+  // 37 s. Density variances must now be normal floats (≥ 2.2e-308).
+  const base = {
+    model: 'II', existence: 0.5, observation: { detectionProbability: 0.9, gain: 1, noiseVariance: 1 },
+    clutter: { rate: 0.5, density: { gaussian: { mean: 0, variance: 25 } } }, falseAlarmError: 1, missError: 1, samples: 200, seed: 1,
+  };
+  const t = performance.now();
+  for (const variance of [5e-324, 1e-310]) {
+    assert.throws(
+      () => fisst.jdeBound({ ...base, prior: { gaussian: { mean: 0, variance } } }),
+      (e) => e instanceof RangeError && e.message.startsWith('options.prior.gaussian.variance'),
+    );
+  }
+  assert.throws(
+    () => fisst.jdeBound({ ...base, prior: { gaussian: { mean: 0, variance: 1 } }, observation: { ...base.observation, noiseVariance: 5e-324 } }),
+    (e) => e instanceof RangeError && e.message.startsWith('options.observation.noiseVariance'),
+  );
+  assert.ok(performance.now() - t < 1000, `${performance.now() - t} ms`);
+  // A tiny normal variance is computed, or refused by name where the integrals cannot resolve
+  // that scale: never NaN.
+  noNaN(fisst.jdeBound({ ...base, prior: { gaussian: { mean: 0, variance: 1e-6 } } }));
+  assert.throws(
+    () => fisst.jdeBound({ ...base, prior: { gaussian: { mean: 0, variance: 1e-300 } } }),
+    (e) => e instanceof RangeError && e.message.startsWith('options.prior'),
+  );
+});
