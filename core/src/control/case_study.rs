@@ -416,11 +416,11 @@ fn rewards<R: Rng + ?Sized>(
             Scheme::Renyi => renyi_reward(cfg, model, particles, u, scans, ws),
         }
     };
-    let scans = if cfg.scheme == Scheme::Renyi {
-        FutureScans::draw(particles, cfg.future_scans, cfg.max_objects, rng)
-    } else {
-        FutureScans::default()
-    };
+    if cfg.scheme == Scheme::Renyi {
+        let scans = FutureScans::draw(particles, cfg.future_scans, cfg.max_objects, rng);
+        return renyi_rewards(cfg, model, particles, actions, &scans);
+    }
+    let scans = FutureScans::default();
     #[cfg(feature = "parallel")]
     {
         use rayon::prelude::*;
@@ -437,6 +437,80 @@ fn rewards<R: Rng + ?Sized>(
             .map(|a| per_action(a, &scans, &mut ws))
             .collect()
     }
+}
+
+/// Future scans per task of [`renyi_rewards`]: an action's M scans are split into chunks of
+/// this many, so that the tasks balance over the threads (17 actions, of which often about
+/// 11 inside the area, over 2 threads leave one idle for a twelfth of the step).
+const SCANS_PER_TASK: usize = 50;
+
+/// The Rényi rewards (17) of every action ([`renyi_reward`], −∞ outside the area), evaluated
+/// as tasks of one action and [`SCANS_PER_TASK`] scans (in parallel with `parallel`), whose
+/// divergences are then summed per action in the order of the scans: the same bits as one
+/// [`renyi_reward`] per action, whatever the split.
+fn renyi_rewards(
+    cfg: &ControlConfig,
+    model: &MultiObjectLikelihood,
+    particles: &MultiObjectParticles,
+    actions: &[Action],
+    scans: &FutureScans,
+) -> Vec<f64> {
+    let setup = |a: &Action| {
+        a.inside
+            .then(|| RenyiSetup::new(cfg, model, particles, a.position))
+    };
+    #[cfg(feature = "parallel")]
+    let setups: Vec<Option<RenyiSetup>> = {
+        use rayon::prelude::*;
+        actions.par_iter().map(setup).collect()
+    };
+    #[cfg(not(feature = "parallel"))]
+    let setups: Vec<Option<RenyiSetup>> = actions.iter().map(setup).collect();
+    let m = scans.picks.len();
+    // (action, its setup, a chunk of scans), actions ascending and chunks in scan order.
+    type Task<'a> = (usize, &'a RenyiSetup, core::ops::Range<usize>);
+    let tasks: Vec<Task> = setups
+        .iter()
+        .enumerate()
+        .filter_map(|(k, s)| s.as_ref().map(|s| (k, s)))
+        .flat_map(|(k, s)| {
+            (0..m)
+                .step_by(SCANS_PER_TASK)
+                .map(move |lo| (k, s, lo..(lo + SCANS_PER_TASK).min(m)))
+        })
+        .collect();
+    let task = |ws: &mut LikelihoodWorkspace, (_, setup, range): &Task| {
+        renyi_divergences(cfg, model, particles, setup, scans, range.clone(), ws)
+    };
+    #[cfg(feature = "parallel")]
+    let done: Vec<Vec<Option<f64>>> = {
+        use rayon::prelude::*;
+        tasks
+            .par_iter()
+            .map_init(LikelihoodWorkspace::new, task)
+            .collect()
+    };
+    #[cfg(not(feature = "parallel"))]
+    let done: Vec<Vec<Option<f64>>> = {
+        let mut ws = LikelihoodWorkspace::new();
+        tasks.iter().map(|t| task(&mut ws, t)).collect()
+    };
+    actions
+        .iter()
+        .enumerate()
+        .map(|(k, a)| {
+            if !a.inside {
+                return f64::NEG_INFINITY;
+            }
+            mean_divergence(
+                tasks
+                    .iter()
+                    .zip(&done)
+                    .filter(|((t, _, _), _)| *t == k)
+                    .map(|(_, d)| d.as_slice()),
+            )
+        })
+        .collect()
 }
 
 /// The ideal future scans (Sec. 5.2: p_D = 1, no clutter), drawn once per step and shared
@@ -499,42 +573,55 @@ fn renyi_reward(
     scans: &FutureScans,
     ws: &mut LikelihoodWorkspace,
 ) -> f64 {
-    let sensor = cfg.sensor;
-    // Per object of every particle: the range h, 1/σ and ln of the normal's constant.
-    let mut offsets = Vec::with_capacity(p.len() + 1);
-    let total: usize = p.sets.iter().map(|s| s.len()).sum();
-    let (mut h, mut s, mut c) = (
-        Vec::with_capacity(total),
-        Vec::with_capacity(total),
-        Vec::with_capacity(total),
-    );
-    offsets.push(0);
-    for set in &p.sets {
-        for x in set {
-            let d = libm::hypot(x[0] - u[0], x[1] - u[1]);
-            let sig = sensor.sigma(d);
-            h.push(d);
-            s.push(1.0 / sig);
-            c.push(-ln(sig) - 0.918_938_533_204_672_8);
-        }
-        offsets.push(h.len());
+    let setup = RenyiSetup::new(cfg, model, p, u);
+    let d = renyi_divergences(cfg, model, p, &setup, scans, 0..scans.picks.len(), ws);
+    mean_divergence([d.as_slice()])
+}
+
+/// The plain mean of the divergences of the scans that have one (0 when none has), summed in
+/// the order given: the same sum whether the scans were evaluated in one piece or in chunks.
+fn mean_divergence<'a>(chunks: impl IntoIterator<Item = &'a [Option<f64>]>) -> f64 {
+    let (mut sum, mut count) = (0.0, 0usize);
+    for d in chunks.into_iter().flatten().flatten() {
+        sum += d;
+        count += 1;
     }
-    let ln_pd = ln(model.detection());
+    if count == 0 { 0.0 } else { sum / count as f64 }
+}
+
+/// The divergence (15) of each future scan j in `range` from u, in order (`None`
+/// for a scan the particles cannot explain): the body of [`renyi_reward`], which the
+/// parallel build splits by action and by chunk of scans (see [`renyi_rewards`]).
+fn renyi_divergences(
+    cfg: &ControlConfig,
+    model: &MultiObjectLikelihood,
+    p: &MultiObjectParticles,
+    setup: &RenyiSetup,
+    scans: &FutureScans,
+    range: core::ops::Range<usize>,
+    ws: &mut LikelihoodWorkspace,
+) -> Vec<Option<f64>> {
+    let sensor = cfg.sensor;
+    let mut out = Vec::with_capacity(range.len());
+    let RenyiSetup {
+        offsets,
+        h,
+        s,
+        c,
+        groups,
+        pairs_below_one,
+        ln_w,
+    } = setup;
     let ln_rate = ln(model.clutter_rate());
-    // k = ln of p_D/(σ√(2π)), the largest factor p_D g of an object. The plain-arithmetic
-    // path needs every factor in [0, 1].
-    let pairs_below_one = c.iter().all(|&c| c + ln_pd <= 0.0);
-    let groups = CardinalityGroups::new(p, &offsets, &h, &s, &c, ln_pd);
     let mut batch = GroupScratch::default();
     let mut tables = model.small_tables();
     let ln_miss = ln(1.0 - model.detection());
-    let ln_w: Vec<f64> = p.weights.iter().map(|&w| ln(w)).collect();
     let mut ln_l = vec![0.0; p.len()];
     // e^{λ} g(Z^j | X_i) from the plain path, NaN where it declined.
     let mut lin_l = vec![0.0; p.len()];
     let (mut z, mut ln_c, mut lin_c, mut ln_g) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    let (mut sum, mut count) = (0.0, 0usize);
-    for (j, &pick) in scans.picks.iter().enumerate() {
+    for j in range {
+        let pick = scans.picks[j];
         z.clear();
         for o in offsets[pick]..offsets[pick + 1] {
             let e = scans.noise[j * scans.stride + (o - offsets[pick])];
@@ -544,7 +631,7 @@ fn renyi_reward(
         ln_c.extend(z.iter().map(|&zj| sensor.ln_clutter_density(zj)));
         lin_c.clear();
         lin_c.extend(ln_c.iter().map(|&l| exp(ln_rate + l)));
-        let fast = pairs_below_one && z.len() <= MAX_SCAN && lin_c.iter().all(|&v| v <= 1.0);
+        let fast = *pairs_below_one && z.len() <= MAX_SCAN && lin_c.iter().all(|&v| v <= 1.0);
         let mut all_plain = fast;
         if fast {
             // Pair factors below `negligible_pair_bound` are replaced by 0 (they change each
@@ -592,15 +679,69 @@ fn renyi_reward(
                         ws,
                     );
                 }
-                renyi_divergence(&ln_w, &ln_l, cfg.alpha)
+                renyi_divergence(ln_w, &ln_l, cfg.alpha)
             }
         };
-        if let Some(d) = d {
-            sum += d;
-            count += 1;
+        out.push(d);
+    }
+    out
+}
+
+/// What [`renyi_divergences`] needs of the particles seen from u, computed once per action:
+/// per object of every particle (`offsets[i]..offsets[i + 1]` for particle i) the range h,
+/// 1/σ and c = ln 1/(σ√(2π)), and the [`CardinalityGroups`].
+struct RenyiSetup {
+    offsets: Vec<usize>,
+    h: Vec<f64>,
+    s: Vec<f64>,
+    c: Vec<f64>,
+    groups: CardinalityGroups,
+    /// Whether every pair factor p_D g is at most 1 (k ≤ 0), which the plain path needs.
+    pairs_below_one: bool,
+    /// ln w_i, for the log-space path.
+    ln_w: Vec<f64>,
+}
+
+impl RenyiSetup {
+    fn new(
+        cfg: &ControlConfig,
+        model: &MultiObjectLikelihood,
+        p: &MultiObjectParticles,
+        u: State,
+    ) -> Self {
+        let sensor = cfg.sensor;
+        let mut offsets = Vec::with_capacity(p.len() + 1);
+        let total: usize = p.sets.iter().map(|s| s.len()).sum();
+        let (mut h, mut s, mut c) = (
+            Vec::with_capacity(total),
+            Vec::with_capacity(total),
+            Vec::with_capacity(total),
+        );
+        offsets.push(0);
+        for set in &p.sets {
+            for x in set {
+                let d = libm::hypot(x[0] - u[0], x[1] - u[1]);
+                let sig = sensor.sigma(d);
+                h.push(d);
+                s.push(1.0 / sig);
+                c.push(-ln(sig) - 0.918_938_533_204_672_8);
+            }
+            offsets.push(h.len());
+        }
+        // k = ln of p_D/(σ√(2π)), the largest factor p_D g of an object.
+        let ln_pd = ln(model.detection());
+        let pairs_below_one = c.iter().all(|&c| c + ln_pd <= 0.0);
+        let groups = CardinalityGroups::new(p, &offsets, &h, &s, &c, ln_pd);
+        Self {
+            offsets,
+            h,
+            s,
+            c,
+            groups,
+            pairs_below_one,
+            ln_w: p.weights.iter().map(|&w| ln(w)).collect(),
         }
     }
-    if count == 0 { 0.0 } else { sum / count as f64 }
 }
 
 /// The particles of one cardinality n for [`renyi_reward`]: their indices and their objects'
@@ -1002,6 +1143,47 @@ mod tests {
         assert!(checked > 40, "{checked}");
         // The fast path was taken (its rounding differs somewhere).
         assert!(fast_total > 0);
+    }
+
+    /// The rewards evaluated in tasks of [`SCANS_PER_TASK`] scans (in parallel with
+    /// `parallel`) are the bits of one [`renyi_reward`] per action.
+    #[test]
+    fn chunked_rewards_are_the_whole_ones() {
+        let mut cfg = ControlConfig::paper(Scheme::Renyi, 6);
+        cfg.particles = 200;
+        cfg.future_scans = 2 * SCANS_PER_TASK + 7;
+        let mut run = ControlRun::new(cfg.clone(), 21).unwrap();
+        for _ in 0..3 {
+            run.step().unwrap();
+        }
+        let scans = FutureScans::draw(
+            &run.particles,
+            cfg.future_scans,
+            cfg.max_objects,
+            &mut seeded(4),
+        );
+        let from = *run.sensor_path().last().unwrap();
+        let actions = cfg.actions.actions(from, &cfg.area);
+        let chunked = renyi_rewards(&cfg, &run.model, &run.particles, &actions, &scans);
+        let mut ws = LikelihoodWorkspace::new();
+        let mut inside = 0;
+        for (a, r) in actions.iter().zip(&chunked) {
+            if !a.inside {
+                assert_eq!(*r, f64::NEG_INFINITY);
+                continue;
+            }
+            let whole = renyi_reward(
+                &cfg,
+                &run.model,
+                &run.particles,
+                a.position,
+                &scans,
+                &mut ws,
+            );
+            assert_eq!(r.to_bits(), whole.to_bits(), "action {}", a.index);
+            inside += 1;
+        }
+        assert!(inside >= 3, "{inside}");
     }
 
     #[test]
