@@ -15,6 +15,27 @@
 //! before 168–240 ms (1 thread) / 93–136 ms (2), after 58–80 ms / 33–49 ms. Node
 //! (`node benches/control_node.mjs renyi 9`, one thread): 171 ms before, 128 ms median
 //! (90 ms min) after. The rewards are the same bits as before on the bench's state.
+//!
+//! Second round (issue 14, branch h14-step, on 2caa890 → a4b4420): (20) batched per
+//! cardinality with the objects stored object-major (a branch-free loop for the exponents,
+//! the exps in a loop of their own, one size dispatch per group and scan instead of per
+//! particle), and the rewards evaluated in tasks of one action × 50 scans summed per action
+//! in scan order (2 threads balance over ≈ 11 admissible actions × 4 chunks). The rewards are
+//! the same bits (tests `renyi_reward_matches_the_reference`, `chunked_rewards_are_the_whole_ones`;
+//! `control_step` prints the same 3 × 17 rewards and the seeded actions of steps 6–15 are
+//! unchanged). Instruction counts (as above, 1 thread): 0.622e9 → 0.456e9 Ir per step, of
+//! which ≈ 0.27e9 are the 4.35 M libm `exp` calls of the step's rewards (counted; ≈ 63 Ir
+//! each) that a 2^{−64}-exact
+//! evaluation needs; 2/3 of them have exponents above −10, so a looser cutoff would save
+//! little. Wall clock, measured at 16:00 UTC with the 2 cores shared (load average 5–6),
+//! base and new interleaved, median of steps 6–10 of `control_step 750 200 5`:
+//! 1 thread 74–104 ms → 50–61 ms, 2 threads 50–60 ms → 32–40 ms; criterion
+//! (`control_step/renyi`, same conditions, base and new bench binaries interleaved, three
+//! rounds, estimates) 2 threads 69.2 / 82.7 / 71.7 ms → 56.0 / 67.0 / 53.4 ms, 1 thread
+//! (`RAYON_NUM_THREADS=1`) 94.4 / 111.6 / 96.3 ms → 65.8 / 61.4 / 61.6 ms: under that load
+//! the two threads barely beat one, so the < 50 ms goal could not be checked there. Node (`node
+//! benches/control_node.mjs renyi 5`, one thread, same steps 6–10): median 91–109 ms →
+//! 85–94 ms, i.e. 1.6–1.8× native on one thread and 2.3–2.8× native on two.
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
 use fisst::control::{ControlConfig, ControlRun, Scheme};
 use fisst::smc::{brute_force_ln_likelihood, ln_likelihood};

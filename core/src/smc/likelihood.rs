@@ -544,6 +544,70 @@ impl MultiObjectLikelihood {
         }
     }
 
+    /// [`Self::scaled_likelihood_factors`] for `out.len()` sets of `n` objects at once, the
+    /// pair factors of set q at `factors[(j·n + o)·count + q]` (measurement j, object o,
+    /// count = `out.len()`): `out[q]` is the value, NaN where it declined. The same kernels,
+    /// with the same operations per set, hence the same bits; the loop over the sets is the
+    /// inner one, so the size dispatch is paid once per batch and not once per set.
+    pub(crate) fn scaled_likelihood_batch(
+        &self,
+        n: usize,
+        clutter: &[f64],
+        factors: &[f64],
+        tables: &mut SmallTables,
+        out: &mut [f64],
+    ) {
+        let m = clutter.len();
+        let count = out.len();
+        assert_eq!(factors.len(), n * m * count);
+        if n.min(m) > SMALL_SIDE || n.max(m) > MAX_LARGER {
+            out.fill(f64::NAN);
+            return;
+        }
+        let miss = tables.miss[0];
+        macro_rules! fixed {
+            ($(($a:literal, $b:literal)),*) => {
+                match (n, m) {
+                    $(($a, $b) => {
+                        for (q, t) in out.iter_mut().enumerate() {
+                            let v = sum_fixed::<$a, $b>(miss, clutter, &|o, j| {
+                                factors[(j * $a + o) * count + q]
+                            });
+                            *t = if v > SMALL_FLOOR { v } else { f64::NAN };
+                        }
+                        return;
+                    })*
+                    _ => {}
+                }
+            };
+        }
+        fixed!(
+            (0, 0),
+            (0, 1),
+            (0, 2),
+            (0, 3),
+            (1, 0),
+            (1, 1),
+            (1, 2),
+            (1, 3),
+            (2, 0),
+            (2, 1),
+            (2, 2),
+            (2, 3),
+            (3, 0),
+            (3, 1),
+            (3, 2),
+            (3, 3)
+        );
+        for (q, t) in out.iter_mut().enumerate() {
+            *t = self
+                .scaled_likelihood_factors(n, clutter, tables, |o, j| {
+                    factors[(j * n + o) * count + q]
+                })
+                .unwrap_or(f64::NAN);
+        }
+    }
+
     /// ln g(Z | X) of (20) from logs: `ln_g[i·m + j]` = ln g(z_j | x_i) for the n objects and
     /// m measurements, `ln_clutter[j]` = ln c(z_j). Entries may be −∞ (zero), never NaN or
     /// +∞ (the caller's invariant; [`ln_likelihood`] checks it). min(n, m) ≤
