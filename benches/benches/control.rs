@@ -32,8 +32,10 @@
 //! 1 thread 74–104 ms → 50–61 ms, 2 threads 50–60 ms → 32–40 ms; criterion
 //! (`control_step/renyi`, same conditions, base and new bench binaries interleaved, three
 //! rounds, estimates) 2 threads 69.2 / 82.7 / 71.7 ms → 56.0 / 67.0 / 53.4 ms, 1 thread
-//! (`RAYON_NUM_THREADS=1`) 94.4 / 111.6 / 96.3 ms → 65.8 / 61.4 / 61.6 ms: under that load
-//! the two threads barely beat one, so the < 50 ms goal could not be checked there. Node (`node
+//! (`RAYON_NUM_THREADS=1`) 94.4 / 111.6 / 96.3 ms → 65.8 / 61.4 / 61.6 ms, and at 16:10
+//! (another build at nice 0 holding both cores) 2 threads 76.6 / 91.6 ms → 59.5 / 56.3 ms,
+//! 1 thread 100.9 / 81.1 ms → 54.0 / 61.2 ms: under that load the two threads do not beat
+//! one, so the < 50 ms goal could not be checked on an idle machine. Node (`node
 //! benches/control_node.mjs renyi 5`, one thread, same steps 6–10): median 91–109 ms →
 //! 85–94 ms, i.e. 1.6–1.8× native on one thread and 2.3–2.8× native on two.
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
