@@ -8,8 +8,7 @@ import { clipTo, cross, dot, ellipsePath, haloText, labelPlacer, richText, richT
 import { cellGrid, colorbar, heatImage } from './lib/colormap.js';
 import { $, choice, downloads, fmt, nextFrame, pageReady, pointText, slider, timings, toCSV, urlState } from './lib/page.js';
 
-// The wasm module compiles (off the main thread) while the charts are built below.
-const wasmReady = init();
+await init();
 
 const [BLUE, RED, GREY, AMBER, GREEN] = ['#0072b2', '#d55e00', '#7b8794', '#e69f00', '#009e73'];
 const COMPONENT_COLOURS = ['#7c3aed', '#cc79a7', '#0e7490', '#4d7c0f'];
@@ -98,7 +97,6 @@ function computeFig3() {
 /** The labels of Fig. 3: Γ at σ = 1, the families at their ends, each kept clear of the others. */
 function fig3Labels({ ctx, x, y, box }) {
   const f = results.fig3;
-  if (!f) return; // the chart exists before its first curves (built while the wasm loads)
   const place = labelPlacer(box);
   ctx.font = '11px system-ui, sans-serif';
   ctx.textBaseline = 'bottom';
@@ -397,11 +395,7 @@ downloads($('view-figure'), {
 });
 
 showCosts();
-// Fig. 3 first, painted before the other two are computed; its chart is built before the wasm
-// is ready.
-const mmol0 = state.preset === 'mmol';
-fig3 = Object.assign(makeFig3(mmol0), { mmol: mmol0 });
-await wasmReady;
+// Fig. 3 first, painted before the other two are computed.
 update('fig3');
 await nextFrame();
 update('fig2', 'view');
