@@ -36,6 +36,9 @@ lint:
 	cargo clippy --locked --workspace --all-targets -- -D warnings
 	cargo clippy --locked -p fisst-wasm --target wasm32-unknown-unknown --all-targets -- -D warnings
 	RUSTDOCFLAGS="-D warnings" cargo doc --locked --workspace --no-deps
+	# benches/ is its own workspace (criterion stays out of the main build); check that every
+	# bench and bin still compiles against the core, in the main target directory.
+	cd benches && CARGO_TARGET_DIR=$(CURDIR)/target cargo check --locked --all-targets
 
 test-native:
 	cargo test --locked
