@@ -165,7 +165,7 @@ mod tests {
     }
 
     #[test]
-    fn matches_enumeration() {
+    fn eq88_matches_enumeration() {
         let mut rng = SmallRng::seed_from_u64(2);
         for m in 0..=12 {
             for _ in 0..5 {
@@ -211,7 +211,7 @@ mod tests {
     }
 
     #[test]
-    fn leave_one_out_matches_recomputation() {
+    fn lemma4_leave_one_out_matches_recomputation() {
         let mut rng = SmallRng::seed_from_u64(8);
         for m in 1..=40 {
             let r: Vec<f64> = (0..m)

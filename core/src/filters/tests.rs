@@ -108,7 +108,7 @@ fn nearly_constant_velocity_in_one_to_three_dimensions() {
 }
 
 #[test]
-fn prediction_matches_its_closed_form() {
+fn eq40_eq49_prediction_matches_its_closed_form() {
     let f = DMatrix::from_row_slice(3, 3, &[1.0, 0.5, 0.0, 0.0, 1.0, 0.2, 0.1, 0.0, 0.9]);
     let q = DMatrix::from_row_slice(3, 3, &[0.3, 0.1, 0.0, 0.1, 0.2, 0.05, 0.0, 0.05, 0.4]);
     let transition = LinearGaussianTransition::new(f.clone(), q.clone()).unwrap();
@@ -268,7 +268,7 @@ fn an_empty_scan_is_a_real_update_in_every_filter() {
 /// the Fig. 5 scenario already in `splitting`: the same split (Algorithm 1 = Algorithm 2 with
 /// one region), the same posterior, and 1 − Δ its non-detection probability.
 #[test]
-fn no_report_reduces_to_the_fig5_negative_information_scenario() {
+fn fig5_no_report_reduces_to_the_negative_information_scenario() {
     let sc = NegativeInformationScenario::fig5().unwrap();
     let steps = sc.run().unwrap();
     let config = UpdateConfig {
@@ -590,7 +590,7 @@ fn exacts(samples: usize, seed: u64) -> Vec<Exact> {
 /// while r (through (54)) stays within 0.02; wide discs (radius 3) keep r within 0.004 and
 /// the covariance within 15 %, misses Δ and r within 0.014.
 #[test]
-fn update_matches_the_exact_update_on_2d_and_4d_states() {
+fn eq53_update_matches_the_exact_update_on_2d_and_4d_states() {
     let exacts = exacts(1_000_000, 11);
     for e in &exacts {
         assert!(e.mean_se.amax() / e.cov[(0, 0)].sqrt() < 0.003);
@@ -677,7 +677,7 @@ fn the_default_library_is_closer_to_the_exact_update() {
 /// `cargo test -p fisst --release -- --ignored ten_million --nocapture`.
 #[test]
 #[ignore]
-fn update_matches_the_exact_update_with_ten_million_draws() {
+fn eq53_update_matches_the_exact_update_with_ten_million_draws() {
     let exacts = exacts(10_000_000, 13);
     for (lname, lib) in [
         ("table I", SplitLibrary::table_i()),
@@ -708,7 +708,7 @@ fn update_matches_the_exact_update_with_ten_million_draws() {
 /// the prior (no prediction, no move), so Δ and r carry Monte Carlo error ~1/√N · O(1)
 /// ≈ 0.005 (tolerance 0.02) and the means ~0.005 σ (tolerance 0.03).
 #[test]
-fn particle_update_matches_the_exact_update() {
+fn eq53_particle_update_matches_the_exact_update() {
     let (prior, fov, reports) = case_4d();
     let exact = exact_update(0.7, &prior, 0.9, &fov, &reports, 0.1, 1_000_000, 14);
     let config = BernoulliFilterConfig {
@@ -754,7 +754,7 @@ fn particle_update_matches_the_exact_update() {
 /// Algorithm 2 makes the split independent of the order of the regions; the update's sum
 /// over reports then agrees to rounding.
 #[test]
-fn the_update_does_not_depend_on_the_order_of_the_reports() {
+fn alg2_the_update_does_not_depend_on_the_order_of_the_reports() {
     let (prior, fov, mut reports) = case_4d();
     reports.push(Region::ball(&[-0.5, -0.5], 1.5, "r2").unwrap());
     let config = UpdateConfig {
@@ -1078,7 +1078,7 @@ fn update_errors_name_the_field() {
 /// The variance-preserving entries shipped as constants are what the optimiser finds, and
 /// they are local minima of J under the constraint.
 #[test]
-fn variance_preserving_constants_are_the_optimiser_output() {
+fn eq13_variance_preserving_constants_are_the_optimiser_output() {
     for r in [3, 4] {
         let lib = SplitLibrary::variance_preserving(r, 0.001).unwrap();
         let (w, m, s) = crate::splitting::variance_preserving_optimise(r, 0.001);
