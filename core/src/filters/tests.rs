@@ -989,7 +989,17 @@ fn clutter_density_function() {
     let a = gm_bernoulli_update_vector(&state, &zs, &lik, &uc).unwrap();
     uc.clutter = Clutter::new(2.0, ClutterDensity::PerReport(vec![0.01, 0.02])).unwrap();
     let b = gm_bernoulli_update_vector(&state, &zs, &lik, &uc).unwrap();
-    assert_eq!(a.existence, b.existence);
+    // The whole update (existence, Δ, every component), not just the existence; and the
+    // clutter densities matter: a constant 0.01 gives another update.
+    assert_eq!(a, b);
+    assert!(
+        a.existence != 0.6 && a.existence.is_finite(),
+        "{}",
+        a.existence
+    );
+    uc.clutter = Clutter::new(2.0, ClutterDensity::Constant(0.01)).unwrap();
+    let c = gm_bernoulli_update_vector(&state, &zs, &lik, &uc).unwrap();
+    assert!(c.existence != a.existence && c.delta != a.delta);
     // Region reports cannot use a function.
     uc.clutter = Clutter::new(
         2.0,

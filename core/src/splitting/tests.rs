@@ -421,8 +421,21 @@ fn alg1_is_alg2_with_one_region() {
     let one = split_for_region(&p, &a, &lib, &opts).unwrap();
     let two = split_for_regions(&p, core::slice::from_ref(&a), &lib, &opts).unwrap();
     assert_eq!(one, two);
-    // Total weight preserved; every weight scaled by library weights only.
+    // The region's boundary was resolved (no cap hit) by splits of R = 4: each adds three
+    // components.
+    assert!(
+        one.splits > 0 && one.depth > 0,
+        "{} {}",
+        one.splits,
+        one.depth
+    );
+    assert_eq!(one.stop, None);
+    assert_eq!(one.mixture.len(), p.len() + 3 * one.splits);
+    // Total weight and mean preserved ((28)–(29) keep both exactly up to rounding).
     assert!((one.mixture.total_weight() - 1.0).abs() < 1e-14);
+    let (_, m0, _) = moments(&p).unwrap();
+    let (_, m1, _) = moments(&one.mixture).unwrap();
+    assert!(max_abs_diff(m0.as_slice(), m1.as_slice()) < 1e-12);
 }
 
 #[test]
