@@ -148,6 +148,7 @@ pub fn leave_one_out_cardinalities(existence: &[f64]) -> Result<Vec<Vec<f64>>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::error::Error;
     use rand::{RngExt, SeedableRng, rngs::SmallRng};
 
     /// ρ by enumerating all 2^M existence patterns.
@@ -242,7 +243,11 @@ mod tests {
     fn rejects_non_probabilities() {
         let e = multi_bernoulli_cardinality(&[0.2, f64::NAN]).unwrap_err();
         assert_eq!(e.field(), "existence[1]");
-        assert!(for_each_leave_one_out(&[1.2], |_, _| {}).is_err());
+        let mut called = false;
+        let e = for_each_leave_one_out(&[1.2], |_, _| called = true).unwrap_err();
+        assert!(matches!(e, Error::InvalidProbability { .. }), "{e}");
+        assert_eq!(e.field(), "existence[0]");
+        assert!(!called, "the callback ran before the input was checked");
         assert_eq!(multi_bernoulli_cardinality(&[]).unwrap(), vec![1.0]);
     }
 }

@@ -267,7 +267,9 @@ fn eq88_eq90_multi_bernoulli_forms_agree() {
             assert!(worst < 1e-13, "M={m}: DFT differs by {worst:e}");
         }
     }
-    assert!(multi_bernoulli_enumerated(&[0.5; 13], &[0.5; 13]).is_err());
+    let e = multi_bernoulli_enumerated(&[0.5; 13], &[0.5; 13]).unwrap_err();
+    assert!(matches!(e, Error::Unsupported { .. }), "{e}");
+    assert_eq!(e.field(), "existence");
     assert_eq!(
         multi_bernoulli(&[0.2, 1.5]).unwrap_err().field(),
         "inside[1]"
