@@ -252,7 +252,7 @@ fn existence_gap(runs: &[Run]) -> (f64, f64, f64) {
 /// lapses grow (1,000 particles: a gap of 0.76; 2,500: 0.88), so both checks use the
 /// paper's 5,000.
 #[test]
-fn airport_gm_and_particle_filters_in_budget() {
+fn fig7_fig8_airport_gm_and_particle_filters_in_budget() {
     let gm_runs = runs(1..25, None);
     check("GM, 24 runs", &summarise(&gm_runs, |r| &r.gm));
     let both = runs(101..105, Some(5000));
@@ -268,7 +268,7 @@ fn airport_gm_and_particle_filters_in_budget() {
 
 #[test]
 #[ignore]
-fn airport_gm_and_particle_filters_100_runs() {
+fn fig7_fig8_airport_gm_and_particle_filters_100_runs() {
     let all = runs(1..101, Some(5000));
     check("GM, 100 runs", &summarise(&all, |r| &r.gm));
     check(
@@ -281,7 +281,7 @@ fn airport_gm_and_particle_filters_100_runs() {
 }
 
 #[test]
-fn airport_scenario_is_seeded_and_respects_the_layout() {
+fn fig6_airport_scenario_is_seeded_and_respects_the_layout() {
     let a = airport_scenario(7, STEPS).unwrap();
     let b = airport_scenario(7, STEPS).unwrap();
     assert_eq!(a.truth, b.truth);

@@ -307,7 +307,7 @@ fn fig10_most_uncertain_is_not_most_populated() {
 }
 
 #[test]
-fn monte_carlo_of_the_rfs_matches_the_pmf_at_the_optimum() {
+fn fig10_monte_carlo_of_the_rfs_matches_the_pmf_at_the_optimum() {
     // Sample the multi-Bernoulli RFS itself — each component exists with probability r and
     // then sits at m + L z — and count the objects inside the optimal FoV.
     let m = map();

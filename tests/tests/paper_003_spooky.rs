@@ -67,7 +67,7 @@ fn fig1_ospa_and_uospa_are_spooky() {
 }
 
 #[test]
-fn example_5_madrid_and_liverpool() {
+fn example5_madrid_and_liverpool() {
     // Before: r = (0.4, 0.4): OSPA reports both.
     assert_eq!(report(&[0.4, 0.4], SetMetric::Ospa), vec![true, true]);
     // Case 1: Liverpool's r rises to 0.9; OSPA drops Madrid.
@@ -87,7 +87,7 @@ fn example_5_madrid_and_liverpool() {
 }
 
 #[test]
-fn eq_11_all_or_nothing_for_many_identical_components() {
+fn eq11_all_or_nothing_for_many_identical_components() {
     for r in [0.005, 0.01, 0.05, 0.2, 0.35, 0.5, 0.7] {
         for n in (1..=120).chain([300, 1000]) {
             let k = count(&report(&vec![r; n], SetMetric::Ospa));

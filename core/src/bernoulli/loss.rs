@@ -187,7 +187,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn presets_follow_table_one() {
+    fn table1_presets_follow_the_printed_costs() {
         let m = Costs::mpe();
         assert_eq!(
             (m.c00(), m.c01(), m.c10(), m.c11(), m.c()),
@@ -219,7 +219,7 @@ mod tests {
     }
 
     #[test]
-    fn loss_cases_of_equation_seven() {
+    fn eq7_loss_cases() {
         let l = ApplicationLoss::new(Costs::new(0.5, 2.0, 3.0, 0.25, 7.0).unwrap(), 1.0).unwrap();
         assert_eq!(l.loss(None, None).unwrap(), 0.5);
         assert_eq!(l.loss(None, Some(&[3.0])).unwrap(), 2.0);

@@ -120,7 +120,7 @@ fn gaussian(mean: &[f64], cov: &[f64]) -> SpatialDensity {
 // ---------------------------------------------------------------------------------------
 
 #[test]
-fn q_is_exact_in_one_dimension() {
+fn eq12_q_is_exact_in_one_dimension() {
     let s = gaussian(&[0.3], &[2.25]);
     for &(a, r) in &[
         (0.3, 1.0),
@@ -140,7 +140,7 @@ fn q_is_exact_in_one_dimension() {
 }
 
 #[test]
-fn q_matches_closed_forms_for_centred_isotropic_gaussians() {
+fn eq12_q_matches_closed_forms_for_centred_isotropic_gaussians() {
     // Centred isotropic N(m, σ² I_d): q = P(χ²_d > (r/σ)²). Exercises the nested quadrature
     // (d = 2 … 4) and the inversion (d = 5 … 8) against the incomplete-gamma closed form.
     for d in 2..=8usize {
@@ -166,7 +166,7 @@ fn q_matches_closed_forms_for_centred_isotropic_gaussians() {
 }
 
 #[test]
-fn q_matches_brute_force_quadrature_in_2d() {
+fn eq12_q_matches_brute_force_quadrature_in_2d() {
     // Correlated covariances; centres at the mean, off the mean, outside the ball's reach,
     // on a narrow direction; an elongated (κ = 400) and a small covariance.
     let cases: &[Case] = &[
@@ -194,7 +194,7 @@ fn q_matches_brute_force_quadrature_in_2d() {
 }
 
 #[test]
-fn q_matches_brute_force_quadrature_in_3d() {
+fn eq12_q_matches_brute_force_quadrature_in_3d() {
     let cases: &[Case] = &[
         (
             &[0.0, 0.0, 0.0],
@@ -230,7 +230,7 @@ fn q_matches_brute_force_quadrature_in_3d() {
 }
 
 #[test]
-fn q_matches_monte_carlo_in_1d_2d_3d() {
+fn eq12_q_matches_monte_carlo_in_1d_2d_3d() {
     // 10⁶ draws: standard error ≤ 5e-4; the bound is 5 standard errors.
     let cases: &[Case] = &[
         (&[0.0], &[1.0], &[0.4], 1.0),
@@ -251,7 +251,7 @@ fn q_matches_monte_carlo_in_1d_2d_3d() {
 }
 
 #[test]
-fn q_of_mixtures_and_particles() {
+fn eq12_q_of_mixtures_and_particles() {
     let c1 = Gaussian::from_slices(&[0.0, 0.0], &[1.0, 0.2, 0.2, 0.5], "m").unwrap();
     let c2 = Gaussian::from_slices(&[2.0, 1.0], &[0.3, 0.0, 0.0, 0.3], "m").unwrap();
     let mix = GaussianMixture::new(
@@ -408,7 +408,7 @@ fn nested_quadrature_and_inversion_agree() {
 }
 
 #[test]
-fn q_matches_monte_carlo_in_6d() {
+fn eq12_q_matches_monte_carlo_in_6d() {
     let d = 6;
     let eig = [0.1, 0.3, 0.5, 0.9, 1.4, 2.0];
     let mean = vec![0.2; d];
@@ -469,7 +469,7 @@ fn grid_search_2d(
 }
 
 #[test]
-fn gaussian_mmuc_is_the_mean_and_beats_its_neighbours() {
+fn eq12_gaussian_mmuc_is_the_mean_and_beats_its_neighbours() {
     // Sherman's theorem; checking q(mean) ≤ q(mean + δ) also tests that the quadrature
     // respects it.
     let mean = [1.0, -2.0, 0.5];
@@ -491,7 +491,7 @@ fn gaussian_mmuc_is_the_mean_and_beats_its_neighbours() {
 }
 
 #[test]
-fn mixture_mmuc_finds_the_optimum_between_modes() {
+fn eq12_mixture_mmuc_finds_the_optimum_between_modes() {
     // Two modes 2 apart with r0 = 1.3: a ball between them holds more than a ball on either.
     let s = mixture(&[
         (1.0, &[-1.0, 0.0], &[0.09, 0.0, 0.0, 0.09]),
@@ -530,7 +530,7 @@ fn dist(a: &[f64], b: &[f64]) -> f64 {
 }
 
 #[test]
-fn mixture_mmuc_matches_grid_search_on_an_asymmetric_mixture() {
+fn eq12_mixture_mmuc_matches_grid_search_on_an_asymmetric_mixture() {
     // Three components of different weights and correlations; the best ball sits on the
     // heavy pair, away from both the mixture mean and any component mean.
     let s = mixture(&[
@@ -551,7 +551,7 @@ fn mixture_mmuc_matches_grid_search_on_an_asymmetric_mixture() {
 }
 
 #[test]
-fn mixture_mmuc_in_one_and_three_dimensions() {
+fn eq12_mixture_mmuc_in_one_and_three_dimensions() {
     // 1D: compare with a grid of 40 001 points; the optimum covers both modes.
     let s = mixture(&[
         (0.5, &[0.0], &[0.04]),
@@ -596,7 +596,7 @@ fn mixture_mmuc_in_one_and_three_dimensions() {
 }
 
 #[test]
-fn mixture_with_a_shared_mean_uses_sherman_per_component() {
+fn eq12_mixture_with_a_shared_mean_uses_sherman_per_component() {
     let s = mixture(&[
         (0.5, &[1.0, 1.0], &[1.0, 0.5, 0.5, 1.0]),
         (0.5, &[1.0, 1.0], &[0.1, 0.0, 0.0, 3.0]),
@@ -637,7 +637,7 @@ fn brute_particles_2d(pts: &[[f64; 2]], w: &[f64], r: f64) -> f64 {
 }
 
 #[test]
-fn particle_mmuc_is_exact_in_1d_and_2d() {
+fn eq12_particle_mmuc_is_exact_in_1d_and_2d() {
     use rand::RngExt;
     let mut rng = rng(5);
     let total_w = |w: &[f64]| w.iter().sum::<f64>();
@@ -680,7 +680,7 @@ fn particle_mmuc_is_exact_in_1d_and_2d() {
 }
 
 #[test]
-fn particle_mmuc_in_3d_beats_every_sampled_centre() {
+fn eq12_particle_mmuc_in_3d_beats_every_sampled_centre() {
     use rand::RngExt;
     let mut rng = rng(6);
     for trial in 0..6 {
@@ -740,7 +740,7 @@ fn loss(costs: Costs, r: f64) -> ApplicationLoss {
 }
 
 #[test]
-fn published_thresholds_of_section_four() {
+fn fig2_published_thresholds_of_section_four() {
     // μ = 0, σ = 1, r0 = 1 (Figs. 2a, 2b): Γ_MPE = 0.5943, Γ_MMOL = 0.1628 (c_A = 0.9,
     // c_M = 0.1), printed to four decimals.
     let s = gaussian(&[0.0], &[1.0]);
@@ -775,7 +775,7 @@ fn published_thresholds_of_section_four() {
 }
 
 #[test]
-fn corollaries_four_one_and_four_two_follow_from_the_general_form() {
+fn cor1_cor2_follow_from_the_general_form() {
     for i in 0..=20 {
         let q = i as f64 / 20.0;
         for j in 0..=10 {
@@ -807,7 +807,7 @@ fn corollaries_four_one_and_four_two_follow_from_the_general_form() {
 }
 
 #[test]
-fn decision_is_the_smaller_expected_loss_for_any_costs() {
+fn eq24_decision_is_the_smaller_expected_loss_for_any_costs() {
     // Eq. (24): report exactly when ρ_{a*} < ρ_∅, including cost matrices that reverse the
     // comparison (Direction::Below) or make it independent of p (Γ = ±∞).
     use rand::RngExt;
@@ -864,7 +864,7 @@ fn decision_is_the_smaller_expected_loss_for_any_costs() {
 }
 
 #[test]
-fn ties_report_nothing() {
+fn eq10_ties_report_nothing() {
     // MMOL with q = 0 (particles all inside the ball): Γ = c_M/c_A exactly; p = Γ is a tie.
     let pts = [[0.0, 0.0], [0.1, 0.0]];
     let s = SpatialDensity::particles(ParticleSet::new(&pts, None).unwrap());
@@ -878,7 +878,7 @@ fn ties_report_nothing() {
 }
 
 #[test]
-fn free_countermeasure_threshold_is_positive_zero() {
+fn cor2_free_countermeasure_threshold_is_positive_zero() {
     // MMOL with c_M = 0: Γ = 0/(c_A (q − 1)) is +0, not −0 (which JS prints as "-0").
     for q in [0.0, 0.3, 0.999] {
         let t = threshold(&Costs::mmol(0.9, 0.0).unwrap(), q).unwrap();
@@ -891,7 +891,7 @@ fn free_countermeasure_threshold_is_positive_zero() {
 }
 
 #[test]
-fn figure_three_properties() {
+fn fig3_properties() {
     let sigmas: Vec<f64> = (1..=200).map(|i| 0.05 * i as f64).collect();
     for d in [1usize, 2, 3] {
         for &r in &[0.1, 1.0, 3.0, 5.0, 10.0] {
@@ -930,7 +930,7 @@ fn figure_three_properties() {
 }
 
 #[test]
-fn curve_matches_the_general_estimator() {
+fn fig3_curve_matches_the_general_estimator() {
     // The closed form against the quadrature (2D, 3D) and the exact 1D q.
     for d in [1usize, 2, 3] {
         for &sigma in &[0.3, 1.0, 2.5] {
@@ -950,7 +950,7 @@ fn curve_matches_the_general_estimator() {
 }
 
 #[test]
-fn expected_losses_match_a_monte_carlo_of_the_loss() {
+fn eq13_eq14_expected_losses_match_a_monte_carlo_of_the_loss() {
     // Simulate the Bernoulli (exists with probability p, then x ~ s) and average L(α, φ)
     // of eq. (7) for α = {a*} and α = ∅; costs with c01 ≠ c10 check the erratum (23c).
     use rand::RngExt;
@@ -1008,7 +1008,7 @@ fn expected_losses_match_a_monte_carlo_of_the_loss() {
 }
 
 #[test]
-fn multi_bernoulli_reports_per_component() {
+fn thm3_per_component_of_a_multi_bernoulli() {
     let comps = vec![
         (0.9, gaussian(&[0.0, 0.0], &[0.2, 0.0, 0.0, 0.2])),
         (0.55, gaussian(&[5.0, 5.0], &[4.0, 0.0, 0.0, 4.0])),
@@ -1101,7 +1101,7 @@ fn nearly_singular_covariances_reduce_to_lower_dimensions() {
 }
 
 #[test]
-fn mmuc_of_a_mixture_with_a_point_like_component() {
+fn eq12_mmuc_of_a_mixture_with_a_point_like_component() {
     // Found by the boundary fuzzer: a 3D component 1e-75 wide made the search's tolerance
     // 1e-82 and one estimate took 15 s. With the length scale floored at 1e-6 r0 the search
     // still finds the point that covers the wide component (weight 0.83): its mean, to well

@@ -148,6 +148,7 @@ pub fn leave_one_out_cardinalities(existence: &[f64]) -> Result<Vec<Vec<f64>>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::error::Error;
     use rand::{RngExt, SeedableRng, rngs::SmallRng};
 
     /// ρ by enumerating all 2^M existence patterns.
@@ -165,7 +166,7 @@ mod tests {
     }
 
     #[test]
-    fn matches_enumeration() {
+    fn eq88_matches_enumeration() {
         let mut rng = SmallRng::seed_from_u64(2);
         for m in 0..=12 {
             for _ in 0..5 {
@@ -211,7 +212,7 @@ mod tests {
     }
 
     #[test]
-    fn leave_one_out_matches_recomputation() {
+    fn lemma4_leave_one_out_matches_recomputation() {
         let mut rng = SmallRng::seed_from_u64(8);
         for m in 1..=40 {
             let r: Vec<f64> = (0..m)
@@ -242,7 +243,11 @@ mod tests {
     fn rejects_non_probabilities() {
         let e = multi_bernoulli_cardinality(&[0.2, f64::NAN]).unwrap_err();
         assert_eq!(e.field(), "existence[1]");
-        assert!(for_each_leave_one_out(&[1.2], |_, _| {}).is_err());
+        let mut called = false;
+        let e = for_each_leave_one_out(&[1.2], |_, _| called = true).unwrap_err();
+        assert!(matches!(e, Error::InvalidProbability { .. }), "{e}");
+        assert_eq!(e.field(), "existence[0]");
+        assert!(!called, "the callback ran before the input was checked");
         assert_eq!(multi_bernoulli_cardinality(&[]).unwrap(), vec![1.0]);
     }
 }

@@ -250,7 +250,12 @@ mod tests {
         let expected = -0.5 * ((2.0 * core::f64::consts::PI).powi(2) * det).ln();
         assert!((gaussian_ln_peak(&cov).unwrap() - expected).abs() < 1e-14);
         let bad = DMatrix::from_row_slice(2, 2, &[1.0, 2.0, 2.0, 1.0]);
-        assert!(gaussian_ln_peak(&bad).is_err());
+        let not_spd = Error::NotPositiveDefinite { what: "cov".into() };
+        assert_eq!(gaussian_ln_peak(&bad).unwrap_err(), not_spd);
+        let not_square = DMatrix::from_row_slice(1, 2, &[1.0, 0.0]);
+        assert_eq!(gaussian_ln_peak(&not_square).unwrap_err(), not_spd);
+        let asymmetric = DMatrix::from_row_slice(2, 2, &[1.0, 0.1, 0.0, 1.0]);
+        assert_eq!(gaussian_ln_peak(&asymmetric).unwrap_err(), not_spd);
         assert!(
             (isotropic_ln_peak(0.5, 2)
                 - gaussian_ln_peak(&DMatrix::identity(2, 2).scale(0.5)).unwrap())

@@ -1,5 +1,11 @@
 //! Estimators: optimal multi-Bernoulli estimation under OSPA/UOSPA/GOSPA and the classical
 //! alternatives.
+//!
+//! | item | paper (`003_…`) | tested by |
+//! |---|---|---|
+//! | [`multi_bernoulli::mean_error`] | Lemma 4, (5)–(8) | `multi_bernoulli::tests::lemma4_matches_enumeration_with_real_metrics`, `multi_bernoulli::tests::huge_orders_give_zero_or_infinity_never_nan` |
+//! | [`multi_bernoulli::optimal_estimate`] | the optimal estimates (9), (11); Figs 1 and 3 | `multi_bernoulli::tests::eq9_gospa_closed_form_is_per_component`, `multi_bernoulli::tests::eq11_identical_components_all_or_nothing`, `multi_bernoulli::tests::top_k_sets_contain_the_optimum_exhaustively_up_to_12`, `paper_003_spooky::fig1_single_component_threshold_is_one_half_for_every_metric`, `paper_003_spooky::fig1_gospa_decides_each_component_alone`, `paper_003_spooky::fig1_ospa_and_uospa_are_spooky`, `paper_003_spooky::eq11_all_or_nothing_for_many_identical_components`, `paper_003_spooky::fig3_uospa_reports_the_r_quantile_and_moves_one_by_one`, `paper_003_spooky::example5_madrid_and_liverpool` |
+//! | [`alternatives`] (MaM, JoM, MAP cardinality) | Fig. 2 | `alternatives::tests::two_component_rules`, `alternatives::tests::mam_prefers_the_sharper_component_when_spreads_differ`, `paper_003_spooky::fig2_decision_rules_match_a_direct_maximisation`, `paper_003_spooky::fig2_estimators_are_spooky_too` |
 
 pub mod alternatives;
 pub mod multi_bernoulli;

@@ -492,7 +492,7 @@ mod tests {
     }
 
     #[test]
-    fn gospa_closed_form_is_per_component() {
+    fn eq9_gospa_closed_form_is_per_component() {
         let r = [0.2, 0.51, 0.5, 0.99, 0.0, 1.0];
         let e = optimal_estimate(&r, SetMetric::GOSPA, 3.0, 2.0).unwrap();
         assert_eq!(e.report, vec![false, true, false, true, false, true]);
@@ -502,7 +502,7 @@ mod tests {
     }
 
     #[test]
-    fn eq_11_identical_components_all_or_nothing() {
+    fn eq11_identical_components_all_or_nothing() {
         // The optimal OSPA estimate of n identical components reports all when
         // (1 − r)^n < r and none otherwise.
         for n in 1..=60 {

@@ -182,7 +182,7 @@ impl Default for Splitting {
 /// [`SplitLibrary::table_i`]), chosen against the variance-preserving split of the
 /// authors' `pyest` ([`SplitLibrary::variance_preserving`], R = 4, λ = 0.001) by which one's
 /// posterior moments come closer to the exact update (53)–(55) (the test
-/// `the_default_library_is_closer_to_the_exact_update`, 2D and 4D states, a small report
+/// `table1_default_library_is_closer_to_the_exact_update_with_a_million_draws`, 2D and 4D states, a small report
 /// disc, a wide one and a miss, filter defaults and fine splitting; 10⁶ importance-weighted
 /// draws for the exact moments).
 ///

@@ -5,13 +5,13 @@
 //! A Bernoulli random finite set is "no object" with probability 1 − r or one object with
 //! density p(x) (eq. (39)). The filters track (r, p) through
 //!
-//! | step | GM filter | particle filter |
-//! |---|---|---|
-//! | prediction (40)–(49), birth (43), (46) | [`gm_bernoulli_predict`] | [`ParticleBernoulliFilter::predict`] |
-//! | imprecise reports ζ (regions, g̃ = 1_ζ(s), (63)–(65)) | [`gm_bernoulli_update`] | [`ParticleBernoulliFilter::update`] |
-//! | any generalized likelihood g̃ ([`GeneralizedLikelihood`]) | [`gm_bernoulli_update_with`] | [`ParticleBernoulliFilter::update_with`] |
-//! | vector measurements, N(z; H x, R) | [`gm_bernoulli_update_vector`] | [`ParticleBernoulliFilter::update_measurements`] |
-//! | estimates (MMSE, existence, paper 000's optimal estimate) | [`GmBernoulliFilter::estimate`] | [`ParticleBernoulliFilter::estimate`] |
+//! | step | GM filter | particle filter | tested by (`tests::` unless named) |
+//! |---|---|---|---|
+//! | prediction (40)–(49), birth (43), (46) | [`gm_bernoulli_predict`] | [`ParticleBernoulliFilter::predict`] | `eq40_eq49_prediction_matches_its_closed_form`, `nearly_constant_velocity_in_one_to_three_dimensions` |
+//! | imprecise reports ζ (regions, g̃ = 1_ζ(s), (63)–(65)) | [`gm_bernoulli_update`] | [`ParticleBernoulliFilter::update`] | `eq53_update_matches_the_exact_update_on_2d_and_4d_states`, `eq53_particle_update_matches_the_exact_update`, `alg2_the_update_does_not_depend_on_the_order_of_the_reports`, `fig5_no_report_reduces_to_the_negative_information_scenario`, `an_empty_scan_is_a_real_update_in_every_filter`, `exclusions_remove_their_mass_and_keep_the_existence`, `table1_default_library_is_closer_to_the_exact_update`, `paper_001_airport::fig7_fig8_airport_gm_and_particle_filters_in_budget` |
+//! | any generalized likelihood g̃ ([`GeneralizedLikelihood`]) | [`gm_bernoulli_update_with`] | [`ParticleBernoulliFilter::update_with`] | `a_closure_likelihood_equal_to_the_indicator_gives_the_same_update` |
+//! | vector measurements, N(z; H x, R) | [`gm_bernoulli_update_vector`] | [`ParticleBernoulliFilter::update_measurements`] | `vector_filter_is_the_kalman_filter_with_certain_detection_and_no_clutter`, `vector_update_matches_its_closed_form` |
+//! | estimates (MMSE, existence, paper 000's optimal estimate) | [`GmBernoulliFilter::estimate`] | [`ParticleBernoulliFilter::estimate`] | `estimates_include_the_optimal_bernoulli_report`, `estimate::tests::moments_in_range_are_the_moment_matched_merge_bit_for_bit` |
 //!
 //! with the models [`LinearGaussianTransition`] (and the nearly-constant-velocity model
 //! (70)–(71) in any number of position dimensions), [`Detection`] (p_D inside an optional

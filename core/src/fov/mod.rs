@@ -21,6 +21,16 @@
 //!   (Section VII).
 //! - [`placement_scene`]: seeded random scenes like Section VII's (Figs 9–10), and
 //!   [`mixture_density_grid`]: a Gaussian mixture (the PHD (99)) over a grid, for Fig. 9.
+//!
+//! | item | paper | tested by (`tests::` unless named) |
+//! |---|---|---|
+//! | [`poisson`] | (78) | `eq78_poisson_closed_form_is_the_series_and_the_simulation` |
+//! | [`iid_cluster`] | (84) | `eq84_iid_cluster_matches_the_series_and_the_simulation` |
+//! | [`multi_bernoulli`], [`multi_bernoulli_dft`], [`multi_bernoulli_enumerated`] | (88), (90) | `eq88_eq90_multi_bernoulli_forms_agree`, `eq88_multi_bernoulli_matches_the_simulation`, `cardinality::multi_bernoulli::tests::eq88_matches_enumeration` |
+//! | [`glmb`] | (92) | `eq92_glmb_matches_the_simulation_and_reduces_to_multi_bernoulli` |
+//! | [`fov_cardinality`] | (72)–(73) with the masses ⟨1_S, p⟩ | `front_door_names_fields`, `placement::tests::every_mass_matches_the_direct_bivariate_rectangle` |
+//! | [`variance_map`] | Section VII, Fig. 10 | `placement::tests::fig10_variance_map_matches_the_pmf_and_finds_the_maximum`, `paper_001_fov::fig10_the_maximum_is_the_variance_of_the_pmf_there`, `paper_001_fov::fig10_no_grid_cell_exceeds_the_maximum`, `paper_001_fov::fig10_a_finer_search_gains_no_more_than_the_grid_step_allows`, `paper_001_fov::fig10_most_uncertain_is_not_most_populated`, `paper_001_fov::fig10_monte_carlo_of_the_rfs_matches_the_pmf_at_the_optimum` |
+//! | [`placement_scene`], [`mixture_density_grid`] | Figs 9–10, the PHD (99) | `scene::tests::scenes_follow_the_recipe`, `scene::tests::default_scene_is_pinned`, `density_grid::tests::sums_the_components_and_marginalises`, `paper_001_fov::fig9_the_phd_integrates_to_the_expected_counts`, `paper_001_fov::fig9_the_optimal_boundary_splits_components` |
 
 mod density;
 mod density_grid;

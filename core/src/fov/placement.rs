@@ -704,7 +704,7 @@ mod tests {
     }
 
     #[test]
-    fn variance_map_matches_the_pmf_and_finds_the_maximum() {
+    fn fig10_variance_map_matches_the_pmf_and_finds_the_maximum() {
         let mut rng = SmallRng::seed_from_u64(42);
         let comps = scene(&mut rng, 40, (0.1, 0.8));
         let gx = GridAxis {

@@ -79,7 +79,7 @@ fn poisson_draw(rng: &mut SmallRng, mean: f64) -> usize {
 }
 
 #[test]
-fn poisson_closed_form_is_the_series_78_and_the_simulation() {
+fn eq78_poisson_closed_form_is_the_series_and_the_simulation() {
     // The literal double series (78), truncated far out, against the closed form.
     for (lin, lout) in [(0.3, 2.0), (2.5, 0.7), (7.0, 11.0)] {
         let c = poisson(lin).unwrap();
@@ -147,7 +147,7 @@ fn poisson_closed_form_is_the_series_78_and_the_simulation() {
 }
 
 #[test]
-fn iid_cluster_matches_the_series_84_and_the_simulation() {
+fn eq84_iid_cluster_matches_the_series_and_the_simulation() {
     let rho = [0.1, 0.2, 0.3, 0.25, 0.1, 0.05];
     for q in [0.0, 0.37, 1.0] {
         let c = iid_cluster(&rho, q).unwrap();
@@ -220,7 +220,7 @@ fn iid_cluster_matches_the_series_84_and_the_simulation() {
 }
 
 #[test]
-fn multi_bernoulli_forms_agree() {
+fn eq88_eq90_multi_bernoulli_forms_agree() {
     let mut rng = SmallRng::seed_from_u64(53);
     for m in 0..=MAX_ENUM {
         for _ in 0..3 {
@@ -267,7 +267,9 @@ fn multi_bernoulli_forms_agree() {
             assert!(worst < 1e-13, "M={m}: DFT differs by {worst:e}");
         }
     }
-    assert!(multi_bernoulli_enumerated(&[0.5; 13], &[0.5; 13]).is_err());
+    let e = multi_bernoulli_enumerated(&[0.5; 13], &[0.5; 13]).unwrap_err();
+    assert!(matches!(e, Error::Unsupported { .. }), "{e}");
+    assert_eq!(e.field(), "existence");
     assert_eq!(
         multi_bernoulli(&[0.2, 1.5]).unwrap_err().field(),
         "inside[1]"
@@ -283,7 +285,7 @@ fn multi_bernoulli_forms_agree() {
 const MAX_ENUM: usize = super::pmf::MAX_ENUMERATED;
 
 #[test]
-fn multi_bernoulli_matches_the_simulation() {
+fn eq88_multi_bernoulli_matches_the_simulation() {
     let (fov, gs) = setup();
     let r = [0.9, 0.5, 1.0, 0.7, 0.35];
     let comps: Vec<(f64, Gaussian)> = r.iter().copied().zip(gs.iter().cloned()).collect();
@@ -324,7 +326,7 @@ fn multi_bernoulli_matches_the_simulation() {
 }
 
 #[test]
-fn glmb_matches_the_simulation_and_reduces_to_multi_bernoulli() {
+fn eq92_glmb_matches_the_simulation_and_reduces_to_multi_bernoulli() {
     let (fov, gs) = setup();
     let hyps = vec![
         (0.2, vec![]),

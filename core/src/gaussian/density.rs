@@ -284,6 +284,10 @@ mod tests {
         assert_eq!(e.field(), "d.mean[1]");
         let e = Gaussian::from_slices(&[0.0], &[1.0, 0.0], "d").unwrap_err();
         assert_eq!(e.field(), "d.cov");
-        assert!(Gaussian::isotropic(&[0.0], 0.0, "d").is_err());
+        for sigma in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            let e = Gaussian::isotropic(&[0.0], sigma, "d").unwrap_err();
+            assert!(matches!(e, Error::InvalidParameter { .. }), "{e}");
+            assert_eq!(e.field(), "d.sigma");
+        }
     }
 }

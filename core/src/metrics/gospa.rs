@@ -393,13 +393,15 @@ mod tests {
         assert_eq!(g.distance(&x, &y).unwrap_err().field(), "truth[1]");
         let y = vec![vec![0.0, f64::NAN]];
         assert_eq!(g.distance(&y, &y).unwrap_err().field(), "truth[0][1]");
-        assert!(
-            Gospa::new(1.0, 2.0, 1.0)
-                .unwrap()
-                .decompose(&y, &y)
-                .is_err()
-        );
+        let ok = vec![vec![0.0, 0.0]];
+        let e = Gospa::new(1.0, 2.0, 1.0)
+            .unwrap()
+            .decompose(&ok, &ok)
+            .unwrap_err();
+        assert!(matches!(e, Error::Unsupported { .. }), "{e}");
+        assert_eq!(e.field(), "alpha");
         let neg = crate::metrics::FnMetric(|_: &f64, _: &f64| -1.0);
-        assert!(g.distance_with(&[1.0], &[2.0], &neg).is_err());
+        let e = g.distance_with(&[1.0], &[2.0], &neg).unwrap_err();
+        assert_eq!(e.field(), "distance(truth[0], estimate[0])");
     }
 }

@@ -10,6 +10,13 @@
 //! take memory proportional to the pairs closer than c, never to `|X|·|Y|`
 //! ([`MAX_CLOSE_PAIRS`] caps them). [`Gospa::series`] and [`Ospa::series`] evaluate whole
 //! scenarios, in parallel over the steps with the `parallel` feature.
+//!
+//! | item | paper | tested by (`tests::` unless named) |
+//! |---|---|---|
+//! | [`Ospa`] | OSPA and its localisation and cardinality parts, (24)–(26) of `004_…`; UOSPA of `003_…` | `ospa::tests::matches_brute_force_and_parts_add_up`, `ospa::tests::is_a_metric_bounded_by_c`, `ospa::tests::one_empty_set_is_at_distance_c` |
+//! | [`Gospa`] | GOSPA and its decomposition, `003_…` | `gospa::tests::matches_brute_force_and_prop3`, `gospa::tests::is_a_metric`, `gospa::tests::empty_sets`, `gospa::tests::assignment_minimises_the_p_th_powers_not_the_distances`, `extreme_cut_offs_are_computed_in_units_of_c`, `a_tiny_alpha_with_every_point_matched_is_not_nan` |
+//! | the cut-off assignment over close pairs, [`MAX_CLOSE_PAIRS`] | — | `small_instances_match_brute_force_in_1d_to_3d_with_ties`, `every_density_matches_the_dense_solver`, `coincident_points_exact_cutoff_and_cell_boundaries`, `gospa_and_ospa_agree_with_the_dense_oracle_on_a_percolating_scene`, `the_cap_on_pairs_closer_than_c_is_an_error_with_the_count`, `metrics_memory::twenty_thousand_percolating_points_take_megabytes_not_gigabytes`, `metrics_memory::over_the_cap_fails_before_storing_the_pairs` |
+//! | [`Gospa::series`], [`Ospa::series`] | per-step values and their means | `series::tests::gospa_series_is_the_per_step_values_and_their_means`, `series::tests::ospa_series_is_the_per_step_values_and_their_means` |
 
 mod base;
 mod gospa;

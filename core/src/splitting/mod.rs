@@ -24,6 +24,16 @@
 //! - [`non_detection_update`], [`NegativeInformationScenario`]: the non-detection update
 //!   (57)–(58) and the Fig. 5 example.
 //!
+//! | item | paper | tested by (`tests::` unless named) |
+//! |---|---|---|
+//! | [`SplitLibrary::table_i`] | Table I | `table1_is_shipped_verbatim`, `table1_optimiser_reproduces_it_to_the_notes_tolerance` |
+//! | [`SplitLibrary`] optimiser, [`SplitLibrary::variance_preserving`] | (13)–(14) | `eq13_free_means_split_has_lower_objective`, `eq13_r3_entry_matches_the_reference_optimum`, `eq13_optimised_entries_are_valid_local_minima`, `filters::tests::eq13_variance_preserving_constants_are_the_optimiser_output` |
+//! | [`split_component`] | (27)–(31) | `eq27_split_preserves_the_mean_and_removes_the_library_variance_defect`, `split_component_rejects_bad_arguments` |
+//! | [`split_for_region`], [`split_for_regions`] | Algorithms 1 and 2, (26), (32) | `alg1_is_alg2_with_one_region`, `alg2_does_not_depend_on_the_order_of_the_regions`, `alg2_components_away_from_boundaries_or_too_light_are_not_split`, `eq26_split_direction_follows_the_boundary_and_ties_go_to_the_largest_eigenvalue`, `eq32_full_state_direction_is_the_best_aligned_eigenvector`, `caps_stop_the_recursion_and_say_so`, `extreme_inputs_give_sane_results_or_typed_errors` |
+//! | [`partition`], [`partition_accuracy`] | (11)–(12) | `eq11_partition_splits_the_weight_by_the_means`, `eq11_partition_error_falls_as_the_recursion_deepens` |
+//! | [`non_detection_update`] | (57)–(58) | `eq57_non_detection_update_reweights_by_the_mean_based_partition` |
+//! | [`NegativeInformationScenario`] | Fig. 5 | `fig5_negative_information_scenario`, `fig5_accuracy_improves_with_a_smaller_min_weight`, `filters::tests::fig5_no_report_reduces_to_the_negative_information_scenario` |
+//!
 //! Mixture reduction after an update is in [`crate::mixture`].
 //!
 //! ```
