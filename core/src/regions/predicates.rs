@@ -128,11 +128,27 @@ pub(crate) fn ball_side(p: &[f64], c: &[f64], r: f64) -> Ordering {
     ball_side_exact(p, c, r)
 }
 
+/// Above this magnitude of an input, [`ball_side_exact`] rescales before it squares (2^500).
+const BALL_SCALE_ABOVE: f64 = 3.273_390_607_896_142e150;
+
 /// The exact sign of r² − |p − c|² by expansion arithmetic (the slow path of
 /// [`ball_side`]).
 #[cold]
 #[inline(never)]
 pub(crate) fn ball_side_exact(p: &[f64], c: &[f64], r: f64) -> Ordering {
+    // Squares of differences above 2^1023 overflow, and the error terms of `two_product`
+    // become NaN: scale every input by the same power of two first (exact, so the sign is
+    // kept, but for parts below 2^−1022 of the scaled values, which flush to subnormals).
+    let big = p.iter().chain(c).fold(
+        fns::abs(r),
+        |m, &x| if fns::abs(x) > m { fns::abs(x) } else { m },
+    );
+    if big > BALL_SCALE_ABOVE && big.is_finite() {
+        let s = libm::scalbn(1.0, 400 - libm::ilogb(big));
+        let ps: Vec<f64> = p.iter().map(|&x| x * s).collect();
+        let cs: Vec<f64> = c.iter().map(|&x| x * s).collect();
+        return ball_side_exact(&ps, &cs, r * s);
+    }
     let mut e = Expansion::new();
     let (rr, rr_err) = two_product(r, r);
     e.add(rr_err);
@@ -218,6 +234,28 @@ mod tests {
         assert_eq!(ball_side(&p, &[0.0, 0.0], r), Ordering::Less);
         let p = [3.0, f64::from_bits(4f64.to_bits() - 1)];
         assert_eq!(ball_side(&p, &[0.0, 0.0], r), Ordering::Greater);
+        // Far beyond √f64::MAX: |p − c|² overflows in the filter, the exact path rescales.
+        assert_eq!(
+            ball_side(&[1e300, -1e300], &[0.0, 0.0], 1.0),
+            Ordering::Less
+        );
+        assert_eq!(
+            ball_side(&[1e300, 0.0], &[0.0, 0.0], 2e300),
+            Ordering::Greater
+        );
+        let s = 2f64.powi(1000);
+        assert_eq!(
+            ball_side(&[3.0 * s, 4.0 * s], &[0.0, 0.0], 5.0 * s),
+            Ordering::Equal
+        );
+        assert_eq!(
+            ball_side(
+                &[3.0 * s, f64::from_bits((4.0 * s).to_bits() + 1)],
+                &[0.0, 0.0],
+                5.0 * s
+            ),
+            Ordering::Less
+        );
         let mut rng = SmallRng::seed_from_u64(7);
         for _ in 0..10_000 {
             let p: Vec<f64> = (0..3).map(|_| rng.random_range(-1.0..1.0)).collect();
