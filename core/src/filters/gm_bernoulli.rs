@@ -227,22 +227,12 @@ pub fn gm_bernoulli_update_with<L: GeneralizedLikelihood + ?Sized>(
                         "finite and >= 0",
                     ));
                 }
-                if *k > 0.0 {
-                    ratio += gi / k;
-                } else {
-                    certain += gi;
-                }
+                add_report(&mut ratio, &mut certain, gi, *k);
             }
         }
-        terms.push(Term {
-            weight: *w,
-            pd,
-            missed: w * (1.0 - pd),
-            detected: w * pd * ratio,
-            certain: w * pd * certain,
-        });
+        terms.push(Term::new(*w, pd, ratio, certain));
     }
-    let zero_kappa = kappa.iter().filter(|k| **k <= 0.0).count();
+    let zero_kappa = count_zero_kappa(&kappa);
     let (existence, weights, delta) = bernoulli_weights(state.existence, &terms, zero_kappa)?;
     let posterior: Vec<(usize, f64)> = kept
         .iter()
@@ -272,6 +262,65 @@ pub(crate) struct Term {
     pub(crate) detected: f64,
     /// w_ℓ p_D,ℓ Σ_{κ_i = 0} g̃_iℓ.
     pub(crate) certain: f64,
+}
+
+impl Term {
+    /// The term of a component of weight w_ℓ and detection probability p_D,ℓ whose
+    /// likelihoods add up to `ratio` = Σ_{κ_i > 0} g̃_iℓ / κ_i and `certain` = Σ_{κ_i = 0} g̃_iℓ
+    /// (see [`add_report`]).
+    #[inline]
+    pub(crate) fn new(w: f64, pd: f64, ratio: f64, certain: f64) -> Term {
+        Term {
+            weight: w,
+            pd,
+            missed: w * (1.0 - pd),
+            detected: w * pd * ratio,
+            certain: w * pd * certain,
+        }
+    }
+}
+
+/// Adds one report's likelihood `g` = g̃_iℓ to `ratio` as g / κ_i where its clutter
+/// intensity `kappa` = κ_i > 0, and to `certain` where κ_i = 0 (the sums of [`Term`]).
+#[inline]
+pub(crate) fn add_report(ratio: &mut f64, certain: &mut f64, g: f64, kappa: f64) {
+    if kappa > 0.0 {
+        *ratio += g / kappa;
+    } else {
+        *certain += g;
+    }
+}
+
+/// How many reports have zero clutter intensity (at most one is allowed, see
+/// [`bernoulli_weights`]).
+pub(crate) fn count_zero_kappa(kappa: &[f64]) -> usize {
+    kappa.iter().filter(|k| **k <= 0.0).count()
+}
+
+/// Checks that every measurement has `mdim` components, all finite.
+///
+/// # Errors
+/// [`Error::DimensionMismatch`] naming `measurements[j]`, [`Error::InvalidParameter`] naming
+/// `measurements[j][i]`.
+pub(crate) fn check_measurements<M: AsRef<[f64]>>(measurements: &[M], mdim: usize) -> Result<()> {
+    for (j, z) in measurements.iter().enumerate() {
+        let z = z.as_ref();
+        if z.len() != mdim {
+            return Err(Error::dimension(
+                alloc::format!("measurements[{j}]"),
+                mdim,
+                z.len(),
+            ));
+        }
+        if let Some(i) = z.iter().position(|v| !v.is_finite()) {
+            return Err(Error::parameter(
+                alloc::format!("measurements[{j}][{i}]"),
+                z[i],
+                "finite",
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// r_{k|k}, the posterior weights of the terms and Δ_k, eqs. (54), (57)–(58).
@@ -503,24 +552,7 @@ pub fn gm_bernoulli_update_vector<M: AsRef<[f64]>>(
     if likelihood.state_dim() != n {
         return Err(Error::dimension("likelihood.H", n, likelihood.state_dim()));
     }
-    let mdim = likelihood.measurement_dim();
-    for (j, z) in measurements.iter().enumerate() {
-        let z = z.as_ref();
-        if z.len() != mdim {
-            return Err(Error::dimension(
-                alloc::format!("measurements[{j}]"),
-                mdim,
-                z.len(),
-            ));
-        }
-        if let Some(i) = z.iter().position(|v| !v.is_finite()) {
-            return Err(Error::parameter(
-                alloc::format!("measurements[{j}][{i}]"),
-                z[i],
-                "finite",
-            ));
-        }
-    }
+    check_measurements(measurements, likelihood.measurement_dim())?;
     let kappa = config
         .clutter
         .intensities(measurements.len(), |j| Some(measurements[j].as_ref()))?;
@@ -568,16 +600,10 @@ pub fn gm_bernoulli_update_vector<M: AsRef<[f64]>>(
                 }
             }
         }
-        terms.push(Term {
-            weight: *w,
-            pd,
-            missed: w * (1.0 - pd),
-            detected: w * pd * ratio,
-            certain: w * pd * certain,
-        });
+        terms.push(Term::new(*w, pd, ratio, certain));
         updated.push(per_z);
     }
-    let zero_kappa = kappa.iter().filter(|k| **k <= 0.0).count();
+    let zero_kappa = count_zero_kappa(&kappa);
     let (existence, _, delta) = bernoulli_weights(state.existence, &terms, zero_kappa)?;
     // Expand the per-component weights into missed and per-measurement components.
     let mut out: Vec<(f64, Gaussian)> = Vec::new();

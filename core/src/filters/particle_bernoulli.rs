@@ -7,7 +7,9 @@ use rand::Rng;
 
 use super::config::{BernoulliFilterConfig, PredictConfig, UpdateConfig};
 use super::estimate::{EstimateOptions, FilterEstimate, particle_estimate};
-use super::gm_bernoulli::{Term, UpdateInfo, bernoulli_weights};
+use super::gm_bernoulli::{
+    Term, UpdateInfo, add_report, bernoulli_weights, check_measurements, count_zero_kappa,
+};
 use super::likelihood::{GeneralizedLikelihood, LinearGaussianLikelihood, RegionReports};
 use crate::error::{Error, Result};
 use crate::gaussian::{GaussianMixture, normal};
@@ -292,16 +294,11 @@ impl ParticleBernoulliFilter {
                 if !(g.is_finite() && g >= 0.0) {
                     return (f64::NAN, i as f64);
                 }
-                if *k > 0.0 {
-                    ratio += g / k;
-                } else {
-                    certain += g;
-                }
+                add_report(&mut ratio, &mut certain, g, *k);
             }
             (ratio, certain)
         };
-        let zero_kappa = kappa.iter().filter(|k| **k <= 0.0).count();
-        self.update_inner(&eval, zero_kappa)
+        self.update_inner(&eval, count_zero_kappa(&kappa))
     }
 
     /// The update with vector measurements (the config's `likelihood`).
@@ -320,24 +317,7 @@ impl ParticleBernoulliFilter {
                 reason: "vector measurements need a likelihood { H, R } in the filter's config",
             });
         };
-        let mdim = lik.measurement_dim();
-        for (j, z) in measurements.iter().enumerate() {
-            let z = z.as_ref();
-            if z.len() != mdim {
-                return Err(Error::dimension(
-                    alloc::format!("measurements[{j}]"),
-                    mdim,
-                    z.len(),
-                ));
-            }
-            if let Some(i) = z.iter().position(|v| !v.is_finite()) {
-                return Err(Error::parameter(
-                    alloc::format!("measurements[{j}][{i}]"),
-                    z[i],
-                    "finite",
-                ));
-            }
-        }
+        check_measurements(measurements, lik.measurement_dim())?;
         let kappa = self
             .update
             .clutter
@@ -345,17 +325,11 @@ impl ParticleBernoulliFilter {
         let eval = |x: &[f64]| -> (f64, f64) {
             let (mut ratio, mut certain) = (0.0, 0.0);
             for (z, k) in measurements.iter().zip(&kappa) {
-                let g = lik.density(z.as_ref(), x);
-                if *k > 0.0 {
-                    ratio += g / k;
-                } else {
-                    certain += g;
-                }
+                add_report(&mut ratio, &mut certain, lik.density(z.as_ref(), x), *k);
             }
             (ratio, certain)
         };
-        let zero_kappa = kappa.iter().filter(|k| **k <= 0.0).count();
-        self.update_inner(&eval, zero_kappa)
+        self.update_inner(&eval, count_zero_kappa(&kappa))
     }
 
     /// L(x) of the update (0 in an exclusion region).
@@ -427,13 +401,7 @@ impl ParticleBernoulliFilter {
                     "finite and >= 0",
                 ));
             }
-            terms.push(Term {
-                weight: w,
-                pd,
-                missed: w * (1.0 - pd),
-                detected: w * pd * ratio,
-                certain: w * pd * certain,
-            });
+            terms.push(Term::new(w, pd, ratio, certain));
         }
         let (existence, weights, delta) = bernoulli_weights(self.existence, &terms, zero_kappa)?;
         self.existence = existence;

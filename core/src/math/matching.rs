@@ -311,6 +311,39 @@ mod tests {
         total
     }
 
+    /// The total cost of [`solve`]'s matching.
+    fn solved_total(start: &[usize], cols: &[u32], costs: &[f64], m: usize, exit: f64) -> f64 {
+        cost_of(
+            &solve(start, cols, costs, m, exit),
+            start,
+            cols,
+            costs,
+            m,
+            exit,
+        )
+    }
+
+    /// The dense n × (m + n) matrix of the graph: the edges, row i's exit on private column
+    /// m + i, and a prohibitive 1e6 elsewhere.
+    fn with_private_exits(
+        start: &[usize],
+        cols: &[u32],
+        costs: &[f64],
+        m: usize,
+        exit: f64,
+    ) -> Vec<f64> {
+        let n = start.len() - 1;
+        let w = m + n;
+        let mut dense = vec![1e6; n * w];
+        for i in 0..n {
+            for e in start[i]..start[i + 1] {
+                dense[i * w + cols[e] as usize] = costs[e];
+            }
+            dense[i * w + m + i] = exit;
+        }
+        dense
+    }
+
     #[test]
     fn matches_the_dense_oracle_with_private_exits() {
         // Dense oracle: the n × (m + n) matrix with the edges, exits on the private columns,
@@ -321,24 +354,9 @@ mod tests {
             let density = [0.15, 0.4, 0.7, 1.0][t % 4];
             let exit = 3.0;
             let (start, cols, costs) = instance(&mut rng, n, m, density, exit, t % 3 == 0);
-            let got = cost_of(
-                &solve(&start, &cols, &costs, m, exit),
-                &start,
-                &cols,
-                &costs,
-                m,
-                exit,
-            );
-            let big = 1e6;
+            let got = solved_total(&start, &cols, &costs, m, exit);
             let w = m + n;
-            let mut dense = vec![big; n * w];
-            for i in 0..n {
-                for e in start[i]..start[i + 1] {
-                    dense[i * w + cols[e] as usize] = costs[e];
-                }
-                dense[i * w + m + i] = exit;
-            }
-            let best = brute_force(&dense, n, w);
+            let best = brute_force(&with_private_exits(&start, &cols, &costs, m, exit), n, w);
             assert!(
                 (got - best).abs() <= 1e-12 * (1.0 + best),
                 "t={t} n={n} m={m}: {got} vs {best}"
@@ -357,23 +375,11 @@ mod tests {
             let density = [0.01, 0.03, 0.1, 0.5, 1.0][t % 5];
             let exit = 1.0;
             let (start, cols, costs) = instance(&mut rng, n, m, density, exit, t % 2 == 0);
-            let got = cost_of(
-                &solve(&start, &cols, &costs, m, exit),
-                &start,
-                &cols,
-                &costs,
-                m,
-                exit,
-            );
-            let w = m + n;
-            let mut dense = vec![1e6; n * w];
-            for i in 0..n {
-                for e in start[i]..start[i + 1] {
-                    dense[i * w + cols[e] as usize] = costs[e];
-                }
-                dense[i * w + m + i] = exit;
-            }
-            let best = crate::math::linear_assignment(&dense, n, w).unwrap().cost;
+            let got = solved_total(&start, &cols, &costs, m, exit);
+            let dense = with_private_exits(&start, &cols, &costs, m, exit);
+            let best = crate::math::linear_assignment(&dense, n, m + n)
+                .unwrap()
+                .cost;
             assert!(
                 (got - best).abs() <= 1e-11 * (1.0 + best),
                 "t={t}: {got} vs {best}"

@@ -69,12 +69,12 @@ impl Ospa {
         Ok(Self { c, p })
     }
 
-    /// The cut-off c.
+    /// The cut-off c of eqs. (24)–(26).
     pub fn cutoff(&self) -> f64 {
         self.c
     }
 
-    /// The order p.
+    /// The order p of eqs. (24)–(26).
     pub fn order(&self) -> f64 {
         self.p
     }
@@ -91,12 +91,10 @@ impl Ospa {
     ///
     /// # Errors
     /// As [`crate::metrics::Gospa::distance_with`].
-    pub fn distance_with<T, M: Metric<T> + ?Sized>(
-        &self,
-        truth: &[T],
-        estimate: &[T],
-        metric: &M,
-    ) -> Result<f64> {
+    pub fn distance_with<T, M>(&self, truth: &[T], estimate: &[T], metric: &M) -> Result<f64>
+    where
+        M: Metric<T> + ?Sized,
+    {
         Ok(self.decompose_with(truth, estimate, metric)?.distance)
     }
 
@@ -116,34 +114,33 @@ impl Ospa {
     ///
     /// # Errors
     /// As [`Ospa::distance_with`].
-    pub fn decompose_with<T, M: Metric<T> + ?Sized>(
+    pub fn decompose_with<T, M>(
         &self,
         truth: &[T],
         estimate: &[T],
         metric: &M,
-    ) -> Result<OspaDecomposition> {
+    ) -> Result<OspaDecomposition>
+    where
+        M: Metric<T> + ?Sized,
+    {
         if extreme_scale(self.c, self.p) {
             let unit = Ospa { c: 1.0, ..*self };
             let d = unit.decompose_in_units(truth, estimate, &InUnitsOf { metric, c: self.c })?;
-            return Ok(OspaDecomposition {
-                distance: self.c * d.distance,
-                localisation: self.c * d.localisation,
-                cardinality: self.c * d.cardinality,
-                ..d
-            });
+            return Ok(d.times(self.c));
         }
         self.decompose_in_units(truth, estimate, metric)
     }
 
-    /// [`Ospa::decompose_with`] in the units of the points (c^p representable).
+    /// [`Ospa::decompose_with`] in the units of the points (c^p representable): eqs.
+    /// (24)–(26) with X = `x` the truth and Y = `y` the estimate.
     fn decompose_in_units<T, M: Metric<T> + ?Sized>(
         &self,
-        truth: &[T],
-        estimate: &[T],
+        x: &[T],
+        y: &[T],
         metric: &M,
     ) -> Result<OspaDecomposition> {
-        let a = cutoff_assignment(truth, estimate, metric, self.c, self.p)?;
-        let n = truth.len().max(estimate.len());
+        let a = cutoff_assignment(x, y, metric, self.c, self.p)?;
+        let n = x.len().max(y.len());
         if n == 0 {
             return Ok(OspaDecomposition {
                 distance: 0.0,
@@ -154,7 +151,7 @@ impl Ospa {
         }
         let nf = n as f64;
         let loc = a.total / nf;
-        let card = fns::powp(self.c, self.p) * truth.len().abs_diff(estimate.len()) as f64 / nf;
+        let card = fns::powp(self.c, self.p) * x.len().abs_diff(y.len()) as f64 / nf;
         Ok(OspaDecomposition {
             distance: fns::rootp(loc + card, self.p),
             localisation: fns::rootp(loc, self.p),
@@ -164,8 +161,22 @@ impl Ospa {
     }
 }
 
+impl OspaDecomposition {
+    /// The decomposition of distances given in units of `c`, in the units of the points
+    /// (every part is rooted, so each scales by `c`).
+    fn times(self, c: f64) -> Self {
+        OspaDecomposition {
+            distance: c * self.distance,
+            localisation: c * self.localisation,
+            cardinality: c * self.cardinality,
+            ..self
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
+    //! OSPA against brute-force enumeration of the permutations.
     use super::*;
     use crate::metrics::test_util::{brute_force_cut_sum, point_sets, powp};
     use rand::{SeedableRng, rngs::SmallRng};

@@ -409,8 +409,7 @@ pub(crate) fn graph_for_tests<T, M: Metric<T> + ?Sized>(
         x,
         y,
         metric,
-        c,
-        p,
+        (c, p),
         MAX_CLOSE_PAIRS,
         Candidates::new(x, y, metric, c)?,
     )
@@ -492,7 +491,7 @@ pub(crate) fn build<T, M: Metric<T> + ?Sized>(
     } else {
         let candidates = Candidates::new(x, y, metric, c)?;
         if force_graph || candidates.grid.is_some() || pairs > DIRECT_DENSE_MAX {
-            return close_graph(x, y, metric, c, p, cap, candidates).map(Problem::Graph);
+            return close_graph(x, y, metric, (c, p), cap, candidates).map(Problem::Graph);
         }
         Some(candidates)
     };
@@ -534,8 +533,7 @@ fn close_graph<T, M: Metric<T> + ?Sized>(
     x: &[T],
     y: &[T],
     metric: &M,
-    c: f64,
-    p: f64,
+    (c, p): (f64, f64),
     cap: usize,
     candidates: Candidates,
 ) -> Result<CloseGraph> {

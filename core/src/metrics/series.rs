@@ -184,11 +184,25 @@ fn each_step<R: Send>(steps: usize, step: impl Fn(usize) -> Result<R> + Sync) ->
         .collect()
 }
 
-fn check_steps(truths: usize, estimates: usize) -> Result<()> {
-    if truths != estimates {
-        return Err(Error::dimension("estimates", truths, estimates));
+/// Runs `step(truths[t], estimates[t])` for every step with [`each_step`], after checking
+/// that the two have as many steps.
+fn each_pair<A, B, T, R>(
+    truths: &[A],
+    estimates: &[B],
+    step: impl Fn(&[T], &[T]) -> Result<R> + Sync,
+) -> Result<Vec<R>>
+where
+    A: AsRef<[T]> + Sync,
+    B: AsRef<[T]> + Sync,
+    T: Sync,
+    R: Send,
+{
+    if truths.len() != estimates.len() {
+        return Err(Error::dimension("estimates", truths.len(), estimates.len()));
     }
-    Ok(())
+    each_step(truths.len(), |t| {
+        step(truths[t].as_ref(), estimates[t].as_ref())
+    })
 }
 
 impl Gospa {
@@ -244,14 +258,9 @@ impl Gospa {
         T: Sync,
         M: Metric<T> + Sync + ?Sized,
     {
-        check_steps(truths.len(), estimates.len())?;
-        let (x, y) = (
-            |t: usize| truths[t].as_ref(),
-            |t: usize| estimates[t].as_ref(),
-        );
         if self.alpha() == 2.0 {
-            let steps = each_step(truths.len(), |t| {
-                let d = self.decompose_with(x(t), y(t), metric)?;
+            let steps = each_pair(truths, estimates, |x, y| {
+                let d = self.decompose_with(x, y, metric)?;
                 Ok((d.distance, d.localisation, d.missed, d.false_targets))
             })?;
             let mut parts = (Vec::new(), Vec::new(), Vec::new());
@@ -264,7 +273,7 @@ impl Gospa {
             }
             Ok(GospaSeries::from_parts(distance, Some(parts)))
         } else {
-            let distance = each_step(truths.len(), |t| self.distance_with(x(t), y(t), metric))?;
+            let distance = each_pair(truths, estimates, |x, y| self.distance_with(x, y, metric))?;
             Ok(GospaSeries::from_parts(distance, None))
         }
     }
@@ -303,7 +312,7 @@ impl Ospa {
     ///
     /// # Errors
     /// As [`Gospa::series_with`].
-    pub fn series_with<A, B, T, M>(
+    pub fn series_with<A, B, T, M: Metric<T> + Sync + ?Sized>(
         &self,
         truths: &[A],
         estimates: &[B],
@@ -313,11 +322,9 @@ impl Ospa {
         A: AsRef<[T]> + Sync,
         B: AsRef<[T]> + Sync,
         T: Sync,
-        M: Metric<T> + Sync + ?Sized,
     {
-        check_steps(truths.len(), estimates.len())?;
-        let steps = each_step(truths.len(), |t| {
-            let d = self.decompose_with(truths[t].as_ref(), estimates[t].as_ref(), metric)?;
+        let steps = each_pair(truths, estimates, |x, y| {
+            let d = self.decompose_with(x, y, metric)?;
             Ok((d.distance, d.localisation, d.cardinality))
         })?;
         Ok(OspaSeries::from_steps(steps))

@@ -3,7 +3,7 @@
 use alloc::vec::Vec;
 
 use crate::error::{Error, Result};
-use crate::gaussian::GaussianMixture;
+use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::math::sum::sum;
 
 /// Drops every component with weight below `threshold` and rescales the survivors by
@@ -54,45 +54,24 @@ pub(crate) fn prune_owned(mixture: GaussianMixture, threshold: f64) -> Result<Ga
         }
         // Move the survivors out (in order) instead of copying them; the same numbers as
         // `prune`'s `rescale`.
-        let mut kept: Vec<_> = mixture
+        let kept: Vec<_> = mixture
             .into_components()
             .into_iter()
             .filter(|(w, _)| *w >= threshold)
             .collect();
-        let kept_total = sum(kept.iter().map(|(w, _)| *w));
-        let scale = if kept_total > 0.0 {
-            total / kept_total
-        } else {
-            1.0
-        };
-        for (w, _) in &mut kept {
-            *w *= scale;
-        }
-        return GaussianMixture::new(kept, "mixture");
+        return scaled_to(kept, total);
     }
-    let mut components = mixture.into_components();
+    let components = mixture.into_components();
     if components.is_empty() {
         return GaussianMixture::new(components, "mixture");
     }
-    let kept_total = sum(components.iter().map(|(w, _)| *w));
-    let scale = if kept_total > 0.0 {
-        total / kept_total
-    } else {
-        1.0
-    };
-    for (w, _) in &mut components {
-        *w *= scale;
-    }
-    GaussianMixture::new(components, "mixture")
+    scaled_to(components, total)
 }
 
 /// The survivors `kept` (in order, at least one of `mixture`'s components is below the
 /// threshold) rescaled to the total weight of `mixture`; when none survives, the heaviest
 /// component (the first on ties) with the whole weight.
-fn rescale(
-    mut kept: Vec<(f64, crate::gaussian::Gaussian)>,
-    mixture: &GaussianMixture,
-) -> Result<GaussianMixture> {
+fn rescale(mut kept: Vec<(f64, Gaussian)>, mixture: &GaussianMixture) -> Result<GaussianMixture> {
     let components = mixture.components();
     let total = mixture.total_weight();
     if kept.is_empty() {
@@ -104,6 +83,12 @@ fn rescale(
         }
         kept.push(components[best].clone());
     }
+    scaled_to(kept, total)
+}
+
+/// The mixture of `kept` with every weight scaled by W/W_kept, W = `total` (by 1 when
+/// W_kept = Σ kept w is not positive): the renormalisation of [`prune`].
+fn scaled_to(mut kept: Vec<(f64, Gaussian)>, total: f64) -> Result<GaussianMixture> {
     let kept_total = sum(kept.iter().map(|(w, _)| *w));
     let scale = if kept_total > 0.0 {
         total / kept_total

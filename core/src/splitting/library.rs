@@ -104,6 +104,22 @@ const VP4_MEANS: [f64; 4] = [
 const VP4_SIGMA: f64 = 0.6429648669510528;
 const TABLE_I_LAMBDA: f64 = 0.001;
 
+/// Checks the size of a split: R = `components` in [[`MIN_SPLIT_COMPONENTS`],
+/// [`MAX_SPLIT_COMPONENTS`]] and `lambda` in [[`MIN_LAMBDA`], [`MAX_LAMBDA`]].
+fn check_size(components: usize, lambda: f64) -> Result<()> {
+    if !(MIN_SPLIT_COMPONENTS..=MAX_SPLIT_COMPONENTS).contains(&components) {
+        return Err(Error::parameter(
+            "components",
+            components as f64,
+            "an integer in [2, 16]",
+        ));
+    }
+    if !(MIN_LAMBDA..=MAX_LAMBDA).contains(&lambda) {
+        return Err(Error::parameter("lambda", lambda, "in [1e-6, 10]"));
+    }
+    Ok(())
+}
+
 impl Default for SplitLibrary {
     /// [`SplitLibrary::table_i`].
     fn default() -> Self {
@@ -126,19 +142,12 @@ impl SplitLibrary {
     /// its J is about 4e-12 above the minimum [`SplitLibrary::optimise`] finds, whose
     /// parameters agree with it to about 1e-5.
     pub fn table_i() -> Self {
-        let objective = objective(
-            &TABLE_I_WEIGHTS,
-            &TABLE_I_MEANS,
+        Self::from_parts(
+            TABLE_I_WEIGHTS.to_vec(),
+            TABLE_I_MEANS.to_vec(),
             TABLE_I_SIGMA,
             TABLE_I_LAMBDA,
-        );
-        Self {
-            weights: TABLE_I_WEIGHTS.to_vec(),
-            means: TABLE_I_MEANS.to_vec(),
-            sigma: TABLE_I_SIGMA,
-            lambda: TABLE_I_LAMBDA,
-            objective,
-        }
+        )
     }
 
     /// The library entry for `components` and `lambda`: Table I verbatim for
@@ -246,16 +255,7 @@ impl SplitLibrary {
     /// # Ok::<(), fisst::Error>(())
     /// ```
     pub fn optimise(components: usize, lambda: f64, spacing: Spacing) -> Result<Self> {
-        if !(MIN_SPLIT_COMPONENTS..=MAX_SPLIT_COMPONENTS).contains(&components) {
-            return Err(Error::parameter(
-                "components",
-                components as f64,
-                "an integer in [2, 16]",
-            ));
-        }
-        if !(MIN_LAMBDA..=MAX_LAMBDA).contains(&lambda) {
-            return Err(Error::parameter("lambda", lambda, "in [1e-6, 10]"));
-        }
+        check_size(components, lambda)?;
         let equal = Layout {
             r: components,
             spacing: Spacing::Equal,
@@ -300,16 +300,7 @@ impl SplitLibrary {
     /// # Ok::<(), fisst::Error>(())
     /// ```
     pub fn variance_preserving(components: usize, lambda: f64) -> Result<Self> {
-        if !(MIN_SPLIT_COMPONENTS..=MAX_SPLIT_COMPONENTS).contains(&components) {
-            return Err(Error::parameter(
-                "components",
-                components as f64,
-                "an integer in [2, 16]",
-            ));
-        }
-        if !(MIN_LAMBDA..=MAX_LAMBDA).contains(&lambda) {
-            return Err(Error::parameter("lambda", lambda, "in [1e-6, 10]"));
-        }
+        check_size(components, lambda)?;
         let (weights, means, sigma) = match (components, lambda) {
             // The entries the filters use, precomputed (the optimiser takes ~0.1 s); a test
             // checks that the optimiser reproduces them.
@@ -317,18 +308,16 @@ impl SplitLibrary {
             (4, 0.001) => (VP4_WEIGHTS.to_vec(), VP4_MEANS.to_vec(), VP4_SIGMA),
             _ => super::variance_preserving::optimise(components, lambda),
         };
-        let objective = objective(&weights, &means, sigma, lambda);
-        Ok(Self {
-            weights,
-            means,
-            sigma,
-            lambda,
-            objective,
-        })
+        Ok(Self::from_parts(weights, means, sigma, lambda))
     }
 
     fn from_theta(layout: &Layout, theta: &[f64], lambda: f64) -> Self {
         let (weights, means, sigma) = layout.unpack(theta);
+        Self::from_parts(weights, means, sigma, lambda)
+    }
+
+    /// The library of the split (w̃, m̃, σ̃) for `lambda`, with its J of eq. (13).
+    fn from_parts(weights: Vec<f64>, means: Vec<f64>, sigma: f64, lambda: f64) -> Self {
         let objective = objective(&weights, &means, sigma, lambda);
         Self {
             weights,

@@ -1,6 +1,8 @@
-//! Region masses against closed forms, independent quadratures and Monte Carlo.
+//! Region masses ⟨1_S, N(m, P)⟩ (eq. (8) of `001_…`, whose indicator 1_S is also checked) against
+//! closed forms, independent quadratures and Monte Carlo.
 
 use super::*;
+use crate::gaussian::normal;
 use crate::regions::quadrature::integrate;
 use rand::{RngExt, SeedableRng, rngs::SmallRng};
 use std::f64::consts::PI;
@@ -81,7 +83,7 @@ fn monte_carlo(region: &Region, g: &Gaussian, n: usize, seed: u64) -> (f64, f64)
 }
 
 #[test]
-fn box_2d_is_the_bivariate_rectangle_and_the_ray_method_agrees() {
+fn eq8_box_2d_is_the_bivariate_rectangle_and_the_ray_method_agrees() {
     let mut rng = SmallRng::seed_from_u64(21);
     for _ in 0..60 {
         let g = random_gauss2(&mut rng);
@@ -122,7 +124,7 @@ fn box_2d_is_the_bivariate_rectangle_and_the_ray_method_agrees() {
 }
 
 #[test]
-fn discs_match_closed_forms() {
+fn eq8_discs_match_closed_forms() {
     // Centred on the mean of σ²I: 1 − exp(−r²/2σ²).
     for (sigma, r) in [(1.0, 1.0), (0.3, 0.1), (2.0, 5.0), (1.0, 1e-3), (0.5, 4.0)] {
         let g = gauss(&[0.5, -0.25], &[sigma * sigma, 0.0, 0.0, sigma * sigma]);
@@ -171,7 +173,7 @@ fn discs_match_closed_forms() {
 }
 
 #[test]
-fn discs_and_polygons_match_the_slab_oracle_and_monte_carlo() {
+fn eq8_discs_and_polygons_match_the_slab_oracle_and_monte_carlo() {
     let mut rng = SmallRng::seed_from_u64(22);
     for trial in 0..25 {
         let g = random_gauss2(&mut rng);
@@ -235,7 +237,7 @@ fn discs_and_polygons_match_the_slab_oracle_and_monte_carlo() {
 }
 
 #[test]
-fn self_intersecting_polygons_follow_the_even_odd_rule() {
+fn eq8_self_intersecting_polygons_follow_the_even_odd_rule() {
     // A bow tie = two triangles meeting at (1, 1); a pentagram's centre pentagon is outside.
     let g = gauss(&[1.0, 1.2], &[0.7, 0.2, 0.2, 0.5]);
     let bow = [[0.0, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0]];
@@ -267,7 +269,7 @@ fn self_intersecting_polygons_follow_the_even_odd_rule() {
 }
 
 #[test]
-fn unions_intersections_and_complements() {
+fn eq8_unions_intersections_and_complements() {
     let mut rng = SmallRng::seed_from_u64(23);
     for _ in 0..20 {
         let g = random_gauss2(&mut rng);
@@ -296,7 +298,7 @@ fn unions_intersections_and_complements() {
 }
 
 #[test]
-fn one_dimensional_regions_are_exact() {
+fn eq8_one_dimensional_regions_are_exact() {
     let g = gauss(&[0.3], &[4.0]);
     let a = Region::axis_box(&[-1.0], &[0.5], "a").unwrap();
     let b = Region::ball(&[1.0], 1.5, "b").unwrap(); // [−0.5, 2.5]
@@ -309,7 +311,7 @@ fn one_dimensional_regions_are_exact() {
 }
 
 #[test]
-fn higher_dimensions_against_closed_forms() {
+fn eq8_higher_dimensions_against_closed_forms() {
     // The positive orthant of a correlated trivariate normal:
     // 1/8 + (asin ρ₁₂ + asin ρ₁₃ + asin ρ₂₃)/(4π).
     let (r12, r13, r23) = (0.3f64, -0.4f64, 0.5f64);
@@ -363,7 +365,7 @@ fn higher_dimensions_against_closed_forms() {
 }
 
 #[test]
-fn extra_state_components_are_ignored_and_dimensions_checked() {
+fn eq8_extra_state_components_are_ignored_and_dimensions_checked() {
     // A 4D state (position, velocity): only the position marginal matters.
     let full = gauss(
         &[0.5, -0.5, 3.0, 4.0],
@@ -394,7 +396,7 @@ fn extra_state_components_are_ignored_and_dimensions_checked() {
 }
 
 #[test]
-fn inclusion_tests_and_boundaries() {
+fn eq8_inclusion_tests_and_boundaries() {
     let bx = Region::axis_box(&[0.0, 0.0], &[1.0, 2.0], "b").unwrap();
     assert!(bx.contains(&[0.0, 2.0]) && bx.contains(&[1.0, 0.0, 9.0]));
     assert!(!bx.contains(&[1.0 + f64::EPSILON, 1.0]));
