@@ -171,7 +171,7 @@ const SYS: Lg = Lg {
 };
 
 #[test]
-fn theorem_1_is_attained_by_map_detection_and_the_posterior_mean() {
+fn thm1_is_attained_by_map_detection_and_the_posterior_mean() {
     let (e0, e1) = (6.0, 9.0);
     let mut worst: f64 = 0.0;
     let mut seed = 1;
@@ -206,7 +206,7 @@ fn theorem_1_is_attained_by_map_detection_and_the_posterior_mean() {
 }
 
 #[test]
-fn theorem_2_lies_below_the_optimal_mse() {
+fn thm2_lies_below_the_optimal_mse() {
     let (e0, e1) = (6.0, 9.0);
     let mut worst = f64::INFINITY;
     let mut seed = 100;
@@ -246,7 +246,7 @@ fn theorem_2_lies_below_the_optimal_mse() {
 }
 
 #[test]
-fn no_clutter_theorems_reduce_to_corollary_3() {
+fn cor3_is_what_the_theorems_reduce_to_without_clutter() {
     let (e0, e1) = (6.0, 9.0);
     for &r in &[0.0, 0.3, 0.7, 1.0] {
         for &p in &[0.0, 0.4, 1.0] {
@@ -297,7 +297,7 @@ fn no_clutter_theorems_reduce_to_corollary_3() {
 }
 
 #[test]
-fn asserted_target_with_clutter_is_corollary_2() {
+fn cor2_is_an_asserted_target_with_clutter() {
     // r = 1: every region is the whole space, w_n = 1, η2 = 0: (23) is (28).
     let s = Lg { p: 0.7, ..SYS };
     let (prior, obs, c) = (s.prior(), s.obs(), s.flat());
@@ -337,7 +337,7 @@ fn asserted_target_with_clutter_is_corollary_2() {
 }
 
 #[test]
-fn example_2_is_reproduced_and_its_regularity_fails() {
+fn ex2_is_reproduced_and_its_regularity_fails() {
     let reg = bounds::example2_regularity();
     assert!(
         (reg.information - 5.2716).abs() < 5e-5,
@@ -390,7 +390,7 @@ fn example_2_is_reproduced_and_its_regularity_fails() {
 }
 
 #[test]
-fn a_non_gaussian_prior_and_variable_detection_stay_below_the_mse() {
+fn thm1_a_non_gaussian_prior_and_variable_detection_stay_below_the_mse() {
     // Mixture prior, tabulated P_o: the bound must not exceed the MSE of MAP + posterior mean
     // (computed by quadrature per z here, in a Monte Carlo over the system).
     let prior = Density1::mixture(&[(0.5, -2.0, 1.0), (0.5, 2.0, 1.5)]).unwrap();
@@ -462,7 +462,7 @@ fn a_non_gaussian_prior_and_variable_detection_stay_below_the_mse() {
 }
 
 #[test]
-fn fig_3_enumeration_dominates_irf_and_they_meet() {
+fn fig3_enumeration_dominates_irf_and_they_meet() {
     // Fig. 3: σf² = 100 (J0 = 1/100), σh² = 25 (J1 = 1/25), r = 1.
     use fisst::bounds::{Sequential, sequential_bound};
     for &p in &[0.2, 0.5, 0.8, 1.0] {
@@ -485,7 +485,7 @@ fn fig_3_enumeration_dominates_irf_and_they_meet() {
 }
 
 #[test]
-fn vector_bounds_reduce_to_the_scalar_ones() {
+fn eq72_vector_bounds_reduce_to_the_scalar_ones() {
     let v = bounds::component_bounds_no_clutter(0.6, 0.7, &[25.0], &[100.0], 150.0, 200.0).unwrap();
     let s = bounds::gaussian_no_clutter(0.6, 0.7, 100.0, 25.0, 150.0, 200.0).unwrap();
     assert!((v[0].bound - s.bound).abs() < 1e-12);
@@ -665,7 +665,7 @@ fn simulate_vector(
 }
 
 #[test]
-fn vector_bounds_against_the_optimal_detector_estimator() {
+fn eq64_vector_bounds_against_the_optimal_detector_estimator() {
     // Model I with constant P_o and a linear-Gaussian sensor: each component bound (63) and
     // the whole-state bound are attained (|z| < 4); model II (64): never above the MSE.
     let (e0, e1) = (6.0, 9.0);

@@ -110,6 +110,29 @@ fn normal_mass(a: f64, b: f64, mean: f64, var: f64) -> f64 {
     }
 }
 
+/// The knots of a table: `x` strictly increasing and finite, at least 2 of them, and
+/// `values` (the length of the column named `what`) as many. Errors name `x`, `x[i]` or
+/// `what`.
+fn check_knots(x: &[f64], values: usize, what: &str) -> Result<()> {
+    if x.len() < 2 {
+        return Err(Error::dimension("x", 2, x.len()));
+    }
+    if values != x.len() {
+        return Err(Error::dimension(what, x.len(), values));
+    }
+    for (i, &v) in x.iter().enumerate() {
+        check_finite(&alloc::format!("x[{i}]"), v)?;
+        if i > 0 && v <= x[i - 1] {
+            return Err(Error::parameter(
+                alloc::format!("x[{i}]"),
+                v,
+                "> the previous knot",
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// How many standard deviations a Gaussian's support spans each side (e^{−72} beyond).
 pub const GAUSSIAN_SPAN: f64 = 12.0;
 
@@ -190,22 +213,7 @@ impl Density1 {
     /// A table: `x` strictly increasing (≥ 2 knots), `density` ≥ 0 with a positive integral.
     /// Errors name `x[i]` or `density[i]`.
     pub fn table(x: &[f64], density: &[f64]) -> Result<Self> {
-        if x.len() < 2 {
-            return Err(Error::dimension("x", 2, x.len()));
-        }
-        if density.len() != x.len() {
-            return Err(Error::dimension("density", x.len(), density.len()));
-        }
-        for (i, &v) in x.iter().enumerate() {
-            check_finite(&alloc::format!("x[{i}]"), v)?;
-            if i > 0 && v <= x[i - 1] {
-                return Err(Error::parameter(
-                    alloc::format!("x[{i}]"),
-                    v,
-                    "> the previous knot",
-                ));
-            }
-        }
+        check_knots(x, density.len(), "density")?;
         for (i, &d) in density.iter().enumerate() {
             if !(d.is_finite() && d >= 0.0) {
                 return Err(Error::parameter(
@@ -414,22 +422,7 @@ impl Detection {
 
     /// Validated table; errors name `x[i]` or `probability[i]`.
     pub fn table(x: &[f64], probability: &[f64]) -> Result<Self> {
-        if x.len() < 2 {
-            return Err(Error::dimension("x", 2, x.len()));
-        }
-        if probability.len() != x.len() {
-            return Err(Error::dimension("probability", x.len(), probability.len()));
-        }
-        for (i, &v) in x.iter().enumerate() {
-            check_finite(&alloc::format!("x[{i}]"), v)?;
-            if i > 0 && v <= x[i - 1] {
-                return Err(Error::parameter(
-                    alloc::format!("x[{i}]"),
-                    v,
-                    "> the previous knot",
-                ));
-            }
-        }
+        check_knots(x, probability.len(), "probability")?;
         for (i, &p) in probability.iter().enumerate() {
             check_probability(|| alloc::format!("probability[{i}]"), p)?;
         }
@@ -535,13 +528,13 @@ impl Observation for LinearGaussian {
 }
 
 #[cfg(test)]
-mod variance_tests {
+mod tests {
     use super::*;
 
     /// A subnormal variance is an error naming the field (it made Theorem 2's quadrature run
     /// for 37 s in the fuzzer); the smallest normal one is accepted.
     #[test]
-    fn subnormal_variances_are_rejected_by_name() {
+    fn thm2_subnormal_variances_are_rejected_by_name() {
         for v in [5e-324, 1e-310, 0.0, -1.0, f64::NAN, f64::INFINITY] {
             let e = Density1::gaussian(0.0, v).unwrap_err();
             assert!(alloc::format!("{e}").contains("variance"), "{e}");
@@ -550,5 +543,24 @@ mod variance_tests {
         }
         assert!(Density1::gaussian(0.0, f64::MIN_POSITIVE).is_ok());
         assert!(Density1::mixture(&[(1.0, 0.0, 1e-300)]).is_ok());
+    }
+
+    /// The tables of f, ψ, c (13)/(22) and of P_o: the error names the column or knot at fault,
+    /// the same way for both.
+    #[test]
+    fn eq13_tables_name_the_knot_at_fault() {
+        let field = |e: Error| alloc::string::String::from(e.field());
+        let d = |x: &[f64], v: &[f64]| field(Density1::table(x, v).unwrap_err());
+        let p = |x: &[f64], v: &[f64]| field(Detection::table(x, v).unwrap_err());
+        assert_eq!(d(&[0.0], &[1.0]), "x");
+        assert_eq!(p(&[0.0], &[1.0]), "x");
+        assert_eq!(d(&[0.0, 1.0], &[1.0]), "density");
+        assert_eq!(p(&[0.0, 1.0], &[1.0]), "probability");
+        assert_eq!(d(&[0.0, f64::NAN], &[1.0, 1.0]), "x[1]");
+        assert_eq!(p(&[0.0, 1.0, 1.0], &[1.0, 1.0, 1.0]), "x[2]");
+        assert_eq!(d(&[0.0, 1.0], &[1.0, -1.0]), "density[1]");
+        assert_eq!(p(&[0.0, 1.0], &[1.0, 1.5]), "probability[1]");
+        assert!(Density1::table(&[0.0, 1.0], &[1.0, 1.0]).is_ok());
+        assert!(Detection::table(&[0.0, 1.0], &[0.2, 0.9]).is_ok());
     }
 }

@@ -1,0 +1,243 @@
+//! Tests of Theorem 2 (22)–(26) of paper 002: the n = 2 cubature against the Monte Carlo and a
+//! brute grid sum, the methods reported per cardinality, and the series' cut and η2 bracket.
+
+use super::cubature::quadrature2;
+use super::monte_carlo::{Table, monte_carlo};
+use super::*;
+use crate::bounds::model::{Density1, Detection, LinearGaussian};
+use crate::math::rng::seeded;
+
+struct Case {
+    prior: Density1,
+    obs: LinearGaussian,
+    clutter: Density1,
+}
+
+fn case(p: f64, clutter: Density1) -> Case {
+    Case {
+        prior: Density1::gaussian(1.0, 4.0).unwrap(),
+        obs: LinearGaussian::new(Detection::constant(p).unwrap(), 1.0, 0.0, 1.0).unwrap(),
+        clutter,
+    }
+}
+
+fn model<'a>(c: &'a Case, r: f64, lambda: f64) -> ModelII<'a> {
+    ModelII {
+        existence: r,
+        prior: &c.prior,
+        observation: &c.obs,
+        clutter_rate: lambda,
+        clutter_density: &c.clutter,
+        false_alarm_error: 6.0,
+        miss_error: 9.0,
+    }
+}
+
+/// The n = 2 Monte Carlo of the same three quantities, with its m table.
+fn mc2(m: &ModelII<'_>, p: f64, samples: usize, seed: u64) -> Term {
+    let table = Table::marginal(m, p, 1e-10);
+    let map = MapTest { r: m.existence, p };
+    monte_carlo(m, &table, p, 2, samples, &mut seeded(seed), map).unwrap()
+}
+
+/// A_1, the n = 1 information integral Theorem 2 scales the cubature's A_2 by.
+fn a1(m: &ModelII<'_>, p: f64) -> f64 {
+    let zone = map_region(m, p, measurement_range(m), 1e-10);
+    single_point(m, p, &zone, 1e-10).1
+}
+
+#[test]
+fn thm2_n2_cubature_agrees_with_monte_carlo() {
+    for (r, p, lambda, clutter) in [
+        (0.6, 0.8, 1.0, Density1::uniform(-10.0, 10.0).unwrap()),
+        (0.3, 0.9, 2.0, Density1::uniform(-10.0, 10.0).unwrap()),
+        (0.5, 0.7, 0.5, Density1::gaussian(0.0, 9.0).unwrap()),
+    ] {
+        let c = case(p, clutter);
+        let m = model(&c, r, lambda);
+        let q = quadrature2(&m, p, a1(&m, p), measurement_range(&m), 1e-10);
+        let mc = mc2(&m, p, 200_000, 7);
+        std::println!(
+            "r {r} P {p} λ {lambda}: w {:.6}±{:.1e} vs {:.6}±{:.1e}; J'^-1 {:.6}±{:.1e} vs {:.6}±{:.1e}; null {:.6}±{:.1e} vs {:.6}±{:.1e}",
+            q.w,
+            q.ew,
+            mc.w,
+            mc.ew,
+            q.s,
+            q.es,
+            mc.s,
+            mc.es,
+            q.null,
+            q.enull,
+            mc.null,
+            mc.enull
+        );
+        for (a, ea, b, eb, what) in [
+            (q.w, q.ew, mc.w, mc.ew, "w2"),
+            (q.s, q.es, mc.s, mc.es, "J'2^-1"),
+            (q.null, q.enull, mc.null, mc.enull, "null2"),
+        ] {
+            assert!(ea < 1e-4 * a.max(1e-2), "{what}: quadrature error {ea}");
+            assert!(
+                fns::abs(a - b) <= 4.0 * eb + ea + 1e-12,
+                "{what}: quadrature {a} vs Monte Carlo {b} ± {eb}"
+            );
+        }
+    }
+}
+
+/// w_2 and null_2 by a brute midpoint sum over a 1500 × 1500 grid of Z² (m by quadrature
+/// at the grid's nodes, the MAP indicator evaluated cell by cell).
+#[test]
+fn thm2_n2_cubature_agrees_with_a_fine_grid_sum() {
+    let (r, p, lambda) = (0.6, 0.8, 1.0);
+    let c = case(p, Density1::uniform(-10.0, 10.0).unwrap());
+    let m = model(&c, r, lambda);
+    let (zl, zh) = measurement_range(&m);
+    let q = quadrature2(&m, p, a1(&m, p), (zl, zh), 1e-10);
+    let n = 1500;
+    let h1 = (zh - zl) / n as f64;
+    let z1: Vec<f64> = (0..n).map(|i| zl + h1 * (i as f64 + 0.5)).collect();
+    let m1: Vec<f64> = z1
+        .iter()
+        .map(|&z| marginal(m.prior, m.observation, p, z, 1e-10))
+        .collect();
+    let v1: Vec<f64> = z1.iter().map(|&z| lambda * c.clutter.pdf(z)).collect();
+    let (cl, ch) = (-10.0, 10.0);
+    let h2 = (ch - cl) / n as f64;
+    let k0 = (1.0 - r) - r * (1.0 - p);
+    let (mut w, mut null) = (0.0, 0.0);
+    for j in 0..n {
+        let z2 = cl + h2 * (j as f64 + 0.5);
+        let c2 = c.clutter.pdf(z2);
+        let b2 = marginal(m.prior, m.observation, p, z2, 1e-10) / (lambda * c2);
+        for i in 0..n {
+            let declared = v1[i] <= 0.0 || r * p * (m1[i] / v1[i] + b2) >= k0;
+            if declared {
+                w += c2 * m1[i] * h1 * h2;
+            } else {
+                null += c2 * (v1[i] / lambda) * h1 * h2;
+            }
+        }
+    }
+    std::println!(
+        "grid: w {w:.6} null {null:.6}; quadrature w {:.6} null {:.6}",
+        q.w,
+        q.null
+    );
+    assert!(
+        fns::abs(w - q.w) < 2e-3,
+        "w2: grid {w} vs quadrature {}",
+        q.w
+    );
+    assert!(
+        fns::abs(null - q.null) < 2e-3,
+        "null2: grid {null} vs quadrature {}",
+        q.null
+    );
+}
+
+#[test]
+fn thm2_each_cardinality_reports_its_method() {
+    let c = case(0.8, Density1::uniform(-10.0, 10.0).unwrap());
+    let m = model(&c, 0.6, 1.0);
+    let mc = theorem2(&m, &Settings::default()).unwrap();
+    let quad = theorem2(
+        &m,
+        &Settings {
+            quadrature_cardinality: 2,
+            ..Settings::default()
+        },
+    )
+    .unwrap();
+    let methods = |b: &JdeBound| b.cardinalities.iter().map(|c| c.method).collect::<Vec<_>>();
+    let (a, b) = (methods(&mc), methods(&quad));
+    assert!(a.len() > 3 && a.len() == b.len());
+    assert_eq!(&a[..2], &[Method::Quadrature, Method::MonteCarlo]);
+    assert_eq!(
+        &b[..3],
+        &[Method::Quadrature, Method::Quadrature, Method::MonteCarlo]
+    );
+    assert!(
+        a[2..]
+            .iter()
+            .chain(&b[2..])
+            .all(|&m| m == Method::MonteCarlo)
+    );
+    let (x, y) = (&mc.cardinalities[1], &quad.cardinalities[1]);
+    assert!(fns::abs(x.inverse_information - y.inverse_information) <= 4.0 * x.error + y.error);
+    let d = fns::abs(mc.assembled.bound - quad.assembled.bound);
+    assert!(
+        d <= 4.0 * (mc.error + quad.error),
+        "{d} vs {} {}",
+        mc.error,
+        quad.error
+    );
+}
+
+/// (23): the series is cut at the first N whose tail Σ_{k>N} C_k is below the tolerance, or
+/// at `max_clutter`.
+#[test]
+fn thm2_series_is_cut_where_its_tail_is_below_the_tolerance() {
+    let s = Settings::default();
+    for lambda in [0.0, 0.5, 3.0, 10.0] {
+        let (last, kept) = series::truncation(lambda, &s);
+        assert!(
+            1.0 - kept <= s.series_tolerance,
+            "λ {lambda}: tail {}",
+            1.0 - kept
+        );
+        if last > 0 {
+            let before = kept - poisson_pmf(lambda, last);
+            assert!(1.0 - before > s.series_tolerance, "λ {lambda}: cut late");
+        }
+    }
+    assert_eq!(series::truncation(0.0, &s), (0, 1.0));
+    let capped = Settings {
+        max_clutter: 3,
+        ..Settings::default()
+    };
+    assert_eq!(series::truncation(20.0, &capped).0, 3);
+}
+
+/// (23)–(24): η2's bracket holds its lower end and the cut tail (capped at 1); the bound is
+/// assembled at both ends and the smaller is returned with its η.
+#[test]
+fn thm2_eta_bracket_takes_the_smaller_bound() {
+    let c = case(0.8, Density1::uniform(-10.0, 10.0).unwrap());
+    let m = model(&c, 0.6, 1.0);
+    let b = theorem2(
+        &m,
+        &Settings {
+            samples: 2000,
+            max_clutter: 2,
+            ..Settings::default()
+        },
+    )
+    .unwrap();
+    let bracket = EtaBracket::new(1.0, &b.cardinalities);
+    let covered: f64 = (0..=3).map(|n| poisson_pmf(1.0, n)).sum();
+    assert!(bracket.lo <= bracket.hi && bracket.hi <= 1.0);
+    assert!(fns::abs(bracket.hi - bracket.lo - (1.0 - covered)) < 1e-12);
+    assert!(b.eta == bracket.lo || b.eta == bracket.hi);
+    let ingredients = |eta: f64| Ingredients {
+        existence: 0.6,
+        mean_detection: b.mean_detection,
+        undetected_variance: b.undetected_variance,
+        inverse_information: 1.0,
+        detected_mass: 0.5,
+        absent_empty: fns::exp(-1.0),
+        absent_null: eta,
+        undetected_empty: fns::exp(-1.0),
+        undetected_null: eta,
+        false_alarm_error: 6.0,
+        miss_error: 9.0,
+    };
+    let (got, eta) = bracket.assemble(ingredients);
+    let lo = crate::bounds::closed::assemble(&ingredients(bracket.lo)).bound;
+    let hi = crate::bounds::closed::assemble(&ingredients(bracket.hi)).bound;
+    assert_eq!(got.bound, lo.min(hi));
+    assert_eq!(eta, if hi < lo { bracket.hi } else { bracket.lo });
+    let exact = EtaBracket::exact(0.25);
+    assert_eq!((exact.lo, exact.hi, exact.error), (0.25, 0.25, 0.0));
+}

@@ -1,0 +1,167 @@
+//! The vector problem of paper 002, Section V: the Gaussian prior of a state in R^l, the
+//! linear-Gaussian sensor, the false observations of models I (13) and II (22), and the
+//! checks of their entries.
+
+use alloc::vec::Vec;
+use nalgebra::DMatrix;
+
+use crate::bounds::model::Density;
+use crate::error::{Error, Result};
+use crate::math::fns;
+
+/// The Gaussian prior f = N(x; x0, P) of a state in R^l (Section V).
+#[derive(Clone, Debug, PartialEq)]
+pub struct GaussianPrior {
+    pub(super) mean: Vec<f64>,
+    pub(super) cov: DMatrix<f64>,
+}
+
+impl GaussianPrior {
+    /// N(`mean`, `cov`), `cov` the l × l covariance in row-major order (symmetric positive
+    /// definite). Errors name `mean[i]` or `cov`.
+    pub fn new(mean: &[f64], cov: &[f64]) -> Result<Self> {
+        let l = mean.len();
+        if l == 0 {
+            return Err(Error::dimension("mean", 1, 0));
+        }
+        for (i, &v) in mean.iter().enumerate() {
+            if !v.is_finite() {
+                return Err(Error::parameter(alloc::format!("mean[{i}]"), v, "finite"));
+            }
+        }
+        let cov = spd("cov", l, cov)?;
+        Ok(GaussianPrior {
+            mean: mean.to_vec(),
+            cov,
+        })
+    }
+
+    /// l.
+    pub fn dims(&self) -> usize {
+        self.mean.len()
+    }
+}
+
+/// A linear-Gaussian sensor with a constant detection probability: P_o(x) = P_o and
+/// g(z|x) = N(z; H x + b, R), z in R^m.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LinearGaussianSensor {
+    pub(super) detection: f64,
+    pub(super) gain: DMatrix<f64>,
+    pub(super) offset: Vec<f64>,
+    pub(super) noise: DMatrix<f64>,
+}
+
+impl LinearGaussianSensor {
+    /// P_o = `detection`, H = `gain` (m × `dims`, row-major; m = `gain.len() / dims`),
+    /// b = `offset` (length m), R = `noise_cov` (m × m, row-major, symmetric positive
+    /// definite). Errors name `detectionProbability`, `gain`, `offset` or `noiseCov`.
+    pub fn new(
+        detection: f64,
+        gain: &[f64],
+        dims: usize,
+        offset: &[f64],
+        noise_cov: &[f64],
+    ) -> Result<Self> {
+        crate::error::check_probability(|| "detectionProbability".into(), detection)?;
+        if dims == 0 || gain.is_empty() || !gain.len().is_multiple_of(dims) {
+            return Err(Error::dimension("gain", dims.max(1), gain.len()));
+        }
+        let m = gain.len() / dims;
+        for &v in gain {
+            check_finite_gain(v)?;
+        }
+        if offset.len() != m {
+            return Err(Error::dimension("offset", m, offset.len()));
+        }
+        for (i, &v) in offset.iter().enumerate() {
+            if !v.is_finite() {
+                return Err(Error::parameter(alloc::format!("offset[{i}]"), v, "finite"));
+            }
+        }
+        let noise = spd("noiseCov", m, noise_cov)?;
+        Ok(LinearGaussianSensor {
+            detection,
+            gain: DMatrix::from_row_slice(m, dims, gain),
+            offset: offset.to_vec(),
+            noise,
+        })
+    }
+
+    /// m, the measurement dimension.
+    pub fn measurement_dims(&self) -> usize {
+        self.gain.nrows()
+    }
+}
+
+/// A symmetric positive definite n × n matrix from row-major entries.
+fn spd(what: &'static str, n: usize, entries: &[f64]) -> Result<DMatrix<f64>> {
+    if entries.len() != n * n {
+        return Err(Error::dimension(what, n * n, entries.len()));
+    }
+    let a = DMatrix::from_row_slice(n, n, entries);
+    let scale = a.iter().fold(0.0f64, |s, v| s.max(fns::abs(*v)));
+    for i in 0..n {
+        for j in 0..n {
+            let (u, v) = (a[(i, j)], a[(j, i)]);
+            if !u.is_finite() {
+                return Err(Error::parameter(what, u, "finite"));
+            }
+            if fns::abs(u - v) > 1e-12 * scale {
+                return Err(Error::NotPositiveDefinite { what: what.into() });
+            }
+        }
+    }
+    if a.clone().cholesky().is_none() {
+        return Err(Error::NotPositiveDefinite { what: what.into() });
+    }
+    Ok(a)
+}
+
+/// The false observations of the vector bounds: model I's (q, ψ) or model II's (λ, c). Their
+/// densities live on the measurement space, so they need m = 1 (a gain of one row) when
+/// q > 0 or λ > 0.
+#[derive(Clone, Copy)]
+pub enum VectorMeasurement<'a> {
+    /// Model I (13): a false observation with probability q and density ψ.
+    I {
+        /// q.
+        false_alarm_probability: f64,
+        /// ψ.
+        false_alarm_density: &'a dyn Density,
+    },
+    /// Model II (22): Poisson clutter of rate λ and density c (v = λ c).
+    II {
+        /// λ.
+        clutter_rate: f64,
+        /// c.
+        clutter_density: &'a dyn Density,
+    },
+}
+
+/// The vector problem of Section V: a Gaussian state in R^l, a linear-Gaussian sensor,
+/// models I or II, and the component errors e0²/l, e1²/l.
+#[derive(Clone, Copy)]
+pub struct VectorModel<'a> {
+    /// r.
+    pub existence: f64,
+    /// f = N(x0, P).
+    pub prior: &'a GaussianPrior,
+    /// P_o, H, b, R.
+    pub sensor: &'a LinearGaussianSensor,
+    /// Model I or II and its false observations.
+    pub measurement: VectorMeasurement<'a>,
+    /// e0² (of the whole state; component i uses e0²/l).
+    pub false_alarm_error: f64,
+    /// e1² (of the whole state; component i uses e1²/l).
+    pub miss_error: f64,
+}
+
+/// A gain entry must be finite; the error names `gain`.
+pub(super) fn check_finite_gain(v: f64) -> Result<()> {
+    if v.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::parameter("gain", v, "finite"))
+    }
+}
