@@ -69,10 +69,10 @@ use nalgebra::SymmetricEigen;
 
 use crate::bernoulli::chi_square::chi_square_sf;
 use crate::bernoulli::inversion;
-use crate::bernoulli::quadrature::{Estimate, integrate, integrate_vec};
 use crate::error::{Error, Result};
 use crate::gaussian::{Gaussian, normal};
 use crate::math::fns;
+use crate::math::quadrature::{Control, Estimate, Rule, Tolerance, integrate, integrate_vec};
 
 /// The default absolute tolerance of [`BallProbability`] computations: 1e-10 (the contract
 /// is 1e-9).
@@ -389,6 +389,17 @@ impl<'a> Nested<'a> {
     fn keep_going(&self) -> bool {
         self.budget.get() > 0
     }
+
+    /// A level's quadrature: G10/K21 to `tol` (or 64 ε ∫|f|), at most [`MAX_PIECES`] pieces,
+    /// while the evaluation budget lasts.
+    fn control<'k>(&self, tol: f64, keep_going: &'k dyn Fn() -> bool) -> Control<'k> {
+        Control {
+            rule: Rule::G10K21,
+            tolerance: Tolerance::AbsoluteAboveNoise(tol),
+            max_pieces: MAX_PIECES,
+            keep_going: Some(keep_going),
+        }
+    }
 }
 
 /// One piece of an outer level, parameterised by w ∈ [0, 1].
@@ -566,9 +577,11 @@ impl Nested<'_> {
             let inner_tol = (inner_budget / weight).min(1.0);
             weight * self.inside(k + 1, rem, inner_tol).value
         };
-        let own = integrate(&mut f, level.points(), 0.5 * tol, MAX_PIECES, &|| {
-            self.keep_going()
-        });
+        let own = integrate(
+            &mut f,
+            level.points(),
+            &self.control(0.5 * tol, &|| self.keep_going()),
+        );
         Estimate {
             value: own.value,
             error: own.error + 0.25 * tol + TRUNCATION_MASS,
@@ -613,9 +626,11 @@ impl Nested<'_> {
             }
             v
         };
-        let (value, error) = integrate_vec(&mut f, level.points(), 0.5 * tol, MAX_PIECES, &|| {
-            self.keep_going()
-        });
-        (value, error + 0.25 * tol + TRUNCATION_MASS)
+        let own = integrate_vec(
+            &mut f,
+            level.points(),
+            &self.control(0.5 * tol, &|| self.keep_going()),
+        );
+        (own.value, own.error + 0.25 * tol + TRUNCATION_MASS)
     }
 }

@@ -3,6 +3,7 @@
 //! shortcuts of [`ball`](super::ball).
 
 use crate::math::fns;
+use crate::math::special;
 
 /// 2/√π.
 const FRAC_2_SQRT_PI: f64 = core::f64::consts::FRAC_2_SQRT_PI;
@@ -59,7 +60,7 @@ pub fn chi_square_sf(d: usize, t: f64) -> f64 {
         }
     } else {
         let ln_x = fns::ln(x);
-        let mut ln_term = -x + h * ln_x - fns::ln_gamma(h + 1.0);
+        let mut ln_term = -x + h * ln_x - special::ln_gamma(h + 1.0);
         for j in 0..terms {
             if j > 0 {
                 ln_term += ln_x - fns::ln(j as f64 + h);

@@ -26,8 +26,8 @@
 //!
 //! Both bounds are rigorous; the only other error is rounding in the sum (about K ε).
 
-use crate::bernoulli::quadrature::Estimate;
 use crate::math::fns;
+use crate::math::quadrature::Estimate;
 use crate::math::sum::NeumaierSum;
 
 /// P(Σ y_j² ≤ t) for y_j ~ N(μ_j, λ_j), λ_j > 0, to absolute error `tol` (0.4 `tol` each for

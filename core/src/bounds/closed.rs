@@ -327,12 +327,10 @@ pub fn corollary2(
     Ok(mean_detection * s + (1.0 - mean_detection) * undetected_variance)
 }
 
-/// The Poisson pmf C_n = e^{−λ} λⁿ / n!.
+/// The Poisson pmf C_n = e^{−λ} λⁿ / n! ([`special::poisson_pmf`](crate::math::special::poisson_pmf),
+/// Loader's form).
 pub fn poisson_pmf(rate: f64, n: usize) -> f64 {
-    if rate == 0.0 {
-        return if n == 0 { 1.0 } else { 0.0 };
-    }
-    fns::exp(-rate + n as f64 * fns::ln(rate) - fns::ln_factorial(n))
+    crate::math::special::poisson_pmf(rate, n)
 }
 
 /// Fisher information of the linear-Gaussian model (Example 1, with NOTES.md's erratum).

@@ -4,11 +4,11 @@
 
 use alloc::vec::Vec;
 
-use crate::bernoulli::quadrature;
 use crate::bounds::closed::{Assembled, Ingredients, assemble, check_nonnegative};
 use crate::bounds::model::{Density, Observation};
 use crate::error::{Error, Result, check_probability};
 use crate::math::fns;
+use crate::math::quadrature::{self, Control, Rule, Tolerance};
 
 /// How the bounds integrate and sample.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -105,7 +105,8 @@ pub struct JdeBound {
     pub regular: bool,
 }
 
-/// ∫ f over [a, b] split at `pieces` equal parts, to relative tolerance `rel` of ∫|f|.
+/// ∫ f over [a, b] by adaptive G10/K21 from 8 equal pieces, to relative tolerance `rel` of
+/// the first pieces' ∫|f| (or 64 ε ∫|f|), at most 400 pieces: (value, error).
 pub(crate) fn integrate(f: &mut dyn FnMut(f64) -> f64, a: f64, b: f64, rel: f64) -> (f64, f64) {
     if b.partial_cmp(&a) != Some(core::cmp::Ordering::Greater) {
         return (0.0, 0.0);
@@ -115,9 +116,10 @@ pub(crate) fn integrate(f: &mut dyn FnMut(f64) -> f64, a: f64, b: f64, rel: f64)
     let mut g = |x: f64| f(x);
     let mut scale = 0.0;
     for w in pts.windows(2) {
-        scale += quadrature::gk21(&mut g, w[0], w[1]).2;
+        scale += Rule::G10K21.apply(&mut g, w[0], w[1]).abs;
     }
-    let e = quadrature::integrate(&mut g, &pts, rel * scale, 400, &|| true);
+    let tolerance = Tolerance::AbsoluteAboveNoise(rel * scale);
+    let e = quadrature::integrate(&mut g, &pts, &Control::new(Rule::G10K21, tolerance, 400));
     (e.value, e.error)
 }
 

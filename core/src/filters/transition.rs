@@ -214,7 +214,7 @@ impl LinearGaussianTransition {
             m2 += yi * yi;
             y.push(yi);
         }
-        -0.5 * (n as f64 * fns::ln(2.0 * core::f64::consts::PI) + self.ln_det + m2)
+        -0.5 * (n as f64 * crate::math::special::LN_2PI + self.ln_det + m2)
     }
 }
 

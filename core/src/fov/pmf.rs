@@ -6,6 +6,7 @@ use alloc::vec::Vec;
 use crate::cardinality::multi_bernoulli::pmf_unchecked;
 use crate::error::{Error, Result, check_probabilities, check_probability};
 use crate::math::fns;
+use crate::math::special::poisson_pmf;
 use crate::math::sum::{NeumaierSum, sum};
 
 /// The largest pmf any function here builds (2²⁰ entries).
@@ -41,61 +42,6 @@ fn check_nonnegative(what: impl FnOnce() -> alloc::string::String, x: f64) -> Re
 
 // ---------------------------------------------------------------------------------------
 // Poisson (78)
-
-/// Loader's deviance term bd0(x, np) = x ln(x/np) + np − x, without cancellation.
-fn bd0(x: f64, np: f64) -> f64 {
-    if fns::abs(x - np) < 0.1 * (x + np) {
-        let mut v = (x - np) / (x + np);
-        let mut s = (x - np) * v;
-        let mut ej = 2.0 * x * v;
-        v *= v;
-        for j in 1..1000 {
-            ej *= v;
-            let s1 = s + ej / (2 * j + 1) as f64;
-            if s1 == s {
-                return s1;
-            }
-            s = s1;
-        }
-        s
-    } else {
-        x * fns::ln(x / np) + np - x
-    }
-}
-
-/// Stirling's error ln n! − (n + ½) ln n + n − ½ ln 2π for n ≥ 16 (Loader's series).
-fn stirlerr(n: f64) -> f64 {
-    const S0: f64 = 1.0 / 12.0;
-    const S1: f64 = 1.0 / 360.0;
-    const S2: f64 = 1.0 / 1260.0;
-    const S3: f64 = 1.0 / 1680.0;
-    const S4: f64 = 1.0 / 1188.0;
-    let nn = n * n;
-    if n > 500.0 {
-        (S0 - S1 / nn) / n
-    } else if n > 80.0 {
-        (S0 - (S1 - S2 / nn) / nn) / n
-    } else if n > 35.0 {
-        (S0 - (S1 - (S2 - S3 / nn) / nn) / nn) / n
-    } else {
-        (S0 - (S1 - (S2 - (S3 - S4 / nn) / nn) / nn) / nn) / n
-    }
-}
-
-/// e^{−λ} λⁿ / n!, accurate to a few ulps relative (Loader's saddle-point form for n ≥ 16).
-pub(crate) fn poisson_term(n: usize, lambda: f64) -> f64 {
-    if lambda == 0.0 {
-        return if n == 0 { 1.0 } else { 0.0 };
-    }
-    if n == 0 {
-        return fns::exp(-lambda);
-    }
-    let x = n as f64;
-    if n < 16 {
-        return fns::exp(x * fns::ln(lambda) - lambda - fns::ln_factorial(n));
-    }
-    fns::exp(-stirlerr(x) - bd0(x, lambda)) / fns::sqrt(2.0 * core::f64::consts::PI * x)
-}
 
 /// The FoV cardinality pmf of a Poisson RFS, Proposition 1, eq. (78) of `001_…`:
 ///
@@ -135,9 +81,9 @@ pub fn poisson(inside: f64) -> Result<FovCardinality> {
                 reason: "the Poisson pmf would have more than 2^20 entries",
             });
         }
-        pmf.push(poisson_term(n, lambda));
+        pmf.push(poisson_pmf(lambda, n));
         if (n + 2) as f64 > lambda {
-            let next = poisson_term(n + 1, lambda);
+            let next = poisson_pmf(lambda, n + 1);
             let tail = next / (1.0 - lambda / (n + 2) as f64);
             if n as f64 >= lambda && tail < TAIL_TOLERANCE {
                 return Ok(FovCardinality {

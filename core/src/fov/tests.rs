@@ -87,8 +87,8 @@ fn eq78_poisson_closed_form_is_the_series_and_the_simulation() {
             let mut s = 0.0;
             for m in n..n + 200 {
                 let ln = -(lin + lout) + n as f64 * f64::ln(lin) + (m - n) as f64 * f64::ln(lout)
-                    - crate::math::fns::ln_factorial(n)
-                    - crate::math::fns::ln_factorial(m - n);
+                    - crate::math::special::ln_factorial(n)
+                    - crate::math::special::ln_factorial(m - n);
                 s += ln.exp();
             }
             assert!((p - s).abs() <= 1e-15 + 1e-13 * p, "n={n}: {p} vs {s}");
@@ -165,7 +165,9 @@ fn eq84_iid_cluster_matches_the_series_and_the_simulation() {
         assert!((mean - c.mean).abs() < 1e-14 && (var - c.variance).abs() < 1e-13);
     }
     // The tail is trimmed below 1e-15: a Poisson(3) cardinality given to n = 60.
-    let long: Vec<f64> = (0..=60).map(|n| super::pmf::poisson_term(n, 3.0)).collect();
+    let long: Vec<f64> = (0..=60)
+        .map(|n| crate::math::special::poisson_pmf(3.0, n))
+        .collect();
     let c = iid_cluster(&long, 0.5).unwrap();
     assert!(c.pmf.len() < 30 && c.truncated < 1e-15);
     assert_eq!(

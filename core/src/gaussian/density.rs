@@ -228,7 +228,7 @@ impl Gaussian {
     /// ln N(x; m, P).
     pub fn ln_pdf(&self, x: &[f64]) -> f64 {
         let n = self.dim() as f64;
-        -0.5 * (n * fns::ln(2.0 * core::f64::consts::PI) + self.ln_det + self.mahalanobis_sq(x))
+        -0.5 * (n * crate::math::special::LN_2PI + self.ln_det + self.mahalanobis_sq(x))
     }
 
     /// N(x; m, P).

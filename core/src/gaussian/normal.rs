@@ -4,7 +4,7 @@ use crate::math::fns;
 use rand::{Rng, RngExt};
 
 /// 1/√(2π).
-pub const FRAC_1_SQRT_2PI: f64 = 0.398_942_280_401_432_7;
+pub use crate::math::special::FRAC_1_SQRT_2PI;
 
 /// φ(x), the standard normal density.
 #[inline]

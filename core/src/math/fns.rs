@@ -51,11 +51,6 @@ pub fn abs(x: f64) -> f64 {
     libm::fabs(x)
 }
 
-/// ln n! as a sum of ln k (exact to rounding for the sizes used here).
-pub fn ln_factorial(n: usize) -> f64 {
-    (2..=n).map(|k| ln(k as f64)).sum()
-}
-
 /// xᵖ for the metric orders: exact shortcuts for p = 1 and p = 2, `pow` otherwise.
 #[inline]
 pub fn powp(x: f64, p: f64) -> f64 {
@@ -90,12 +85,6 @@ pub fn atan2(y: f64, x: f64) -> f64 {
 #[inline]
 pub fn acos(x: f64) -> f64 {
     libm::acos(x)
-}
-
-/// ln Γ(x) for x > 0.
-#[inline]
-pub fn ln_gamma(x: f64) -> f64 {
-    libm::lgamma(x)
 }
 
 /// The complementary error function erfc x = 1 − erf x, accurate in the upper tail.

@@ -4,8 +4,10 @@
 pub mod assignment;
 pub mod fns;
 pub(crate) mod matching;
+pub mod quadrature;
 pub mod rng;
 pub mod sort;
+pub mod special;
 pub mod sum;
 
 pub use assignment::{Assignment, linear_assignment};
