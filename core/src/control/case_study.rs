@@ -13,7 +13,7 @@ use super::rewards::{fisher_reward, ln_normal, pent_reward, renyi_divergence};
 use crate::error::{Error, Result};
 use crate::gaussian::normal;
 use crate::math::fns::{exp, ln, sqrt};
-use crate::math::rng::{SeededRng, index, seeded, uniform};
+use crate::math::rng::{SeededRng, index, poisson, seeded, uniform};
 use crate::metrics::Ospa;
 use crate::smc::likelihood::{SmallTables, negligible_pair_bound};
 use crate::smc::{
@@ -83,14 +83,7 @@ impl RangeSensor {
             }
         }
         // Poisson count by inversion (λ is small).
-        let (mut k, mut p) = (0usize, exp(-self.clutter_rate));
-        let (u0, mut cdf) = (uniform(rng), p);
-        while u0 > cdf && k < 10_000 {
-            k += 1;
-            p *= self.clutter_rate / k as f64;
-            cdf += p;
-        }
-        for _ in 0..k {
+        for _ in 0..poisson(rng, self.clutter_rate, 10_000) {
             z.push(self.max_range * uniform(rng));
         }
         z

@@ -10,6 +10,10 @@
 //!
 //! Algorithms take `&mut R` with `R: rand::Rng + ?Sized`, so a caller may pass any generator;
 //! only [`SeededRng`] is promised to reproduce across platforms.
+//!
+//! Beside it: [`SplitMix64`] (Steele, Lea & Flood 2014), the bare 64-bit stream that the
+//! seeded scenes of [`fov::placement_scene`](crate::fov::placement_scene) draw from, and
+//! [`poisson`], a Poisson count by inversion of the cdf (Devroye 1986, Sec. X.3.3).
 
 use rand::{Rng, RngExt, SeedableRng};
 
@@ -69,6 +73,65 @@ pub fn entropy_seed() -> crate::Result<u64> {
             what: "seed".into(),
             reason: "no entropy source is available on this platform; pass a seed",
         })
+}
+
+/// SplitMix64 (Steele, Lea & Flood 2014; Vigna's reference `splitmix64.c`): a portable 64-bit
+/// stream, integer arithmetic only, so the same seed gives the same stream on every platform.
+/// Every draw depends only on the seed and its position, so a run that draws n values reads a
+/// prefix of a run that draws more (the property the seeded scenes of `001_…` rely on).
+///
+/// ```
+/// use fisst::math::rng::SplitMix64;
+/// let mut a = SplitMix64::new(1_234_567);
+/// assert_eq!(a.next_u64(), 6_457_827_717_110_365_317);
+/// assert!((0.0..1.0).contains(&a.uniform()));
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SplitMix64(u64);
+
+impl SplitMix64 {
+    /// The stream from `seed`.
+    pub fn new(seed: u64) -> Self {
+        SplitMix64(seed)
+    }
+
+    /// The next 64-bit output.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1) from the top 53 bits of the next output, a multiple of 2⁻⁵³.
+    pub fn uniform(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+}
+
+/// A Poisson count with mean `mean` by inversion of the cdf (Devroye 1986, Sec. X.3.3):
+/// one uniform u, then the smallest k with u ≤ Σ_{j≤k} e^{−mean} meanʲ/j!, the terms built by
+/// p_k = p_{k−1} · mean/k. The count is capped at `max` (a guard against rounding making the
+/// cdf stall below u). Cost O(mean): meant for small means.
+///
+/// ```
+/// use fisst::math::rng::{poisson, seeded};
+/// let mut rng = seeded(1);
+/// assert_eq!(poisson(&mut rng, 0.0, 10), 0);
+/// assert!(poisson(&mut rng, 1e9, 10) <= 10);
+/// ```
+pub fn poisson<R: Rng + ?Sized>(rng: &mut R, mean: f64, max: usize) -> usize {
+    let u = uniform(rng);
+    let mut k = 0;
+    let mut p = crate::math::fns::exp(-mean);
+    let mut cdf = p;
+    while u > cdf && k < max {
+        k += 1;
+        p *= mean / k as f64;
+        cdf += p;
+    }
+    k
 }
 
 /// Systematic resampling (Kitagawa 1996; Ristic, Arulampalam & Gordon 2004, Table 3.2): `n`
@@ -132,6 +195,57 @@ mod tests {
             assert!((c as f64 - 10_000.0).abs() < 560.0, "{counts:?}");
         }
         assert!(js_safe_seed(&mut r) < 1u64 << 53);
+    }
+
+    #[test]
+    fn splitmix64_matches_the_reference_outputs() {
+        // The reference outputs of SplitMix64 seeded with 1234567 (Vigna's splitmix64.c).
+        let mut rng = SplitMix64::new(1_234_567);
+        let want: [u64; 3] = [
+            6_457_827_717_110_365_317,
+            3_203_168_211_198_807_973,
+            9_817_491_932_198_370_423,
+        ];
+        for w in want {
+            assert_eq!(rng.next_u64(), w);
+        }
+        // The uniform is the top 53 bits of the next output.
+        let (mut a, mut b) = (SplitMix64::new(5), SplitMix64::new(5));
+        assert_eq!(
+            a.uniform(),
+            (b.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+        );
+    }
+
+    #[test]
+    fn poisson_has_the_mean_and_variance() {
+        // 200,000 draws of mean 2.5: the sample mean has sd √(2.5/2e5) ≈ 0.0035 and the sample
+        // variance sd ≈ √((2.5 + 2·2.5²)/2e5) ≈ 0.0086; allow 5σ of each.
+        let (n, mean) = (200_000, 2.5);
+        let mut r = seeded(11);
+        let draws: alloc::vec::Vec<f64> =
+            (0..n).map(|_| poisson(&mut r, mean, 1000) as f64).collect();
+        let m = draws.iter().sum::<f64>() / n as f64;
+        let v = draws.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (n - 1) as f64;
+        assert!((m - mean).abs() < 5.0 * 0.0035, "mean {m}");
+        assert!((v - mean).abs() < 5.0 * 0.0086, "variance {v}");
+    }
+
+    #[test]
+    fn poisson_caps_and_mean_zero() {
+        let mut r = seeded(2);
+        for _ in 0..100 {
+            // Mean 0: p₀ = 1 ≥ u always.
+            assert_eq!(poisson(&mut r, 0.0, 1000), 0);
+            // A mean far above the cap stops at the cap (e^{−1e3} underflows to 0: the cdf
+            // never reaches u).
+            assert_eq!(poisson(&mut r, 1e3, 7), 7);
+        }
+        // Each draw takes exactly one uniform from the stream.
+        let (mut a, mut b) = (seeded(3), seeded(3));
+        poisson(&mut a, 4.0, 1000);
+        uniform(&mut b);
+        assert_eq!(a.next_u64(), b.next_u64());
     }
 
     #[cfg(feature = "std")]

@@ -6,7 +6,6 @@ use alloc::string::String;
 use alloc::vec::Vec;
 
 use nalgebra::{DMatrix, DVector};
-use rand::Rng;
 
 use crate::error::{Error, Result};
 use crate::filters::{
@@ -15,7 +14,7 @@ use crate::filters::{
 };
 use crate::gaussian::{Gaussian, GaussianMixture, normal};
 use crate::math::fns;
-use crate::math::rng::{index, seeded, uniform};
+use crate::math::rng::{index, poisson, seeded, uniform};
 use crate::regions::{AxisBox, Region};
 
 /// An anchor: a named landmark ("the taco stand") at a known position, with the radius
@@ -218,20 +217,6 @@ fn blocked(p: [f64; 2], boxes: &[AxisBox]) -> bool {
         || boxes.iter().any(|b| b.contains(&p))
 }
 
-fn poisson<R: Rng + ?Sized>(rng: &mut R, mean: f64) -> usize {
-    // Inversion (mean is small here).
-    let u = uniform(rng);
-    let mut k = 0;
-    let mut p = fns::exp(-mean);
-    let mut cdf = p;
-    while u > cdf && k < 1000 {
-        k += 1;
-        p *= mean / k as f64;
-        cdf += p;
-    }
-    k
-}
-
 /// The airport example: `steps` report times (the paper: 60, i.e. 15 minutes) of a seeded
 /// run ([`AirportScenario`] documents the layout, the truth and the reports).
 ///
@@ -352,7 +337,7 @@ pub fn airport_scenario(seed: u64, steps: usize) -> Result<AirportScenario> {
                 true_report = Some(a);
             }
         }
-        for _ in 0..poisson(&mut rng, 0.25) {
+        for _ in 0..poisson(&mut rng, 0.25, 1000) {
             scan.push(index(&mut rng, anchors.len()));
         }
         crate::math::sort::sort_by(&mut scan, |a, b| a.cmp(b));
