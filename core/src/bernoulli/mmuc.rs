@@ -8,6 +8,7 @@ use crate::bernoulli::density::{ParticleSet, Repr, SpatialDensity, mixture_outsi
 use crate::bernoulli::loss::check_radius;
 use crate::error::Result;
 use crate::math::fns;
+use crate::math::optimise::{BfgsOptions, Minimum, bfgs};
 use crate::math::sum::NeumaierSum;
 
 /// How [`SpatialDensity::mmuc`] found a*.
@@ -180,7 +181,7 @@ fn mixture_mmuc(components: &[(f64, GaussianBall)], mean: &[f64], radius: f64) -
         |a: &[f64]| mixture_outside_with_gradient(components, a, radius, SEARCH_TOLERANCE);
     let mut best: Option<(f64, Vec<f64>)> = None;
     for x0 in &starts {
-        let (x, fx) = bfgs(&mut q_grad, x0, &opts);
+        let Minimum { x, value: fx, .. } = bfgs(&mut q_grad, x0, &opts);
         if best.as_ref().is_none_or(|b| fx < b.0) {
             best = Some((fx, x));
         }
@@ -209,110 +210,6 @@ fn mixture_outside_with_gradient(
         }
     }
     (value.total(), grad)
-}
-
-struct BfgsOptions {
-    /// Length of the first step (and 4× the longest step).
-    step: f64,
-    /// Stop when a step is shorter than this (max norm).
-    xtol: f64,
-    max_iter: usize,
-}
-
-/// BFGS on the inverse Hessian with an Armijo backtracking line search (Nocedal & Wright,
-/// Numerical Optimization, 2nd ed., Algorithm 6.1), steps capped at 4·`step`. Returns the
-/// best point and its value.
-fn bfgs<F: FnMut(&[f64]) -> (f64, Vec<f64>)>(
-    f: &mut F,
-    x0: &[f64],
-    o: &BfgsOptions,
-) -> (Vec<f64>, f64) {
-    let n = x0.len();
-    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
-    let norm = |a: &[f64]| fns::sqrt(dot(a, a));
-    let mut x = x0.to_vec();
-    let (mut fx, mut g) = f(&x);
-    let scaled_identity = |g: &[f64]| -> Vec<f64> {
-        let c = o.step / norm(g).max(f64::MIN_POSITIVE);
-        let mut h = alloc::vec![0.0; n * n];
-        for i in 0..n {
-            h[i * n + i] = c;
-        }
-        h
-    };
-    let mut h = scaled_identity(&g);
-    let mut first = true;
-    for _ in 0..o.max_iter {
-        if norm(&g) == 0.0 {
-            break;
-        }
-        let mut p: Vec<f64> = (0..n).map(|i| -dot(&h[i * n..(i + 1) * n], &g)).collect();
-        let mut slope = dot(&g, &p);
-        if slope >= 0.0 {
-            h = scaled_identity(&g);
-            p = (0..n).map(|i| -h[i * n + i] * g[i]).collect();
-            slope = dot(&g, &p);
-        }
-        let cap = 4.0 * o.step;
-        let len = norm(&p);
-        if len > cap {
-            for v in &mut p {
-                *v *= cap / len;
-            }
-            slope *= cap / len;
-        }
-        let plen = norm(&p);
-        let mut alpha = 1.0;
-        let mut halvings = 0;
-        let accepted = loop {
-            let xn: Vec<f64> = x.iter().zip(&p).map(|(xi, pi)| xi + alpha * pi).collect();
-            let (fnew, gnew) = f(&xn);
-            if fnew <= fx + 1e-4 * alpha * slope {
-                break Some((xn, fnew, gnew));
-            }
-            alpha *= 0.5;
-            halvings += 1;
-            // At most 60 halvings (a step 1e-18 of the first): a bound on the work of one
-            // line search whatever the tolerance.
-            if alpha * plen < o.xtol || halvings > 60 {
-                break None;
-            }
-        };
-        let Some((xn, fnew, gnew)) = accepted else {
-            break;
-        };
-        let s: Vec<f64> = xn.iter().zip(&x).map(|(a, b)| a - b).collect();
-        let y: Vec<f64> = gnew.iter().zip(&g).map(|(a, b)| a - b).collect();
-        x = xn;
-        fx = fnew;
-        g = gnew;
-        if s.iter().all(|v| fns::abs(*v) < o.xtol) {
-            break;
-        }
-        let sy = dot(&s, &y);
-        if sy > 1e-12 * norm(&s) * norm(&y) {
-            if first {
-                // Nocedal & Wright (6.20): scale H₀ before the first update.
-                let c = sy / dot(&y, &y);
-                h = alloc::vec![0.0; n * n];
-                for i in 0..n {
-                    h[i * n + i] = c;
-                }
-                first = false;
-            }
-            // H ← (I − ρ s yᵀ) H (I − ρ y sᵀ) + ρ s sᵀ
-            let rho = 1.0 / sy;
-            let hy: Vec<f64> = (0..n).map(|i| dot(&h[i * n..(i + 1) * n], &y)).collect();
-            let yhy = dot(&y, &hy);
-            for i in 0..n {
-                for j in 0..n {
-                    h[i * n + j] += -rho * (hy[i] * s[j] + s[i] * hy[j])
-                        + (rho * rho * yhy + rho) * s[i] * s[j];
-                }
-            }
-        }
-    }
-    (x, fx)
 }
 
 // ---------------------------------------------------------------------------------------

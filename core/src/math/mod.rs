@@ -1,9 +1,11 @@
-//! Numerical building blocks: float functions, compensated sums, linear assignment, the
-//! portable seeded generator.
+//! Numerical building blocks: float functions, compensated sums, linear assignment,
+//! quadrature, special functions, optimisation and root finding, the portable seeded generator
+//! and its samplers.
 
 pub mod assignment;
 pub mod fns;
 pub(crate) mod matching;
+pub mod optimise;
 pub mod quadrature;
 pub mod rng;
 pub mod sort;

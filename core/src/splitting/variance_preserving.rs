@@ -7,6 +7,7 @@ use alloc::vec::Vec;
 
 use super::objective::objective;
 use crate::math::fns;
+use crate::math::optimise::nelder_mead;
 
 /// The weights, means and σ̃ of a variance-preserving split from its unconstrained
 /// parameters θ = (t, u_1 … u_{h−1}):
@@ -57,85 +58,6 @@ fn cost(r: usize, lambda: f64, theta: &[f64]) -> f64 {
     if j.is_finite() { j } else { f64::INFINITY }
 }
 
-/// Nelder–Mead (standard coefficients 1, 2, ½, ½) from `x0` with initial steps `step`;
-/// stops when the simplex's values agree to 1e-17 or after `max_iter` iterations.
-fn nelder_mead(
-    f: &dyn Fn(&[f64]) -> f64,
-    x0: &[f64],
-    step: f64,
-    max_iter: usize,
-) -> (f64, Vec<f64>) {
-    let d = x0.len();
-    let mut pts: Vec<Vec<f64>> = vec![x0.to_vec()];
-    for i in 0..d {
-        let mut p = x0.to_vec();
-        p[i] += step;
-        pts.push(p);
-    }
-    let mut vals: Vec<f64> = pts.iter().map(|p| f(p)).collect();
-    for _ in 0..max_iter {
-        // Order: best first (stable on ties, so the run is deterministic).
-        let mut order: Vec<usize> = (0..=d).collect();
-        crate::math::sort::sort_by(&mut order, |&a, &b| vals[a].total_cmp(&vals[b]));
-        pts = order.iter().map(|&i| pts[i].clone()).collect();
-        vals = order.iter().map(|&i| vals[i]).collect();
-        if vals[d] - vals[0] <= 1e-17 {
-            break;
-        }
-        let centroid: Vec<f64> = (0..d)
-            .map(|k| pts[..d].iter().map(|p| p[k]).sum::<f64>() / d as f64)
-            .collect();
-        let along = |t: f64| -> Vec<f64> {
-            (0..d)
-                .map(|k| centroid[k] + t * (pts[d][k] - centroid[k]))
-                .collect()
-        };
-        let xr = along(-1.0);
-        let fr = f(&xr);
-        if fr < vals[0] {
-            let xe = along(-2.0);
-            let fe = f(&xe);
-            if fe < fr {
-                pts[d] = xe;
-                vals[d] = fe;
-            } else {
-                pts[d] = xr;
-                vals[d] = fr;
-            }
-        } else if fr < vals[d - 1] {
-            pts[d] = xr;
-            vals[d] = fr;
-        } else {
-            let (xc, fc) = if fr < vals[d] {
-                let x = along(-0.5);
-                let v = f(&x);
-                (x, v)
-            } else {
-                let x = along(0.5);
-                let v = f(&x);
-                (x, v)
-            };
-            if fc < vals[d].min(fr) {
-                pts[d] = xc;
-                vals[d] = fc;
-            } else {
-                // Shrink towards the best point.
-                for i in 1..=d {
-                    let p: Vec<f64> = (0..d)
-                        .map(|k| pts[0][k] + 0.5 * (pts[i][k] - pts[0][k]))
-                        .collect();
-                    vals[i] = f(&p);
-                    pts[i] = p;
-                }
-            }
-        }
-    }
-    let best = (0..=d)
-        .min_by(|&a, &b| vals[a].total_cmp(&vals[b]))
-        .unwrap_or(0);
-    (vals[best], pts[best].clone())
-}
-
 /// The minimiser θ of J over variance-preserving R-component splits: Nelder–Mead from
 /// deterministic starts (f ∈ {0.3, 0.5, 0.7, 0.85}, equal and normal-shaped weights), each
 /// end point restarted until it stops improving; the best end point wins.
@@ -154,9 +76,11 @@ pub(crate) fn optimise(r: usize, lambda: f64) -> (Vec<f64>, Vec<f64>, f64) {
                     -0.5 * (c * c) as f64 * 4.0 / (r * r) as f64 * 4.0
                 });
             }
-            let (mut v, mut x) = nelder_mead(&f, &x0, 0.5, 4000);
+            let start = nelder_mead(&f, &x0, 0.5, 4000);
+            let (mut v, mut x) = (start.value, start.x);
             for _ in 0..6 {
-                let (v2, x2) = nelder_mead(&f, &x, 0.05, 4000);
+                let next = nelder_mead(&f, &x, 0.05, 4000);
+                let (v2, x2) = (next.value, next.x);
                 if v2 < v {
                     let gain = v - v2;
                     v = v2;

@@ -11,6 +11,7 @@ use crate::bernoulli::quadrature;
 use crate::bounds::model::{Density, Observation};
 use crate::bounds::theorem::inverse_information;
 use crate::math::fns;
+use crate::math::optimise::bisect;
 
 /// The cells of the scan of r P̄o m − K v for the MAP region's section.
 const CELLS: usize = 512;
@@ -182,20 +183,15 @@ impl<'a> Cubature<'a> {
     /// left node's side is `left_in`.
     fn edge(&self, k: f64, i: usize, left_in: bool) -> f64 {
         let (zl, zh) = self.z;
-        let (mut a, mut b) = (self.node(i - 1), self.node(i));
-        let resolution = 1e-11 * (zh - zl);
-        while b - a > resolution {
-            let mid = 0.5 * (a + b);
-            if !(a < mid && mid < b) {
-                break;
-            }
-            if self.inside(k, self.marginal(mid), self.lambda * self.clutter.pdf(mid)) == left_in {
-                a = mid;
-            } else {
-                b = mid;
-            }
-        }
-        0.5 * (a + b)
+        bisect(
+            |mid| {
+                self.inside(k, self.marginal(mid), self.lambda * self.clutter.pdf(mid)) == left_in
+            },
+            self.node(i - 1),
+            self.node(i),
+            1e-11 * (zh - zl),
+            usize::MAX,
+        )
     }
 
     /// The outer integrand at z_2: [w + null + A/A_1, w, A, null] parts (each times c(z_2)).
