@@ -8,6 +8,7 @@ use crate::bernoulli::density::{ParticleSet, Repr, SpatialDensity, mixture_outsi
 use crate::bernoulli::loss::check_radius;
 use crate::error::Result;
 use crate::math::fns;
+use crate::math::geometry::{self, circumcentre, smallest_enclosing_ball};
 use crate::math::optimise::{BfgsOptions, Minimum, bfgs};
 use crate::math::sum::NeumaierSum;
 
@@ -229,7 +230,7 @@ fn particle_mmuc(p: &ParticleSet, radius: f64) -> Mmuc {
         2 => (sweep_2d(p, radius), MmucMethod::ParticlesExact),
         _ => match enumerate_centres(p, radius) {
             Some(c) => (c, MmucMethod::ParticlesExact),
-            None => (mean_shift(p, radius), MmucMethod::ParticlesHeuristic),
+            None => (mean_shift_search(p, radius), MmucMethod::ParticlesHeuristic),
         },
     };
     // Re-centre on the smallest ball enclosing what the candidate covers.
@@ -528,138 +529,17 @@ fn orthonormal(vs: impl Iterator<Item = Vec<f64>>) -> Vec<Vec<f64>> {
     basis
 }
 
-/// The centre of the sphere through `pts` that lies in their affine hull, and its squared
-/// radius; `None` for affinely dependent points.
-fn circumcentre(pts: &[&[f64]]) -> Option<(Vec<f64>, f64)> {
-    let x0 = pts.first()?;
-    let k = pts.len() - 1;
-    if k == 0 {
-        return Some((x0.to_vec(), 0.0));
-    }
-    let v: Vec<Vec<f64>> = pts[1..]
-        .iter()
-        .map(|x| x.iter().zip(x0.iter()).map(|(a, b)| a - b).collect())
-        .collect();
-    // Solve (2 V Vᵀ) α = (‖v_i‖²) by Gaussian elimination with partial pivoting.
-    let mut m: Vec<Vec<f64>> = (0..k)
-        .map(|i| {
-            let mut row: Vec<f64> = (0..k)
-                .map(|j| 2.0 * v[i].iter().zip(&v[j]).map(|(a, b)| a * b).sum::<f64>())
-                .collect();
-            row.push(v[i].iter().map(|a| a * a).sum());
-            row
-        })
-        .collect();
-    let scale = m
-        .iter()
-        .map(|r| fns::abs(r[0]))
-        .fold(0.0, f64::max)
-        .max(f64::MIN_POSITIVE);
-    for col in 0..k {
-        let piv = (col..k).max_by(|&a, &b| fns::abs(m[a][col]).total_cmp(&fns::abs(m[b][col])))?;
-        if fns::abs(m[piv][col]) <= 1e-12 * scale {
-            return None;
-        }
-        m.swap(col, piv);
-        let (top, rest) = m.split_at_mut(col + 1);
-        let pivot_row = &top[col];
-        for row in rest.iter_mut() {
-            let factor = row[col] / pivot_row[col];
-            for (x, p) in row.iter_mut().zip(pivot_row).skip(col) {
-                *x -= factor * p;
-            }
-        }
-    }
-    let mut alpha = alloc::vec![0.0; k];
-    for row in (0..k).rev() {
-        let mut s = m[row][k];
-        for c in row + 1..k {
-            s -= m[row][c] * alpha[c];
-        }
-        alpha[row] = s / m[row][row];
-    }
-    let mut o = x0.to_vec();
-    for (a, vi) in alpha.iter().zip(&v) {
-        for (oj, vij) in o.iter_mut().zip(vi) {
-            *oj += a * vij;
-        }
-    }
-    let r2 = dist2(&o, x0);
-    Some((o, r2))
-}
-
-/// The smallest ball enclosing `pts` (Welzl's algorithm in Gärtner's move-to-front form,
-/// recursion depth ≤ d + 1): its centre and squared radius.
-fn smallest_enclosing_ball(pts: &[&[f64]]) -> Option<(Vec<f64>, f64)> {
-    let first = pts.first()?;
-    let d = first.len();
-    let mut list: Vec<&[f64]> = pts.to_vec();
-    let mut boundary: Vec<&[f64]> = Vec::with_capacity(d + 1);
-    let n = list.len();
-    Some(move_to_front(&mut list, n, &mut boundary, d))
-}
-
-fn move_to_front<'a>(
-    list: &mut Vec<&'a [f64]>,
-    end: usize,
-    boundary: &mut Vec<&'a [f64]>,
-    d: usize,
-) -> (Vec<f64>, f64) {
-    let mut ball = match circumcentre(boundary) {
-        Some(b) => b,
-        None if boundary.is_empty() => (alloc::vec![0.0; d], -1.0),
-        // Dependent boundary points (from rounding): fall back to the first one's ball.
-        None => (boundary[0].to_vec(), 0.0),
-    };
-    if boundary.len() == d + 1 {
-        return ball;
-    }
-    let mut i = 0;
-    while i < end {
-        let pt = list[i];
-        if ball.1 < 0.0 || dist2(pt, &ball.0) > ball.1 * (1.0 + 1e-12) {
-            boundary.push(pt);
-            ball = move_to_front(list, i, boundary, d);
-            boundary.pop();
-            let moved = list.remove(i);
-            list.insert(0, moved);
-        }
-        i += 1;
-    }
-    ball
-}
-
 /// A heuristic for many particles in d ≥ 3: flat-kernel mean shift (move the centre to the
-/// weighted mean of the particles it covers) from a subsample of at most 256 particles.
-fn mean_shift(p: &ParticleSet, radius: f64) -> Vec<f64> {
+/// weighted mean of the particles it covers, [`geometry::mean_shift`]) from a subsample of at
+/// most 256 particles, at most 30 steps each; the start ending with the most covered weight wins.
+fn mean_shift_search(p: &ParticleSet, radius: f64) -> Vec<f64> {
     let n = p.len();
     let stride = n.div_ceil(256).max(1);
-    let r2 = radius * radius;
+    let points: Vec<&[f64]> = (0..n).map(|i| p.point(i)).collect();
     let mut best = -1.0;
     let mut best_center = p.point(0).to_vec();
     for s in (0..n).step_by(stride) {
-        let mut c = p.point(s).to_vec();
-        for _ in 0..30 {
-            let mut acc = alloc::vec![0.0; p.dim()];
-            let mut w = 0.0;
-            for i in 0..n {
-                if dist2(p.point(i), &c) <= r2 {
-                    w += p.weights()[i];
-                    for (a, x) in acc.iter_mut().zip(p.point(i)) {
-                        *a += p.weights()[i] * x;
-                    }
-                }
-            }
-            if w <= 0.0 {
-                break;
-            }
-            let next: Vec<f64> = acc.iter().map(|a| a / w).collect();
-            let moved = dist2(&next, &c);
-            c = next;
-            if moved <= 1e-24 * r2 {
-                break;
-            }
-        }
+        let c = geometry::mean_shift(&points, p.weights(), p.point(s), radius, 30);
         let w = covered_weight(p, &c, radius);
         if w > best {
             best = w;

@@ -4,6 +4,7 @@
 
 pub mod assignment;
 pub mod fns;
+pub mod geometry;
 pub(crate) mod matching;
 pub mod optimise;
 pub mod quadrature;
