@@ -21,8 +21,8 @@
 //! |α − 1| < 10⁻⁶.
 
 use crate::math::fns::{exp, ln};
+use crate::math::log_sum::ln_sum_exp;
 use crate::smc::State;
-use crate::smc::likelihood::ln_sum_exp;
 
 /// The Rényi divergence (15) of the particle posterior after one scan from the prior:
 /// (1/(α−1)) ln( Σ_i w_i g_i^α / (Σ_i w_i g_i)^α ), from `ln_weights[i]` = ln w_i (normalised)

@@ -9,10 +9,10 @@ use alloc::vec::Vec;
 use nalgebra::{DMatrix, DVector};
 use rand::Rng;
 
-use super::likelihood::ln_sum_exp;
 use super::particles::{Area, MultiObjectParticles, State};
 use crate::gaussian::normal;
 use crate::math::fns::{exp, ln, pow};
+use crate::math::log_sum::ln_sum_exp;
 use crate::math::rng::{index, uniform};
 
 /// Regularisation settings (Sec. 5.2).

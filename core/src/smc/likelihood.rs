@@ -30,32 +30,10 @@ use alloc::vec::Vec;
 
 use crate::error::{Error, Result};
 use crate::math::fns::{exp, ln, ln_1p};
+use crate::math::log_sum::{ln_add, ln_sum_exp};
 
 /// The largest min(n, m) the dynamic programme accepts (2^k states).
 pub const MAX_SMALLER_SIDE: usize = 20;
-
-/// ln(e^a + e^b), −∞ when both are −∞.
-#[inline]
-pub(crate) fn ln_add(a: f64, b: f64) -> f64 {
-    let (hi, lo) = if a >= b { (a, b) } else { (b, a) };
-    if hi == f64::NEG_INFINITY {
-        return f64::NEG_INFINITY;
-    }
-    hi + ln_1p(exp(lo - hi))
-}
-
-/// ln Σ e^{x_i} (−∞ for an empty or all −∞ input).
-pub(crate) fn ln_sum_exp(xs: impl IntoIterator<Item = f64> + Clone) -> f64 {
-    let hi = xs.clone().into_iter().fold(f64::NEG_INFINITY, f64::max);
-    if hi == f64::NEG_INFINITY {
-        return f64::NEG_INFINITY;
-    }
-    if hi == f64::INFINITY {
-        return f64::INFINITY;
-    }
-    let s: f64 = xs.into_iter().map(|x| exp(x - hi)).sum();
-    hi + ln(s)
-}
 
 /// Reusable scratch memory of the dynamic programme (no allocation per call once warm).
 #[derive(Clone, Debug, Default)]
