@@ -216,7 +216,8 @@ mod tests {
                 }
             }
         }
-        assert!(taken > 100, "{taken}");
+        // Of the 7·7·6 = 294 cases, these many take the plain path (seed 41).
+        assert_eq!(taken, 218);
         // Underflow: the plain sum of 1e-200 · 1e-220 is 0; declined, the log path is exact.
         let model = MultiObjectLikelihood::new(1.0, 0.0).unwrap();
         assert_eq!(
