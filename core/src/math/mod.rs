@@ -3,6 +3,7 @@
 
 pub mod assignment;
 pub mod fns;
+pub mod log_sum;
 pub(crate) mod matching;
 pub mod quadrature;
 pub mod rng;
