@@ -16,6 +16,7 @@ use super::rewards::renyi_divergence;
 use super::sensor::RangeSensor;
 use crate::gaussian::normal;
 use crate::math::fns::{exp, ln, sqrt};
+use crate::math::special::LN_SQRT_2PI;
 use crate::smc::batch::BatchLikelihood;
 use crate::smc::{
     LikelihoodWorkspace, MultiObjectLikelihood, MultiObjectParticles, State, systematic,
@@ -171,7 +172,7 @@ impl ObjectRanges {
                 let sig = sensor.sigma(d);
                 h.push(d);
                 s.push(1.0 / sig);
-                c.push(-ln(sig) - 0.918_938_533_204_672_8);
+                c.push(-ln(sig) - LN_SQRT_2PI);
             }
             offsets.push(h.len());
         }

@@ -22,6 +22,7 @@
 
 use crate::math::fns::{exp, ln};
 use crate::math::log_sum::ln_sum_exp;
+use crate::math::special::LN_SQRT_2PI;
 use crate::smc::State;
 
 /// The Rényi divergence (15) of the particle posterior after one scan from the prior:
@@ -113,7 +114,7 @@ pub fn pent_reward<'a>(
 #[inline]
 pub(crate) fn ln_normal(z: f64, mean: f64, sigma: f64) -> f64 {
     let u = (z - mean) / sigma;
-    -0.5 * u * u - ln(sigma) - 0.918_938_533_204_672_8
+    -0.5 * u * u - ln(sigma) - LN_SQRT_2PI
 }
 
 #[cfg(test)]
