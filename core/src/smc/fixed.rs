@@ -3,7 +3,7 @@
 //! stack tables, unrolled for sizes known at compile time, with the operations of the general
 //! programme in the same order (hence its bits).
 
-use super::matchings::dp_row;
+use super::matchings::{dp_row, fold_columns};
 
 /// The largest smaller side [`sum_matchings_small`] handles (a fixed 16-entry table).
 pub(super) const SMALL_SIDE: usize = 4;
@@ -132,13 +132,7 @@ fn sum_small<const STATES: usize>(
     let col_miss = &col_miss[..cols];
     let mut total = 0.0;
     for (s, &d) in dp.iter().enumerate() {
-        let mut f = d;
-        let mut out = full & !s;
-        while out != 0 {
-            let c = out.trailing_zeros() as usize;
-            out &= out - 1;
-            f *= col_miss[c];
-        }
+        let f = fold_columns(d, full & !s, |f, c| f * col_miss[c]);
         total += f;
     }
     total

@@ -74,13 +74,7 @@ pub(crate) fn ln_sum_matchings(
             if d == 0.0 {
                 continue;
             }
-            let mut f = d;
-            let mut out = full & !s;
-            while out != 0 {
-                let c = out.trailing_zeros() as usize;
-                out &= out - 1;
-                f *= group[c];
-            }
+            let f = fold_columns(d, full & !s, |f, c| f * group[c]);
             total += f;
         }
         if total > 0.0 {
@@ -95,13 +89,7 @@ pub(crate) fn ln_sum_matchings(
             if d == 0.0 {
                 continue;
             }
-            let mut f = d;
-            let mut out = full & !s;
-            while out != 0 {
-                let c = out.trailing_zeros() as usize;
-                out &= out - 1;
-                f *= exp(ln_col_miss[c] - v);
-            }
+            let f = fold_columns(d, full & !s, |f, c| f * exp(ln_col_miss[c] - v));
             group[s.count_ones() as usize] += f;
         }
         ln_sum_exp(
@@ -152,13 +140,7 @@ fn ln_sum_matchings_log(
     }
     let mut total = f64::NEG_INFINITY;
     for (s, &d) in dp.iter().enumerate() {
-        let mut f = d;
-        let mut out = full & !s;
-        while out != 0 {
-            let c = out.trailing_zeros() as usize;
-            out &= out - 1;
-            f += ln_col_miss[c];
-        }
+        let f = fold_columns(d, full & !s, |f, c| f + ln_col_miss[c]);
         total = ln_add(total, f);
     }
     total
@@ -180,4 +162,17 @@ pub(super) fn dp_row(dp: &mut [f64], m: f64, row: &[f64]) {
         dp[s] = v;
     }
     dp[0] *= m;
+}
+
+/// `f` combined with `factor(c)` for every column c of the set `out`, lowest first: the
+/// unmatched columns' miss factors of one subset of (20)'s sum over matchings (`op` is × in
+/// the plain sums, + in the log one).
+#[inline(always)]
+pub(super) fn fold_columns(mut f: f64, mut out: usize, op: impl Fn(f64, usize) -> f64) -> f64 {
+    while out != 0 {
+        let c = out.trailing_zeros() as usize;
+        out &= out - 1;
+        f = op(f, c);
+    }
+    f
 }
