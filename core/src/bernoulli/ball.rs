@@ -186,6 +186,19 @@ impl GaussianBall {
         self.outside_by(center, radius, tol, Method::Auto)
     }
 
+    /// q(center) in one dimension, in closed form: Φ(lo) + Q(hi) with lo, hi the standardised
+    /// ends of the interval [center − radius, center + radius]; also returns lo and hi.
+    fn outside_1d(&self, center: &[f64], radius: f64) -> (BallProbability, f64, f64) {
+        let (mean, s) = (self.gaussian.mean()[0], self.sd[0]);
+        let lo = (center[0] - radius - mean) / s;
+        let hi = (center[0] + radius - mean) / s;
+        let b = BallProbability {
+            outside: normal::cdf(lo) + normal::sf(hi),
+            error: 4.0 * f64::EPSILON,
+        };
+        (b, lo, hi)
+    }
+
     /// q(center) and its gradient ∇_a q. With y = Uᵀ(x − a) and the first moments
     /// M_j = E[(y_j − μ_j) 1{‖y‖ ≤ r0}] (the score of N(μ_j, λ_j) gives ∂(1 − q)/∂μ_j =
     /// M_j/λ_j, and ∂μ/∂a = −Uᵀ):
@@ -202,16 +215,10 @@ impl GaussianBall {
         radius: f64,
         tol: f64,
     ) -> (BallProbability, Vec<f64>) {
-        let mean = self.gaussian.mean();
         let d = self.dim();
         if d == 1 {
+            let (b, lo, hi) = self.outside_1d(center, radius);
             let s = self.sd[0];
-            let lo = (center[0] - radius - mean[0]) / s;
-            let hi = (center[0] + radius - mean[0]) / s;
-            let b = BallProbability {
-                outside: normal::cdf(lo) + normal::sf(hi),
-                error: 4.0 * f64::EPSILON,
-            };
             return (b, alloc::vec![(normal::pdf(lo) - normal::pdf(hi)) / s]);
         }
         if d > GRAD_MAX_DIM || self.sd.iter().any(|&s| s <= 0.0) {
@@ -293,16 +300,9 @@ impl GaussianBall {
         tol: f64,
         method: Method,
     ) -> BallProbability {
-        let mean = self.gaussian.mean();
         let d = self.dim();
         if d == 1 {
-            let s = self.sd[0];
-            let lo = (center[0] - radius - mean[0]) / s;
-            let hi = (center[0] + radius - mean[0]) / s;
-            return BallProbability {
-                outside: normal::cdf(lo) + normal::sf(hi),
-                error: 4.0 * f64::EPSILON,
-            };
+            return self.outside_1d(center, radius).0;
         }
         if let Some(b) = self.shortcut(center, radius, tol) {
             return b;

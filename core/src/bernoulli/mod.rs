@@ -51,49 +51,6 @@ pub mod inversion;
 mod isotropic;
 mod loss;
 mod mmuc;
-/// The old paths of the G10/K21 quadrature, kept for `bounds::model` and `bounds::theorem2`
-/// until they call [`math::quadrature`](crate::math::quadrature) directly (then delete this).
-pub(crate) mod quadrature {
-    use crate::math::quadrature::{self as q, Control, Estimate, Rule, Tolerance};
-
-    fn control(tol: f64, max_pieces: usize, keep_going: &dyn Fn() -> bool) -> Control<'_> {
-        Control {
-            rule: Rule::G10K21,
-            tolerance: Tolerance::AbsoluteAboveNoise(tol),
-            max_pieces,
-            keep_going: Some(keep_going),
-        }
-    }
-
-    /// [`Rule::G10K21`] on [a, b]: (value, error, ∫|f|).
-    pub(crate) fn gk21<F: FnMut(f64) -> f64>(f: &mut F, a: f64, b: f64) -> (f64, f64, f64) {
-        let p = Rule::G10K21.apply(f, a, b);
-        (p.value, p.error, p.abs)
-    }
-
-    /// [`q::integrate`] with G10/K21 to `tol` (or 64 ε ∫|f|).
-    pub(crate) fn integrate<F: FnMut(f64) -> f64>(
-        f: &mut F,
-        points: &[f64],
-        tol: f64,
-        max_pieces: usize,
-        keep_going: &dyn Fn() -> bool,
-    ) -> Estimate {
-        q::integrate(f, points, &control(tol, max_pieces, keep_going))
-    }
-
-    /// [`q::integrate_vec`] with G10/K21 to `tol` (or 64 ε ∫|f|): (values, error).
-    pub(crate) fn integrate_vec<const N: usize, F: FnMut(f64) -> [f64; N]>(
-        f: &mut F,
-        points: &[f64],
-        tol: f64,
-        max_pieces: usize,
-        keep_going: &dyn Fn() -> bool,
-    ) -> ([f64; N], f64) {
-        let e = q::integrate_vec(f, points, &control(tol, max_pieces, keep_going));
-        (e.value, e.error)
-    }
-}
 mod threshold;
 
 pub use ball::{BallProbability, DEFAULT_TOLERANCE};

@@ -444,7 +444,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn gaussian_form_31_is_corollary_3() {
+    fn eq31_gaussian_form_is_cor3() {
         // Fig. 2 left: σf² = 100, σh² = 25, e0² = 150, e1² = 200.
         for &r in &[0.0, 0.2, 0.5, 0.8, 1.0] {
             for &p in &[0.0, 0.3, 0.9, 1.0] {
@@ -463,7 +463,7 @@ mod tests {
     }
 
     #[test]
-    fn map_threshold_equals_r_star_when_sigma_is_e1_minus_e0() {
+    fn sec4a_map_threshold_equals_r_star_when_sigma_is_e1_minus_e0() {
         // Section IV-A: σe² = e1² − e0² ⇒ r_M* = r1*.
         let (q, p, e0, e1) = (0.2, 0.4, 3.0, 5.0);
         let s2 = e1 - e0;
@@ -472,7 +472,7 @@ mod tests {
     }
 
     #[test]
-    fn sequential_enumeration_dominates_irf() {
+    fn eq35_eq37_enumeration_dominates_irf() {
         for &p in &[0.0, 0.1, 0.5, 0.9, 1.0] {
             let e = sequential_bound(Sequential::Enumeration, 0.01, 0.05, p, 50).unwrap();
             let i = sequential_bound(Sequential::Irf, 0.01, 0.05, p, 50).unwrap();
@@ -491,7 +491,7 @@ mod tests {
     }
 
     #[test]
-    fn corollary_2_with_no_clutter_is_corollary_1() {
+    fn cor2_with_no_clutter_is_cor1() {
         let c2 = corollary2(0.7, &[0.25, 0.5, 0.75], 0.0, 2.0).unwrap();
         assert!((c2 - corollary1(0.7, 0.25, 2.0)).abs() < 1e-15);
     }

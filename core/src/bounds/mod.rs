@@ -9,10 +9,10 @@
 //! | item | paper | tested by |
 //! |---|---|---|
 //! | [`assemble`], [`Ingredients`], [`Terms`] | the HPE/LPE bounds (47)–(48), (57)–(58); (17)/(21), (23)–(24) | `theorem2::tests::thm2_eta_bracket_takes_the_smaller_bound`, `vector::tests::eq72_one_component_is_the_scalar_bound` |
-//! | [`corollary1`], [`corollary2`], [`corollary3`] | (27), (28), (29) | `closed::tests::corollary_2_with_no_clutter_is_corollary_1`; P: `cor3_is_what_the_theorems_reduce_to_without_clutter`, `cor2_is_an_asserted_target_with_clutter` |
-//! | [`gaussian_no_clutter`], [`gaussian_fisher_information`] | (30)–(31), Example 1 (with NOTES.md's erratum) | `closed::tests::gaussian_form_31_is_corollary_3`, this module's doctest |
-//! | [`map_threshold`], [`NoClutterBound::map_bound`] | Section IV-A: MAP detection on Z = ∅ moves r* to r_M* | `closed::tests::map_threshold_equals_r_star_when_sigma_is_e1_minus_e0` |
-//! | [`sequential_bound`] | IRF (35), Enumeration (37) | `closed::tests::sequential_enumeration_dominates_irf`; P: `fig3_enumeration_dominates_irf_and_they_meet` |
+//! | [`corollary1`], [`corollary2`], [`corollary3`] | (27), (28), (29) | `closed::tests::cor2_with_no_clutter_is_cor1`; P: `cor3_is_what_the_theorems_reduce_to_without_clutter`, `cor2_is_an_asserted_target_with_clutter` |
+//! | [`gaussian_no_clutter`], [`gaussian_fisher_information`] | (30)–(31), Example 1 (with NOTES.md's erratum) | `closed::tests::eq31_gaussian_form_is_cor3`, this module's doctest |
+//! | [`map_threshold`], [`NoClutterBound::map_bound`] | Section IV-A: MAP detection on Z = ∅ moves r* to r_M* | `closed::tests::sec4a_map_threshold_equals_r_star_when_sigma_is_e1_minus_e0` |
+//! | [`sequential_bound`] | IRF (35), Enumeration (37) | `closed::tests::eq35_eq37_enumeration_dominates_irf`; P: `fig3_enumeration_dominates_irf_and_they_meet` |
 //! | [`Density`], [`Observation`] (closures with derivatives), [`Density1`], [`Detection`], [`LinearGaussian`] | f, P_o, g, ψ, v of models I (13) and II (22) | `model::tests::eq13_tables_name_the_knot_at_fault`, `model::tests::thm2_subnormal_variances_are_rejected_by_name`, `closed::tests::errors_name_the_field` |
 //! | [`theorem1`], [`ModelI`] | Theorem 1 (14)–(21) by quadrature: P̄o, f_d, f_d', σ_e², Z'_0 by root-finding, w_1, η_1, J'_1 (20) | P: `thm1_is_attained_by_map_detection_and_the_posterior_mean`, `thm1_a_non_gaussian_prior_and_variable_detection_stay_below_the_mse` |
 //! | [`theorem2`], [`ModelII`] | Theorem 2 (22)–(26): n = 1 by quadrature, n = 2 by Monte Carlo or (opt-in, [`Settings::quadrature_cardinality`]) 2D cubature over Z², n ≥ 3 by Monte Carlo; η2 exact (see [`theorem2`]'s module) | `theorem2::tests::thm2_n2_cubature_agrees_with_monte_carlo`, `thm2_n2_cubature_agrees_with_a_fine_grid_sum`, `thm2_each_cardinality_reports_its_method`, `thm2_series_is_cut_where_its_tail_is_below_the_tolerance`, `thm2_eta_bracket_takes_the_smaller_bound`; P: `thm2_lies_below_the_optimal_mse` |

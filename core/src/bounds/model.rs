@@ -5,11 +5,16 @@
 
 use alloc::vec::Vec;
 
-use crate::bernoulli::quadrature;
 use crate::bounds::closed::{check_finite, check_positive, check_variance};
 use crate::error::{Error, Result, check_probability};
 use crate::math::fns;
+use crate::math::quadrature::{Control, Rule, Tolerance, integrate};
 use crate::math::rng::{SeededRng, uniform};
+
+/// The default integrals of [`Density`] and [`Observation`]: adaptive G10/K21 to an absolute
+/// 1e-12 (or the rounding floor 64 ε ∫|f|), at most 200 pieces.
+const MODEL_QUADRATURE: Control<'static> =
+    Control::new(Rule::G10K21, Tolerance::AbsoluteAboveNoise(1e-12), 200);
 
 /// A probability density on an interval, with what the bounds need of it.
 pub trait Density {
@@ -27,7 +32,7 @@ pub trait Density {
         if b <= a {
             return 0.0;
         }
-        quadrature::integrate(&mut |x| self.pdf(x), &[a, b], 1e-12, 200, &|| true).value
+        integrate(|x| self.pdf(x), &[a, b], &MODEL_QUADRATURE).value
     }
     /// A draw (needed by the Monte Carlo part of Theorem 2 only; default: none).
     fn sample(&self, _rng: &mut SeededRng) -> Option<f64> {
@@ -56,15 +61,12 @@ pub trait Observation {
     }
     /// ∫_a^b g(z|x) dz (default: quadrature).
     fn likelihood_mass(&self, a: f64, b: f64, x: f64) -> f64 {
-        quadrature::integrate(&mut |z| self.likelihood(z, x), &[a, b], 1e-12, 200, &|| {
-            true
-        })
-        .value
+        integrate(|z| self.likelihood(z, x), &[a, b], &MODEL_QUADRATURE).value
     }
     /// ∫_a^b g(z|x) ∂²_x ln g(z|x) dz (default: quadrature).
     fn fisher_mass(&self, a: f64, b: f64, x: f64) -> f64 {
-        quadrature::integrate(
-            &mut |z| {
+        integrate(
+            |z| {
                 let g = self.likelihood(z, x);
                 if g > 0.0 {
                     g * self.d2_ln_likelihood(z, x)
@@ -73,9 +75,7 @@ pub trait Observation {
                 }
             },
             &[a, b],
-            1e-12,
-            200,
-            &|| true,
+            &MODEL_QUADRATURE,
         )
         .value
     }

@@ -84,7 +84,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn seventeen_actions_with_corner_exclusions() {
+    fn eq23_seventeen_actions_with_corner_exclusions() {
         let area = Area {
             lo: [0.0, 0.0],
             hi: [1000.0, 1000.0],
@@ -105,7 +105,7 @@ mod tests {
     }
 
     #[test]
-    fn a_diagonal_move_back_to_the_corner_is_inside() {
+    fn eq23_diagonal_move_back_to_the_corner_is_inside() {
         // Found by the page's Node tests: from (70.71…, 70.71…) the 100 m move at 225° ends
         // at x = −1.4e-14 by rounding, and was excluded.
         let area = Area {

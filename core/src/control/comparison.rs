@@ -139,7 +139,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn summaries_have_the_stated_shape_and_progress_counts() {
+    fn fig3_summaries_have_the_stated_shape_and_progress_counts() {
         let mut cfg = ControlConfig::paper(Scheme::Random, 3);
         cfg.particles = 50;
         cfg.future_scans = 5;

@@ -12,7 +12,7 @@
 //! sum only for Z^j on a grid or drawn from a density other than p (a quadrature or
 //! importance-sampling form). So [`expected_renyi`] is the plain mean of
 //! D(u, Z^j) = (1/(α−1)) ln(γ_α(Z^j) / γ_1(Z^j)^α) (15)–(16), and the test
-//! `expected_renyi_is_the_direct_evaluation_of_9` checks it against an exact evaluation of
+//! `eq9_expected_renyi_is_the_direct_evaluation` checks it against an exact evaluation of
 //! (9) on a discrete case (and shows the γ_1-weighted sum is not).
 //!
 //! α → 1: with L_i = ln g(Z | X_i) and posterior weights π_i = w_i e^{L_i}/γ_1, d/dα at α = 1
@@ -21,8 +21,9 @@
 //! |α − 1| < 10⁻⁶.
 
 use crate::math::fns::{exp, ln};
+use crate::math::log_sum::ln_sum_exp;
+use crate::math::special::LN_SQRT_2PI;
 use crate::smc::State;
-use crate::smc::likelihood::ln_sum_exp;
 
 /// The Rényi divergence (15) of the particle posterior after one scan from the prior:
 /// (1/(α−1)) ln( Σ_i w_i g_i^α / (Σ_i w_i g_i)^α ), from `ln_weights[i]` = ln w_i (normalised)
@@ -113,7 +114,7 @@ pub fn pent_reward<'a>(
 #[inline]
 pub(crate) fn ln_normal(z: f64, mean: f64, sigma: f64) -> f64 {
     let u = (z - mean) / sigma;
-    -0.5 * u * u - ln(sigma) - 0.918_938_533_204_672_8
+    -0.5 * u * u - ln(sigma) - LN_SQRT_2PI
 }
 
 #[cfg(test)]
@@ -179,7 +180,7 @@ mod tests {
     }
 
     #[test]
-    fn expected_renyi_is_the_direct_evaluation_of_9() {
+    fn eq9_expected_renyi_is_the_direct_evaluation() {
         let ln_w: Vec<f64> = PRIOR.iter().map(|w| w.ln()).collect();
         let columns: Vec<Vec<f64>> = (0..4)
             .map(|z| (0..3).map(|i| LIK[i][z].ln()).collect())
@@ -218,7 +219,7 @@ mod tests {
     }
 
     #[test]
-    fn alpha_to_one_is_the_kl_divergence() {
+    fn eq15_alpha_to_one_is_the_kl_divergence() {
         let ln_w: Vec<f64> = PRIOR.iter().map(|w| w.ln()).collect();
         let ln_g: Vec<f64> = (0..3).map(|i| LIK[i][0].ln()).collect();
         let kl = renyi_divergence(&ln_w, &ln_g, 1.0).unwrap();
@@ -240,20 +241,26 @@ mod tests {
         assert_eq!(expected_renyi(&ln_w, [none.as_slice()], 0.5), 0.0);
     }
 
+    /// The estimate of the Fisher and PENT examples: the two sources of Sec. 5.
+    const EST: [State; 2] = [[300.0, 600.0], [750.0, 250.0]];
+
     #[test]
-    fn fisher_and_pent_by_hand() {
-        let est = [[300.0, 600.0], [750.0, 250.0]];
-        let f = fisher_reward(&est, [300.0, 500.0], |d| 10.0 + 4e-5 * d * d);
+    fn eq29_fisher_reward_by_hand() {
+        let f = fisher_reward(&EST, [300.0, 500.0], |d| 10.0 + 4e-5 * d * d);
         let s1: f64 = 10.0 + 4e-5 * 100.0 * 100.0;
         let d2 = libm::hypot(450.0, 250.0);
         let s2 = 10.0 + 4e-5 * d2 * d2;
         assert!((f - 1.0 / (s1 * s1) - 1.0 / (s2 * s2)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn eq30_pent_reward_by_hand() {
         // PENT: one particle holding the estimate, tiny noise: every term is close to 1.
-        let set = est.to_vec();
+        let set = EST.to_vec();
         let parts = [(1.0, set.as_slice())];
         let u = [0.0, 0.0];
         let p = pent_reward(
-            &est,
+            &EST,
             u,
             parts.iter().copied(),
             0.95,
@@ -262,7 +269,7 @@ mod tests {
         );
         // By hand: 𝓘(z_m) = Σ_x N(z_m; ‖x − u‖, 10²), the own term dominating.
         let lc = 0.8 / 1414.0;
-        let z: Vec<f64> = est.iter().map(|x| libm::hypot(x[0], x[1])).collect();
+        let z: Vec<f64> = EST.iter().map(|x| libm::hypot(x[0], x[1])).collect();
         let mut expected = 0.0;
         for &zm in &z {
             let i: f64 = z

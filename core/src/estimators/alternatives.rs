@@ -45,6 +45,7 @@ use nalgebra::DMatrix;
 use crate::cardinality::multi_bernoulli::pmf_unchecked;
 use crate::error::{Error, Result, check_probabilities};
 use crate::math::fns;
+use crate::math::special::LN_2PI;
 
 /// `ln N(m; m, P) = −½ ln det(2πP)`, the log peak height of a Gaussian.
 ///
@@ -67,7 +68,7 @@ pub fn gaussian_ln_peak(cov: &DMatrix<f64>) -> Result<f64> {
     }
     let chol = cov.clone().cholesky().ok_or_else(not_spd)?;
     let ln_det: f64 = chol.l().diagonal().iter().map(|d| 2.0 * fns::ln(*d)).sum();
-    Ok(-0.5 * (n as f64 * fns::ln(2.0 * core::f64::consts::PI) + ln_det))
+    Ok(-0.5 * (n as f64 * LN_2PI + ln_det))
 }
 
 /// `ln_peak` for the isotropic covariance εI in `dim` dimensions: `−(dim/2) ln(2πε)`.

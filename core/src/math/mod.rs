@@ -5,6 +5,7 @@
 pub mod assignment;
 pub mod fns;
 pub mod geometry;
+pub mod log_sum;
 pub(crate) mod matching;
 pub mod optimise;
 pub mod quadrature;

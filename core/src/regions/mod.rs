@@ -31,56 +31,6 @@ mod mass;
 mod polygon;
 mod predicates;
 
-/// The quadrature of the region masses: [`Rule::G7K15`](crate::math::quadrature::Rule) of
-/// [`math::quadrature`](crate::math::quadrature) to an absolute tolerance of the summed
-/// |K₁₅ − G₇| estimates.
-mod quadrature {
-    use crate::math::quadrature::{self as q, Control, Rule, Tolerance};
-
-    /// A mass (or integral) with its error estimate.
-    #[derive(Clone, Copy, Debug, PartialEq)]
-    pub(crate) struct Quad {
-        /// The value.
-        pub value: f64,
-        /// Its error estimate.
-        pub error: f64,
-    }
-
-    fn control(abs_tol: f64, max_intervals: usize) -> Control<'static> {
-        Control::new(Rule::G7K15, Tolerance::Absolute(abs_tol), max_intervals)
-    }
-
-    /// ∫ f over [points[0], points[last]] with the interior points as breakpoints, until the
-    /// summed estimate is at most `abs_tol` or `max_intervals` pieces are in use.
-    #[cfg_attr(not(test), allow(dead_code))]
-    pub(crate) fn integrate(
-        f: impl FnMut(f64) -> f64,
-        points: &[f64],
-        abs_tol: f64,
-        max_intervals: usize,
-    ) -> Quad {
-        let e = q::integrate(f, points, &control(abs_tol, max_intervals));
-        Quad {
-            value: e.value,
-            error: e.error,
-        }
-    }
-
-    /// [`integrate`] with [`q::smooth_ends`] on every sub-interval of `points`.
-    pub(crate) fn integrate_smooth_ends(
-        f: impl FnMut(f64) -> f64,
-        points: &[f64],
-        abs_tol: f64,
-        max_intervals: usize,
-    ) -> Quad {
-        let e = q::integrate_smooth_ends(f, points, &control(abs_tol, max_intervals));
-        Quad {
-            value: e.value,
-            error: e.error,
-        }
-    }
-}
-
 pub use axis_box::AxisBox;
 pub use ball::Ball;
 pub use mass::{MAX_MASS_DIM, Mass};

@@ -9,10 +9,10 @@ use alloc::vec::Vec;
 use nalgebra::{DMatrix, DVector};
 use rand::Rng;
 
-use super::likelihood::ln_sum_exp;
 use super::particles::{Area, MultiObjectParticles, State};
 use crate::gaussian::normal;
 use crate::math::fns::{exp, ln, pow};
+use crate::math::log_sum::ln_sum_exp;
 use crate::math::rng::{index, uniform};
 
 /// Regularisation settings (Sec. 5.2).
@@ -164,7 +164,7 @@ mod tests {
     use crate::math::rng::seeded;
 
     #[test]
-    fn systematic_resampling_keeps_expected_counts() {
+    fn alg1_systematic_resampling_keeps_expected_counts() {
         let mut rng = seeded(2);
         let w = [0.5, 0.25, 0.125, 0.125];
         let idx = systematic(&w, 8, &mut rng);
@@ -177,7 +177,7 @@ mod tests {
     }
 
     #[test]
-    fn reweight_normalises_and_handles_zero_likelihoods() {
+    fn eq20_reweight_normalises_and_handles_zero_likelihoods() {
         let mut p = MultiObjectParticles {
             sets: vec![vec![], vec![[1.0, 1.0]]],
             weights: vec![0.5, 0.5],
@@ -192,7 +192,7 @@ mod tests {
     }
 
     #[test]
-    fn regularisation_changes_cardinality_at_the_stated_rates() {
+    fn alg1_regularisation_changes_cardinality_at_the_stated_rates() {
         let mut rng = seeded(3);
         let area = Area {
             lo: [0.0, 0.0],

@@ -233,7 +233,7 @@ mod tests {
     };
 
     #[test]
-    fn initialisation_puts_objects_on_the_arcs() {
+    fn alg1_initialisation_puts_objects_on_the_arcs() {
         let mut rng = seeded(1);
         let p = MultiObjectParticles::from_ranges(
             3000,
@@ -264,7 +264,7 @@ mod tests {
     }
 
     #[test]
-    fn estimate_aligns_permuted_particles() {
+    fn eq22_estimate_aligns_permuted_particles() {
         let sets = vec![
             vec![[0.0, 0.0], [100.0, 0.0]],
             vec![[101.0, 0.0], [1.0, 0.0]],

@@ -7,11 +7,13 @@
 use alloc::vec::Vec;
 
 use super::{ModelII, Term, information_density};
-use crate::bernoulli::quadrature;
 use crate::bounds::model::{Density, Observation};
 use crate::bounds::theorem::inverse_information;
 use crate::math::fns;
 use crate::math::optimise::bisect;
+use crate::math::quadrature::{
+    Control, Rule, Tolerance, integrate_equal_pieces as adaptive, integrate_vec,
+};
 
 /// The cells of the scan of r P̄o m − K v for the MAP region's section.
 const CELLS: usize = 512;
@@ -43,13 +45,13 @@ pub(super) fn quadrature2(
     let mut terms = Vec::with_capacity(2);
     let (cl, ch) = m.clutter_density.support();
     let pts: Vec<f64> = (0..=8).map(|i| cl + (ch - cl) * i as f64 / 8.0).collect();
-    let (v, err) = quadrature::integrate_vec(
-        &mut |z2| cub.outer(z2, &mut terms),
-        &pts,
-        2.0 * cub.inner,
+    let control = Control::new(
+        Rule::G10K21,
+        Tolerance::AbsoluteAboveNoise(2.0 * cub.inner),
         200,
-        &|| true,
     );
+    let outer = integrate_vec(|z2| cub.outer(z2, &mut terms), &pts, &control);
+    let (v, err) = (outer.value, outer.error);
     let inner = cub.inner;
     let (w, a, null) = (v[1].clamp(0.0, 1.0), v[2], v[3].clamp(0.0, 1.0));
     let ew = err + 2.0 * inner * w;
@@ -281,51 +283,5 @@ impl<'a> Cubature<'a> {
             .0;
         }
         a_sum
-    }
-}
-
-/// ∫_a^b f by globally adaptive G10/K21 from `init` equal pieces until the summed error
-/// estimate is at most `rel` of ∫|f| (or 64 pieces): (value, error, ∫|f|).
-fn adaptive(
-    f: &mut dyn FnMut(f64) -> f64,
-    a: f64,
-    b: f64,
-    init: usize,
-    rel: f64,
-) -> (f64, f64, f64) {
-    if b.partial_cmp(&a) != Some(core::cmp::Ordering::Greater) {
-        return (0.0, 0.0, 0.0);
-    }
-    let mut g = |x: f64| f(x);
-    let mut pieces: Vec<(f64, f64, f64, f64, f64)> = (0..init)
-        .map(|i| {
-            let (u, v) = (
-                a + (b - a) * i as f64 / init as f64,
-                a + (b - a) * (i + 1) as f64 / init as f64,
-            );
-            let (val, err, abs) = quadrature::gk21(&mut g, u, v);
-            (u, v, val, err, abs)
-        })
-        .collect();
-    loop {
-        let err: f64 = pieces.iter().map(|p| p.3).sum();
-        let abs: f64 = pieces.iter().map(|p| p.4).sum();
-        let worst = pieces
-            .iter()
-            .enumerate()
-            .max_by(|x, y| x.1.3.total_cmp(&y.1.3))
-            .map(|(i, p)| (i, p.0, p.1));
-        let Some((i, u, v)) = worst else {
-            return (0.0, 0.0, 0.0);
-        };
-        let mid = 0.5 * (u + v);
-        if err <= rel * abs || pieces.len() >= 64 || !(u < mid && mid < v) {
-            let val = crate::math::sum::sum(pieces.iter().map(|p| p.2));
-            return (val, err, abs);
-        }
-        let (v1, e1, a1) = quadrature::gk21(&mut g, u, mid);
-        let (v2, e2, a2) = quadrature::gk21(&mut g, mid, v);
-        pieces[i] = (u, mid, v1, e1, a1);
-        pieces.push((mid, v, v2, e2, a2));
     }
 }

@@ -5,8 +5,8 @@
 use alloc::vec;
 use alloc::vec::Vec;
 
+use super::Quad;
 use crate::gaussian::normal;
-use crate::regions::quadrature::Quad;
 
 use super::Shape;
 

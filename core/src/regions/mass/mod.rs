@@ -17,8 +17,8 @@ use crate::error::{Error, Result};
 use crate::gaussian::Gaussian;
 use crate::math::fns;
 
-use super::quadrature::Quad;
 use super::{Node, Region, bivariate_normal};
+use crate::math::quadrature::{self as q, Control, Rule, Tolerance};
 
 mod intervals;
 mod nested;
@@ -27,6 +27,32 @@ mod ray_tree;
 use intervals::mass_1d;
 use nested::mass_nested;
 use ray_tree::mass_ray_2d;
+
+/// A mass (or integral) with its error estimate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Quad {
+    /// The value.
+    pub value: f64,
+    /// Its error estimate.
+    pub error: f64,
+}
+
+/// ∫ f over the sub-intervals of `points` with [`q::smooth_ends`] applied, by the masses'
+/// rule: [`Rule::G7K15`] of [`math::quadrature`](crate::math::quadrature), bisecting until the
+/// summed |K₁₅ − G₇| estimates are at most `abs_tol` or `max_intervals` pieces are in use.
+pub(crate) fn integrate_smooth_ends(
+    f: impl FnMut(f64) -> f64,
+    points: &[f64],
+    abs_tol: f64,
+    max_intervals: usize,
+) -> Quad {
+    let control = Control::new(Rule::G7K15, Tolerance::Absolute(abs_tol), max_intervals);
+    let e = q::integrate_smooth_ends(f, points, &control);
+    Quad {
+        value: e.value,
+        error: e.error,
+    }
+}
 
 /// The largest region dimension [`Region::gaussian_mass`] serves (n_s ≥ 3 uses nested
 /// quadrature whose cost grows exponentially with n_s).

@@ -7,9 +7,9 @@ use alloc::boxed::Box;
 use alloc::vec;
 use alloc::vec::Vec;
 
+use super::{Quad, integrate_smooth_ends};
 use crate::gaussian::normal;
 use crate::math::fns;
-use crate::regions::quadrature::{Quad, integrate_smooth_ends};
 
 use super::{MAX_INTERVALS, Shape, mass_of};
 

@@ -7,8 +7,8 @@ use alloc::vec;
 use alloc::vec::Vec;
 use core::f64::consts::PI;
 
+use super::{Quad, integrate_smooth_ends};
 use crate::math::fns;
-use crate::regions::quadrature::{Quad, integrate_smooth_ends};
 
 use super::intervals::{Intervals, combine};
 use super::{MAX_INTERVALS, Shape};

@@ -1,0 +1,139 @@
+//! The fixed-size kernels of eq. (20) of paper `004` (Ristic & Vo) for the small sets of the
+//! sensor control's future scans: the sum of [`super::matchings`] in plain arithmetic on
+//! stack tables, unrolled for sizes known at compile time, with the operations of the general
+//! programme in the same order (hence its bits).
+
+use super::matchings::{dp_row, fold_columns};
+
+/// The largest smaller side [`sum_matchings_small`] handles (a fixed 16-entry table).
+pub(super) const SMALL_SIDE: usize = 4;
+
+/// The largest larger side of [`super::batch::BatchLikelihood`].
+pub(super) const MAX_LARGER: usize = 16;
+
+/// Scratch tables of [`super::batch::BatchLikelihood`] for the sizes without a fixed kernel:
+/// the pair factors and the objects' miss factors 1 − p_D.
+#[derive(Clone, Debug)]
+pub(super) struct SmallTables {
+    pub(super) pair: [f64; MAX_LARGER * SMALL_SIDE],
+    pub(super) miss: [f64; MAX_LARGER],
+}
+
+/// The sum of [`super::matchings::ln_sum_matchings`] in plain arithmetic, for the small sizes of the sensor
+/// control's future scans: `pair`, `row_miss`, `col_miss` are the factors themselves (not
+/// their logs), all in [0, 1], and `cols ≤ SMALL_SIDE`. No scaling is needed: with factors
+/// ≤ 1 no partial product overflows, and the only loss beyond rounding is gradual
+/// underflow, bounded as in [`super::matchings::ln_sum_matchings`] by e^{−700} (rows·(k+1)·2^k ≤ e^44 roundings
+/// of ≤ 2^{−1074} each, none amplified). `None` when the sum is not e^{30} above that bound
+/// (the caller then takes the exact log-space path), else `Some(Σ)` with Σ > 0.
+#[inline]
+pub(super) fn sum_matchings_small(
+    rows: usize,
+    cols: usize,
+    pair: &[f64],
+    row_miss: &[f64],
+    col_miss: &[f64],
+) -> Option<f64> {
+    debug_assert!(cols <= SMALL_SIDE && rows < 1 << 20);
+    debug_assert_eq!(pair.len(), rows * cols);
+    debug_assert!(row_miss.len() >= rows && col_miss.len() >= cols);
+    // One fixed-size table per column count, so that the compiler unrolls the subset loops;
+    // the operations and their order are those of `dp_row` on a 2^cols table (same bits).
+    let total = match cols {
+        0 => sum_small::<1>(rows, pair, row_miss, col_miss),
+        1 => sum_small::<2>(rows, pair, row_miss, col_miss),
+        2 => sum_small::<4>(rows, pair, row_miss, col_miss),
+        3 => sum_small::<8>(rows, pair, row_miss, col_miss),
+        _ => sum_small::<16>(rows, pair, row_miss, col_miss),
+    };
+    if total > SMALL_FLOOR {
+        Some(total)
+    } else {
+        None
+    }
+}
+
+/// e^{−670} = e^{30} · e^{−700}, the acceptance margin of `ln_sum_matchings`: plain sums
+/// below it are redone in log space.
+pub(super) const SMALL_FLOOR: f64 = 1.1e-291;
+
+/// [`sum_matchings_small`] for N objects and M measurements known at compile time (so that
+/// every loop unrolls), the pair factors from `factor(i, j)`, the objects' miss factor `miss`
+/// and the measurements' `clutter[j]`: the smaller side as the columns, and the operations of
+/// `dp_row` and of the final sum in the same order, hence the same bits.
+#[inline(always)]
+#[allow(clippy::needless_range_loop)] // `clutter` is indexed by rows or by columns.
+pub(super) fn sum_fixed<const N: usize, const M: usize>(
+    miss: f64,
+    clutter: &[f64],
+    factor: &impl Fn(usize, usize) -> f64,
+) -> f64 {
+    let objects_are_rows = N > M;
+    let (rows, cols) = if objects_are_rows { (N, M) } else { (M, N) };
+    let states = 1usize << cols;
+    let clutter = &clutter[..M];
+    let mut dp = [0.0f64; 1 << SMALL_SIDE];
+    dp[0] = 1.0;
+    for r in 0..rows {
+        let rm = if objects_are_rows { miss } else { clutter[r] };
+        let mut row = [0.0f64; SMALL_SIDE];
+        for (c, f) in row.iter_mut().enumerate().take(cols) {
+            *f = if objects_are_rows {
+                factor(r, c)
+            } else {
+                factor(c, r)
+            };
+        }
+        for s in (1..states).rev() {
+            let mut v = dp[s] * rm;
+            for (c, &f) in row.iter().enumerate().take(cols) {
+                if s & (1 << c) != 0 {
+                    v += dp[s & !(1 << c)] * f;
+                }
+            }
+            dp[s] = v;
+        }
+        dp[0] *= rm;
+    }
+    let mut total = 0.0;
+    for (s, &d) in dp.iter().enumerate().take(states) {
+        let mut f = d;
+        for c in 0..cols {
+            if s & (1 << c) == 0 {
+                f *= if objects_are_rows { clutter[c] } else { miss };
+            }
+        }
+        total += f;
+    }
+    total
+}
+
+/// The plain sum of [`sum_matchings_small`] on a table of `STATES` = 2^cols subsets.
+#[inline(always)]
+fn sum_small<const STATES: usize>(
+    rows: usize,
+    pair: &[f64],
+    row_miss: &[f64],
+    col_miss: &[f64],
+) -> f64 {
+    let cols = STATES.trailing_zeros() as usize;
+    let full = STATES - 1;
+    let mut dp = [0.0f64; STATES];
+    dp[0] = 1.0;
+    for (row, &m) in pair.chunks_exact(cols.max(1)).zip(row_miss).take(rows) {
+        dp_row(&mut dp, m, &row[..cols]);
+    }
+    if cols == 0 {
+        // No columns: the rows are all missed (the chunks above saw no pair).
+        for &m in row_miss.iter().take(rows) {
+            dp[0] *= m;
+        }
+    }
+    let col_miss = &col_miss[..cols];
+    let mut total = 0.0;
+    for (s, &d) in dp.iter().enumerate() {
+        let f = fold_columns(d, full & !s, |f, c| f * col_miss[c]);
+        total += f;
+    }
+    total
+}
