@@ -108,18 +108,35 @@ pub(crate) fn ln_sum_matchings(
     if rows == 0 || (ln_val != f64::NEG_INFINITY && ln_val - ln_err > 30.0) {
         return ln_scale + ln_val;
     }
-    ln_sum_matchings_log(rows, cols, ln_pair, ln_row_miss, ln_col_miss, dp)
+    let graph = LnGraph {
+        rows,
+        cols,
+        pair: ln_pair,
+        row_miss: ln_row_miss,
+        col_miss: ln_col_miss,
+    };
+    ln_sum_matchings_log(&graph, dp)
+}
+
+/// The logs of [`ln_sum_matchings`]'s factors: a rows × cols graph, pairs row-major.
+#[derive(Clone, Copy)]
+struct LnGraph<'a> {
+    rows: usize,
+    cols: usize,
+    pair: &'a [f64],
+    row_miss: &'a [f64],
+    col_miss: &'a [f64],
 }
 
 /// The same sum with log-sum-exp arithmetic throughout (no underflow at any scale).
-fn ln_sum_matchings_log(
-    rows: usize,
-    cols: usize,
-    ln_pair: &[f64],
-    ln_row_miss: &[f64],
-    ln_col_miss: &[f64],
-    dp: &mut Vec<f64>,
-) -> f64 {
+fn ln_sum_matchings_log(graph: &LnGraph<'_>, dp: &mut Vec<f64>) -> f64 {
+    let LnGraph {
+        rows,
+        cols,
+        pair: ln_pair,
+        row_miss: ln_row_miss,
+        col_miss: ln_col_miss,
+    } = *graph;
     let states = 1usize << cols;
     let full = states - 1;
     dp.clear();
