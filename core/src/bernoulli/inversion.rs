@@ -146,28 +146,8 @@ fn chernoff_quantile(lambda: &[f64], mu: &[f64], eps: f64) -> f64 {
         }
         (ln_m + c) / theta
     };
-    let g = 0.5 * (fns::sqrt(5.0) - 1.0);
-    let (mut a, mut b) = (1e-9, 1.0 - 1e-9);
-    let mut x1 = b - g * (b - a);
-    let mut x2 = a + g * (b - a);
-    let (mut f1, mut f2) = (s_of(x1), s_of(x2));
-    for _ in 0..90 {
-        if f1 <= f2 {
-            b = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = b - g * (b - a);
-            f1 = s_of(x1);
-        } else {
-            a = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = a + g * (b - a);
-            f2 = s_of(x2);
-        }
-    }
     // Any θ gives a valid bound; take the smaller of the two last evaluations.
-    f1.min(f2)
+    crate::math::optimise::golden_section(s_of, 1e-9, 1.0 - 1e-9, 90).1
 }
 
 #[cfg(test)]

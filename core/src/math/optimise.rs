@@ -1,12 +1,14 @@
 //! Local minimisation and bracketing root finding: BFGS with an Armijo backtracking line
-//! search, the Nelder–Mead simplex, and bisection on a sign (or side) change.
+//! search, the Nelder–Mead simplex, golden-section search on an interval, and bisection on a
+//! sign (or side) change.
 //!
 //! References: J. Nocedal & S. J. Wright, *Numerical Optimization*, 2nd ed., Springer 2006
 //! (Algorithm 6.1, BFGS; eq. (6.20), the initial scaling; Algorithm 3.1, backtracking);
 //! J. A. Nelder & R. Mead, "A simplex method for function minimization", *Comput. J.* 7 (1965)
 //! 308–313, with the coefficients and the inside/outside contraction of J. C. Lagarias,
 //! J. A. Reeds, M. H. Wright & P. E. Wright, "Convergence properties of the Nelder–Mead simplex
-//! method in low dimensions", *SIAM J. Optim.* 9 (1998) 112–147.
+//! method in low dimensions", *SIAM J. Optim.* 9 (1998) 112–147; J. Kiefer, "Sequential
+//! minimax search for a maximum", *Proc. AMS* 4 (1953) 502–506 (golden section).
 //!
 //! The arithmetic of each routine is that of the code it came from (the MMUC search of
 //! `000_…`, the variance-preserving split library of `001_…`, the section edges of `002_…`), so
@@ -285,6 +287,39 @@ pub fn bisect<P: FnMut(f64) -> bool>(
     0.5 * (a + b)
 }
 
+/// Golden-section search for the minimum of a unimodal `f` on [a, b]: `iterations` steps, each
+/// shrinking the bracket by the golden ratio g = (√5 − 1)/2 with one evaluation (Kiefer 1953).
+/// Returns the smaller of the two last interior values (`f64::min`, so a NaN at one point is
+/// passed over) and the point where it was found.
+pub fn golden_section<F: FnMut(f64) -> f64>(
+    mut f: F,
+    a: f64,
+    b: f64,
+    iterations: usize,
+) -> (f64, f64) {
+    let g = 0.5 * (fns::sqrt(5.0) - 1.0);
+    let (mut a, mut b) = (a, b);
+    let mut x1 = b - g * (b - a);
+    let mut x2 = a + g * (b - a);
+    let (mut f1, mut f2) = (f(x1), f(x2));
+    for _ in 0..iterations {
+        if f1 <= f2 {
+            b = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = b - g * (b - a);
+            f1 = f(x1);
+        } else {
+            a = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = a + g * (b - a);
+            f2 = f(x2);
+        }
+    }
+    (if f1 <= f2 { x1 } else { x2 }, f1.min(f2))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -374,5 +409,20 @@ mod tests {
         assert!((coarse - 1.0).abs() <= 1e-3, "{coarse}");
         // And the iteration cap: one halving of [0, 2.5] leaves [0, 1.25], midpoint 0.625.
         assert_eq!(bisect(|x| g(x) > 0.0, 0.0, 2.5, 0.0, 1), 0.625);
+    }
+
+    #[test]
+    fn golden_section_finds_the_minimum_of_a_unimodal_function() {
+        // (x − 0.3)² + 1 on [0, 1]: 90 steps shrink the bracket by g^90 ≈ 1.6e-19, so the
+        // point is found to the square root of ε (the function is flat to ε there).
+        let (x, v) = golden_section(|x| (x - 0.3) * (x - 0.3) + 1.0, 0.0, 1.0, 90);
+        assert!((x - 0.3).abs() < 1e-7, "{x}");
+        assert_eq!(v, 1.0);
+        // A minimum at an end of the bracket is approached from inside.
+        let (x, v) = golden_section(|x| x, 0.0, 1.0, 60);
+        assert!(x > 0.0 && x < 1e-11 && v == x, "{x} {v}");
+        // No steps: the two first interior points.
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        assert_eq!(golden_section(|x| -x, 0.0, 1.0, 0), (g, -g));
     }
 }
