@@ -2,23 +2,28 @@
 //! point sets like a tracker's output, a 4D mixture, median wall times.
 
 use fisst::gaussian::{Gaussian, GaussianMixture};
+use fisst::math::rng::SplitMix64;
 
-/// SplitMix64: a portable seeded generator.
-pub struct SplitMix(u64);
+/// The core's portable SplitMix64 stream ([`fisst::math::rng::SplitMix64`]), with the
+/// normal draws the benchmark inputs need.
+pub struct SplitMix(SplitMix64);
 
 impl SplitMix {
     /// A generator from a seed.
     pub fn new(seed: u64) -> Self {
-        Self(seed)
+        Self(SplitMix64::new(seed))
     }
 
-    /// A uniform draw in [0, 1).
+    /// A uniform draw in [0, 1) (the top 53 bits of the next output).
     pub fn uniform(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+        self.0.uniform()
+    }
+
+    /// A standard normal draw (Box–Muller).
+    pub fn normal(&mut self) -> f64 {
+        let u = 1.0 - self.uniform();
+        let v = self.uniform();
+        (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
     }
 }
 
@@ -100,15 +105,6 @@ pub fn cloud(n: usize) -> GaussianMixture {
         })
         .collect();
     GaussianMixture::new(comps, "cloud").unwrap()
-}
-
-impl SplitMix {
-    /// A standard normal draw (Box–Muller).
-    pub fn normal(&mut self) -> f64 {
-        let u = 1.0 - self.uniform();
-        let v = self.uniform();
-        (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
-    }
 }
 
 /// The percolating scene of issue 15: n truths uniform in a square of side 100·√(n/1000)
