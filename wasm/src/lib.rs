@@ -33,6 +33,7 @@
 
 pub mod boundary;
 pub mod de;
+pub mod names;
 pub mod types;
 
 // One module of bindings per part of the npm package (a Cargo feature each, all on by default;
