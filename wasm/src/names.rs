@@ -24,7 +24,7 @@ const EXCEPTIONS: &[(&str, &str, &str)] = &[
 ];
 
 /// The JavaScript name of the Rust field `field` of a value held in the field `parent` (`""`
-/// at the top): camelCase (`future_scans` → `futureScans`) unless [`EXCEPTIONS`] names it.
+/// at the top): camelCase (`future_scans` → `futureScans`) unless it is one of the matrix exceptions.
 /// A name without an underscore comes back borrowed.
 pub fn js_name<'a>(parent: &str, field: &'a str) -> Cow<'a, str> {
     if let Some((_, _, js)) = EXCEPTIONS
