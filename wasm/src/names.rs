@@ -14,41 +14,32 @@ use std::string::String;
 
 use serde::ser::{self, Serialize, Serializer};
 
-/// Fields whose JavaScript name is not their camelCase: `(parent field, Rust field, JS name)`.
-/// The matrices of a linear-Gaussian transition and measurement model keep the papers' capitals.
-const EXCEPTIONS: &[(&str, &str, &str)] = &[
-    ("transition", "f", "F"),
-    ("transition", "q", "Q"),
-    ("likelihood", "h", "H"),
-    ("likelihood", "r", "R"),
-];
+// The rule itself (the exceptions and camelCase) is shared with `build.rs`, which writes the
+// TypeScript declarations of the core's types under the same names.
+#[path = "names_rule.rs"]
+pub(crate) mod rule;
+use rule::{EXCEPTIONS, camel_case};
 
 /// The JavaScript name of the Rust field `field` of a value held in the field `parent` (`""`
-/// at the top): camelCase (`future_scans` → `futureScans`) unless it is one of the matrix exceptions.
-/// A name without an underscore comes back borrowed.
-pub fn js_name<'a>(parent: &str, field: &'a str) -> Cow<'a, str> {
+/// at the top, either spelling: the parents of the exceptions are one word): camelCase
+/// (`future_scans` → `futureScans`) unless it is one of the matrix exceptions (`transition.f`
+/// → `F`). Each converted name is made once and kept for the life of the module (one small
+/// string per distinct Rust field name), so serde can use it as a `&'static str` key.
+pub fn js_name(parent: &str, field: &'static str) -> &'static str {
     if let Some((_, _, js)) = EXCEPTIONS
         .iter()
         .find(|(p, f, _)| *p == parent && *f == field)
     {
-        return Cow::Borrowed(js);
+        return js;
     }
-    if !field.contains('_') {
-        return Cow::Borrowed(field);
+    match camel_case(field) {
+        Cow::Borrowed(_) => field,
+        Cow::Owned(_) => INTERNED.with(|t| {
+            *t.borrow_mut()
+                .entry(field)
+                .or_insert_with(|| Box::leak(camel_case(field).into_owned().into_boxed_str()))
+        }),
     }
-    let mut out = String::with_capacity(field.len());
-    let mut upper = false;
-    for c in field.chars() {
-        if c == '_' {
-            upper = !out.is_empty();
-        } else if upper {
-            out.extend(c.to_uppercase());
-            upper = false;
-        } else {
-            out.push(c);
-        }
-    }
-    Cow::Owned(out)
 }
 
 /// An error path in Rust names (`transition.f`, `components[2].mean`, `future_scans`) in
@@ -62,7 +53,7 @@ pub fn render_path(rust_path: &str) -> String {
         }
         // `name[3][1]`: the name, then its indices as they are
         let (name, indices) = segment.split_at(segment.find('[').unwrap_or(segment.len()));
-        out.push_str(&js_name(parent, name));
+        out.push_str(&rule::js_name_of(parent, name));
         out.push_str(indices);
         parent = name;
     }
@@ -70,22 +61,9 @@ pub fn render_path(rust_path: &str) -> String {
 }
 
 thread_local! {
-    /// The JavaScript names given out as `&'static str` (serde's struct keys are static); one
-    /// leaked string per distinct Rust field name of the program, so the table stays small.
-    static INTERNED: RefCell<BTreeMap<(&'static str, &'static str), &'static str>> =
+    /// The camelCase names given out by [`js_name`], by Rust name.
+    static INTERNED: RefCell<BTreeMap<&'static str, &'static str>> =
         const { RefCell::new(BTreeMap::new()) };
-}
-
-/// [`js_name`] as a `&'static str`.
-fn static_js_name(parent: &'static str, field: &'static str) -> &'static str {
-    match js_name(parent, field) {
-        Cow::Borrowed(s) if core::ptr::eq(s, field) => field,
-        _ => INTERNED.with(|t| {
-            *t.borrow_mut()
-                .entry((parent, field))
-                .or_insert_with(|| Box::leak(js_name(parent, field).into_owned().into_boxed_str()))
-        }),
-    }
 }
 
 /// A value that serialises with its struct fields under their JavaScript names.
@@ -325,11 +303,11 @@ macro_rules! fields {
                 key: &'static str,
                 value: &T,
             ) -> Result<(), C::Error> {
-                let js = static_js_name(self.parent, key);
+                let js = js_name(self.parent, key);
                 self.inner.serialize_field(js, &Renamed { value, parent: key })
             }
             fn skip_field(&mut self, key: &'static str) -> Result<(), C::Error> {
-                self.inner.skip_field(static_js_name(self.parent, key))
+                self.inner.skip_field(js_name(self.parent, key))
             }
             fn end(self) -> Result<C::Ok, C::Error> {
                 self.inner.end()
@@ -623,10 +601,10 @@ mod tests {
         );
         // the values pass through unchanged
         assert!(json(&c).contains("\"survivalProbability\":0.99,"));
-        // a name is interned once: the same pointer on every call
+        // a name is converted once: the same string on every call
         assert!(core::ptr::eq(
-            static_js_name("", "future_scans"),
-            static_js_name("", "future_scans")
+            js_name("", "future_scans"),
+            js_name("x", "future_scans")
         ));
     }
 }
