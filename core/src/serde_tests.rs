@@ -285,6 +285,13 @@ fn estimators_and_bernoulli_results_round_trip() {
     round_trip(&loss);
     let density = SpatialDensity::gaussian_from_slices(&[0.5, 0.0], &[1.0, 0.0, 0.0, 1.0]).unwrap();
     round_trip(&crate::bernoulli::estimate(0.7, &density, &loss).unwrap());
+    round_trip(&density);
+    let g = gaussian(&[0.0], &[1.0]);
+    let mixture = GaussianMixture::new(vec![(1.0, g.clone()), (3.0, g)], "m").unwrap();
+    round_trip(&SpatialDensity::mixture(&mixture).unwrap());
+    let points = [[0.0], [1.0]];
+    let particles = crate::bernoulli::ParticleSet::new(&points, Some(&[0.25, 0.75])).unwrap();
+    round_trip(&SpatialDensity::particles(particles));
     assert_eq!(
         rejected::<Costs>(r#"{"c00":0.0,"c01":-1.0,"c10":1.0,"c11":0.0,"c":1.0}"#),
         Costs::new(0.0, -1.0, 1.0, 0.0, 1.0)

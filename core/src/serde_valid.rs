@@ -20,6 +20,7 @@
 //! | [`Density1`] | `{"Gaussian": {mean, variance}}`, `{"Uniform": {low, high}}`, `{"Mixture": [[w, m, v], …]}`, `{"Table": {x, density}}` | [`Density1::gaussian`], … (a table's `cdf` is recomputed) |
 //! | [`bounds::Detection`](BoundsDetection) | `{"Constant": p}`, `{"Table": {x, probability}}` | [`BoundsDetection::constant`], [`BoundsDetection::table`] |
 //! | [`LinearGaussian`] | `{detection, gain, offset, noise_variance}` | [`LinearGaussian::new`] |
+//! | [`SpatialDensity`] | `{"Gaussian": gaussian}`, `{"Mixture": mixture}`, `{"Particles": particle set}` | [`SpatialDensity::gaussian`], [`SpatialDensity::mixture`], [`SpatialDensity::particles`] |
 //! | [`Region`] | `{"box": …}`, `{"polygon": …}`, `{"ball": …}`, `{"union": [regions]}`, `{"intersection": [regions]}`, `{"complement": region}` | [`Region::from`], [`Region::union`], … |
 //!
 //! No paper: these are data formats only.
@@ -32,7 +33,7 @@ use nalgebra::{DMatrix, DVector};
 use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
-use crate::bernoulli::{ApplicationLoss, Costs, ParticleSet};
+use crate::bernoulli::{ApplicationLoss, Costs, DensityKind, ParticleSet, SpatialDensity};
 use crate::bounds::{Density1, Detection as BoundsDetection, LinearGaussian};
 use crate::error::Error;
 use crate::filters::{
@@ -503,3 +504,44 @@ through_constructor!(
     },
     |r| LinearGaussian::new(r.detection, r.gain, r.offset, r.noise_variance)
 );
+
+/// [`SpatialDensity`] as the argument of its constructor (Rust variant names).
+#[derive(Serialize, Deserialize)]
+#[serde(rename = "SpatialDensity")]
+enum SpatialDensityRepr {
+    Gaussian(Gaussian),
+    Mixture(GaussianMixture),
+    Particles(ParticleSet),
+}
+
+impl Serialize for SpatialDensity {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::Error as _;
+        let repr = match (self.kind(), self.as_gaussian(), self.as_particles()) {
+            (DensityKind::Gaussian, Some(g), _) => SpatialDensityRepr::Gaussian(g.clone()),
+            (DensityKind::Particles, _, Some(p)) => SpatialDensityRepr::Particles(p.clone()),
+            _ => {
+                let components = self.mixture_components().unwrap_or_default();
+                let owned = components
+                    .into_iter()
+                    .map(|(w, g)| (w, g.clone()))
+                    .collect();
+                let mixture = GaussianMixture::new(owned, "density.mixture")
+                    .map_err(|e| S::Error::custom(e.to_string()))?;
+                SpatialDensityRepr::Mixture(mixture)
+            }
+        };
+        repr.serialize(serializer)
+    }
+}
+
+impl<'de> Deserialize<'de> for SpatialDensity {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let built = match SpatialDensityRepr::deserialize(deserializer)? {
+            SpatialDensityRepr::Gaussian(g) => SpatialDensity::gaussian(g),
+            SpatialDensityRepr::Mixture(m) => SpatialDensity::mixture(&m),
+            SpatialDensityRepr::Particles(p) => Ok(SpatialDensity::particles(p)),
+        };
+        built.map_err(|e| D::Error::custom(e.to_string()))
+    }
+}

@@ -61,6 +61,7 @@ impl Density for UnitUniform {
 
 /// g(z|x) = x e^{xz}/(eˣ − 1) on [0, 1], with a constant P_o.
 #[derive(Clone, Debug)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Example2Observation {
     /// P_o (constant).
     pub detection: Detection,
