@@ -387,13 +387,19 @@ enum RegionRef<'a> {
 
 /// [`RegionRef`], owned, for reading.
 #[derive(Deserialize)]
-#[serde(rename = "Region", rename_all = "snake_case")]
+#[serde(rename = "Region")]
 enum RegionRepr {
+    #[serde(rename = "box")]
     Box(AxisBox),
+    #[serde(rename = "polygon")]
     Polygon(Polygon),
+    #[serde(rename = "ball")]
     Ball(Ball),
+    #[serde(rename = "union")]
     Union(Vec<Region>),
+    #[serde(rename = "intersection")]
     Intersection(Vec<Region>),
+    #[serde(rename = "complement")]
     Complement(Box<Region>),
 }
 

@@ -360,14 +360,14 @@ pub struct BernoulliFilterConfig {
     /// processed.
     #[cfg_attr(feature = "serde", serde(default))]
     pub likelihood: Option<LinearGaussianLikelihood>,
-    /// (`splitting`).
-    #[cfg_attr(feature = "serde", serde(default))]
+    /// (`splitting`; default [`Splitting::default`]).
+    #[cfg_attr(feature = "serde", serde(default = "Splitting::default"))]
     pub splitting: Splitting,
-    /// (`reduction`).
+    /// (`reduction`; default [`default_reduction`]).
     #[cfg_attr(feature = "serde", serde(default = "default_reduction"))]
     pub reduction: ReductionOptions,
-    /// (`exclusions`).
-    #[cfg_attr(feature = "serde", serde(default))]
+    /// (`exclusions`; default none).
+    #[cfg_attr(feature = "serde", serde(default = "Vec::new"))]
     pub exclusions: Vec<Region>,
 }
 
