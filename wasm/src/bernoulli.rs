@@ -9,7 +9,7 @@ use wasm_bindgen::prelude::*;
 use crate::boundary::{JsResult, OrThrow, check_range, read, type_error, write};
 use crate::types::{self, Covariance, Numbers, Point, WeightedGaussian};
 use fisst::bernoulli::{
-    self, ApplicationLoss, BernoulliEstimate, Costs, Direction, MmucMethod, ParticleSet,
+    self, ApplicationLoss, BernoulliEstimate, Costs, LossCurveOptions, MmucMethod, ParticleSet,
     SpatialDensity,
 };
 use fisst::gaussian::Gaussian as CoreGaussian;
@@ -441,40 +441,18 @@ pub fn bernoulli_loss_curve(
     #[wasm_bindgen(unchecked_param_type = "BernoulliLossCurveOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: BernoulliLossCurveOptions = read(options, "options")?;
-    let q = o.miss_probability;
     let costs = o.costs.into_core("options.costs")?;
-    let optimal = bernoulli::threshold(&costs, q).or_throw_in("options")?;
-    let rule = match o.threshold {
-        Some(gamma) => bernoulli::Threshold {
-            gamma,
-            direction: Direction::Above,
-        },
-        None => optimal,
-    };
-    let n = o.existences.0.len();
-    let mut out = BernoulliLossCurveResult {
-        empty: Vec::with_capacity(n),
-        singleton: Vec::with_capacity(n),
-        rule: Vec::with_capacity(n),
-        threshold: rule.gamma,
-    };
-    for (i, &p) in o.existences.0.iter().enumerate() {
-        let name = || format!("options.existences[{i}]");
-        let rename = |e: fisst::Error| match e {
-            fisst::Error::InvalidProbability { what, value } if what == "existence" => {
-                fisst::Error::probability(name(), value)
-            }
-            other => other.within("options"),
-        };
-        let e = bernoulli::expected_loss_empty(&costs, p)
-            .map_err(rename)
-            .or_throw()?;
-        let a = bernoulli::expected_loss_singleton(&costs, p, q)
-            .map_err(rename)
-            .or_throw()?;
-        out.empty.push(e);
-        out.singleton.push(a);
-        out.rule.push(if rule.declares(p) { a } else { e });
-    }
-    write(&out)
+    let c = bernoulli::loss_curve(&LossCurveOptions {
+        existences: o.existences.0,
+        miss_probability: o.miss_probability,
+        costs,
+        threshold: o.threshold,
+    })
+    .or_throw_rendered("options")?;
+    write(&BernoulliLossCurveResult {
+        empty: c.empty,
+        singleton: c.singleton,
+        rule: c.rule,
+        threshold: c.threshold,
+    })
 }

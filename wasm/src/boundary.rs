@@ -65,6 +65,9 @@ pub trait OrThrow<T> {
     fn or_throw(self) -> JsResult<T>;
     /// Maps the error to [`core_error`] with its field under `prefix` (`c` → `options.c`).
     fn or_throw_in(self, prefix: &str) -> JsResult<T>;
+    /// Maps the error to [`core_error_in`]: its Rust field path rendered in JavaScript names,
+    /// under `prefix` (`max_components` → `options.maxComponents`).
+    fn or_throw_rendered(self, prefix: &str) -> JsResult<T>;
 }
 
 impl<T> OrThrow<T> for fisst::Result<T> {
@@ -75,6 +78,53 @@ impl<T> OrThrow<T> for fisst::Result<T> {
     fn or_throw_in(self, prefix: &str) -> JsResult<T> {
         self.map_err(|e| core_error(e.within(prefix)))
     }
+
+    fn or_throw_rendered(self, prefix: &str) -> JsResult<T> {
+        self.map_err(|e| core_error_in(e, prefix))
+    }
+}
+
+/// A Rust field path (`max_components`, `transition.f`, `regions[2].grid_points`) in
+/// JavaScript names: each segment's `snake_case` becomes `camelCase`; indices and segments
+/// without underscores are kept (`existence[3]`, `missProbability`).
+pub fn render_path(rust_path: &str) -> String {
+    let mut out = String::with_capacity(rust_path.len());
+    let mut upper = false;
+    for ch in rust_path.chars() {
+        match ch {
+            '_' if !out.is_empty() && !out.ends_with(['.', '[']) => upper = true,
+            _ if upper => {
+                out.extend(ch.to_uppercase());
+                upper = false;
+            }
+            _ => out.push(ch),
+        }
+    }
+    out
+}
+
+/// The JS exception for a core error about `prefix.field`, the field rendered by
+/// [`render_path`] (`max_components` → `options.maxComponents`).
+pub fn core_error_in(e: fisst::Error, prefix: &str) -> JsValue {
+    let field = render_path(e.field());
+    let renamed = match e {
+        fisst::Error::InvalidParameter {
+            value, expected, ..
+        } => fisst::Error::parameter(field, value, expected),
+        fisst::Error::InvalidProbability { value, .. } => fisst::Error::probability(field, value),
+        fisst::Error::DimensionMismatch {
+            expected, found, ..
+        } => fisst::Error::dimension(field, expected, found),
+        fisst::Error::NotPositiveDefinite { .. } => {
+            fisst::Error::NotPositiveDefinite { what: field }
+        }
+        fisst::Error::Unsupported { reason, .. } => fisst::Error::Unsupported {
+            what: field,
+            reason,
+        },
+        other => other,
+    };
+    core_error(renamed.within(prefix))
 }
 
 /// The seed of a seeded function: the caller's, or fresh platform entropy when omitted
@@ -95,4 +145,27 @@ pub fn check_range(path: &str, value: usize, min: usize, max: usize) -> JsResult
         )));
     }
     Ok(value)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::render_path;
+
+    #[test]
+    fn render_path_camel_cases_each_segment() {
+        assert_eq!(render_path("max_components"), "maxComponents");
+        assert_eq!(render_path("grid_points"), "gridPoints");
+        assert_eq!(
+            render_path("rfs.iid_cluster.cardinality"),
+            "rfs.iidCluster.cardinality"
+        );
+        assert_eq!(
+            render_path("regions[2].position_dims"),
+            "regions[2].positionDims"
+        );
+        assert_eq!(render_path("existence[3]"), "existence[3]");
+        assert_eq!(render_path("missProbability"), "missProbability");
+        assert_eq!(render_path("transition.F"), "transition.F");
+        assert_eq!(render_path(""), "");
+    }
 }

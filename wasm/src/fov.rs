@@ -11,20 +11,10 @@ use crate::types::{
     self, Bernoulli, Grid, MultiObjectDensity, Region, WeightedGaussian, check_gaussian_count,
 };
 use fisst::fov::{
-    MAX_SCENE_COUNT, MultiObjectDensity as CoreDensity, SceneOptions, fov_cardinality,
-    mixture_density_grid, placement_scene, variance_map,
+    FOV_MASS_BUDGET_US, MAX_CARDINALITY_LEN, MAX_DENSITY_GRID_WORK, MAX_SCENE_COUNT,
+    MAX_VARIANCE_MAP_WORK, MultiObjectDensity as CoreDensity, SceneOptions, fov_cardinality,
+    fov_mass_work_us, grid_work, mixture_density_grid, placement_scene, variance_map,
 };
-
-/// Budget of one `fovCardinality` call in estimated native microseconds (about 2 s): the
-/// number of Gaussians times the cost of one mass for the FoV's kind and dimension.
-const MASS_BUDGET_US: f64 = 2e6;
-/// At most this many entries of an i.i.d.-cluster cardinality pmf (the thinning is O(n²)).
-const MAX_CARDINALITY_LEN: usize = 20_001;
-/// At most this many (component, FoV centre) pairs in one variance map.
-const MAX_MAP_WORK: f64 = 2e8;
-/// At most this many (component, grid point) density evaluations in one `mixtureDensityGrid`
-/// call (~80 ns each natively: about 2 s).
-const MAX_DENSITY_WORK: f64 = 2.5e7;
 
 fn one() -> f64 {
     1.0
@@ -204,18 +194,14 @@ pub fn fov_cardinality_js(
             CoreDensity::Glmb(out)
         }
     };
-    let (fov, cost) = o.fov.into_core("options.fov")?;
-    let count = match &density {
-        CoreDensity::Poisson(m) => m.len(),
-        CoreDensity::IidCluster { density, .. } => density.len(),
-        CoreDensity::MultiBernoulli(c) => c.len(),
-        CoreDensity::Glmb(h) => h.iter().map(|(_, c)| c.len()).sum(),
-    };
-    if count as f64 * cost > MASS_BUDGET_US {
+    let (fov, _) = o.fov.into_core("options.fov")?;
+    let work = fov_mass_work_us(&density, &fov);
+    if work > FOV_MASS_BUDGET_US {
         return Err(range_error(format!(
-            "options.fov: {count} Gaussian masses in this region would take about {:.0} s; use \
+            "options.fov: {} Gaussian masses in this region would take about {:.0} s; use \
              fewer components, fewer polygon vertices or fewer FoV dimensions",
-            count as f64 * cost * 1e-6
+            density.gaussian_count(),
+            work * 1e-6
         )));
     }
     let res = fov_cardinality(&density, &fov, o.detection_probability).or_throw_in("options")?;
@@ -239,9 +225,9 @@ pub fn fov_variance_map(
     let o: FovVarianceMapOptions = read(options, "options")?;
     let comps = types::bernoullis(o.multi_bernoulli, "options.multiBernoulli")?;
     let (x, y) = o.grid.into_core("options.grid")?;
-    if comps.len() as f64 * (x.count * y.count) as f64 > MAX_MAP_WORK {
+    if grid_work(comps.len(), x, y) > MAX_VARIANCE_MAP_WORK {
         return Err(range_error(format!(
-            "options.multiBernoulli.length × grid cells is {}, at most {MAX_MAP_WORK:e} is \
+            "options.multiBernoulli.length × grid cells is {}, at most {MAX_VARIANCE_MAP_WORK:e} is \
              supported",
             comps.len() * x.count * y.count
         )));
@@ -309,9 +295,9 @@ pub fn mixture_density_grid_js(
     check_gaussian_count(o.mixture.len(), "options.mixture")?;
     let mix = types::mixture(o.mixture, "options.mixture")?;
     let (x, y) = o.grid.into_core("options.grid")?;
-    if mix.len() as f64 * (x.count * y.count) as f64 > MAX_DENSITY_WORK {
+    if grid_work(mix.len(), x, y) > MAX_DENSITY_GRID_WORK {
         return Err(range_error(format!(
-            "options.mixture.length × grid cells is {}, at most {MAX_DENSITY_WORK:e} is \
+            "options.mixture.length × grid cells is {}, at most {MAX_DENSITY_GRID_WORK:e} is \
              supported",
             mix.len() * x.count * y.count
         )));

@@ -6,10 +6,14 @@ use serde::{Deserialize, Serialize};
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{JsResult, OrThrow, check_range, read, write};
+use crate::boundary::{JsResult, OrThrow, read, write};
 use crate::types::Numbers;
 use fisst::cardinality::{leave_one_out_cardinalities, multi_bernoulli_cardinality};
-use fisst::estimators::alternatives::{jom_estimate, mam_estimate, map_cardinality_estimate};
+use fisst::estimators::alternatives::{self, alternative_estimate};
+use fisst::estimators::figures::{
+    self, DecisionMapOptions, IdenticalComponentCountsOptions, decision_map,
+    identical_component_counts,
+};
 use fisst::estimators::multi_bernoulli::{SetMetric, mean_error, optimal_estimate};
 
 fn one() -> f64 {
@@ -103,6 +107,16 @@ pub enum AlternativeMethod {
     MapCardinality,
 }
 
+impl From<AlternativeMethod> for alternatives::AlternativeMethod {
+    fn from(m: AlternativeMethod) -> Self {
+        match m {
+            AlternativeMethod::Mam => Self::Mam,
+            AlternativeMethod::Jom => Self::Jom,
+            AlternativeMethod::MapCardinality => Self::MapCardinality,
+        }
+    }
+}
+
 /// Options of `mbAlternativeEstimate`.
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
@@ -143,6 +157,19 @@ pub enum DecisionEstimator {
     Jom,
     /// MAP cardinality, then the most probable components.
     MapCardinality,
+}
+
+impl From<DecisionEstimator> for figures::DecisionEstimator {
+    fn from(e: DecisionEstimator) -> Self {
+        match e {
+            DecisionEstimator::Gospa => Self::Gospa,
+            DecisionEstimator::Ospa => Self::Ospa,
+            DecisionEstimator::Uospa => Self::Uospa,
+            DecisionEstimator::Mam => Self::Mam,
+            DecisionEstimator::Jom => Self::Jom,
+            DecisionEstimator::MapCardinality => Self::MapCardinality,
+        }
+    }
 }
 
 fn hundred() -> usize {
@@ -261,19 +288,6 @@ pub fn mb_mean_square_error(
     .or_throw_in("options")
 }
 
-fn alternative(
-    existence: &[f64],
-    method: AlternativeMethod,
-    ln_peak: &[f64],
-    ln_c: f64,
-) -> fisst::Result<Vec<bool>> {
-    match method {
-        AlternativeMethod::Mam => mam_estimate(existence, ln_peak),
-        AlternativeMethod::Jom => jom_estimate(existence, ln_peak, ln_c),
-        AlternativeMethod::MapCardinality => map_cardinality_estimate(existence),
-    }
-}
-
 /// The classical estimators of Fig. 2: `method` is `'mam'` (marginal multi-target),
 /// `'jom'` (joint multi-target) or `'map-cardinality'` (maximise the cardinality pmf, then
 /// report the most probable components). `lnPeak[i]` is `−½ ln det(2π P_i)` for component i's
@@ -288,7 +302,8 @@ pub fn mb_alternative_estimate(
     let ln_peak = o
         .ln_peak
         .map_or_else(|| vec![0.0; existence.len()], |n| n.0);
-    let report = alternative(&existence, o.method, &ln_peak, o.ln_c).or_throw_in("options")?;
+    let report = alternative_estimate(&existence, o.method.into(), &ln_peak, o.ln_c)
+        .or_throw_in("options")?;
     write(&MbAlternativeEstimateResult { report })
 }
 
@@ -302,39 +317,17 @@ pub fn mb_decision_map(
     #[wasm_bindgen(unchecked_param_type = "MbDecisionMapOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: MbDecisionMapOptions = read(options, "options")?;
-    let res = check_range("options.resolution", o.resolution, 1, 2000)?;
-    let metric = match o.estimator {
-        DecisionEstimator::Gospa => Some(SetMetric::Gospa { alpha: o.alpha }),
-        DecisionEstimator::Ospa => Some(SetMetric::Ospa),
-        DecisionEstimator::Uospa => Some(SetMetric::Uospa),
-        _ => None,
-    };
-    let method = match o.estimator {
-        DecisionEstimator::Jom => AlternativeMethod::Jom,
-        DecisionEstimator::MapCardinality => AlternativeMethod::MapCardinality,
-        _ => AlternativeMethod::Mam,
-    };
-    let mut codes = vec![0u8; res * res];
-    for row in 0..res {
-        for col in 0..res {
-            let r = [
-                (col as f64 + 0.5) / res as f64,
-                (row as f64 + 0.5) / res as f64,
-            ];
-            let u = match metric {
-                Some(m) => {
-                    optimal_estimate(&r, m, o.c, o.p)
-                        .or_throw_in("options")?
-                        .report
-                }
-                None => alternative(&r, method, &[0.0, 0.0], 0.0).or_throw_in("options")?,
-            };
-            codes[row * res + col] = u8::from(u[0]) + 2 * u8::from(u[1]);
-        }
-    }
+    let map = decision_map(&DecisionMapOptions {
+        estimator: o.estimator.into(),
+        resolution: o.resolution,
+        c: o.c,
+        p: o.p,
+        alpha: o.alpha,
+    })
+    .or_throw_rendered("options")?;
     write(&MbDecisionMapResult {
-        resolution: res,
-        decisions: Uint8Array::from(codes.as_slice()),
+        resolution: map.resolution,
+        decisions: Uint8Array::from(map.decisions.as_slice()),
     })
 }
 
@@ -346,32 +339,16 @@ pub fn mb_identical_component_counts(
     #[wasm_bindgen(unchecked_param_type = "MbIdenticalComponentCountsOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: MbIdenticalComponentCountsOptions = read(options, "options")?;
-    let max_n = check_range("options.maxComponents", o.max_components, 1, 1000)?;
-    if !(0.0..=1.0).contains(&o.existence) {
-        return Err(fisst::Error::probability("options.existence", o.existence)).or_throw();
-    }
-    let count = |u: &[bool]| u.iter().filter(|&&b| b).count();
-    let mut out = MbIdenticalComponentCountsResult {
-        n: Vec::with_capacity(max_n),
-        gospa: Vec::with_capacity(max_n),
-        ospa: Vec::with_capacity(max_n),
-        uospa: Vec::with_capacity(max_n),
-        map_cardinality: Vec::with_capacity(max_n),
-    };
-    for n in 1..=max_n {
-        let rs = vec![o.existence; n];
-        let best = |m| {
-            optimal_estimate(&rs, m, 1.0, 2.0)
-                .map(|e| count(&e.report))
-                .or_throw_in("options")
-        };
-        out.n.push(n);
-        out.gospa.push(best(SetMetric::GOSPA)?);
-        out.ospa.push(best(SetMetric::Ospa)?);
-        out.uospa.push(best(SetMetric::Uospa)?);
-        out.map_cardinality.push(count(
-            &map_cardinality_estimate(&rs).or_throw_in("options")?,
-        ));
-    }
-    write(&out)
+    let k = identical_component_counts(&IdenticalComponentCountsOptions {
+        existence: o.existence,
+        max_components: o.max_components,
+    })
+    .or_throw_rendered("options")?;
+    write(&MbIdenticalComponentCountsResult {
+        n: k.n,
+        gospa: k.gospa,
+        ospa: k.ospa,
+        uospa: k.uospa,
+        map_cardinality: k.map_cardinality,
+    })
 }

@@ -10,23 +10,12 @@ use crate::types::{self, BoxRegion, MixtureComponent, Region, WeightedGaussian, 
 use fisst::mixture::{merge_close, prune, runnalls};
 use fisst::regions::Region as CoreRegion;
 use fisst::splitting::{
-    NegativeInformationScenario as Fig5Scenario, NegativeInformationStep as Fig5Step, Spacing,
-    SplitLibrary, SplitOptions, SplitStop, partition, split_for_regions,
+    MAX_GRID_SIZE as MAX_GRID, MAX_REGIONS, MAX_RUNNALLS_INPUT,
+    MAX_SPLIT_RESULT_COMPONENTS as MAX_SPLIT_COMPONENTS,
+    NegativeInformationScenario as Fig5Scenario, NegativeInformationStep as Fig5Step,
+    SPLIT_WORK_BUDGET, Spacing, SplitLibrary, SplitOptions, SplitStop, exact_mass_affordable,
+    grid_size, partition, split_for_regions, split_work,
 };
-
-/// At most this many regions in one `splitForRegions` call.
-const MAX_REGIONS: usize = 32;
-/// At most this many collocation points N_g^{n_s} (before the ball cut) per component.
-const MAX_GRID: usize = 20_000;
-/// Largest `maxComponents` of `splitForRegions`.
-const MAX_SPLIT_COMPONENTS: usize = 50_000;
-/// Budget of one `splitForRegions` call: maxComponents × grid points × Σ region weights, a
-/// worst-case count of inclusion tests (≈ 5 ns each natively: a few seconds in wasm).
-const SPLIT_WORK_BUDGET: f64 = 5e8;
-/// Budget of the exact inside mass reported by `splitForRegions`, in estimated native µs.
-const EXACT_MASS_BUDGET_US: f64 = 5e5;
-/// At most this many components enter Runnalls' reduction (O(L²) bound evaluations).
-const MAX_RUNNALLS_INPUT: usize = 5_000;
 
 /// The family of a split library.
 #[derive(Clone, Copy, Debug, Default, Deserialize, Tsify)]
@@ -337,19 +326,14 @@ pub fn split_for_regions_js(
         1,
         MAX_SPLIT_COMPONENTS,
     )?;
-    let grid_size = (0..position_dims)
-        .try_fold(1usize, |acc, _| acc.checked_mul(grid_points))
-        .filter(|&g| g <= MAX_GRID)
-        .ok_or_else(|| {
-            range_error(format!(
-                "options.gridPoints^positionDims must be at most {MAX_GRID}, got \
-                 {grid_points}^{position_dims}"
-            ))
-        })?;
-    // Inclusion tests cost about 1 (box), 2 (disc), 2 + vertices/15 (polygon) units; the
-    // region converter's mass-cost estimate (1, 150, 150 + 10·vertices µs) maps onto it.
-    let region_work: f64 = regions.iter().map(|(_, c)| 1.0 + c / 150.0).sum();
-    let work = max_components as f64 * grid_size as f64 * region_work;
+    let grid_size = grid_size(position_dims, grid_points).ok_or_else(|| {
+        range_error(format!(
+            "options.gridPoints^positionDims must be at most {MAX_GRID}, got \
+             {grid_points}^{position_dims}"
+        ))
+    })?;
+    let only: Vec<CoreRegion> = regions.into_iter().map(|(reg, _)| reg).collect();
+    let work = split_work(max_components, grid_size, &only);
     if work > SPLIT_WORK_BUDGET {
         return Err(range_error(format!(
             "options.maxComponents × gridPoints^positionDims × regions is {work:.2e} inclusion \
@@ -366,9 +350,8 @@ pub fn split_for_regions_js(
         max_depth,
         max_components,
     };
-    let only: Vec<CoreRegion> = regions.iter().map(|(reg, _)| reg.clone()).collect();
     let out = split_for_regions(&mixture, &only, &library, &split_opts).or_throw_in("options")?;
-    let (first, cost) = &regions[0];
+    let first = &only[0];
     let part = partition(&out.mixture, first).or_throw_in("options")?;
     // The same inclusion test as the partition (11)–(12), per component.
     let inside_mask: Vec<bool> = out
@@ -377,8 +360,7 @@ pub fn split_for_regions_js(
         .iter()
         .map(|(_, g)| first.contains(g.mean().as_slice()))
         .collect();
-    let affordable = mixture.len() as f64 * cost <= EXACT_MASS_BUDGET_US;
-    let exact_inside = if affordable && first.dim() <= fisst::regions::MAX_MASS_DIM {
+    let exact_inside = if exact_mass_affordable(mixture.len(), first) {
         let mut total = 0.0;
         for (i, (w, g)) in mixture.components().iter().enumerate() {
             total += w * first

@@ -324,27 +324,10 @@ pub enum Region {
     Complement(Box<Region>),
 }
 
-/// An estimate of the native cost of one Gaussian mass in a region of `kind`, in
-/// microseconds (measured: a 2D box ~1 µs, a 2D disc or small polygon ~150–200 µs, a 3D box
-/// ~100 µs, a 3D ball ~20 ms; each extra dimension multiplies by ~150).
-fn mass_cost_us(region: &Region) -> f64 {
-    let nested = |dim: usize| 150f64.powi(dim.saturating_sub(2) as i32);
-    match region {
-        Region::Box(b) if b.min.len() <= 2 => 1.0,
-        Region::Box(b) => nested(b.min.len()),
-        Region::Polygon(v) => 150.0 + 10.0 * v.len() as f64,
-        Region::Disc(d) if d.center.len() <= 1 => 1.0,
-        Region::Disc(d) => 150.0 * nested(d.center.len()),
-        Region::Union(m) => m.iter().map(mass_cost_us).sum::<f64>().max(150.0),
-        Region::Complement(r) => mass_cost_us(r),
-    }
-}
-
 impl Region {
-    /// The core region and the estimated cost of one Gaussian mass in it (µs); errors name
-    /// `path` (`options.fov`).
+    /// The core region and the estimated cost of one Gaussian mass in it
+    /// ([`CoreRegion::mass_cost_us`], µs); errors name `path` (`options.fov`).
     pub fn into_core(self, path: &str) -> JsResult<(CoreRegion, f64)> {
-        let cost = mass_cost_us(&self);
         let region = match self {
             Region::Box(b) => CoreRegion::axis_box(&b.min, &b.max, &format!("{path}.box")),
             Region::Polygon(v) => {
@@ -377,7 +360,9 @@ impl Region {
                 r.into_core(&format!("{path}.complement"))?.0,
             )),
         };
-        Ok((region.or_throw()?, cost))
+        let region = region.or_throw()?;
+        let cost = region.mass_cost_us();
+        Ok((region, cost))
     }
 }
 

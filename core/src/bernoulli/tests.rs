@@ -950,6 +950,50 @@ fn fig3_curve_matches_the_general_estimator() {
 }
 
 #[test]
+fn fig2_loss_curve_follows_the_rule_and_names_the_entry() {
+    let costs = Costs::mmol(0.9, 0.1).unwrap();
+    let q = 0.3;
+    let ps = vec![0.0, 0.05, 0.2, 0.5, 1.0];
+    let o = LossCurveOptions {
+        existences: ps.clone(),
+        miss_probability: q,
+        costs,
+        threshold: None,
+    };
+    let c = loss_curve(&o).unwrap();
+    let t = threshold(&costs, q).unwrap();
+    assert_eq!(c.threshold, t.gamma);
+    for (i, &p) in ps.iter().enumerate() {
+        let e = expected_loss_empty(&costs, p).unwrap();
+        let a = expected_loss_singleton(&costs, p, q).unwrap();
+        assert_eq!((c.empty[i], c.singleton[i]), (e, a));
+        assert_eq!(c.rule[i], if t.declares(p) { a } else { e });
+        // The optimal rule is never worse than either report.
+        assert!(c.rule[i] <= e.min(a));
+    }
+    let fixed = loss_curve(&LossCurveOptions {
+        threshold: Some(0.5),
+        ..o.clone()
+    })
+    .unwrap();
+    assert_eq!(fixed.threshold, 0.5);
+    assert_eq!(fixed.rule[2], fixed.empty[2]);
+    assert_eq!(fixed.rule[4], fixed.singleton[4]);
+    let bad = loss_curve(&LossCurveOptions {
+        existences: vec![0.5, 1.5],
+        ..o.clone()
+    })
+    .unwrap_err();
+    assert_eq!(bad, crate::Error::probability("existences[1]", 1.5));
+    let bad = loss_curve(&LossCurveOptions {
+        miss_probability: -1.0,
+        ..o
+    })
+    .unwrap_err();
+    assert_eq!(bad.field(), "missProbability");
+}
+
+#[test]
 fn eq13_eq14_expected_losses_match_a_monte_carlo_of_the_loss() {
     // Simulate the Bernoulli (exists with probability p, then x ~ s) and average L(α, φ)
     // of eq. (7) for α = {a*} and α = ∅; costs with c01 ≠ c10 check the erratum (23c).

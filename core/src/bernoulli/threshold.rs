@@ -1,10 +1,10 @@
 //! The reporting threshold Γ of eq. (11) of `000_…` and the expected losses (13)–(14) of
-//! the two reports, from the costs and q(a*) alone.
+//! the two reports, from the costs and q(a*) alone, and their curves against p (Fig. 2).
+
+use alloc::vec::Vec;
 
 use crate::bernoulli::loss::Costs;
-#[cfg(doc)]
-use crate::error::Error;
-use crate::error::{Result, check_probability};
+use crate::error::{Error, Result, check_probability};
 use crate::math::sum::sum;
 
 /// Which side of Γ reports a target.
@@ -125,4 +125,84 @@ pub fn expected_loss_singleton(
     let p = check_probability(|| "existence".into(), existence)?;
     let q = check_probability(|| "missProbability".into(), miss_probability)?;
     Ok((1.0 - p) * costs.c10() + p * (costs.c11() + costs.c() * q))
+}
+
+/// Options of [`loss_curve`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct LossCurveOptions {
+    /// The existence probabilities p at which to evaluate, each in [0, 1].
+    pub existences: Vec<f64>,
+    /// q(a*) in [0, 1].
+    pub miss_probability: f64,
+    /// The costs of the loss (7).
+    pub costs: Costs,
+    /// Report when p > `threshold`; `None` (the default): the optimal rule of Theorem III.3,
+    /// [`threshold`].
+    pub threshold: Option<f64>,
+}
+
+/// The expected losses against p ([`loss_curve`]), one entry per p.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LossCurve {
+    /// ρ_∅(p), eq. (14).
+    pub empty: Vec<f64>,
+    /// ρ_{a*}(p), eq. (13).
+    pub singleton: Vec<f64>,
+    /// The expected loss of the rule: ρ_{a*}(p) where it reports, else ρ_∅(p).
+    pub rule: Vec<f64>,
+    /// The rule's threshold.
+    pub threshold: f64,
+}
+
+/// Fig. 2 of `000_…`: ρ_∅(p) (14), ρ_{a*}(p) (13) and the expected loss of the rule "report
+/// when p > threshold" (default: the optimal rule, Γ of (11) on its [`Direction`]) at each
+/// p of `existences`.
+///
+/// # Errors
+/// [`Error::InvalidProbability`] naming `missProbability` unless q ∈ [0, 1], or
+/// `existences[i]` unless p_i ∈ [0, 1].
+///
+/// # Examples
+/// ```
+/// use fisst::bernoulli::{loss_curve, Costs, LossCurveOptions};
+/// let c = loss_curve(&LossCurveOptions {
+///     existences: vec![0.2, 0.9],
+///     miss_probability: 0.3,
+///     costs: Costs::mpe(),
+///     threshold: None,
+/// })?;
+/// assert_eq!(c.rule, vec![c.empty[0], c.singleton[1]]);
+/// # Ok::<(), fisst::Error>(())
+/// ```
+pub fn loss_curve(options: &LossCurveOptions) -> Result<LossCurve> {
+    let (costs, q) = (&options.costs, options.miss_probability);
+    let optimal = threshold(costs, q)?;
+    let rule = match options.threshold {
+        Some(gamma) => Threshold {
+            gamma,
+            direction: Direction::Above,
+        },
+        None => optimal,
+    };
+    let n = options.existences.len();
+    let mut out = LossCurve {
+        empty: Vec::with_capacity(n),
+        singleton: Vec::with_capacity(n),
+        rule: Vec::with_capacity(n),
+        threshold: rule.gamma,
+    };
+    for (i, &p) in options.existences.iter().enumerate() {
+        let rename = |e: Error| match e {
+            Error::InvalidProbability { what, value } if what == "existence" => {
+                Error::probability(alloc::format!("existences[{i}]"), value)
+            }
+            other => other,
+        };
+        let e = expected_loss_empty(costs, p).map_err(rename)?;
+        let a = expected_loss_singleton(costs, p, q).map_err(rename)?;
+        out.empty.push(e);
+        out.singleton.push(a);
+        out.rule.push(if rule.declares(p) { a } else { e });
+    }
+    Ok(out)
 }

@@ -187,9 +187,53 @@ pub fn jom_estimate(existence: &[f64], ln_peak: &[f64], ln_c: f64) -> Result<Vec
     Ok(report_top(n, &order, best_k))
 }
 
+/// One of the classical estimators of Fig. 2 of `003_…`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AlternativeMethod {
+    /// Marginal multi-target ([`mam_estimate`]).
+    Mam,
+    /// Joint multi-target ([`jom_estimate`]).
+    Jom,
+    /// MAP cardinality, then the most probable components ([`map_cardinality_estimate`]).
+    MapCardinality,
+}
+
+/// The estimate of `method`: [`mam_estimate`], [`jom_estimate`] or
+/// [`map_cardinality_estimate`] (which ignores `ln_peak` and `ln_c`; MaM ignores `ln_c`).
+///
+/// # Errors
+/// As the estimator called.
+pub fn alternative_estimate(
+    existence: &[f64],
+    method: AlternativeMethod,
+    ln_peak: &[f64],
+    ln_c: f64,
+) -> Result<Vec<bool>> {
+    match method {
+        AlternativeMethod::Mam => mam_estimate(existence, ln_peak),
+        AlternativeMethod::Jom => jom_estimate(existence, ln_peak, ln_c),
+        AlternativeMethod::MapCardinality => map_cardinality_estimate(existence),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fig2_alternative_estimate_dispatches_to_each_rule() {
+        let (r, lp) = ([0.3, 0.6, 0.45], [0.0, 1.0, -0.5]);
+        let call = |m| alternative_estimate(&r, m, &lp, 0.2).unwrap();
+        assert_eq!(call(AlternativeMethod::Mam), mam_estimate(&r, &lp).unwrap());
+        assert_eq!(
+            call(AlternativeMethod::Jom),
+            jom_estimate(&r, &lp, 0.2).unwrap()
+        );
+        assert_eq!(
+            call(AlternativeMethod::MapCardinality),
+            map_cardinality_estimate(&r).unwrap()
+        );
+    }
 
     #[test]
     fn two_component_rules() {

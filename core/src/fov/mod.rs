@@ -30,14 +30,20 @@
 //! | [`glmb`] | (92) | `eq92_glmb_matches_the_simulation_and_reduces_to_multi_bernoulli` |
 //! | [`fov_cardinality`] | (72)–(73) with the masses ⟨1_S, p⟩ | `front_door_names_fields`, `placement::tests::every_mass_matches_the_direct_bivariate_rectangle` |
 //! | [`variance_map`] | Section VII, Fig. 10 | `placement::tests::fig10_variance_map_matches_the_pmf_and_finds_the_maximum`, `paper_001_fov::fig10_the_maximum_is_the_variance_of_the_pmf_there`, `paper_001_fov::fig10_no_grid_cell_exceeds_the_maximum`, `paper_001_fov::fig10_a_finer_search_gains_no_more_than_the_grid_step_allows`, `paper_001_fov::fig10_most_uncertain_is_not_most_populated`, `paper_001_fov::fig10_monte_carlo_of_the_rfs_matches_the_pmf_at_the_optimum` |
+//! | [`fov_mass_work_us`], [`grid_work`] and their budgets | the cost of the masses of (72)–(73) and of the Section VII grids | `budget::tests::eq72_work_counts_every_mass_at_the_region_cost` |
 //! | [`placement_scene`], [`mixture_density_grid`] | Figs 9–10, the PHD (99) | `scene::tests::scenes_follow_the_recipe`, `scene::tests::default_scene_is_pinned`, `density_grid::tests::sums_the_components_and_marginalises`, `paper_001_fov::fig9_the_phd_integrates_to_the_expected_counts`, `paper_001_fov::fig9_the_optimal_boundary_splits_components` |
 
+mod budget;
 mod density;
 mod density_grid;
 mod placement;
 pub mod pmf;
 pub mod scene;
 
+pub use budget::{
+    FOV_MASS_BUDGET_US, MAX_CARDINALITY_LEN, MAX_DENSITY_GRID_WORK, MAX_VARIANCE_MAP_WORK,
+    fov_mass_work_us, grid_work,
+};
 pub use density::{FovCount, MultiObjectDensity, fov_cardinality};
 pub use density_grid::mixture_density_grid;
 pub use placement::{GridAxis, MAX_GRID_AXIS, MAX_GRID_CELLS, VarianceMap, variance_map};

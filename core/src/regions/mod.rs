@@ -27,6 +27,7 @@
 //! |---|---|---|
 //! | [`Region::contains`] | 1_S of (6) | `mass::tests::eq8_inclusion_tests_and_boundaries`, `mass::tests::eq8_unions_intersections_and_complements`, `predicates::tests::ball_side_is_exact`, `predicates::tests::orientation_is_exact_where_the_naive_formula_fails`, `predicates::tests::orientation_agrees_with_exact_integer_arithmetic` |
 //! | [`Region::gaussian_mass`] | ⟨1_S, N(m, P)⟩, the integral of (8) | `mass::tests::eq8_box_2d_is_the_bivariate_rectangle_and_the_ray_method_agrees`, `mass::tests::eq8_discs_match_closed_forms`, `mass::tests::eq8_discs_and_polygons_match_the_slab_oracle_and_monte_carlo`, `mass::tests::eq8_self_intersecting_polygons_follow_the_even_odd_rule`, `mass::tests::eq8_one_dimensional_regions_are_exact`, `mass::tests::eq8_higher_dimensions_against_closed_forms`, `mass::tests::eq8_extra_state_components_are_ignored_and_dimensions_checked` |
+//! | [`Region::mass_cost_us`] | the cost of one mass of (8), a model of the methods' native time | `mass::cost::tests::eq8_mass_cost_follows_the_method_of_each_region` |
 //! | [`bivariate_normal`] | the 2D box masses of (8) (Genz 2004) | `bivariate_normal::tests::matches_high_precision_references`, `bivariate_normal::tests::closed_forms_symmetries_and_limits`, `bivariate_normal::tests::rectangles_sum_to_one_and_are_continuous_in_rho` |
 
 mod axis_box;

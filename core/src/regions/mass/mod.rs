@@ -20,6 +20,7 @@ use crate::math::fns;
 use super::{Node, Region, bivariate_normal};
 use crate::math::quadrature::{self as q, Control, Rule, Tolerance};
 
+mod cost;
 mod intervals;
 mod nested;
 mod ray_tree;

@@ -1,0 +1,85 @@
+//! Work budgets of Algorithms 1–2 of `001_…` (Section IV): caps on the inputs of
+//! [`split_for_regions`](super::split_for_regions) and an estimate of its worst-case work, so
+//! that a caller (the bindings, an interactive page) can refuse a call that would take more
+//! than a few seconds before starting it; and the budget of the exact inside mass reported
+//! next to the mean-based partition.
+
+use crate::regions::{MAX_MASS_DIM, Region};
+
+/// At most this many regions in one [`split_for_regions`](super::split_for_regions) call.
+pub const MAX_REGIONS: usize = 32;
+
+/// At most this many collocation points N_g^{n_s} (before the ball cut) per component.
+pub const MAX_GRID_SIZE: usize = 20_000;
+
+/// Largest [`SplitOptions::max_components`](super::SplitOptions::max_components) a bounded
+/// caller accepts.
+pub const MAX_SPLIT_RESULT_COMPONENTS: usize = 50_000;
+
+/// Budget of one [`split_for_regions`](super::split_for_regions) call in inclusion tests
+/// ([`split_work`]), ≈ 5 ns each natively: a few seconds in wasm.
+pub const SPLIT_WORK_BUDGET: f64 = 5e8;
+
+/// Budget of the exact inside mass ⟨1_S, p⟩ of a mixture, in estimated native µs
+/// ([`exact_mass_affordable`]).
+pub const EXACT_MASS_BUDGET_US: f64 = 5e5;
+
+/// At most this many components enter Runnalls' reduction
+/// ([`runnalls`](crate::mixture::runnalls): O(L²) bound evaluations).
+pub const MAX_RUNNALLS_INPUT: usize = 5_000;
+
+/// The collocation grid's size N_g^{n_s} (`grid_points^position_dims`), or `None` when it
+/// exceeds [`MAX_GRID_SIZE`] (or overflows).
+pub fn grid_size(position_dims: usize, grid_points: usize) -> Option<usize> {
+    (0..position_dims)
+        .try_fold(1usize, |acc, _| acc.checked_mul(grid_points))
+        .filter(|&g| g <= MAX_GRID_SIZE)
+}
+
+/// The worst-case inclusion tests of [`split_for_regions`](super::split_for_regions):
+/// `max_components × grid_size × Σ region weights`. An inclusion test costs about 1 (box),
+/// 2 (disc), 2 + vertices/15 (polygon) units; [`Region::mass_cost_us`] (1, 150,
+/// 150 + 10·vertices µs) maps onto that scale as 1 + cost/150. Compare with
+/// [`SPLIT_WORK_BUDGET`].
+pub fn split_work(max_components: usize, grid_size: usize, regions: &[Region]) -> f64 {
+    let region_work: f64 = regions.iter().map(|r| 1.0 + r.mass_cost_us() / 150.0).sum();
+    max_components as f64 * grid_size as f64 * region_work
+}
+
+/// Whether the exact mass of `region` under a mixture of `components` Gaussians fits
+/// [`EXACT_MASS_BUDGET_US`] ([`Region::mass_cost_us`] each) and the region's dimension is
+/// served by [`Region::gaussian_mass`] (at most [`MAX_MASS_DIM`]).
+pub fn exact_mass_affordable(components: usize, region: &Region) -> bool {
+    components as f64 * region.mass_cost_us() <= EXACT_MASS_BUDGET_US
+        && region.dim() <= MAX_MASS_DIM
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn alg2_work_and_grid_caps() {
+        assert_eq!(grid_size(2, 15), Some(225));
+        assert_eq!(grid_size(0, 15), Some(1));
+        assert_eq!(grid_size(4, 15), None); // 50 625 > 20 000
+        assert_eq!(grid_size(8, usize::MAX), None);
+        let b = Region::axis_box(&[0.0, 0.0], &[1.0, 1.0], "b").unwrap();
+        let d = Region::ball(&[0.0, 0.0], 1.0, "d").unwrap();
+        // 10 000 × 225 × ((1 + 1/150) + (1 + 1))
+        let w = split_work(10_000, 225, &[b.clone(), d.clone()]);
+        assert_eq!(w, 10_000.0 * 225.0 * ((1.0 + 1.0 / 150.0) + 2.0));
+        assert!(w <= SPLIT_WORK_BUDGET);
+        assert!(
+            split_work(
+                MAX_SPLIT_RESULT_COMPONENTS,
+                MAX_GRID_SIZE,
+                core::slice::from_ref(&b)
+            ) > SPLIT_WORK_BUDGET
+        );
+        assert!(exact_mass_affordable(3333, &d));
+        assert!(!exact_mass_affordable(3334, &d));
+        let b5 = Region::axis_box(&[0.0; 5], &[1.0; 5], "b").unwrap();
+        assert!(!exact_mass_affordable(1, &b5));
+    }
+}
