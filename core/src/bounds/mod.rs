@@ -73,3 +73,8 @@ pub use vector::{
     VectorModel, component_bound, component_bounds_no_clutter, component_corollary1,
     gaussian_information_matrix, vector_bound,
 };
+mod simulate;
+pub use simulate::{
+    EmptyRule, JdeMonteCarlo, JdeMonteCarloOptions, MAX_MONTE_CARLO_WORK, MonteCarloModel,
+    MonteCarloRisk, SimulatedSystem, jde_monte_carlo,
+};
