@@ -1209,9 +1209,9 @@ pub enum MonteCarloPriorShape {
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct JdeMonteCarloOptions {
-    /// `'I'` or `'II'`.
+    /// The measurement model, `'I'` or `'II'`.
     pub model: MeasurementModel,
-    /// r in [0, 1].
+    /// r, the probability that the target exists, in [0, 1].
     pub existence: f64,
     /// f.
     pub prior: MonteCarloPriorShape,
@@ -1223,10 +1223,10 @@ pub struct JdeMonteCarloOptions {
     pub false_alarm: Option<FalseAlarmShape>,
     /// Model II: `{ rate, density }` (λ, v/λ); omitted: λ = 0.
     #[tsify(optional)]
-    pub clutter: Option<ClutterShape>,
-    /// e_0² ≥ 0.
+    pub clutter: Option<ClutterShape>, // model II only
+    /// e_0² ≥ 0, the cost of a false target.
     pub false_alarm_error: f64,
-    /// e_1² ≥ 0.
+    /// e_1² ≥ 0, the cost of a missed target.
     pub miss_error: f64,
     /// The rule on Z = ∅ (default `'optimal'`).
     #[tsify(optional)]
