@@ -2,7 +2,7 @@
 // right, Fig. 3, Corollary 3, (31), (35), (37), Theorem 1, Example 2). Every bound comes from
 // the fisst package (jdeBoundNoClutter, gaussianFisherInformation, jdeSequentialBound on this
 // thread; jdeExample2, about 10 ms a point, and jdeBound (Theorems 1 and 2) in bounds-worker.js, with the seeded Monte Carlo
-// of the detector-estimators of bounds-mc.js; jdeExample2Regularity).
+// of the detector-estimators (jdeMonteCarlo, also in the worker); jdeExample2Regularity).
 import init, * as fisst from 'fisst';
 import { chart, markX } from './lib/chart.js';
 import { $, downloads, fmt, pageReady, progressBar, slider, timings, urlState } from './lib/page.js';

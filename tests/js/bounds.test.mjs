@@ -3,13 +3,13 @@
 // jdeBound, against oracles written here in plain JS — the closed forms (27)–(31), (35), (37)
 // and Theorem 1 (17)/(21) recomputed from the paper for the linear-Gaussian case, and a seeded
 // Monte Carlo of the optimal joint detector-estimator (MAP detection, posterior mean;
-// web/bounds-mc.js) whose MSE must equal the bound within Z standard errors where the
+// oracle/bounds_mc.mjs) whose MSE must equal the bound within Z standard errors where the
 // Gaussian case attains it (Corollary 3, Theorem 1, Enumeration) and never fall below it by
 // more than that (Theorem 2).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as fisst from 'fisst';
-import { example2Prior, mcExample2, mcGaussian, mcGaussianVector, mcSequential } from '../../web/bounds-mc.js';
+import { example2Prior, mcExample2, mcGaussian, mcGaussianVector, mcSequential } from './oracle/bounds_mc.mjs';
 
 const Z = 4; // standard errors allowed between a Monte Carlo MSE and the bound it attains
 const SAMPLES = 40_000;
@@ -524,6 +524,63 @@ test('jdeExample2 is Theorem 1 for Example 2 ((32) and (20)); its curve is no bo
   assert.ok(mc.mse + Z * mc.se < fisst.jdeExample2({ existence: 1, detectionProbability: 1, falseAlarmProbability: 0, falseAlarmError: 1.2 }).paperBound, 'the curve is above the MMSE: not a bound');
   throwsAt(() => fisst.jdeExample2({ existence: 1.1, detectionProbability: 1, falseAlarmProbability: 0, falseAlarmError: 1.2 }), RangeError, 'options.existence');
   throwsAt(() => fisst.jdeExample2({ existence: 1, detectionProbability: 1, falseAlarm: 0, falseAlarmError: 1.2 }), TypeError, 'options');
+});
+
+// ------------------------------------------------------------------ jdeMonteCarlo (the package's own Monte Carlo)
+test('jdeMonteCarlo (the core\'s seeded Monte Carlo of the optimal JDE) agrees with the JS oracle within Z combined standard errors, and is seeded', { skip: waiting('jdeMonteCarlo') }, () => {
+  const both = (what, mine, oracle) => {
+    const se = Math.hypot(mine.se, oracle.se);
+    const z = se > 0 ? (mine.mse - oracle.mse) / se : 0;
+    assert.ok(Math.abs(z) < Z, `${what}: jdeMonteCarlo ${mine.mse} ± ${mine.se} vs oracle ${oracle.mse} ± ${oracle.se} (z = ${z})`);
+    return z;
+  };
+  const gaussian = (r, P) => ({ ...gaussianSystem(r, P), samples: SAMPLES });
+  let seed = 900;
+  const zs = [];
+  for (const r of [0.3, 0.8]) {
+    for (const P of [0.5, 0.9]) {
+      const base = gaussian(r, P);
+      const fa = { probability: 0.4, mean: 1, variance: 25 };
+      const cl = { rate: 1.5, mean: 0, variance: 25 };
+      const one = fisst.jdeMonteCarlo({ ...base, model: 'I', falseAlarm: { probability: fa.probability, density: { gaussian: { mean: fa.mean, variance: fa.variance } } }, seed: seed++ });
+      zs.push(both(`model I r=${r} P=${P}`, one, mcGaussian(mcOf(base, { falseAlarm: fa, seed: seed++ }))));
+      const two = fisst.jdeMonteCarlo({ ...base, model: 'II', clutter: { rate: cl.rate, density: { gaussian: { mean: cl.mean, variance: cl.variance } } }, seed: seed++ });
+      zs.push(both(`model II r=${r} P=${P}`, two, mcGaussian(mcOf(base, { clutter: cl, seed: seed++ }))));
+      const map = fisst.jdeMonteCarlo({ ...base, model: 'I', emptyRule: 'map', seed: seed++ });
+      zs.push(both(`MAP on ∅ r=${r} P=${P}`, map, mcGaussian(mcOf(base, { rule: 'map', seed: seed++ }))));
+      for (const out of [one, two, map]) close(out.falseAlarm + out.miss + out.estimation, out.mse, 1e-9, 'the parts sum to the risk');
+      // a vector state with model I false alarms: the whole state and each coordinate
+      const v = { ...vectorSystem(r, P, ROW), model: 'I', falseAlarm: { probability: 0.3, density: { gaussian: { mean: 1, variance: 25 } } }, samples: SAMPLES };
+      const mv = fisst.jdeMonteCarlo({ ...v, emptyRule: 'declare', seed: seed++ });
+      const ov = mcGaussianVector(mcVectorOf(v, { falseAlarm: { probability: 0.3, mean: 1, variance: 25 }, seed: seed++ })).hpe;
+      zs.push(both(`vector r=${r} P=${P}`, mv, ov.total));
+      mv.components.forEach((c, i) => zs.push(both(`vector r=${r} P=${P} x${i + 1}`, c, ov.components[i])));
+    }
+  }
+  // Example 2 and the sequential posterior mean (the page's Fig. 2 right and Fig. 3)
+  const ve = example2Prior.variance;
+  for (const [P, q] of [[0.4, 0.5], [1, 0]]) {
+    const mine = fisst.jdeMonteCarlo({ model: 'I', existence: 0.6, prior: 'example2', observation: { detectionProbability: P }, falseAlarm: { probability: q, density: { uniform: { low: 0, high: 1 } } }, falseAlarmError: 1.2, missError: 1.2 + ve, samples: SAMPLES, seed: seed++ });
+    zs.push(both(`Example 2 P=${P} q=${q}`, mine, mcExample2({ existence: 0.6, detectionProbability: P, falseAlarmProbability: q, falseAlarmError: 1.2, missError: 1.2 + ve, samples: SAMPLES, seed: seed++ })));
+  }
+  const seq = fisst.jdeMonteCarlo({ model: 'I', existence: 1, prior: { gaussian: { mean: 0, variance: 100 } }, observation: { detectionProbability: 0.5, gain: 1, noiseVariance: 100 / 3 }, falseAlarmError: 0, missError: 0, emptyRule: 'declare', scans: 8, samples: SAMPLES, seed: seed++ });
+  const oseq = mcSequential({ priorInformation: 0.01, detectedInformation: 0.04, detectionProbability: 0.5, steps: 8, samples: SAMPLES, seed: seed++ });
+  seq.scans.forEach((s, k) => zs.push(both(`scan ${k + 1}`, s, { mse: oseq.mse[k], se: oseq.se[k] })));
+  console.log(`jdeMonteCarlo vs the JS oracle (${SAMPLES} samples each): worst |z| ${Math.max(...zs.map(Math.abs)).toFixed(2)} over ${zs.length} comparisons`);
+  // seeded: the same seed gives the same numbers, another seed others
+  const o = { ...gaussian(0.6, 0.7), model: 'II', clutter: { rate: 1, density: { uniform: { low: -20, high: 20 } } }, samples: 5000 };
+  assert.deepEqual(fisst.jdeMonteCarlo({ ...o, seed: 5 }), fisst.jdeMonteCarlo({ ...o, seed: 5 }));
+  assert.notEqual(fisst.jdeMonteCarlo({ ...o, seed: 6 }).mse, fisst.jdeMonteCarlo({ ...o, seed: 5 }).mse);
+  const fresh = fisst.jdeMonteCarlo({ ...o, samples: 100 });
+  assert.ok(Number.isSafeInteger(fresh.seed), 'an omitted seed is drawn and returned');
+  // bad options name their field
+  throwsAt(() => fisst.jdeMonteCarlo({ ...o, samples: 1 }), RangeError, 'options.samples');
+  throwsAt(() => fisst.jdeMonteCarlo({ ...o, samples: 20_000_000 }), RangeError, 'options.samples');
+  throwsAt(() => fisst.jdeMonteCarlo({ ...o, samples: 6_000_000 }), RangeError, 'options.samples'); // × (1 + λ) > 10^7
+  throwsAt(() => fisst.jdeMonteCarlo({ ...o, scans: 2 }), RangeError, 'options.scans'); // k > 1 needs no clutter
+  throwsAt(() => fisst.jdeMonteCarlo({ ...o, existence: 2 }), RangeError, 'options.existence');
+  throwsAt(() => fisst.jdeMonteCarlo({ ...o, emptyRule: 'hpe' }), RangeError, 'options.emptyRule');
+  throwsAt(() => fisst.jdeMonteCarlo({ ...o, sample: 10 }), TypeError, 'options');
 });
 
 // ------------------------------------------------------------------ errors

@@ -1174,3 +1174,240 @@ pub fn jde_example2_regularity() -> JsResult<JsValue> {
         prior_variance: r.prior_variance,
     })
 }
+
+/// The rule of `jdeMonteCarlo` on Z = ∅: `'optimal'` (the cheaper of HPE and LPE (46)),
+/// `'map'` (MAP detection, Section IV-A), `'declare'` (always HPE) or `'reject'` (always LPE).
+#[derive(Deserialize, Tsify, Clone, Copy)]
+#[serde(rename_all = "kebab-case")]
+pub enum EmptyRuleShape {
+    /// The cheaper of HPE and LPE.
+    Optimal,
+    /// MAP detection.
+    Map,
+    /// Always {x*}.
+    Declare,
+    /// Always ∅.
+    Reject,
+}
+
+/// The state of `jdeMonteCarlo`: `{ gaussian: { mean, variance } }`, `{ multivariateGaussian:
+/// { mean, cov } }` (a linear-Gaussian `observation`), or `'example2'` (Example 2 (32): f and
+/// g fixed, `observation.detectionProbability` a constant P_o).
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub enum MonteCarloPriorShape {
+    /// N(mean, variance).
+    Gaussian(GaussianShape),
+    /// N(mean, cov) in R^l.
+    MultivariateGaussian(Gaussian),
+    /// f(x) = 2x(eˣ − 1) on [0, 1] with g(z|x) = x e^{xz}/(eˣ − 1).
+    Example2,
+}
+
+/// Options of `jdeMonteCarlo`: the problem of `jdeBound` (Gaussian priors and Example 2), the
+/// rule on Z = ∅, the number of scans and the Monte Carlo's size and seed.
+#[derive(Deserialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct JdeMonteCarloOptions {
+    /// The measurement model, `'I'` or `'II'`.
+    pub model: MeasurementModel,
+    /// r, the probability that the target exists, in [0, 1].
+    pub existence: f64,
+    /// f.
+    pub prior: MonteCarloPriorShape,
+    /// P_o (a constant) and g, as in `jdeBound`.
+    pub observation: ObservationShape,
+    /// Model I: `{ probability, density }` (q, ψ; the density must be one that draws: any of
+    /// `jdeBound`'s); omitted: q = 0.
+    #[tsify(optional)]
+    pub false_alarm: Option<FalseAlarmShape>,
+    /// Model II: `{ rate, density }` (λ, v/λ); omitted: λ = 0.
+    #[tsify(optional)]
+    pub clutter: Option<ClutterShape>, // model II only
+    /// e_0² ≥ 0, the cost of a false target.
+    pub false_alarm_error: f64,
+    /// e_1² ≥ 0, the cost of a missed target.
+    pub miss_error: f64,
+    /// The rule on Z = ∅ (default `'optimal'`).
+    #[tsify(optional)]
+    pub empty_rule: Option<EmptyRuleShape>,
+    /// k scans of one target, 1 to 5,000 (default 1; k > 1 needs a Gaussian prior and no
+    /// false alarms or clutter): `result.scans[k − 1]` is the risk after scan k.
+    #[tsify(optional)]
+    pub scans: Option<usize>,
+    /// Simulated scenes, 2 to 10^7 (default 20,000; samples × scans × (1 + ⌈q or λ⌉) at
+    /// most 10^7).
+    #[tsify(optional)]
+    pub samples: Option<usize>,
+    /// Seed (integer; omitted: fresh entropy, returned as `seed`).
+    #[tsify(optional)]
+    pub seed: Option<u64>,
+}
+
+/// An empirical MSE and its standard error.
+#[derive(Serialize, Tsify)]
+pub struct MonteCarloRiskResult {
+    /// The mean of e².
+    pub mse: f64,
+    /// Its standard error.
+    pub se: f64,
+}
+
+/// Result of `jdeMonteCarlo`.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+pub struct JdeMonteCarloResult {
+    /// E e² (11) after the last scan.
+    pub mse: f64,
+    /// Its standard error.
+    pub se: f64,
+    /// The number of samples.
+    pub samples: usize,
+    /// The mean of e_0² 1{no target, one declared}.
+    pub false_alarm: f64,
+    /// The mean of e_1² 1{a target, none declared}.
+    pub miss: f64,
+    /// The mean of |x − x̂|² 1{a target, declared}.
+    pub estimation: f64,
+    /// Whether Z = ∅ declares {x*} (after the last scan).
+    pub declare_on_empty: bool,
+    /// Per coordinate i: E e_i² (e_0²/l, e_1²/l for the detection errors).
+    pub components: Vec<MonteCarloRiskResult>,
+    /// The risk after scan 1 … k.
+    pub scans: Vec<MonteCarloRiskResult>,
+    /// The seed used.
+    pub seed: u64,
+}
+
+/// The seeded Monte Carlo of the optimal joint detector-estimator of paper 002 (MAP
+/// detection, the posterior mean; the core's `bounds::jde_monte_carlo`): the risk that
+/// `jdeBound` bounds, with its parts and standard error. Options `{ model, existence, prior,
+/// observation, falseAlarm?, clutter?, falseAlarmError, missError, emptyRule?, scans?,
+/// samples?, seed? }`.
+#[wasm_bindgen(js_name = jdeMonteCarlo, unchecked_return_type = "JdeMonteCarloResult")]
+pub fn jde_monte_carlo(
+    #[wasm_bindgen(unchecked_param_type = "JdeMonteCarloOptions")] options: JsValue,
+) -> JsResult<JsValue> {
+    let o: JdeMonteCarloOptions = read(options, "options")?;
+    let samples = check_range(
+        "options.samples",
+        o.samples.unwrap_or(20_000),
+        2,
+        10_000_000,
+    )?;
+    let scans = check_range("options.scans", o.scans.unwrap_or(1), 1, bounds::MAX_STEPS)?;
+    let (flat, false_density, clutter_density);
+    let measurement = match (o.model, o.false_alarm, o.clutter) {
+        (MeasurementModel::One, _, Some(_)) => {
+            return Err(crate::boundary::type_error(
+                "options.clutter is for model 'II' (use falseAlarm with model 'I')",
+            ));
+        }
+        (MeasurementModel::Two, Some(_), _) => {
+            return Err(crate::boundary::type_error(
+                "options.falseAlarm is for model 'I' (use clutter with model 'II')",
+            ));
+        }
+        (MeasurementModel::One, Some(f), None) => {
+            false_density = f.density.into_core("options.falseAlarm.density")?;
+            bounds::VectorMeasurement::I {
+                false_alarm_probability: f.probability,
+                false_alarm_density: &false_density,
+            }
+        }
+        (MeasurementModel::Two, None, Some(c)) => {
+            clutter_density = c.density.into_core("options.clutter.density")?;
+            bounds::VectorMeasurement::II {
+                clutter_rate: c.rate,
+                clutter_density: &clutter_density,
+            }
+        }
+        (_, None, None) => {
+            flat = bounds::UnitUniform;
+            bounds::VectorMeasurement::I {
+                false_alarm_probability: 0.0,
+                false_alarm_density: &flat,
+            }
+        }
+    };
+    let path = "options.prior";
+    let (prior, sensor);
+    let system = match o.prior {
+        MonteCarloPriorShape::Example2 => match o.observation.detection_probability {
+            DetectionShape::Constant(p) => bounds::SimulatedSystem::Example2 {
+                detection_probability: p,
+            },
+            DetectionShape::Table(_) => {
+                return Err(crate::boundary::type_error(
+                    "options.observation.detectionProbability must be a number (a constant P_o) for 'example2'",
+                ));
+            }
+        },
+        shape => {
+            prior = match shape {
+                MonteCarloPriorShape::Gaussian(g) => {
+                    let (mean, variance) = (g.mean, g.variance);
+                    PriorShape::Gaussian(g).into_core(path)?;
+                    bounds::GaussianPrior::new(&[mean], &[variance]).or_throw_in(path)?
+                }
+                MonteCarloPriorShape::MultivariateGaussian(g) => {
+                    match PriorShape::MultivariateGaussian(g).into_core(path)? {
+                        Prior::Vector(v) => v,
+                        Prior::Scalar(_) => unreachable!("a multivariateGaussian is a vector"),
+                    }
+                }
+                MonteCarloPriorShape::Example2 => unreachable!("matched above"),
+            };
+            sensor = o
+                .observation
+                .into_sensor(prior.dims(), "options.observation")?;
+            bounds::SimulatedSystem::LinearGaussian {
+                prior: &prior,
+                sensor: &sensor,
+            }
+        }
+    };
+    let seed = crate::boundary::seed_or_entropy(o.seed)?;
+    let empty_rule = match o.empty_rule.unwrap_or(EmptyRuleShape::Optimal) {
+        EmptyRuleShape::Optimal => bounds::EmptyRule::Optimal,
+        EmptyRuleShape::Map => bounds::EmptyRule::Map,
+        EmptyRuleShape::Declare => bounds::EmptyRule::Declare,
+        EmptyRuleShape::Reject => bounds::EmptyRule::Reject,
+    };
+    let out = bounds::jde_monte_carlo(
+        &bounds::MonteCarloModel {
+            existence: o.existence,
+            system,
+            measurement,
+            false_alarm_error: o.false_alarm_error,
+            miss_error: o.miss_error,
+        },
+        &bounds::JdeMonteCarloOptions {
+            samples,
+            seed,
+            empty_rule,
+            scans,
+        },
+    )
+    .or_throw_in("options")?;
+    let risks = |v: &[bounds::MonteCarloRisk]| {
+        v.iter()
+            .map(|r| MonteCarloRiskResult {
+                mse: r.mse,
+                se: r.se,
+            })
+            .collect()
+    };
+    write(&JdeMonteCarloResult {
+        mse: out.mse,
+        se: out.se,
+        samples: out.samples,
+        false_alarm: out.false_alarm,
+        miss: out.miss,
+        estimation: out.estimation,
+        declare_on_empty: out.declare_on_empty,
+        components: risks(&out.components),
+        scans: risks(&out.scans),
+        seed,
+    })
+}

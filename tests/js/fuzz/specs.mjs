@@ -515,6 +515,19 @@ export const specs = [
       .record({ existence: probability, detectionProbability: probability, falseAlarmProbability: probability, falseAlarmError: fc.double({ min: 0, max: 10, noNaN: true }), missError: fc.double({ min: 0, max: 10, noNaN: true }) }, { requiredKeys: ['existence', 'detectionProbability', 'falseAlarmProbability', 'falseAlarmError'] })
       .map((o) => [o]),
   },
+  {
+    // jdeBound's problems (mixture, uniform and table priors or a tabulated P_o are RangeErrors or
+    // TypeErrors here: the Monte Carlo takes Gaussian priors and 'example2'), 200 samples a call
+    name: 'jdeMonteCarlo',
+    roots: ['options'],
+    weight: 0.2,
+    maxMs: 2000,
+    args: fc
+      .tuple(fc.oneof({ weight: 3, arbitrary: jdeScalar }, { weight: 2, arbitrary: jdeVector }), fc.constantFrom(undefined, 'map', 'declare'), fc.integer({ min: 1, max: 3 }))
+      .map(([[{ dims, quadratureCardinality, ...o }], emptyRule, scans]) => [{
+        ...o, samples: 200, seed: 1, ...(emptyRule ? { emptyRule } : {}), ...(o.falseAlarm || o.clutter ? {} : { scans }),
+      }]),
+  },
   { name: 'jdeExample2Regularity', roots: [], weight: 0.02, maxMs: 2000, args: fc.constant([]) },
   { name: 'version', roots: [], weight: 0.05, args: fc.constant([]) },
 ];

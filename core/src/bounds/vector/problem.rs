@@ -12,8 +12,8 @@ use crate::math::fns;
 /// The Gaussian prior f = N(x; x0, P) of a state in R^l (Section V).
 #[derive(Clone, Debug, PartialEq)]
 pub struct GaussianPrior {
-    pub(super) mean: Vec<f64>,
-    pub(super) cov: DMatrix<f64>,
+    pub(crate) mean: Vec<f64>,
+    pub(crate) cov: DMatrix<f64>,
 }
 
 impl GaussianPrior {
@@ -46,10 +46,10 @@ impl GaussianPrior {
 /// g(z|x) = N(z; H x + b, R), z in R^m.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LinearGaussianSensor {
-    pub(super) detection: f64,
-    pub(super) gain: DMatrix<f64>,
-    pub(super) offset: Vec<f64>,
-    pub(super) noise: DMatrix<f64>,
+    pub(crate) detection: f64,
+    pub(crate) gain: DMatrix<f64>,
+    pub(crate) offset: Vec<f64>,
+    pub(crate) noise: DMatrix<f64>,
 }
 
 impl LinearGaussianSensor {

@@ -1,7 +1,9 @@
 // Seeded Monte Carlo of the joint detector-estimators of paper 002 (Rezaeian & Vo, "Error
 // bounds for joint detection and estimation of a single object with random finite set
-// observation"), in plain JS: the oracle that the Node contract test (tests/js/bounds.test.mjs)
-// holds the bounds of the `fisst` package to, and what web/bounds-worker.js draws over them.
+// observation"), in plain JS: an oracle independent of the `fisst` package (its own generator,
+// quadrature, Cholesky and inverse), which tests/js/bounds.test.mjs holds the bounds and the
+// package's own Monte Carlo (jdeMonteCarlo, the core's bounds::jde_monte_carlo) to. It was
+// web/bounds-mc.js; the page now draws jdeMonteCarlo (issue 25).
 // Nothing here touches the DOM. Each function returns the MSE E e²(X, X̂(Z)) (11) and its
 // standard error (the sample standard deviation of e² over √samples).
 //
