@@ -84,24 +84,7 @@ impl<T> OrThrow<T> for fisst::Result<T> {
     }
 }
 
-/// A Rust field path (`max_components`, `transition.f`, `regions[2].grid_points`) in
-/// JavaScript names: each segment's `snake_case` becomes `camelCase`; indices and segments
-/// without underscores are kept (`existence[3]`, `missProbability`).
-pub fn render_path(rust_path: &str) -> String {
-    let mut out = String::with_capacity(rust_path.len());
-    let mut upper = false;
-    for ch in rust_path.chars() {
-        match ch {
-            '_' if !out.is_empty() && !out.ends_with(['.', '[']) => upper = true,
-            _ if upper => {
-                out.extend(ch.to_uppercase());
-                upper = false;
-            }
-            _ => out.push(ch),
-        }
-    }
-    out
-}
+pub use crate::names::render_path;
 
 /// The JS exception for a core error about `prefix.field`, the field rendered by
 /// [`render_path`] (`max_components` → `options.maxComponents`).
