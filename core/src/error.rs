@@ -128,13 +128,13 @@ impl Error {
     /// time step of a series it is in, or to render a path in a binding's own names).
     pub fn map_field(mut self, rename: impl FnOnce(&str) -> String) -> Self {
         match &mut self {
-            Error::InvalidParameter { what, .. }
+            Error::OutOfRange { what, .. }
+            | Error::OverBudget { what, .. }
+            | Error::InvalidParameter { what, .. }
             | Error::InvalidProbability { what, .. }
             | Error::DimensionMismatch { what, .. }
             | Error::NotPositiveDefinite { what }
-            | Error::Unsupported { what, .. }
-            | Error::OutOfRange { what, .. }
-            | Error::OverBudget { what, .. } => *what = rename(what),
+            | Error::Unsupported { what, .. } => *what = rename(what),
         }
         self
     }

@@ -233,9 +233,6 @@ pub enum DensityShape {
     Table(TableShape),
 }
 
-const MAX_KNOTS: usize = 10_000;
-const MAX_COMPONENTS: usize = 1_000;
-
 impl DensityShape {
     fn into_core(self, path: &str) -> JsResult<bounds::Density1> {
         match self {
@@ -245,16 +242,12 @@ impl DensityShape {
                 bounds::Density1::uniform(u.low, u.high).or_throw_in(&format!("{path}.uniform"))
             }
             DensityShape::Mixture(c) => {
-                let p = format!("{path}.mixture");
-                check_range(&format!("{p}.length"), c.len(), 1, MAX_COMPONENTS)?;
                 let c: Vec<(f64, f64, f64)> =
                     c.iter().map(|c| (c.weight, c.mean, c.variance)).collect();
-                bounds::Density1::mixture(&c).or_throw_in(&p)
+                bounds::Density1::mixture(&c).or_throw_in(&format!("{path}.mixture"))
             }
             DensityShape::Table(t) => {
-                let p = format!("{path}.table");
-                check_range(&format!("{p}.x.length"), t.x.0.len(), 2, MAX_KNOTS)?;
-                bounds::Density1::table(&t.x.0, &t.density.0).or_throw_in(&p)
+                bounds::Density1::table(&t.x.0, &t.density.0).or_throw_in(&format!("{path}.table"))
             }
         }
     }
@@ -458,11 +451,8 @@ impl ObservationShape {
         };
         let det = match self.detection_probability {
             DetectionShape::Constant(p) => bounds::Detection::constant(p).or_throw_in(path),
-            DetectionShape::Table(t) => {
-                let p = format!("{path}.detectionProbability.table");
-                check_range(&format!("{p}.x.length"), t.x.0.len(), 2, MAX_KNOTS)?;
-                bounds::Detection::table(&t.x.0, &t.probability.0).or_throw_in(&p)
-            }
+            DetectionShape::Table(t) => bounds::Detection::table(&t.x.0, &t.probability.0)
+                .or_throw_in(&format!("{path}.detectionProbability.table")),
         }?;
         bounds::LinearGaussian::new(det, gain, offset, noise).or_throw_in(path)
     }

@@ -60,7 +60,10 @@ mod model;
 mod theorem;
 mod theorem2;
 
-pub use model::{Density, Density1, Detection, GAUSSIAN_SPAN, LinearGaussian, Observation};
+pub use model::{
+    Density, Density1, Detection, GAUSSIAN_SPAN, LinearGaussian, MAX_COMPONENTS, MAX_KNOTS,
+    Observation,
+};
 pub use theorem::{Cardinality, JdeBound, Method, ModelI, Settings, theorem1};
 pub use theorem2::{MAX_CLUTTER_RATE, ModelII, theorem2};
 mod example2;
