@@ -59,28 +59,10 @@ pub fn core_error(e: fisst::Error) -> JsValue {
     range_error(e.to_string())
 }
 
-/// A core field path in this binding's names: each segment's `snake_case` becomes
-/// `camelCase` (`quadrature_cardinality` → `quadratureCardinality`, `false_alarm.density[2]`
-/// → `falseAlarm.density[2]`); names already in camelCase and indices are left as they are.
-pub fn render_path(path: &str) -> std::string::String {
-    let mut out = std::string::String::with_capacity(path.len());
-    let mut chars = path.chars().peekable();
-    while let Some(c) = chars.next() {
-        match chars.peek() {
-            Some(&n) if c == '_' && n.is_ascii_lowercase() && !out.is_empty() => {
-                out.push(n.to_ascii_uppercase());
-                chars.next();
-            }
-            _ => out.push(c),
-        }
-    }
-    out
-}
-
 /// The JS exception for a `fisst` error whose field is a Rust path under `prefix`: a
-/// `RangeError` naming the path in this binding's names ([`render_path`]).
+/// `RangeError` naming the path in this binding's names ([`crate::names::render_path`]).
 pub fn core_error_rendered(e: fisst::Error, prefix: &str) -> JsValue {
-    core_error(e.within(prefix).map_field(render_path))
+    core_error(e.within(prefix).map_field(crate::names::render_path))
 }
 
 /// `?`-friendly conversion of `fisst` results.
@@ -119,30 +101,4 @@ pub fn check_range(path: &str, value: usize, min: usize, max: usize) -> JsResult
         )));
     }
     Ok(value)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::render_path;
-
-    #[test]
-    fn render_path_camel_cases_each_segment() {
-        assert_eq!(
-            render_path("options.quadrature_cardinality"),
-            "options.quadratureCardinality"
-        );
-        assert_eq!(
-            render_path("options.false_alarm.density[2].mean"),
-            "options.falseAlarm.density[2].mean"
-        );
-        assert_eq!(render_path("options.samples"), "options.samples");
-        assert_eq!(
-            render_path("observation.noiseCov[1]"),
-            "observation.noiseCov[1]"
-        );
-        assert_eq!(render_path("a_b_c"), "aBC");
-        assert_eq!(render_path("_private"), "_private");
-        assert_eq!(render_path("x_1"), "x_1");
-        assert_eq!(render_path(""), "");
-    }
 }
