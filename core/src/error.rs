@@ -49,6 +49,31 @@ pub enum Error {
         /// Why, as a sentence fragment.
         reason: &'static str,
     },
+    /// An integer option outside its interval [min, max].
+    OutOfRange {
+        /// The field, e.g. `samples`.
+        what: String,
+        /// The offending value.
+        value: usize,
+        /// The smallest value allowed.
+        min: usize,
+        /// The largest value allowed.
+        max: usize,
+    },
+    /// A request whose work exceeds a cap (e.g. Theorem 2's Monte Carlo of paper 002:
+    /// samples × Σ n at most 10^7).
+    OverBudget {
+        /// The field to lower, e.g. `samples`.
+        what: String,
+        /// How the work is counted, e.g. "samples × Σ n".
+        measure: &'static str,
+        /// The work asked for.
+        work: usize,
+        /// The cap and what to do, e.g. "10^7 at this clutter rate; pass fewer samples".
+        limit: &'static str,
+        /// The largest value of `what` within the cap.
+        at_most: usize,
+    },
 }
 
 /// `Result` with [`Error`] as its default error type.
@@ -81,11 +106,31 @@ impl Error {
         }
     }
 
+    /// An [`Error::OutOfRange`]: `value` must lie in [`min`, `max`].
+    pub fn range(what: impl Into<String>, value: usize, min: usize, max: usize) -> Self {
+        Error::OutOfRange {
+            what: what.into(),
+            value,
+            min,
+            max,
+        }
+    }
+
+    /// `value` if it lies in [`min`, `max`], else an [`Error::OutOfRange`] naming `what`.
+    pub fn check_range(what: &str, value: usize, min: usize, max: usize) -> Result<usize> {
+        if value < min || value > max {
+            return Err(Error::range(what, value, min, max));
+        }
+        Ok(value)
+    }
+
     /// The same error about another field: `rename` maps the field's name (e.g. to say which
-    /// time step of a series it is in).
-    pub(crate) fn map_field(mut self, rename: impl FnOnce(&str) -> String) -> Self {
+    /// time step of a series it is in, or to render a path in a binding's own names).
+    pub fn map_field(mut self, rename: impl FnOnce(&str) -> String) -> Self {
         match &mut self {
-            Error::InvalidParameter { what, .. }
+            Error::OutOfRange { what, .. }
+            | Error::OverBudget { what, .. }
+            | Error::InvalidParameter { what, .. }
             | Error::InvalidProbability { what, .. }
             | Error::DimensionMismatch { what, .. }
             | Error::NotPositiveDefinite { what }
@@ -119,7 +164,9 @@ impl Error {
             | Error::InvalidProbability { what, .. }
             | Error::DimensionMismatch { what, .. }
             | Error::NotPositiveDefinite { what }
-            | Error::Unsupported { what, .. } => what,
+            | Error::Unsupported { what, .. }
+            | Error::OutOfRange { what, .. }
+            | Error::OverBudget { what, .. } => what,
         }
     }
 }
@@ -144,6 +191,25 @@ impl fmt::Display for Error {
                 write!(f, "{what} must be symmetric positive definite")
             }
             Error::Unsupported { what, reason } => write!(f, "{what}: {reason}"),
+            Error::OutOfRange {
+                what,
+                value,
+                min,
+                max,
+            } => write!(
+                f,
+                "{what} must be an integer in [{min}, {max}], got {value}"
+            ),
+            Error::OverBudget {
+                what,
+                measure,
+                work,
+                limit,
+                at_most,
+            } => write!(
+                f,
+                "{what}: {measure} = {work} exceeds {limit} (at most {at_most})"
+            ),
         }
     }
 }
@@ -184,6 +250,11 @@ mod tests {
         );
         let e = Error::dimension("estimate[1]", 2, 3);
         assert_eq!(e.to_string(), "estimate[1] has length 3, expected 2");
+        let e = Error::range("samples", 5, 100, 1000);
+        assert_eq!(
+            e.to_string(),
+            "samples must be an integer in [100, 1000], got 5"
+        );
     }
 
     #[test]

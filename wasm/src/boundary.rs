@@ -59,6 +59,12 @@ pub fn core_error(e: fisst::Error) -> JsValue {
     range_error(e.to_string())
 }
 
+/// The JS exception for a `fisst` error whose field is a Rust path under `prefix`: a
+/// `RangeError` naming the path in this binding's names ([`crate::names::render_path`]).
+pub fn core_error_rendered(e: fisst::Error, prefix: &str) -> JsValue {
+    core_error(e.within(prefix).map_field(crate::names::render_path))
+}
+
 /// `?`-friendly conversion of `fisst` results.
 pub trait OrThrow<T> {
     /// Maps the error to [`core_error`]; its field is already a full path.

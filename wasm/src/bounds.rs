@@ -233,9 +233,6 @@ pub enum DensityShape {
     Table(TableShape),
 }
 
-const MAX_KNOTS: usize = 10_000;
-const MAX_COMPONENTS: usize = 1_000;
-
 impl DensityShape {
     fn into_core(self, path: &str) -> JsResult<bounds::Density1> {
         match self {
@@ -245,16 +242,12 @@ impl DensityShape {
                 bounds::Density1::uniform(u.low, u.high).or_throw_in(&format!("{path}.uniform"))
             }
             DensityShape::Mixture(c) => {
-                let p = format!("{path}.mixture");
-                check_range(&format!("{p}.length"), c.len(), 1, MAX_COMPONENTS)?;
                 let c: Vec<(f64, f64, f64)> =
                     c.iter().map(|c| (c.weight, c.mean, c.variance)).collect();
-                bounds::Density1::mixture(&c).or_throw_in(&p)
+                bounds::Density1::mixture(&c).or_throw_in(&format!("{path}.mixture"))
             }
             DensityShape::Table(t) => {
-                let p = format!("{path}.table");
-                check_range(&format!("{p}.x.length"), t.x.0.len(), 2, MAX_KNOTS)?;
-                bounds::Density1::table(&t.x.0, &t.density.0).or_throw_in(&p)
+                bounds::Density1::table(&t.x.0, &t.density.0).or_throw_in(&format!("{path}.table"))
             }
         }
     }
@@ -396,7 +389,7 @@ impl<'de> Deserialize<'de> for OffsetShape {
 }
 
 /// At most this many state coordinates l, and this many measurement coordinates m.
-pub const MAX_DIMS: usize = 64;
+pub use bounds::MAX_DIMS;
 
 /// The observation: P_o(x) and g(z|x) = N(z; gain·x + offset, noiseVariance) for a 1D prior,
 /// or g(z|x) = N(z; H x + b, R) with H = `gain` (m rows of l numbers) and R = `noiseCov`
@@ -458,11 +451,8 @@ impl ObservationShape {
         };
         let det = match self.detection_probability {
             DetectionShape::Constant(p) => bounds::Detection::constant(p).or_throw_in(path),
-            DetectionShape::Table(t) => {
-                let p = format!("{path}.detectionProbability.table");
-                check_range(&format!("{p}.x.length"), t.x.0.len(), 2, MAX_KNOTS)?;
-                bounds::Detection::table(&t.x.0, &t.probability.0).or_throw_in(&p)
-            }
+            DetectionShape::Table(t) => bounds::Detection::table(&t.x.0, &t.probability.0)
+                .or_throw_in(&format!("{path}.detectionProbability.table")),
         }?;
         bounds::LinearGaussian::new(det, gain, offset, noise).or_throw_in(path)
     }
@@ -599,15 +589,9 @@ pub enum PriorShape {
     MultivariateGaussian(Gaussian),
 }
 
-/// A prior read from [`PriorShape`].
-enum Prior {
-    Scalar(bounds::Density1),
-    Vector(bounds::GaussianPrior),
-}
-
 impl PriorShape {
-    fn into_core(self, path: &str) -> JsResult<Prior> {
-        let scalar = |d: DensityShape| d.into_core(path).map(Prior::Scalar);
+    fn into_core(self, path: &str) -> JsResult<bounds::JdePrior> {
+        let scalar = |d: DensityShape| d.into_core(path).map(bounds::JdePrior::Scalar);
         match self {
             PriorShape::Gaussian(g) => scalar(DensityShape::Gaussian(g)),
             PriorShape::Uniform(u) => scalar(DensityShape::Uniform(u)),
@@ -619,7 +603,7 @@ impl PriorShape {
                 let cov = g.cov.row_major(l, &format!("{p}.cov"))?;
                 bounds::GaussianPrior::new(&g.mean.0, &cov)
                     .or_throw_in(&p)
-                    .map(Prior::Vector)
+                    .map(bounds::JdePrior::Vector)
             }
         }
     }
@@ -792,60 +776,6 @@ pub struct JdeBoundResult {
     pub inverse_information_matrix: Option<Vec<Vec<f64>>>,
 }
 
-/// The false observations of `jdeBound`, read from `falseAlarm` or `clutter`.
-enum FalseObservations {
-    I { q: f64, psi: bounds::Density1 },
-    II { lambda: f64, c: bounds::Density1 },
-}
-
-/// The Monte Carlo budget of model II: `samples` × Σ n over the cardinalities it samples
-/// (n = 2 … N + 1, or n = 3 … with the n = 2 cubature) at most 10^7. Sets `settings.samples`
-/// and `settings.seed` and returns the seed used when clutter is sampled at all.
-fn monte_carlo_settings(
-    settings: &mut bounds::Settings,
-    lambda: f64,
-    samples: Option<usize>,
-    seed: Option<u64>,
-) -> JsResult<Option<u64>> {
-    let samples = check_range(
-        "options.samples",
-        samples.unwrap_or(settings.samples),
-        100,
-        1_000_000,
-    )?;
-    settings.samples = samples;
-    // N, the last clutter count kept
-    let mut last = 0usize;
-    let mut kept = bounds::poisson_pmf(lambda.max(0.0), 0);
-    while lambda.is_finite()
-        && 1.0 - kept > settings.series_tolerance
-        && last < settings.max_clutter
-    {
-        last += 1;
-        kept += bounds::poisson_pmf(lambda, last);
-    }
-    let first = if settings.quadrature_cardinality >= 2 {
-        3
-    } else {
-        2
-    };
-    let points: usize = (first..=last + 1).sum();
-    if points.saturating_mul(samples) > 10_000_000 {
-        return Err(crate::boundary::range_error(format!(
-            "options.samples: samples × Σ n = {} exceeds 10^7 at this clutter rate; pass fewer samples (at most {})",
-            points.saturating_mul(samples),
-            10_000_000 / points.max(1)
-        )));
-    }
-    let seed = if last > 0 {
-        Some(crate::boundary::seed_or_entropy(seed)?)
-    } else {
-        None
-    };
-    settings.seed = seed.unwrap_or(0);
-    Ok(seed)
-}
-
 /// Theorems 1 and 2 of paper 002, and their vector extensions (63)–(72) for a
 /// `multivariateGaussian` prior. Options `{ model, existence, prior, observation,
 /// falseAlarm?, clutter?, falseAlarmError, missError, dims?, tolerance?, samples?, seed?,
@@ -856,146 +786,95 @@ pub fn jde_bound(
     #[wasm_bindgen(unchecked_param_type = "JdeBoundOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: JdeBoundOptions = read(options, "options")?;
-    if let Some(l) = o.dims {
-        check_range("options.dims", l, 1, MAX_DIMS)?;
-    }
     let prior = o.prior.into_core("options.prior")?;
-    match (&prior, o.dims) {
-        (Prior::Scalar(_), Some(l)) if l != 1 => {
-            return Err(crate::boundary::range_error(format!(
-                "options.dims is {l}, but options.prior is a 1D density: a state in R^{l} needs prior: {{ multivariateGaussian: {{ mean, cov }} }}"
-            )));
+    let observation = match &prior {
+        bounds::JdePrior::Scalar(_) => {
+            bounds::JdeObservation::Scalar(o.observation.into_core("options.observation")?)
         }
-        (Prior::Vector(g), Some(l)) if l != g.dims() => {
-            return Err(crate::boundary::range_error(format!(
-                "options.dims is {l}, but options.prior.multivariateGaussian.mean has length {}",
-                g.dims()
-            )));
-        }
-        _ => {}
-    }
-    let mut settings = bounds::Settings::default();
-    if let Some(t) = o.tolerance {
-        settings.tolerance = t;
-    }
-    if let Some(k) = o.quadrature_cardinality {
-        settings.quadrature_cardinality = check_range("options.quadratureCardinality", k, 1, 2)?;
-    }
-    let (false_obs, seed) = match o.model {
-        MeasurementModel::One => {
-            if o.clutter.is_some() {
-                return Err(crate::boundary::type_error(
-                    "options.clutter is for model 'II' (use falseAlarm with model 'I')",
-                ));
-            }
-            let (q, psi) = match o.false_alarm {
-                Some(f) => (
-                    f.probability,
-                    f.density.into_core("options.falseAlarm.density")?,
-                ),
-                None => (0.0, bounds::Density1::uniform(0.0, 1.0).or_throw()?),
-            };
-            (FalseObservations::I { q, psi }, None)
-        }
-        MeasurementModel::Two => {
-            if o.false_alarm.is_some() {
-                return Err(crate::boundary::type_error(
-                    "options.falseAlarm is for model 'I' (use clutter with model 'II')",
-                ));
-            }
-            let (lambda, c) = match o.clutter {
-                Some(c) => (c.rate, c.density.into_core("options.clutter.density")?),
-                None => (0.0, bounds::Density1::uniform(0.0, 1.0).or_throw()?),
-            };
-            let seed = monte_carlo_settings(&mut settings, lambda, o.samples, o.seed)?;
-            (FalseObservations::II { lambda, c }, seed)
-        }
+        bounds::JdePrior::Vector(g) => bounds::JdeObservation::Vector(
+            o.observation.into_sensor(g.dims(), "options.observation")?,
+        ),
     };
-    match prior {
-        Prior::Scalar(prior) => {
-            let obs = o.observation.into_core("options.observation")?;
-            let out = match &false_obs {
-                FalseObservations::I { q, psi } => bounds::theorem1(
-                    &bounds::ModelI {
-                        existence: o.existence,
-                        prior: &prior,
-                        observation: &obs,
-                        false_alarm_probability: *q,
-                        false_alarm_density: psi,
-                        false_alarm_error: o.false_alarm_error,
-                        miss_error: o.miss_error,
-                    },
-                    &settings,
-                ),
-                FalseObservations::II { lambda, c } => bounds::theorem2(
-                    &bounds::ModelII {
-                        existence: o.existence,
-                        prior: &prior,
-                        observation: &obs,
-                        clutter_rate: *lambda,
-                        clutter_density: c,
-                        false_alarm_error: o.false_alarm_error,
-                        miss_error: o.miss_error,
-                    },
-                    &settings,
-                ),
-            }
-            .or_throw_in("options")?;
-            write(&result(&out, seed))
+    let false_alarm = match o.false_alarm {
+        Some(f) => Some(bounds::FalseAlarm {
+            probability: f.probability,
+            density: f.density.into_core("options.falseAlarm.density")?,
+        }),
+        None => None,
+    };
+    let clutter = match o.clutter {
+        Some(c) => Some(bounds::Clutter {
+            rate: c.rate,
+            density: c.density.into_core("options.clutter.density")?,
+        }),
+        None => None,
+    };
+    let options = bounds::JdeOptions {
+        model: match o.model {
+            MeasurementModel::One => bounds::JdeModel::I,
+            MeasurementModel::Two => bounds::JdeModel::II,
+        },
+        existence: o.existence,
+        prior,
+        observation,
+        false_alarm,
+        clutter,
+        false_alarm_error: o.false_alarm_error,
+        miss_error: o.miss_error,
+        dims: o.dims,
+        tolerance: o.tolerance,
+        samples: o.samples,
+        seed: o.seed,
+        quadrature_cardinality: o.quadrature_cardinality,
+    };
+    let out = bounds::jde_bound(&options, fisst::math::rng::entropy_seed)
+        .map_err(|e| jde_error(e, &options.prior))?;
+    let mut result = result(&out.bound, out.seed);
+    result.components = out.components.map(|c| {
+        c.iter()
+            .map(|c| JdeComponentBound {
+                bound: c.assembled.bound,
+                phase: phase_name(c.assembled.phase),
+                existence_threshold: c.assembled.existence_threshold,
+                terms: terms(&c.assembled.terms),
+                error: c.error,
+                hpe: c.assembled.hpe,
+                lpe: c.assembled.lpe,
+                inverse_information: c.inverse_information,
+                undetected_mean: c.undetected_mean,
+                undetected_variance: c.undetected_variance,
+            })
+            .collect()
+    });
+    result.inverse_information_matrix = out.inverse_information;
+    write(&result)
+}
+
+/// A [`bounds::jde_bound`] error in this binding's words: the model mix-ups are
+/// `TypeError`s, a `dims` that is not the prior's says what the prior is, and the rest name
+/// their path under `options` in camelCase.
+fn jde_error(e: fisst::Error, prior: &bounds::JdePrior) -> JsValue {
+    match &e {
+        fisst::Error::Unsupported { what, reason } if *reason == bounds::WRONG_MODEL => {
+            crate::boundary::type_error(if what == "clutter" {
+                "options.clutter is for model 'II' (use falseAlarm with model 'I')"
+            } else {
+                "options.falseAlarm is for model 'I' (use clutter with model 'II')"
+            })
         }
-        Prior::Vector(prior) => {
-            let sensor = o
-                .observation
-                .into_sensor(prior.dims(), "options.observation")?;
-            let measurement = match &false_obs {
-                FalseObservations::I { q, psi } => bounds::VectorMeasurement::I {
-                    false_alarm_probability: *q,
-                    false_alarm_density: psi,
-                },
-                FalseObservations::II { lambda, c } => bounds::VectorMeasurement::II {
-                    clutter_rate: *lambda,
-                    clutter_density: c,
-                },
-            };
-            let v = bounds::vector_bound(
-                &bounds::VectorModel {
-                    existence: o.existence,
-                    prior: &prior,
-                    sensor: &sensor,
-                    measurement,
-                    false_alarm_error: o.false_alarm_error,
-                    miss_error: o.miss_error,
-                },
-                &settings,
-            )
-            .or_throw_in("options")?;
-            let l = prior.dims();
-            let mut out = result(&v.total, seed);
-            out.components = Some(
-                v.components
-                    .iter()
-                    .map(|c| JdeComponentBound {
-                        bound: c.assembled.bound,
-                        phase: phase_name(c.assembled.phase),
-                        existence_threshold: c.assembled.existence_threshold,
-                        terms: terms(&c.assembled.terms),
-                        error: c.error,
-                        hpe: c.assembled.hpe,
-                        lpe: c.assembled.lpe,
-                        inverse_information: c.inverse_information,
-                        undetected_mean: c.undetected_mean,
-                        undetected_variance: c.undetected_variance,
-                    })
-                    .collect(),
-            );
-            out.inverse_information_matrix = Some(
-                v.inverse_information
-                    .chunks(l)
-                    .map(<[f64]>::to_vec)
-                    .collect(),
-            );
-            write(&out)
-        }
+        fisst::Error::DimensionMismatch {
+            what,
+            expected,
+            found: l,
+        } if what == "dims" => crate::boundary::range_error(match prior {
+            bounds::JdePrior::Scalar(_) => format!(
+                "options.dims is {l}, but options.prior is a 1D density: a state in R^{l} needs prior: {{ multivariateGaussian: {{ mean, cov }} }}"
+            ),
+            bounds::JdePrior::Vector(_) => format!(
+                "options.dims is {l}, but options.prior.multivariateGaussian.mean has length {expected}"
+            ),
+        }),
+        _ => crate::boundary::core_error_rendered(e, "options"),
     }
 }
 

@@ -324,7 +324,6 @@ fields! {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::string::ToString;
     use std::vec;
     use std::vec::Vec;
 

@@ -110,13 +110,16 @@ fn normal_mass(a: f64, b: f64, mean: f64, var: f64) -> f64 {
     }
 }
 
-/// The knots of a table: `x` strictly increasing and finite, at least 2 of them, and
-/// `values` (the length of the column named `what`) as many. Errors name `x`, `x[i]` or
-/// `what`.
+/// At most this many knots in a table ([`Density1::table`], [`Detection::table`]).
+pub const MAX_KNOTS: usize = 10_000;
+/// At most this many components in a [`Density1::mixture`].
+pub const MAX_COMPONENTS: usize = 1_000;
+
+/// The knots of a table: `x` strictly increasing and finite, 2 to [`MAX_KNOTS`] of them, and
+/// `values` (the length of the column named `what`) as many. Errors name `x.length`, `x[i]`
+/// or `what`.
 fn check_knots(x: &[f64], values: usize, what: &str) -> Result<()> {
-    if x.len() < 2 {
-        return Err(Error::dimension("x", 2, x.len()));
-    }
+    Error::check_range("x.length", x.len(), 2, MAX_KNOTS)?;
     if values != x.len() {
         return Err(Error::dimension(what, x.len(), values));
     }
@@ -186,12 +189,10 @@ impl Density1 {
         Ok(Density1::Uniform { low, high })
     }
 
-    /// A mixture of `(weight, mean, variance)`; weights > 0, normalised here. Errors name
-    /// `[i].weight` etc.
+    /// A mixture of 1 to [`MAX_COMPONENTS`] `(weight, mean, variance)`; weights > 0,
+    /// normalised here. Errors name `length`, `[i].weight` etc.
     pub fn mixture(components: &[(f64, f64, f64)]) -> Result<Self> {
-        if components.is_empty() {
-            return Err(Error::dimension("", 1, 0));
-        }
+        Error::check_range("length", components.len(), 1, MAX_COMPONENTS)?;
         let mut total = 0.0;
         for (i, &(w, m, v)) in components.iter().enumerate() {
             check_positive(&alloc::format!("[{i}].weight"), w)?;
@@ -210,8 +211,8 @@ impl Density1 {
         ))
     }
 
-    /// A table: `x` strictly increasing (≥ 2 knots), `density` ≥ 0 with a positive integral.
-    /// Errors name `x[i]` or `density[i]`.
+    /// A table: `x` strictly increasing (2 to [`MAX_KNOTS`] knots), `density` ≥ 0 with a
+    /// positive integral. Errors name `x.length`, `x[i]` or `density[i]`.
     pub fn table(x: &[f64], density: &[f64]) -> Result<Self> {
         check_knots(x, density.len(), "density")?;
         for (i, &d) in density.iter().enumerate() {
@@ -420,7 +421,8 @@ impl Detection {
         Ok(Detection::Constant(p))
     }
 
-    /// Validated table; errors name `x[i]` or `probability[i]`.
+    /// Validated table (2 to [`MAX_KNOTS`] knots); errors name `x.length`, `x[i]` or
+    /// `probability[i]`.
     pub fn table(x: &[f64], probability: &[f64]) -> Result<Self> {
         check_knots(x, probability.len(), "probability")?;
         for (i, &p) in probability.iter().enumerate() {
@@ -542,6 +544,10 @@ mod tests {
             assert!(alloc::format!("{e}").contains("[0].variance"), "{e}");
         }
         assert!(Density1::gaussian(0.0, f64::MIN_POSITIVE).is_ok());
+        let e = Density1::mixture(&[]).unwrap_err();
+        assert_eq!(e, Error::range("length", 0, 1, MAX_COMPONENTS));
+        let e = Density1::mixture(&alloc::vec![(1.0, 0.0, 1.0); MAX_COMPONENTS + 1]).unwrap_err();
+        assert_eq!(e.field(), "length");
         assert!(Density1::mixture(&[(1.0, 0.0, 1e-300)]).is_ok());
     }
 
@@ -552,8 +558,11 @@ mod tests {
         let field = |e: Error| alloc::string::String::from(e.field());
         let d = |x: &[f64], v: &[f64]| field(Density1::table(x, v).unwrap_err());
         let p = |x: &[f64], v: &[f64]| field(Detection::table(x, v).unwrap_err());
-        assert_eq!(d(&[0.0], &[1.0]), "x");
-        assert_eq!(p(&[0.0], &[1.0]), "x");
+        assert_eq!(d(&[0.0], &[1.0]), "x.length");
+        assert_eq!(p(&[0.0], &[1.0]), "x.length");
+        let many = alloc::vec![1.0; MAX_KNOTS + 1];
+        assert_eq!(d(&many, &many), "x.length");
+        assert_eq!(p(&many, &many), "x.length");
         assert_eq!(d(&[0.0, 1.0], &[1.0]), "density");
         assert_eq!(p(&[0.0, 1.0], &[1.0]), "probability");
         assert_eq!(d(&[0.0, f64::NAN], &[1.0, 1.0]), "x[1]");

@@ -103,6 +103,7 @@ fn renamed(e: Error, prefix: &str, from: &str) -> Error {
             what: rename(what),
             reason,
         },
+        e => e.map_field(|what| rename(what.into())),
     }
 }
 

@@ -1,0 +1,367 @@
+//! One entry point to the joint detection-estimation bounds of paper 002 (Rezaeian & Vo):
+//! [`jde_bound`] takes a [`JdeOptions`] (model I or II, a scalar or a Gaussian vector prior,
+//! the observation, the errors and the numerical settings), checks the options that only
+//! make sense together (model against false observations, `dims` against the prior, the
+//! integer ranges, and Theorem 2's Monte Carlo work cap), and dispatches to Theorem 1
+//! ([`theorem1`], (14)–(21)), Theorem 2 ([`theorem2`], (22)–(26)) or their vector extensions
+//! (63)–(72) ([`vector_bound`]).
+//!
+//! The bindings only convert their arguments into a [`JdeOptions`] and the
+//! [`JdeBoundOutcome`] back; the errors name the Rust field paths (`samples`,
+//! `quadrature_cardinality`, `clutter`, `dims`), which each binding renders in its own names.
+
+use alloc::vec::Vec;
+
+use crate::bounds::{
+    ComponentBound, Density1, GaussianPrior, JdeBound, LinearGaussian, LinearGaussianSensor,
+    ModelI, ModelII, Settings, VectorMeasurement, VectorModel, poisson_pmf, theorem1, theorem2,
+    vector_bound,
+};
+use crate::error::{Error, Result};
+
+/// At most this many state coordinates l (and measurement coordinates m).
+pub const MAX_DIMS: usize = 64;
+
+/// Monte Carlo samples per cardinality: at least this many …
+pub const MIN_SAMPLES: usize = 100;
+/// … and at most this many.
+pub const MAX_SAMPLES: usize = 1_000_000;
+/// Theorem 2's Monte Carlo work cap: samples × Σ n over the sampled cardinalities n.
+pub const MAX_SAMPLE_POINTS: usize = 10_000_000;
+
+/// The reason of the [`Error::Unsupported`] naming `clutter` with model I or `false_alarm`
+/// with model II.
+pub const WRONG_MODEL: &str = "belongs to the other measurement model";
+
+/// The measurement model: I (13), a Bernoulli observation with false alarms (Theorem 1), or
+/// II (22), Poisson clutter (Theorem 2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JdeModel {
+    /// Model I (13).
+    I,
+    /// Model II (22).
+    II,
+}
+
+/// The prior f: a 1D density, or N(x0, P) for a state in R^l (Section V).
+#[derive(Clone, Debug, PartialEq)]
+pub enum JdePrior {
+    /// A 1D density.
+    Scalar(Density1),
+    /// A Gaussian state in R^l.
+    Vector(GaussianPrior),
+}
+
+/// P_o and g: a 1D linear-Gaussian observation for a [`JdePrior::Scalar`], a
+/// linear-Gaussian sensor (constant P_o) for a [`JdePrior::Vector`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum JdeObservation {
+    /// z = a x + b + v.
+    Scalar(LinearGaussian),
+    /// z = H x + b + v.
+    Vector(LinearGaussianSensor),
+}
+
+/// Model I's false observations: probability q and density ψ.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FalseAlarm {
+    /// q in [0, 1].
+    pub probability: f64,
+    /// ψ.
+    pub density: Density1,
+}
+
+/// Model II's Poisson clutter: rate λ and the density of its points (v = λ · density).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Clutter {
+    /// λ ≥ 0.
+    pub rate: f64,
+    /// v/λ.
+    pub density: Density1,
+}
+
+/// Everything [`jde_bound`] needs. The optional fields take their defaults when `None`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JdeOptions {
+    /// I or II.
+    pub model: JdeModel,
+    /// r in [0, 1].
+    pub existence: f64,
+    /// f.
+    pub prior: JdePrior,
+    /// P_o and g (of the prior's kind).
+    pub observation: JdeObservation,
+    /// Model I: (q, ψ); `None`: q = 0. An error with model II.
+    pub false_alarm: Option<FalseAlarm>,
+    /// Model II: (λ, v/λ); `None`: λ = 0. An error with model I.
+    pub clutter: Option<Clutter>,
+    /// e_0² ≥ 0 (of the whole state; coordinate i of a vector state uses e_0²/l).
+    pub false_alarm_error: f64,
+    /// e_1² ≥ 0 (of the whole state; coordinate i of a vector state uses e_1²/l).
+    pub miss_error: f64,
+    /// l, in [1, [`MAX_DIMS`]]; must be 1 for a scalar prior and the prior's dimension for a
+    /// vector one (default: the prior's).
+    pub dims: Option<usize>,
+    /// Relative quadrature tolerance (default [`Settings::default`]'s 1e-10).
+    pub tolerance: Option<f64>,
+    /// Monte Carlo samples per sampled cardinality (model II with clutter), in
+    /// [[`MIN_SAMPLES`], [`MAX_SAMPLES`]] with samples × Σ n ≤ [`MAX_SAMPLE_POINTS`]
+    /// (default 20,000).
+    pub samples: Option<usize>,
+    /// Seed of the Monte Carlo (default: fresh entropy, see [`jde_bound`]).
+    pub seed: Option<u64>,
+    /// The largest |Z| = n integrated by deterministic quadrature, 1 or 2 (default 1; see
+    /// [`Settings::quadrature_cardinality`]).
+    pub quadrature_cardinality: Option<usize>,
+}
+
+impl JdeOptions {
+    /// The options with every optional field `None`.
+    pub fn new(
+        model: JdeModel,
+        existence: f64,
+        prior: JdePrior,
+        observation: JdeObservation,
+        false_alarm_error: f64,
+        miss_error: f64,
+    ) -> Self {
+        JdeOptions {
+            model,
+            existence,
+            prior,
+            observation,
+            false_alarm: None,
+            clutter: None,
+            false_alarm_error,
+            miss_error,
+            dims: None,
+            tolerance: None,
+            samples: None,
+            seed: None,
+            quadrature_cardinality: None,
+        }
+    }
+}
+
+/// What [`jde_bound`] returns.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JdeBoundOutcome {
+    /// The bound of Theorem 1 or 2 (a vector state: of the whole state, (63)–(65)).
+    pub bound: JdeBound,
+    /// A vector state only: the bound of each coordinate (63)/(64), (70)–(72).
+    pub components: Option<Vec<ComponentBound>>,
+    /// A vector state only: J'_1⁻¹ (model I) or Σ_n C_n J'_{1+n}⁻¹ (model II), l rows of l.
+    pub inverse_information: Option<Vec<Vec<f64>>>,
+    /// The Monte Carlo seed used (model II with clutter sampled only).
+    pub seed: Option<u64>,
+}
+
+/// The false observations after the model check.
+enum FalseObservations {
+    I { q: f64, psi: Density1 },
+    II { lambda: f64, c: Density1 },
+}
+
+/// Theorems 1 and 2 of paper 002 and their vector extensions (63)–(72), chosen by
+/// `options.model` and the prior's kind.
+///
+/// `entropy` gives the Monte Carlo seed when clutter is sampled and `options.seed` is `None`
+/// (it is not called otherwise): with `std`, pass
+/// [`entropy_seed`](crate::math::rng::entropy_seed); without, a closure returning an error or
+/// a seed of your own. The seed used is returned in [`JdeBoundOutcome::seed`].
+///
+/// # Errors
+/// [`Error::OutOfRange`] naming `dims`, `quadrature_cardinality` or `samples`;
+/// [`Error::DimensionMismatch`] naming `dims` when it is not the prior's dimension (1 for a
+/// scalar prior); [`Error::Unsupported`] naming `clutter` with model I or `false_alarm` with
+/// model II (reason [`WRONG_MODEL`]), or `observation` when its kind is not the prior's;
+/// [`Error::OverBudget`] naming `samples` when samples × Σ n exceeds 10^7; `entropy`'s
+/// error; and the errors of [`theorem1`], [`theorem2`] and [`vector_bound`].
+pub fn jde_bound(
+    options: &JdeOptions,
+    entropy: impl FnOnce() -> Result<u64>,
+) -> Result<JdeBoundOutcome> {
+    let o = options;
+    if let Some(l) = o.dims {
+        Error::check_range("dims", l, 1, MAX_DIMS)?;
+        let prior_dims = match &o.prior {
+            JdePrior::Scalar(_) => 1,
+            JdePrior::Vector(g) => g.dims(),
+        };
+        if l != prior_dims {
+            return Err(Error::dimension("dims", prior_dims, l));
+        }
+    }
+    let mut settings = Settings::default();
+    if let Some(t) = o.tolerance {
+        settings.tolerance = t;
+    }
+    if let Some(k) = o.quadrature_cardinality {
+        settings.quadrature_cardinality = Error::check_range("quadrature_cardinality", k, 1, 2)?;
+    }
+    let unit = || Density1::uniform(0.0, 1.0);
+    let (false_obs, seed) = match o.model {
+        JdeModel::I => {
+            if o.clutter.is_some() {
+                return Err(wrong_model("clutter"));
+            }
+            let (q, psi) = match &o.false_alarm {
+                Some(f) => (f.probability, f.density.clone()),
+                None => (0.0, unit()?),
+            };
+            (FalseObservations::I { q, psi }, None)
+        }
+        JdeModel::II => {
+            if o.false_alarm.is_some() {
+                return Err(wrong_model("false_alarm"));
+            }
+            let (lambda, c) = match &o.clutter {
+                Some(c) => (c.rate, c.density.clone()),
+                None => (0.0, unit()?),
+            };
+            let seed = monte_carlo_settings(&mut settings, lambda, o.samples, o.seed, entropy)?;
+            (FalseObservations::II { lambda, c }, seed)
+        }
+    };
+    match (&o.prior, &o.observation) {
+        (JdePrior::Scalar(prior), JdeObservation::Scalar(obs)) => {
+            let bound = match &false_obs {
+                FalseObservations::I { q, psi } => theorem1(
+                    &ModelI {
+                        existence: o.existence,
+                        prior,
+                        observation: obs,
+                        false_alarm_probability: *q,
+                        false_alarm_density: psi,
+                        false_alarm_error: o.false_alarm_error,
+                        miss_error: o.miss_error,
+                    },
+                    &settings,
+                ),
+                FalseObservations::II { lambda, c } => theorem2(
+                    &ModelII {
+                        existence: o.existence,
+                        prior,
+                        observation: obs,
+                        clutter_rate: *lambda,
+                        clutter_density: c,
+                        false_alarm_error: o.false_alarm_error,
+                        miss_error: o.miss_error,
+                    },
+                    &settings,
+                ),
+            }?;
+            Ok(JdeBoundOutcome {
+                bound,
+                components: None,
+                inverse_information: None,
+                seed,
+            })
+        }
+        (JdePrior::Vector(prior), JdeObservation::Vector(sensor)) => {
+            let measurement = match &false_obs {
+                FalseObservations::I { q, psi } => VectorMeasurement::I {
+                    false_alarm_probability: *q,
+                    false_alarm_density: psi,
+                },
+                FalseObservations::II { lambda, c } => VectorMeasurement::II {
+                    clutter_rate: *lambda,
+                    clutter_density: c,
+                },
+            };
+            let v = vector_bound(
+                &VectorModel {
+                    existence: o.existence,
+                    prior,
+                    sensor,
+                    measurement,
+                    false_alarm_error: o.false_alarm_error,
+                    miss_error: o.miss_error,
+                },
+                &settings,
+            )?;
+            let l = prior.dims();
+            Ok(JdeBoundOutcome {
+                bound: v.total,
+                components: Some(v.components),
+                inverse_information: Some(
+                    v.inverse_information
+                        .chunks(l)
+                        .map(<[f64]>::to_vec)
+                        .collect(),
+                ),
+                seed,
+            })
+        }
+        _ => Err(Error::Unsupported {
+            what: "observation".into(),
+            reason: "must be of the prior's kind (a scalar observation for a 1D prior, a sensor for a Gaussian vector prior)",
+        }),
+    }
+}
+
+fn wrong_model(what: &str) -> Error {
+    Error::Unsupported {
+        what: what.into(),
+        reason: WRONG_MODEL,
+    }
+}
+
+/// The Monte Carlo budget of model II (Theorem 2): `samples` × Σ n over the cardinalities it
+/// samples (n = 2 … N + 1, or n = 3 … with the n = 2 cubature, N the last clutter count
+/// the Poisson series keeps) at most [`MAX_SAMPLE_POINTS`]. Sets `settings.samples` and
+/// `settings.seed` and returns the seed used when clutter is sampled at all.
+fn monte_carlo_settings(
+    settings: &mut Settings,
+    lambda: f64,
+    samples: Option<usize>,
+    seed: Option<u64>,
+    entropy: impl FnOnce() -> Result<u64>,
+) -> Result<Option<u64>> {
+    let samples = Error::check_range(
+        "samples",
+        samples.unwrap_or(settings.samples),
+        MIN_SAMPLES,
+        MAX_SAMPLES,
+    )?;
+    settings.samples = samples;
+    // N, the last clutter count kept
+    let mut last = 0usize;
+    let mut kept = poisson_pmf(lambda.max(0.0), 0);
+    while lambda.is_finite()
+        && 1.0 - kept > settings.series_tolerance
+        && last < settings.max_clutter
+    {
+        last += 1;
+        kept += poisson_pmf(lambda, last);
+    }
+    let first = if settings.quadrature_cardinality >= 2 {
+        3
+    } else {
+        2
+    };
+    let points: usize = (first..=last + 1).sum();
+    if points.saturating_mul(samples) > MAX_SAMPLE_POINTS {
+        return Err(Error::OverBudget {
+            what: "samples".into(),
+            measure: "samples × Σ n",
+            work: points.saturating_mul(samples),
+            limit: "10^7 at this clutter rate; pass fewer samples",
+            at_most: MAX_SAMPLE_POINTS / points.max(1),
+        });
+    }
+    let seed = if last > 0 {
+        Some(match seed {
+            Some(s) => s,
+            None => entropy()?,
+        })
+    } else {
+        None
+    };
+    settings.seed = seed.unwrap_or(0);
+    Ok(seed)
+}
+
+#[cfg(test)]
+#[path = "jde_tests.rs"]
+mod tests;
