@@ -105,20 +105,27 @@ const MAX_STEPS: usize = 1_000;
 /// At most this many runs per scheme in `compareSchemes`.
 const MAX_RUNS: usize = 1_000;
 
+/// The paper's settings (Sec. 5), read for the options that are omitted.
+fn paper() -> ControlConfig {
+    ControlConfig::paper(
+        CoreScheme::Random,
+        fisst::control::case_study::DEFAULT_STEPS,
+    )
+}
 fn particles_default() -> usize {
-    750
+    paper().particles
 }
 fn future_scans_default() -> usize {
-    200
+    paper().future_scans
 }
 fn alpha_default() -> f64 {
-    0.5
+    paper().alpha
 }
 fn steps_default() -> usize {
-    40
+    paper().steps
 }
 fn max_objects_default() -> usize {
-    4
+    paper().max_objects
 }
 
 /// A sensor-control scheme of Fig. 3: the expected Rényi divergence (15)–(17), the Fisher

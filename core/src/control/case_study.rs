@@ -23,6 +23,10 @@ use crate::smc::{
     SetEstimate, State, regularise, resample, reweight,
 };
 
+/// K when a binding's options omit it (`steps`): 40 (the text of `004_…` does not state the
+/// length of the runs of Fig. 3).
+pub const DEFAULT_STEPS: usize = 40;
+
 /// The four control schemes compared in Fig. 3.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Scheme {
@@ -205,7 +209,9 @@ impl ControlRun {
     /// regularise, estimate, score, choose the next action.
     ///
     /// # Errors
-    /// [`Error::Unsupported`] naming `steps` once K steps are done.
+    /// [`Error::Unsupported`] naming `steps` once K steps are done. On `Err`, the run is
+    /// unchanged (the step works on its own copies of the particles and of both random
+    /// streams, and stores them only on success).
     pub fn step(&mut self) -> Result<StepOutcome> {
         if self.k >= self.config.steps {
             return Err(Error::Unsupported {
@@ -214,46 +220,46 @@ impl ControlRun {
             });
         }
         let cfg = &self.config;
+        let (mut world, mut rng) = (self.world.clone(), self.rng.clone());
         let u = *self.path.last().unwrap_or(&cfg.start);
-        let z = cfg.sensor.scan(&cfg.truth, u, &mut self.world);
-        if self.k == 0 {
+        let z = cfg.sensor.scan(&cfg.truth, u, &mut world);
+        let mut particles = if self.k == 0 {
             let sensor = cfg.sensor;
-            self.particles = MultiObjectParticles::from_ranges(
+            MultiObjectParticles::from_ranges(
                 cfg.particles,
                 cfg.max_objects,
                 &cfg.area,
                 u,
                 &z,
                 |r| sensor.sigma(r),
-                &mut self.rng,
-            );
-        }
+                &mut rng,
+            )
+        } else {
+            // Resampling copies every set anyway: the step is out of place.
+            self.particles.clone()
+        };
         let (mut ws, mut buf) = (LikelihoodWorkspace::new(), Vec::new());
         let (sensor, model) = (cfg.sensor, self.model);
-        reweight(&mut self.particles, |set| {
+        reweight(&mut particles, |set| {
             sensor.ln_likelihood(&model, set, &z, u, &mut ws, &mut buf)
         });
-        resample(&mut self.particles, &mut self.rng);
-        regularise(
-            &mut self.particles,
-            &cfg.area,
-            &cfg.regularisation,
-            &mut self.rng,
-        );
-        let estimate = self.particles.estimate();
+        resample(&mut particles, &mut rng);
+        regularise(&mut particles, &cfg.area, &cfg.regularisation, &mut rng);
+        let estimate = particles.estimate();
         let ospa = Ospa::new(100.0, 2.0)?.decompose(&cfg.truth, &estimate.states)?;
         let actions = cfg.actions.actions(u, &cfg.area);
         let rewards = rewards(
             cfg,
             &self.model,
-            &self.particles,
+            &particles,
             &estimate,
             u,
             &actions,
-            &mut self.rng,
+            &mut rng,
         );
-        let chosen = choose(&rewards, cfg.scheme, &mut self.rng);
+        let chosen = choose(&rewards, cfg.scheme, &mut rng);
         let action = actions[chosen];
+        (self.world, self.rng, self.particles) = (world, rng, particles);
         self.path.push(action.position);
         self.measurements.push(z.clone());
         self.k += 1;

@@ -263,3 +263,19 @@ fn alg1_reduced_run_localises_both_sources() {
     assert!(run.step().is_err());
     assert_eq!(run.sensor_path().len(), 31);
 }
+
+/// A step after the last one fails naming `steps` and leaves the run unchanged: particles,
+/// path, scans and both random streams (every field, through `Debug`).
+#[test]
+fn alg1_step_after_the_last_leaves_the_run_unchanged() {
+    let mut cfg = ControlConfig::paper(Scheme::Random, 2);
+    cfg.particles = 50;
+    let mut run = ControlRun::new(cfg, 3).unwrap();
+    run.step().unwrap();
+    run.step().unwrap();
+    let before = alloc::format!("{run:?}");
+    let e = run.step().unwrap_err();
+    assert_eq!(e.field(), "steps");
+    assert_eq!(alloc::format!("{run:?}"), before);
+    assert_eq!(run.k(), 2);
+}
