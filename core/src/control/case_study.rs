@@ -27,6 +27,15 @@ use crate::smc::{
 /// length of the runs of Fig. 3).
 pub const DEFAULT_STEPS: usize = 40;
 
+/// The bindings' cap on N (`particles`).
+pub const MAX_PARTICLES: usize = 20_000;
+/// The bindings' cap on M (`futureScans`).
+pub const MAX_FUTURE_SCANS: usize = 2_000;
+/// The bindings' cap on N·M (one Rényi step then takes about a second).
+pub const MAX_WORK: usize = 1_000_000;
+/// The bindings' cap on K (`steps`).
+pub const MAX_STEPS: usize = 1_000;
+
 /// The four control schemes compared in Fig. 3.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Scheme {
@@ -89,6 +98,37 @@ impl ControlConfig {
             actions: ActionGrid::default(),
             regularisation: Regularisation::default(),
         }
+    }
+
+    /// The bindings' work caps, before [`ControlConfig::validate`]: N in
+    /// [1, [`MAX_PARTICLES`]], M in [1, [`MAX_FUTURE_SCANS`]], K in [1, [`MAX_STEPS`]],
+    /// n_max in [1, 8] (N·M ≤ [`MAX_WORK`] is the caller's, whose message gives the product).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming `particles`, `futureScans`, `steps` or `maxObjects`.
+    pub fn check_limits(&self) -> Result<()> {
+        let limits: [(&str, usize, usize, &'static str); 4] = [
+            (
+                "particles",
+                self.particles,
+                MAX_PARTICLES,
+                "an integer in [1, 20000]",
+            ),
+            (
+                "futureScans",
+                self.future_scans,
+                MAX_FUTURE_SCANS,
+                "an integer in [1, 2000]",
+            ),
+            ("steps", self.steps, MAX_STEPS, "an integer in [1, 1000]"),
+            ("maxObjects", self.max_objects, 8, "an integer in [1, 8]"),
+        ];
+        for (what, value, max, expected) in limits {
+            if !(1..=max).contains(&value) {
+                return Err(Error::parameter(what, value as f64, expected));
+            }
+        }
+        Ok(())
     }
 
     /// Checks the fields (names as in the bindings).
