@@ -42,11 +42,14 @@ lint:
 
 test-native:
 	cargo test --locked
+	cargo test --locked -p fisst --features serde --lib
 	cargo test --locked -p fisst-wasm --lib
 
 test-nostd:
 	cargo test --locked -p fisst --no-default-features
 	cargo build --locked -p fisst --no-default-features --target thumbv7em-none-eabihf
+	cargo test --locked -p fisst --no-default-features --features serde --lib
+	cargo build --locked -p fisst --no-default-features --features serde --target thumbv7em-none-eabihf
 
 test-wasm:
 	cargo test --locked --target wasm32-unknown-unknown -p fisst-wasm --test node

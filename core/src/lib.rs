@@ -34,6 +34,23 @@
 //! |---|---|---|
 //! | `std` | yes | std support in dependencies. Without it the crate is `#![no_std]` + `alloc` and builds for bare-metal targets such as `thumbv7em-none-eabihf`. |
 //! | `parallel` | yes | implies `std`; independent work (metric series over whole scenarios, Monte Carlo comparisons) runs on all cores with rayon. Results are identical with and without it. The wasm bindings leave it off (wasm32 has no threads). |
+//! | `serde` | no | `Serialize`/`Deserialize` for the option, model and result types (works without `std`). See [Serialisation](#serialisation). |
+//!
+//! ## Serialisation
+//! With the `serde` feature the option, model and result types (de)serialise under their
+//! **Rust field names** (`future_scans`, `position_dims`, …; enum variants under their Rust
+//! names, externally tagged). A binding that shows other names (the JavaScript package's
+//! camelCase) maps them in its own (de)serialiser; the core does not rename. Vectors are
+//! arrays `[x, …]` and matrices row-major arrays of rows `[[…], …]` (module `serde_shapes`).
+//!
+//! Required fields stay required (a missing one is an error). An omitted optional field takes
+//! its default from one place: the type's [`Default`] when every field has one (e.g.
+//! [`splitting::SplitOptions`], [`bounds::Settings`]), else the function the type's own
+//! constructor uses (e.g. [`filters::default_reduction`] for a filter configuration's
+//! `reduction`). Types with invariants ([`gaussian::Gaussian`], [`regions::Region`],
+//! [`filters::GmBernoulli`], …) are written as the arguments of their constructor and read
+//! back through it, so a deserialised value is always valid and an invalid one fails with the
+//! core's [`Error`] message. A clutter density given as a Rust function is not serialisable.
 //!
 //! ## Conventions
 //! - Every float function comes from `libm` (see [`math::fns`]), so the same inputs give
@@ -67,6 +84,12 @@ pub mod math;
 pub mod metrics;
 pub mod mixture;
 pub mod regions;
+#[cfg(feature = "serde")]
+pub mod serde_shapes;
+#[cfg(all(test, feature = "serde"))]
+mod serde_tests;
+#[cfg(feature = "serde")]
+mod serde_valid;
 pub mod sim;
 pub mod smc;
 pub mod splitting;

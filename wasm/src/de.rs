@@ -34,6 +34,8 @@ use js_sys::{Array, Float32Array, Float64Array, Reflect};
 use serde::de::{self, DeserializeSeed, IntoDeserializer, Visitor};
 use wasm_bindgen::{JsCast, JsValue};
 
+use crate::names::js_name;
+
 /// The deepest nesting of arrays and objects read (a `Region` union of unions, a GLMB of
 /// Gaussians, … never comes near it; a cyclic object reaches it at once).
 pub const MAX_DEPTH: usize = 48;
@@ -47,6 +49,18 @@ pub enum Path<'a> {
     Key(&'a Path<'a>, &'a str),
     /// `parent[index]`.
     Index(&'a Path<'a>, usize),
+}
+
+impl Path<'_> {
+    /// The nearest object key above this value (`""` at an argument): the parent that decides
+    /// a field's JavaScript name ([`crate::names::js_name`]).
+    pub fn parent_key(&self) -> &str {
+        match self {
+            Path::Root(_) => "",
+            Path::Key(_, key) => key,
+            Path::Index(parent, _) => parent.parent_key(),
+        }
+    }
 }
 
 impl Display for Path<'_> {
@@ -115,7 +129,10 @@ impl Error {
     pub fn at(mut self, path: &Path<'_>) -> Self {
         if !self.located {
             self.message = match self.missing {
-                Some(field) => std::format!("{} is required", Path::Key(path, field)),
+                Some(field) => std::format!(
+                    "{} is required",
+                    Path::Key(path, js_name(path.parent_key(), field))
+                ),
                 // A message about a part of this value ("[2] must be …") continues the
                 // path; any other continues the sentence ("… must be …").
                 None if self.message.starts_with('[') => std::format!("{path}{}", self.message),
@@ -411,10 +428,10 @@ impl<'a> De<'a> {
     fn map_entries(&self) -> Result<Entries<'a>> {
         let depth = self.deeper()?;
         let obj = self.object()?;
-        let entries: Vec<(Cow<'static, str>, JsValue)> = self
+        let entries: Vec<Entry> = self
             .present_entries(obj)?
             .into_iter()
-            .map(|(k, v)| (Cow::Owned(k), v))
+            .map(|(k, v)| (Cow::Owned(k), None, v))
             .collect();
         Ok(Entries {
             entries: entries.into_iter(),
@@ -429,11 +446,18 @@ impl<'a> De<'a> {
     fn struct_entries(&self, fields: &'static [&'static str]) -> Result<Entries<'a>> {
         let depth = self.deeper()?;
         let obj = self.object()?;
+        // the object's keys are the fields' JavaScript names (`futureScans` for the Rust field
+        // `future_scans`); serde is given the Rust name, paths show the JavaScript one
+        let parent = self.path.parent_key();
         let mut known = Vec::with_capacity(fields.len());
         for (key, value) in self.present_entries(obj)? {
-            match fields.iter().find(|f| **f == key) {
-                Some(f) => known.push((Cow::Borrowed(*f), value)),
-                None => return Err(unknown_key(&self.path, &key, fields)),
+            match fields.iter().find(|f| js_name(parent, f) == key) {
+                Some(f) => known.push((Cow::Borrowed(*f), Some(js_name(parent, f)), value)),
+                None => {
+                    let names: Vec<&'static str> =
+                        fields.iter().map(|f| js_name(parent, f)).collect();
+                    return Err(unknown_key(&self.path, &key, &names));
+                }
             }
         }
         Ok(Entries {
@@ -600,11 +624,16 @@ impl<'de> de::SeqAccess<'de> for Seq<'_> {
     }
 }
 
+/// One present key of an object: the key serde sees (a struct's Rust field name, a map's
+/// key), the key as the object spells it when that differs (a field's JavaScript name), and
+/// the value.
+type Entry = (Cow<'static, str>, Option<&'static str>, JsValue);
+
 /// `MapAccess` over the present keys of an object: for a struct the known ones (each
 /// `&'static str` from the struct's field list), for a map all of them.
 struct Entries<'a> {
-    entries: std::vec::IntoIter<(Cow<'static, str>, JsValue)>,
-    pending: Option<(Cow<'static, str>, JsValue)>,
+    entries: std::vec::IntoIter<Entry>,
+    pending: Option<Entry>,
     path: Path<'a>,
     depth: usize,
 }
@@ -613,21 +642,21 @@ impl<'de> de::MapAccess<'de> for Entries<'_> {
     type Error = Error;
 
     fn next_key_seed<K: DeserializeSeed<'de>>(&mut self, seed: K) -> Result<Option<K::Value>> {
-        let Some((key, value)) = self.entries.next() else {
+        let Some((key, js, value)) = self.entries.next() else {
             return Ok(None);
         };
         let out = seed.deserialize(key.as_ref().into_deserializer());
-        self.pending = Some((key, value));
+        self.pending = Some((key, js, value));
         out.map(Some)
     }
 
     fn next_value_seed<V: DeserializeSeed<'de>>(&mut self, seed: V) -> Result<V::Value> {
-        let Some((key, value)) = self.pending.take() else {
+        let Some((key, js, value)) = self.pending.take() else {
             return Err(de::Error::custom("a value was read before its key"));
         };
         seed.deserialize(De::child(
             Value::Js(value),
-            Path::Key(&self.path, &key),
+            Path::Key(&self.path, js.unwrap_or(&key)),
             self.depth,
         ))
     }

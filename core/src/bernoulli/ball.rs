@@ -95,6 +95,7 @@ const MAX_PIECES: usize = 100;
 
 /// q(a) with its error estimate.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BallProbability {
     /// q(a) = P(‖x − a‖ > r0), in [0, 1].
     pub outside: f64,

@@ -156,6 +156,7 @@ pub(crate) enum Repr {
 
 /// Which kind of density a [`SpatialDensity`] is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum DensityKind {
     /// One Gaussian.
     Gaussian,

@@ -17,6 +17,7 @@ use crate::error::{Result, check_probability};
 /// The Bayes-optimal point estimate of a Bernoulli (Theorem III.3 of `000_…`) with what it
 /// was decided from.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BernoulliEstimate {
     /// Whether {a*} is reported (`true`) or ∅ (`false`), eq. (10).
     pub declare: bool,
@@ -105,6 +106,7 @@ pub(crate) fn decide(p: f64, mmuc: Mmuc, costs: &Costs) -> Result<BernoulliEstim
 
 /// The estimates of the components of a multi-Bernoulli and the reported set.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MultiBernoulliEstimate {
     /// Theorem III.3 applied to each component, in input order.
     pub components: Vec<BernoulliEstimate>,

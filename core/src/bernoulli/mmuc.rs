@@ -14,6 +14,7 @@ use crate::math::sum::NeumaierSum;
 
 /// How [`SpatialDensity::mmuc`] found a*.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum MmucMethod {
     /// The mean of a Gaussian: exact by Sherman's theorem (a symmetric unimodal density and
     /// a symmetric convex set: the ball holds the most mass when centred at the mean).
@@ -33,6 +34,7 @@ pub enum MmucMethod {
 
 /// The MMUC estimate a* and q(a*).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Mmuc {
     /// a*.
     pub center: Vec<f64>,

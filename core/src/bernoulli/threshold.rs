@@ -9,6 +9,7 @@ use crate::math::sum::sum;
 
 /// Which side of Γ reports a target.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Direction {
     /// Report {a*} when p > Γ: the case of Theorem III.3, which holds whenever the
     /// denominator of (11) is negative, i.e. `c11 + c·q < c01 + c10 − c00` (a correctly
@@ -25,6 +26,7 @@ pub enum Direction {
 /// is strictly better. When the denominator of (11) vanishes the decision does not depend
 /// on p and Γ is −∞ (always report, when c10 < c00) or +∞ (never).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Threshold {
     /// Γ. With [`Direction::Above`]: Γ > 1 never reports, Γ < 0 always does, and Γ = 0
     /// reports every p > 0.

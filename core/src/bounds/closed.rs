@@ -9,6 +9,7 @@ use crate::math::fns;
 
 /// Which rule the bound's estimator uses on Z = ∅ (46): HPE declares {x*}, LPE declares ∅.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Phase {
     /// High probability of existence: Z = ∅ ⇒ X̂ = {x*}.
     Hpe,
@@ -18,6 +19,7 @@ pub enum Phase {
 
 /// The four summands of (17) (Theorem 1) or (23) (Theorem 2), in the paper's order.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Terms {
     /// r P̄_o J'_1⁻¹ (17), or r P̄_o Σ_n C_n J'_{1+n}⁻¹ (23).
     pub estimation: f64,
@@ -51,6 +53,7 @@ impl Terms {
 /// ((23) with NOTES.md's reading). The bound is the smaller of the two (the estimator is free
 /// on Z = ∅), which is (18)/(24)'s switch at r* = ε e0² / (ε e0² + (1 − P̄o) ε_u (e1² − σe²)).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Ingredients {
     /// r, the prior existence probability.
     pub existence: f64,
@@ -78,6 +81,7 @@ pub struct Ingredients {
 
 /// A bound of Theorem 1 or 2 (or a corollary), with both phases.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Assembled {
     /// The bound: the smaller of `hpe` and `lpe`.
     pub bound: f64,
@@ -182,6 +186,7 @@ pub(crate) fn check_finite(what: &str, value: f64) -> Result<f64> {
 
 /// The bound of Corollary 3 (29) with the MAP-detector variant of Section IV-A.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct NoClutterBound {
     /// The bound (29): the smaller of `hpe` and `lpe`.
     pub bound: f64,
@@ -335,6 +340,7 @@ pub fn poisson_pmf(rate: f64, n: usize) -> f64 {
 
 /// Fisher information of the linear-Gaussian model (Example 1, with NOTES.md's erratum).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GaussianInformation {
     /// J_1 = 1/σ_x² + a²/σ_v², the Fisher information of p(x, z) = N(x; x0, σ_x²) N(z; ax, σ_v²).
     pub information: f64,
@@ -369,6 +375,7 @@ pub fn gaussian_fisher_information(
 
 /// The two sequential bounds of Section III-E.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Sequential {
     /// P_k(Enum) = Σ_m B_m (J_0 + m(J_1 − J_0))⁻¹ (37), B_m the Binomial(k, P̄_o) pmf.
     Enumeration,

@@ -61,6 +61,7 @@ impl Density for UnitUniform {
 
 /// g(z|x) = x e^{xz}/(eˣ − 1) on [0, 1], with a constant P_o.
 #[derive(Clone, Debug)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Example2Observation {
     /// P_o (constant).
     pub detection: Detection,
@@ -109,6 +110,7 @@ impl Observation for Example2Observation {
 
 /// One point of Fig. 2 right.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Example2 {
     /// Theorem 1 with J'_1 as (20) (with 1/w_1²).
     pub bound: f64,
@@ -211,6 +213,7 @@ pub fn example2(
 
 /// The regularity failure of Example 2 at r = 1, P_o = 1.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Example2Regularity {
     /// J_1 = ∫₀¹ 4(e^z − 1)/z dz = 5.2716.
     pub information: f64,

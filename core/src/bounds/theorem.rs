@@ -12,6 +12,11 @@ use crate::math::quadrature::{self, Control, Rule, Tolerance};
 
 /// How the bounds integrate and sample.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
 pub struct Settings {
     /// Relative tolerance of each quadrature (default 1e-10).
     pub tolerance: f64,
@@ -47,6 +52,7 @@ impl Default for Settings {
 
 /// How a term of the bound was integrated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Method {
     /// Adaptive Gauss–Kronrod quadrature.
     Quadrature,
@@ -58,6 +64,7 @@ pub enum Method {
 
 /// The n-point part of Theorem 2 (or the one term of Theorem 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Cardinality {
     /// n = |Z| (the target's point and n − 1 clutter points).
     pub n: usize,
@@ -81,6 +88,7 @@ pub struct Cardinality {
 
 /// A bound of Theorem 1 or 2 with everything it was built from.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct JdeBound {
     /// The bound, its phase, threshold and terms.
     pub assembled: Assembled,

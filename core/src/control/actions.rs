@@ -9,6 +9,7 @@ use crate::smc::{Area, State};
 
 /// One action of (23).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Action {
     /// 0 for stay, else 1 + (ring − 1)·N_θ + (heading − 1).
     pub index: usize,
@@ -24,6 +25,11 @@ pub struct Action {
 
 /// The grid of (23).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
 pub struct ActionGrid {
     /// N_ρ (2).
     pub rings: usize,

@@ -38,6 +38,7 @@ pub const MAX_STEPS: usize = 1_000;
 
 /// The four control schemes compared in Fig. 3.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Scheme {
     /// The expected Rényi divergence (15)–(17).
     Renyi,
@@ -51,44 +52,84 @@ pub enum Scheme {
 
 /// Settings of one run of Algorithm 1.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ControlConfig {
     /// The control scheme.
     pub scheme: Scheme,
     /// N (750).
+    #[cfg_attr(feature = "serde", serde(default = "ControlConfig::default_particles"))]
     pub particles: usize,
     /// M (200): ideal future scans per step (Rényi only).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default = "ControlConfig::default_future_scans")
+    )]
     pub future_scans: usize,
     /// α of the Rényi divergence (0.5); α = 1 is the Kullback–Leibler divergence.
+    #[cfg_attr(feature = "serde", serde(default = "ControlConfig::default_alpha"))]
     pub alpha: f64,
     /// K: the number of steps.
     pub steps: usize,
     /// The sensor's initial location (the paper does not state it; default [0, 0]).
+    #[cfg_attr(feature = "serde", serde(default = "ControlConfig::default_start"))]
     pub start: State,
     /// n_max (4; the paper does not state it).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default = "ControlConfig::default_max_objects")
+    )]
     pub max_objects: usize,
     /// 𝒜.
     pub area: Area,
     /// The true objects.
     pub truth: Vec<State>,
     /// The sensor.
+    #[cfg_attr(feature = "serde", serde(default))]
     pub sensor: RangeSensor,
     /// The actions (23).
+    #[cfg_attr(feature = "serde", serde(default))]
     pub actions: ActionGrid,
     /// The regularisation (Sec. 5.2).
+    #[cfg_attr(feature = "serde", serde(default))]
     pub regularisation: Regularisation,
 }
 
 impl ControlConfig {
+    /// The default N (the paper's).
+    const fn default_particles() -> usize {
+        750
+    }
+
+    /// The default M (the paper's).
+    const fn default_future_scans() -> usize {
+        200
+    }
+
+    /// The default α (the paper's).
+    const fn default_alpha() -> f64 {
+        0.5
+    }
+
+    /// The default initial sensor location.
+    const fn default_start() -> State {
+        [0.0, 0.0]
+    }
+
+    /// The default n_max.
+    const fn default_max_objects() -> usize {
+        4
+    }
+
     /// The paper's case study with `scheme` and K = `steps`.
     pub fn paper(scheme: Scheme, steps: usize) -> Self {
         Self {
             scheme,
-            particles: 750,
-            future_scans: 200,
-            alpha: 0.5,
+            particles: Self::default_particles(),
+            future_scans: Self::default_future_scans(),
+            alpha: Self::default_alpha(),
             steps,
-            start: [0.0, 0.0],
-            max_objects: 4,
+            start: Self::default_start(),
+            max_objects: Self::default_max_objects(),
             area: Area {
                 lo: [0.0, 0.0],
                 hi: [1000.0, 1000.0],
@@ -170,6 +211,7 @@ impl ControlConfig {
 
 /// What one step of Algorithm 1 produced.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct StepOutcome {
     /// k (1-based).
     pub k: usize,

@@ -11,6 +11,7 @@ use crate::math::rng::{js_safe_seed, seeded};
 
 /// A mean over runs with its standard error, per time step.
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MeanSeries {
     /// The mean at k = 1 … K.
     pub mean: Vec<f64>,
@@ -20,6 +21,7 @@ pub struct MeanSeries {
 
 /// One scheme's averaged errors.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SchemeSummary {
     /// The scheme.
     pub scheme: Scheme,

@@ -15,6 +15,11 @@ use crate::smc::{LikelihoodWorkspace, MultiObjectLikelihood, State};
 /// The range sensor of (19) and (21): z = ‖x − u‖ + v, v ~ N(0, σ²(x)), σ = σ₀ + s‖x − u‖²,
 /// detection p_D, Poisson clutter of rate λ uniform on [0, R_max].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
 pub struct RangeSensor {
     /// p_D (0.95).
     pub detection: f64,

@@ -65,6 +65,7 @@ use crate::metrics::check_cutoff_order;
 
 /// The metric whose mean error is minimised.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum SetMetric {
     /// GOSPA with the given α ∈ (0, 2]; α = 2 is the usual choice ([`SetMetric::GOSPA`]).
     Gospa {
@@ -102,6 +103,7 @@ enum Kind {
 
 /// An estimate and its mean error.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MbEstimate {
     /// u: `report[i]` is true when component i is reported.
     pub report: Vec<bool>,

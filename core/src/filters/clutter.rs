@@ -22,13 +22,16 @@ impl fmt::Debug for ClutterFunction {
 
 /// c̃(ζ), the spatial density of false reports.
 #[derive(Clone, Debug)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum ClutterDensity {
     /// One value for every report (`clutter.density: number`): e.g. 1/|𝔸| for reports
     /// uniform over the anchors, or 1/V for vector clutter uniform over a region of volume V.
     Constant(f64),
     /// One value per report of the scan, in report order (`clutter.density: number[]`).
     PerReport(Vec<f64>),
-    /// A function of the vector measurement (Rust only; vector measurements only).
+    /// A function of the vector measurement (Rust only; vector measurements only). Not
+    /// (de)serialisable: serialising it is an error.
+    #[cfg_attr(feature = "serde", serde(skip))]
     Function(ClutterFunction),
 }
 
@@ -48,6 +51,7 @@ impl PartialEq for ClutterDensity {
 /// (`clutter.density`): the clutter intensity is κ(ζ) = λ_c c̃(ζ), the denominator of
 /// eqs. (53), (55), (57)–(58) of `001_0f0df91eee9b30d5.txt`.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Clutter {
     /// λ_c ≥ 0, the expected number of false reports per scan.
     pub rate: f64,

@@ -135,6 +135,7 @@ pub const DEFAULT_POSITION_DIMS: usize = 2;
 /// The prediction model of eqs. (40)–(49) of `001_…` (`gmBernoulliPredict`'s `transition`,
 /// `survival`, `birth`).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PredictConfig {
     /// π(x | x′) = N(x; F x′, Q) (`transition: { F, Q }`).
     pub transition: LinearGaussianTransition,
@@ -166,6 +167,11 @@ impl PredictConfig {
 /// Algorithms 1–2 ([`crate::splitting::split_for_regions`]). `position_dims` of the options
 /// is overridden by [`UpdateConfig::position_dims`].
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
 pub struct Splitting {
     /// Whether to split at all (`false`: the plain zeroth-order update on the predicted
     /// components).
@@ -246,6 +252,7 @@ pub fn default_reduction() -> ReductionOptions {
 /// (`gmBernoulliUpdate`'s `positionDims`, `detection`, `clutter`, `splitting`, `reduction`,
 /// `exclusions`).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct UpdateConfig {
     /// n_s: the position is the first `position_dims` state components (`positionDims`,
     /// default 2). Every region (FoV, report, exclusion) has this dimension.
@@ -255,11 +262,14 @@ pub struct UpdateConfig {
     /// λ_c and c̃(ζ) (`clutter`).
     pub clutter: Clutter,
     /// Algorithm 3's splitting step (`splitting`).
+    #[cfg_attr(feature = "serde", serde(default))]
     pub splitting: Splitting,
     /// The reduction after the update (`reduction`; default [`default_reduction`]).
+    #[cfg_attr(feature = "serde", serde(default = "default_reduction"))]
     pub reduction: ReductionOptions,
     /// Regions the object cannot occupy (`exclusions`; Fig. 6's grey areas). See
     /// [`crate::filters`] for how their mass is removed.
+    #[cfg_attr(feature = "serde", serde(default))]
     pub exclusions: Vec<Region>,
 }
 
@@ -336,6 +346,7 @@ impl UpdateConfig {
 /// prediction model and the update model, with the JavaScript names of the fields in
 /// parentheses. The particle filter ignores `splitting` and `reduction`.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BernoulliFilterConfig {
     /// r_{0|0} (`existence`).
     pub existence: f64,
@@ -355,12 +366,16 @@ pub struct BernoulliFilterConfig {
     pub clutter: Clutter,
     /// H, R for vector measurements (`likelihood`); `None` when only region reports are
     /// processed.
+    #[cfg_attr(feature = "serde", serde(default))]
     pub likelihood: Option<LinearGaussianLikelihood>,
-    /// (`splitting`).
+    /// (`splitting`; default [`Splitting::default`]).
+    #[cfg_attr(feature = "serde", serde(default = "Splitting::default"))]
     pub splitting: Splitting,
-    /// (`reduction`).
+    /// (`reduction`; default [`default_reduction`]).
+    #[cfg_attr(feature = "serde", serde(default = "default_reduction"))]
     pub reduction: ReductionOptions,
-    /// (`exclusions`).
+    /// (`exclusions`; default none).
+    #[cfg_attr(feature = "serde", serde(default = "Vec::new"))]
     pub exclusions: Vec<Region>,
 }
 

@@ -13,6 +13,11 @@ use crate::math::sum::NeumaierSum;
 /// [`ParticleBernoulliFilter::estimate`](super::ParticleBernoulliFilter::estimate) compute
 /// (`estimate(options)`).
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
 pub struct EstimateOptions {
     /// The application-oriented loss (7) of paper `000` (`{ radius, costs }`). When given, the
     /// estimate includes the optimal Bernoulli point estimate (`report`), computed on the
@@ -22,6 +27,7 @@ pub struct EstimateOptions {
 
 /// A Bernoulli filter's estimate (`{ existence, mean, cov, report }`).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FilterEstimate {
     /// r_{k|k}.
     pub existence: f64,

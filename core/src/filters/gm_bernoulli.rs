@@ -100,6 +100,7 @@ pub fn gm_bernoulli_predict(state: &GmBernoulli, config: &PredictConfig) -> Resu
 
 /// The result of a GM Bernoulli update (`gmBernoulliUpdate`'s result).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GmBernoulliUpdate {
     /// r_{k|k} (`existence`).
     pub existence: f64,
@@ -645,6 +646,7 @@ pub fn gm_bernoulli_update_vector<M: AsRef<[f64]>>(
 
 /// What an update reported besides the new state.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct UpdateInfo {
     /// Δ_k of eq. (58) (−∞ when a report has zero clutter intensity).
     pub delta: f64,

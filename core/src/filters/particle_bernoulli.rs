@@ -25,6 +25,11 @@ pub const MAX_MCMC_MOVES: usize = 100;
 
 /// The particle filter's own settings (`particles`, `mcmcMoves`, `seed`, `birthParticles`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
 pub struct ParticleOptions {
     /// N, the number of particles kept after each update (`particles`, default 5000, the
     /// paper's count).

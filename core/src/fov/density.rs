@@ -16,6 +16,7 @@ use super::pmf::{self, FovCardinality, GlmbHypothesis};
 /// A multi-object density whose single-object densities are Gaussians or Gaussian mixtures
 /// (eq. (7) of `001_…`).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum MultiObjectDensity {
     /// Poisson RFS (76) with PHD D(x) = Σ_i w_i N(x; m_i, P_i); N_X = Σ_i w_i.
     Poisson(GaussianMixture),
@@ -36,6 +37,7 @@ pub enum MultiObjectDensity {
 
 /// [`fov_cardinality`]'s result.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FovCount {
     /// The pmf of the number of objects (or of object detections, for p_D < 1) in S, its mean
     /// and variance.

@@ -24,6 +24,7 @@ const SKIP: f64 = 1e-17;
 
 /// Centres `min + i·(max − min)/(count − 1)`, i = 0 … count − 1 (`min` alone for count 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GridAxis {
     /// The first centre.
     pub min: f64,
@@ -75,6 +76,7 @@ impl GridAxis {
 
 /// The FoV-count variance over a grid of FoV centres.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct VarianceMap {
     /// Var[|X ∩ S(x_i, y_j)|], row-major with y as the outer index: entry `j·nx + i`.
     pub variance: Vec<f64>,

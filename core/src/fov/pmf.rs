@@ -19,6 +19,7 @@ pub const MAX_ENUMERATED: usize = 12;
 /// The pmf ρ_S(n), n = 0 … `pmf.len() − 1`, of the number of objects in a region, with its
 /// mean and variance.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FovCardinality {
     /// ρ_S(0), ρ_S(1), …
     pub pmf: Vec<f64>,
@@ -335,6 +336,7 @@ pub fn multi_bernoulli_enumerated(existence: &[f64], mass: &[f64]) -> Result<Vec
 /// One GLMB hypothesis (ξ, I) reduced to what (92) needs: its weight w⁽ξ⁾(I) and, for each
 /// label ℓ ∈ I, the inclusion probability ⟨1_S, p⁽ξ,ℓ⁾⟩.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GlmbHypothesis {
     /// w⁽ξ⁾(I) ≥ 0; the weights of all hypotheses sum to 1.
     pub weight: f64,

@@ -31,6 +31,11 @@ pub const MAX_SCENE_COUNT: usize = 10_000;
 
 /// The settings of [`placement_scene`]; [`Default`] is the paper's scene as chosen here.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
 pub struct SceneOptions {
     /// Number of multi-Bernoulli components (≤ [`MAX_SCENE_COUNT`]; default 100).
     pub count: usize,

@@ -25,6 +25,7 @@ use crate::math::sum::NeumaierSum;
 
 /// An optimal assignment.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Assignment {
     /// The assigned `(row, column)` pairs, sorted by row. Its length is `min(rows, cols)`.
     pub pairs: Vec<(usize, usize)>,

@@ -21,6 +21,7 @@ use super::fns;
 
 /// A local minimum found by [`bfgs`] or [`nelder_mead`].
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Minimum {
     /// The best point found.
     pub x: Vec<f64>,
@@ -32,6 +33,7 @@ pub struct Minimum {
 
 /// The settings of [`bfgs`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BfgsOptions {
     /// Length of the first step (the initial inverse Hessian is `step`/‖∇f(x₀)‖ · I), and a
     /// quarter of the longest step.

@@ -104,6 +104,7 @@ const WG10: [f64; 5] = [
 
 /// A Gauss–Kronrod pair: the rule applied to each piece.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Rule {
     /// 15-point Kronrod, 7-point Gauss; error estimate |K₁₅ − G₇| (QUADPACK `qk15`'s nodes,
     /// without its scaling).
@@ -114,6 +115,7 @@ pub enum Rule {
 
 /// One application of a [`Rule`] on one piece.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Panel<V = f64> {
     /// The Kronrod estimate of the integral (every component).
     pub value: V,
@@ -242,6 +244,7 @@ fn gk21<const N: usize, F: FnMut(f64) -> [f64; N]>(f: &mut F, a: f64, b: f64) ->
 /// When the summed error estimate E = Σ error of the pieces is small enough (A = Σ ∫|f| of
 /// the pieces, both plain sums).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Tolerance {
     /// E ≤ tol.
     Absolute(f64),
@@ -302,6 +305,7 @@ impl Control<'static> {
 
 /// An integral with its error estimate.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Estimate<V = f64> {
     /// The integral (every component).
     pub value: V,

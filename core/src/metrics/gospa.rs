@@ -63,6 +63,7 @@ pub struct Gospa {
 
 /// GOSPA (α = 2) split into its parts (Prop. 3 of the spooky-effect paper).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GospaDecomposition {
     /// The GOSPA distance, `(localisation + c^p/2 · (missed + false_targets))^(1/p)`.
     pub distance: f64,

@@ -47,6 +47,7 @@ pub struct Ospa {
 
 /// OSPA split into its localisation and cardinality parts, eqs. (24)–(26) of `004_…`.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OspaDecomposition {
     /// d̄_{c,p}(X, Y), eq. (24).
     pub distance: f64,

@@ -15,6 +15,7 @@ use crate::math::sum::sum;
 /// Built by [`Gospa::series`] / [`Gospa::series_with`], or collected from per-step
 /// decompositions: `steps.map(|(x, y)| g.decompose(x, y)).collect::<Result<GospaSeries>>()`.
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GospaSeries {
     /// GOSPA at each step.
     pub distance: Vec<f64>,
@@ -27,6 +28,7 @@ pub struct GospaSeries {
 
 /// The α = 2 decomposition of a [`GospaSeries`] (Prop. 3 of `003_…`), per step and averaged.
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GospaSeriesParts {
     /// Σ d^p over the assigned pairs at each step (not rooted, as in
     /// [`GospaDecomposition::localisation`]).
@@ -49,6 +51,7 @@ pub struct GospaSeriesParts {
 /// The means are of the rooted per-step values, so `mean_distance^p` is in general not
 /// `mean_localisation^p + mean_cardinality^p` (that identity holds step by step).
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OspaSeries {
     /// OSPA at each step, eq. (24) of `004_…`.
     pub distance: Vec<f64>,

@@ -24,6 +24,11 @@ use crate::gaussian::GaussianMixture;
 
 /// Which reduction passes [`reduce`] runs, in this order.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
 pub struct ReductionOptions {
     /// Drop components lighter than this, renormalising the rest ([`prune`]); 0 keeps all.
     pub prune_below: f64,

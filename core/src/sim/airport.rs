@@ -20,6 +20,7 @@ use crate::regions::{AxisBox, Region};
 /// An anchor: a named landmark ("the taco stand") at a known position, with the radius
 /// 2 d_a / 3 of its association disc 𝒜_a (eqs. (63)–(64)).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Anchor {
     /// The name.
     pub name: String,
@@ -41,6 +42,7 @@ impl Anchor {
 
 /// The truth at one report time.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TruthPoint {
     /// t = k T, seconds.
     pub t: f64,
@@ -109,6 +111,7 @@ pub struct TruthPoint {
 /// that a filter that has lost the person re-acquires them; p_D = 0.9 on S; λ_c = 0.25,
 /// c̃ = 1/10; the four exclusions; the default splitting and reduction.
 #[derive(Clone, Debug)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct AirportScenario {
     /// The anchors.
     pub anchors: Vec<Anchor>,

@@ -17,6 +17,11 @@ use crate::math::rng::{index, uniform};
 
 /// Regularisation settings (Sec. 5.2).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
 pub struct Regularisation {
     /// p_b: the probability that a particle with fewer than n_max objects gains one, drawn
     /// uniformly in the area (0.025).

@@ -17,6 +17,7 @@ pub type State = [f64; 2];
 
 /// The axis-aligned surveillance area 𝒜 = [lo₀, hi₀] × [lo₁, hi₁].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Area {
     /// Lower corner.
     pub lo: State,
@@ -63,6 +64,7 @@ impl Area {
 
 /// The particle approximation (11) f(X) ≈ Σ_i w_i δ_{X_i}(X) of a multi-object density.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MultiObjectParticles {
     /// X_i, each of at most `max_objects` states.
     pub sets: Vec<Vec<State>>,
@@ -75,6 +77,7 @@ pub struct MultiObjectParticles {
 /// The point estimate of Sec. 5.2: the MAP cardinality (22) and the mean of the particles
 /// with that cardinality.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SetEstimate {
     /// n̂ = argmax_n Σ_i w_i Δ[n, n_i] (22) (ties: the smaller n).
     pub cardinality: usize,

@@ -19,10 +19,12 @@ const EIGEN_MAX_ITER: usize = 10_000;
 /// descending order (ties keep the solver's order), each eigenvector's largest-magnitude
 /// entry positive (the first such on ties), so the order and signs are reproducible.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Eigen {
     /// λ₁ ≥ λ₂ ≥ … > 0.
     pub values: Vec<f64>,
     /// Column i is the unit eigenvector of `values[i]`.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::matrix"))]
     pub vectors: DMatrix<f64>,
 }
 

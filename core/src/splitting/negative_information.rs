@@ -82,6 +82,7 @@ pub fn non_detection_update(
 
 /// One time step of [`NegativeInformationScenario::run`].
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct NegativeInformationStep {
     /// The time index k (1, 2, 3 for Fig. 5).
     pub step: usize,
@@ -135,12 +136,15 @@ pub struct NegativeInformationStep {
 /// the edges, keeps at most 1.2 %, against 9–24 % before the updates); lowering w_min thins
 /// that layer at the price of more components (w_min = 0.001: 5–7× as many).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct NegativeInformationScenario {
     /// p_{0|0}.
     pub initial: GaussianMixture,
     /// F of eq. (70).
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::matrix"))]
     pub transition: DMatrix<f64>,
     /// Q of eq. (71).
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::matrix"))]
     pub process_noise: DMatrix<f64>,
     /// The field of view S.
     pub fov: Region,

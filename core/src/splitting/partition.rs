@@ -9,6 +9,7 @@ use crate::regions::Region;
 
 /// The two halves of a mixture by the mean-based partition (11)–(12).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Partition {
     /// p_S: the components whose mean lies in S (11).
     pub inside: GaussianMixture,
@@ -63,6 +64,7 @@ pub fn partition(mixture: &GaussianMixture, region: &Region) -> Result<Partition
 /// How well the mean-based partition of a (split) mixture reproduces the exact mass of a
 /// region under the mixture it approximates.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PartitionAccuracy {
     /// Σ_ℓ w^{(ℓ)} 1_S(m^{(ℓ)}) over the split mixture: the weight of p_S in (11).
     pub partitioned: f64,

@@ -22,6 +22,11 @@ pub const MAX_DEPTH_LIMIT: usize = 64;
 
 /// The knobs of Algorithms 1 and 2 (the split library is passed separately).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
 pub struct SplitOptions {
     /// n_s: the position states are the first `position_dims` state components (Section III
     /// of `001_…`); every region must have this dimension. Default 2.
@@ -71,6 +76,7 @@ impl Default for SplitOptions {
 
 /// Which cap stopped the recursion early.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum SplitStop {
     /// A component still straddled a boundary at [`SplitOptions::max_depth`].
     MaxDepth,
@@ -80,6 +86,7 @@ pub enum SplitStop {
 
 /// The result of [`split_for_regions`].
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SplitOutcome {
     /// The split mixture. Each input component is replaced in place by its descendants, so
     /// the order follows the input.

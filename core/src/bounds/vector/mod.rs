@@ -37,6 +37,7 @@ use zone::Zone;
 
 /// The bound (63)/(64) on the MSE σ_i² of component i.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ComponentBound {
     /// The bound, its phase (the component's own rule on Z = ∅), threshold (72) and terms.
     pub assembled: Assembled,
@@ -52,6 +53,7 @@ pub struct ComponentBound {
 
 /// The vector bounds: per component (63)/(64), and for the whole state.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct VectorBound {
     /// The bound on σ² = E e²(X, X̂) with the Euclidean metric (σ² = Σ_i σ_i²): the scalar
     /// assembly with S = tr(J'⁻¹) (or Σ C_n tr J'_{1+n}⁻¹) and σ_e² = tr P, one rule on Z = ∅

@@ -65,6 +65,7 @@ const MAX_INTERVALS: usize = 4000;
 
 /// A probability mass and an estimate of its absolute error.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Mass {
     /// ⟨1_S, N(m, P)⟩ ∈ [0, 1].
     pub value: f64,

@@ -1,0 +1,301 @@
+//! Tests of the `serde` feature: every derived family round-trips through JSON, required
+//! fields stay required, omitted optional fields take the type's default, and a deserialised
+//! invalid value fails with the core's own error message.
+
+use alloc::string::{String, ToString};
+use alloc::vec;
+use alloc::vec::Vec;
+use core::fmt::Debug;
+
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+
+use crate::bernoulli::{ApplicationLoss, Costs, SpatialDensity};
+use crate::bounds::{
+    self, Cardinality, Density1, JdeBound, LinearGaussian, Method, Settings, assemble,
+};
+use crate::control::case_study::{ControlConfig, Scheme};
+use crate::estimators::multi_bernoulli::{SetMetric, optimal_estimate};
+use crate::filters::{
+    BernoulliFilterConfig, Clutter, ClutterDensity, ClutterFunction, Detection, GmBernoulli,
+    ParticleOptions, Splitting, default_reduction,
+};
+use crate::fov::{FovCardinality, MultiObjectDensity, SceneOptions};
+use crate::gaussian::{Gaussian, GaussianMixture};
+use crate::metrics::{Gospa, GospaSeries, Ospa};
+use crate::mixture::ReductionOptions;
+use crate::regions::Region;
+use crate::sim::airport::airport_scenario;
+use crate::smc::{MultiObjectLikelihood, Regularisation};
+use crate::splitting::{SplitLibrary, SplitOptions, split_for_region};
+
+/// Writes `value` to JSON, reads it back, and checks that nothing changed.
+fn round_trip<T: Serialize + DeserializeOwned + PartialEq + Debug>(value: &T) -> String {
+    let json = serde_json::to_string(value).unwrap();
+    let back: T = serde_json::from_str(&json).unwrap();
+    assert_eq!(&back, value, "{json}");
+    json
+}
+
+/// The error message of reading `json` as a `T`.
+fn rejected<T: DeserializeOwned + Debug>(json: &str) -> String {
+    serde_json::from_str::<T>(json).unwrap_err().to_string()
+}
+
+fn gaussian(mean: &[f64], cov: &[f64]) -> Gaussian {
+    Gaussian::from_slices(mean, cov, "g").unwrap()
+}
+
+#[test]
+fn metrics_options_and_results_round_trip() {
+    let gospa = Gospa::new(5.0, 2.0, 2.0).unwrap();
+    assert_eq!(round_trip(&gospa), r#"{"c":5.0,"p":2.0,"alpha":2.0}"#);
+    round_trip(&Ospa::new(5.0, 1.0).unwrap());
+    let truth = [[0.0, 0.0], [10.0, 0.0]];
+    let estimate = [[0.5, 0.0], [30.0, 0.0], [40.0, 0.0]];
+    let d = gospa.decompose(&truth, &estimate).unwrap();
+    let json = round_trip(&d);
+    assert!(json.contains(r#""false_targets":2"#), "{json}");
+    round_trip(
+        &Ospa::new(5.0, 2.0)
+            .unwrap()
+            .decompose(&truth, &estimate)
+            .unwrap(),
+    );
+    let series: GospaSeries = gospa
+        .series(&[truth.to_vec()], &[estimate.to_vec()])
+        .unwrap();
+    round_trip(&series);
+    round_trip(&crate::math::assignment::linear_assignment(&[1.0, 2.0, 3.0, 0.5], 2, 2).unwrap());
+    assert_eq!(
+        rejected::<Gospa>(r#"{"c":-1.0,"p":2.0,"alpha":2.0}"#),
+        Gospa::new(-1.0, 2.0, 2.0).unwrap_err().to_string()
+    );
+    assert!(rejected::<Gospa>(r#"{"c":1.0,"p":2.0}"#).contains("missing field `alpha`"));
+}
+
+#[test]
+fn gaussians_are_rows_and_reject_a_non_positive_definite_covariance() {
+    let g = gaussian(&[1.0, 2.0], &[2.0, 0.5, 0.5, 1.0]);
+    assert_eq!(
+        round_trip(&g),
+        r#"{"mean":[1.0,2.0],"cov":[[2.0,0.5],[0.5,1.0]]}"#
+    );
+    let m = GaussianMixture::new(vec![(0.25, g.clone()), (0.75, g)], "m").unwrap();
+    round_trip(&m);
+    assert_eq!(
+        rejected::<Gaussian>(r#"{"mean":[0.0,0.0],"cov":[[1.0,2.0],[2.0,1.0]]}"#),
+        "gaussian.cov must be symmetric positive definite"
+    );
+    assert_eq!(
+        rejected::<GaussianMixture>(r#"[{"weight":1.0,"mean":[0.0],"cov":[[-1.0]]}]"#),
+        "mixture[0].cov must be symmetric positive definite"
+    );
+    assert!(rejected::<Gaussian>(r#"{"mean":[0.0]}"#).contains("missing field `cov`"));
+}
+
+#[test]
+fn filter_config_round_trips_and_omitted_fields_take_the_defaults() {
+    let config = airport_scenario(1, 3).unwrap().config;
+    round_trip(&config);
+    let mut value: serde_json::Value = serde_json::to_value(&config).unwrap();
+    let map = value.as_object_mut().unwrap();
+    for optional in ["likelihood", "splitting", "reduction", "exclusions"] {
+        map.remove(optional);
+    }
+    let back: BernoulliFilterConfig = serde_json::from_value(value.clone()).unwrap();
+    assert_eq!(back.splitting, Splitting::default());
+    assert_eq!(back.reduction, default_reduction());
+    assert!(back.exclusions.is_empty() && back.likelihood.is_none());
+    value.as_object_mut().unwrap().remove("survival");
+    let missing = serde_json::from_value::<BernoulliFilterConfig>(value).unwrap_err();
+    assert!(
+        missing.to_string().contains("missing field `survival`"),
+        "{missing}"
+    );
+    round_trip(&ParticleOptions::default());
+    let state = GmBernoulli::new(0.5, config.mixture.clone()).unwrap();
+    round_trip(&state);
+}
+
+#[test]
+fn eq39_existence_and_detection_probability_1_5_are_rejected() {
+    let state = r#"{"existence":1.5,"mixture":[{"weight":1.0,"mean":[0.0],"cov":[[1.0]]}]}"#;
+    assert_eq!(
+        rejected::<GmBernoulli>(state),
+        "existence must be a probability in [0, 1], got 1.5"
+    );
+    let detection = rejected::<Detection>(r#"{"probability":1.5}"#);
+    assert_eq!(
+        detection,
+        Detection::new(1.5, None).unwrap_err().to_string()
+    );
+    let d: Detection = serde_json::from_str(r#"{"probability":0.9}"#).unwrap();
+    assert_eq!(d, Detection::new(0.9, None).unwrap());
+}
+
+#[test]
+fn clutter_functions_cannot_be_serialised() {
+    let constant = Clutter::new(2.0, ClutterDensity::Constant(0.1)).unwrap();
+    assert_eq!(
+        round_trip(&constant),
+        r#"{"rate":2.0,"density":{"Constant":0.1}}"#
+    );
+    round_trip(&Clutter::new(2.0, ClutterDensity::PerReport(vec![0.1, 0.2])).unwrap());
+    let f = ClutterDensity::Function(ClutterFunction(alloc::sync::Arc::new(|_: &[f64]| 1.0)));
+    assert!(serde_json::to_string(&f).is_err());
+    assert!(serde_json::from_str::<ClutterDensity>(r#"{"Function":null}"#).is_err());
+}
+
+#[test]
+fn options_with_a_default_take_it_for_every_omitted_field() {
+    fn empty_is_default<T: DeserializeOwned + Default + PartialEq + Debug + Serialize>() {
+        assert_eq!(serde_json::from_str::<T>("{}").unwrap(), T::default());
+        round_trip(&T::default());
+    }
+    empty_is_default::<SplitOptions>();
+    empty_is_default::<Settings>();
+    empty_is_default::<ParticleOptions>();
+    empty_is_default::<Regularisation>();
+    empty_is_default::<ReductionOptions>();
+    empty_is_default::<SceneOptions>();
+    empty_is_default::<Splitting>();
+    empty_is_default::<crate::filters::EstimateOptions>();
+    empty_is_default::<crate::control::RangeSensor>();
+    empty_is_default::<crate::control::ActionGrid>();
+    let some: SplitOptions = serde_json::from_str(r#"{"grid_points":21}"#).unwrap();
+    assert_eq!(
+        some,
+        SplitOptions {
+            grid_points: 21,
+            ..SplitOptions::default()
+        }
+    );
+}
+
+#[test]
+fn control_config_defaults_are_the_papers() {
+    let paper = ControlConfig::paper(Scheme::Renyi, 3);
+    round_trip(&paper);
+    let json = r#"{"scheme":"Renyi","steps":3,"area":{"lo":[0.0,0.0],"hi":[1000.0,1000.0]},
+        "truth":[[300.0,600.0],[750.0,250.0]]}"#;
+    assert_eq!(serde_json::from_str::<ControlConfig>(json).unwrap(), paper);
+    round_trip(&MultiObjectLikelihood::new(0.9, 2.0).unwrap());
+    assert_eq!(
+        rejected::<MultiObjectLikelihood>(r#"{"detection":1.5,"clutter_rate":1.0}"#),
+        MultiObjectLikelihood::new(1.5, 1.0)
+            .unwrap_err()
+            .to_string()
+    );
+}
+
+#[test]
+fn bounds_models_and_results_round_trip() {
+    round_trip(&Density1::gaussian(1.0, 4.0).unwrap());
+    round_trip(&Density1::mixture(&[(0.5, 0.0, 1.0), (0.5, 2.0, 1.0)]).unwrap());
+    let table = Density1::table(&[0.0, 1.0, 2.0], &[0.0, 1.0, 0.0]).unwrap();
+    assert!(!round_trip(&table).contains("cdf"));
+    assert_eq!(
+        rejected::<Density1>(r#"{"Uniform":{"low":1.0,"high":0.0}}"#),
+        Density1::uniform(1.0, 0.0).unwrap_err().to_string()
+    );
+    let detection = bounds::Detection::constant(0.9).unwrap();
+    round_trip(&LinearGaussian::new(detection, 1.0, 0.0, 1.0).unwrap());
+    assert_eq!(
+        rejected::<bounds::Detection>(r#"{"Constant":1.5}"#),
+        bounds::Detection::constant(1.5).unwrap_err().to_string()
+    );
+    let no_clutter = bounds::gaussian_no_clutter(0.5, 0.9, 4.0, 1.0, 1.0, 5.0).unwrap();
+    round_trip(&no_clutter);
+    let assembled = assemble(&bounds::Ingredients {
+        existence: 0.5,
+        mean_detection: 0.9,
+        undetected_variance: 4.0,
+        inverse_information: 1.0,
+        detected_mass: 0.4,
+        absent_empty: 0.4,
+        absent_null: 0.1,
+        undetected_empty: 0.05,
+        undetected_null: 0.05,
+        false_alarm_error: 1.0,
+        miss_error: 5.0,
+    });
+    round_trip(&JdeBound {
+        assembled,
+        mean_detection: 0.9,
+        undetected_mean: 1.0,
+        undetected_variance: 4.0,
+        eta: 0.2,
+        region: vec![(0.0, 1.0)],
+        cardinalities: vec![Cardinality {
+            n: 1,
+            probability: 0.5,
+            w: 0.1,
+            inverse_information: 1.0,
+            clutter_null: 0.2,
+            method: Method::Quadrature,
+            error: 1e-12,
+            w_error: 1e-12,
+            clutter_null_error: 1e-12,
+        }],
+        error: 1e-9,
+        regular: true,
+    });
+}
+
+#[test]
+fn regions_splitting_and_fov_round_trip() {
+    let disc = Region::ball(&[0.0, 0.0], 2.0, "r").unwrap();
+    let square = Region::axis_box(&[-1.0, -1.0], &[1.0, 1.0], "r").unwrap();
+    let triangle = Region::polygon(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]], "r").unwrap();
+    let both = Region::union(vec![Region::complement(disc), square, triangle], "r").unwrap();
+    let json = round_trip(&both);
+    assert!(
+        json.starts_with(r#"{"union":[{"complement":{"ball":{"center""#),
+        "{json}"
+    );
+    assert_eq!(
+        rejected::<Region>(r#"{"ball":{"center":[0.0],"radius":-1.0}}"#),
+        Region::ball(&[0.0], -1.0, "ball").unwrap_err().to_string()
+    );
+    assert_eq!(
+        rejected::<Region>(r#"{"union":[]}"#),
+        Region::union(Vec::new(), "union").unwrap_err().to_string()
+    );
+    let library = SplitLibrary::table_i();
+    round_trip(&library);
+    let mixture = GaussianMixture::new(
+        vec![(1.0, gaussian(&[0.5, 0.0], &[1.0, 0.0, 0.0, 1.0]))],
+        "m",
+    )
+    .unwrap();
+    let fov = Region::axis_box(&[0.0, -5.0], &[5.0, 5.0], "fov").unwrap();
+    round_trip(&split_for_region(&mixture, &fov, &library, &SplitOptions::default()).unwrap());
+    let pmf: FovCardinality = crate::fov::pmf::multi_bernoulli(&[0.5, 0.25]).unwrap();
+    round_trip(&pmf);
+    round_trip(&MultiObjectDensity::Poisson(mixture));
+}
+
+#[test]
+fn estimators_and_bernoulli_results_round_trip() {
+    let best = optimal_estimate(&[0.4, 0.4], SetMetric::Ospa, 1.0, 2.0).unwrap();
+    round_trip(&best);
+    assert_eq!(round_trip(&SetMetric::GOSPA), r#"{"Gospa":{"alpha":2.0}}"#);
+    let loss = ApplicationLoss::new(Costs::mmol(10.0, 1.0).unwrap(), 1.0).unwrap();
+    round_trip(&loss);
+    let density = SpatialDensity::gaussian_from_slices(&[0.5, 0.0], &[1.0, 0.0, 0.0, 1.0]).unwrap();
+    round_trip(&crate::bernoulli::estimate(0.7, &density, &loss).unwrap());
+    round_trip(&density);
+    let g = gaussian(&[0.0], &[1.0]);
+    let mixture = GaussianMixture::new(vec![(1.0, g.clone()), (3.0, g)], "m").unwrap();
+    round_trip(&SpatialDensity::mixture(&mixture).unwrap());
+    let points = [[0.0], [1.0]];
+    let particles = crate::bernoulli::ParticleSet::new(&points, Some(&[0.25, 0.75])).unwrap();
+    round_trip(&SpatialDensity::particles(particles));
+    assert_eq!(
+        rejected::<Costs>(r#"{"c00":0.0,"c01":-1.0,"c10":1.0,"c11":0.0,"c":1.0}"#),
+        Costs::new(0.0, -1.0, 1.0, 0.0, 1.0)
+            .unwrap_err()
+            .to_string()
+    );
+}

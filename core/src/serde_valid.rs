@@ -1,0 +1,553 @@
+//! `Serialize`/`Deserialize` of the validated types (feature `serde`): each is written as the
+//! arguments of its constructor (Rust names) and read back THROUGH that constructor, so a
+//! deserialised value is always valid and a bad one fails with the core's [`Error`] message
+//! as the serde error.
+//!
+//! | type | shape | constructor |
+//! |---|---|---|
+//! | [`Gaussian`] | `{mean, cov}` | [`Gaussian::new`] (`gaussian.mean`, `gaussian.cov`) |
+//! | [`GaussianMixture`] | `[{weight, mean, cov}, …]` | [`GaussianMixture::new`] (`mixture[j]…`) |
+//! | [`LinearGaussianTransition`] | `{f, q}` | [`LinearGaussianTransition::new`] |
+//! | [`LinearGaussianLikelihood`] | `{h, r}` | [`LinearGaussianLikelihood::new`] |
+//! | [`Gospa`], [`Ospa`] | `{c, p, alpha}`, `{c, p}` | [`Gospa::new`], [`Ospa::new`] |
+//! | [`Costs`], [`ApplicationLoss`] | `{c00, c01, c10, c11, c}`, `{costs, radius}` | their `new` |
+//! | [`AxisBox`], [`Ball`], [`Polygon`] | `{min, max}`, `{center, radius}`, `{vertices}` | their `new` |
+//! | [`SplitLibrary`] | `{weights, means, sigma, lambda}` | [`SplitLibrary::new`] |
+//! | [`MultiObjectLikelihood`] | `{detection, clutter_rate}` | [`MultiObjectLikelihood::new`] |
+//! | [`ParticleSet`] | `{points, weights}` | [`ParticleSet::new`] |
+//! | [`GmBernoulli`], [`Birth`] | `{existence, mixture}`, `{probability, mixture}` | their `new` |
+//! | [`Detection`] | `{probability, fov}` (`fov` optional) | [`Detection::new`] |
+//! | [`Density1`] | `{"Gaussian": {mean, variance}}`, `{"Uniform": {low, high}}`, `{"Mixture": [[w, m, v], …]}`, `{"Table": {x, density}}` | [`Density1::gaussian`], … (a table's `cdf` is recomputed) |
+//! | [`bounds::Detection`](BoundsDetection) | `{"Constant": p}`, `{"Table": {x, probability}}` | [`BoundsDetection::constant`], [`BoundsDetection::table`] |
+//! | [`LinearGaussian`] | `{detection, gain, offset, noise_variance}` | [`LinearGaussian::new`] |
+//! | [`SpatialDensity`] | `{"Gaussian": gaussian}`, `{"Mixture": mixture}`, `{"Particles": particle set}` | [`SpatialDensity::gaussian`], [`SpatialDensity::mixture`], [`SpatialDensity::particles`] |
+//! | [`Region`] | `{"box": …}`, `{"polygon": …}`, `{"ball": …}`, `{"union": [regions]}`, `{"intersection": [regions]}`, `{"complement": region}` | [`Region::from`], [`Region::union`], … |
+//!
+//! No paper: these are data formats only.
+
+use alloc::boxed::Box;
+use alloc::string::ToString;
+use alloc::vec::Vec;
+
+use nalgebra::{DMatrix, DVector};
+use serde::de::Error as _;
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+use crate::bernoulli::{ApplicationLoss, Costs, DensityKind, ParticleSet, SpatialDensity};
+use crate::bounds::{Density1, Detection as BoundsDetection, LinearGaussian};
+use crate::error::Error;
+use crate::filters::{
+    Birth, Detection, GmBernoulli, LinearGaussianLikelihood, LinearGaussianTransition,
+};
+use crate::gaussian::{Gaussian, GaussianMixture};
+use crate::metrics::{Gospa, Ospa};
+use crate::regions::{AxisBox, Ball, Node, Polygon, Region};
+use crate::serde_shapes::matrix;
+use crate::smc::MultiObjectLikelihood;
+use crate::splitting::SplitLibrary;
+
+/// Implements `Serialize` by writing `$repr` built from `&self`, and `Deserialize` by reading
+/// `$repr` and passing it to the (fallible) constructor.
+macro_rules! through_constructor {
+    ($ty:ty, $repr:ty, |$s:ident| $to:expr, |$r:ident| $from:expr) => {
+        impl Serialize for $ty {
+            fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+                let $s = self;
+                let repr: $repr = $to;
+                repr.serialize(serializer)
+            }
+        }
+
+        impl<'de> Deserialize<'de> for $ty {
+            fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+                let $r = <$repr>::deserialize(deserializer)?;
+                let built: Result<Self, Error> = $from;
+                built.map_err(|e| D::Error::custom(e.to_string()))
+            }
+        }
+    };
+}
+
+#[derive(Serialize, Deserialize)]
+struct GaussianRepr {
+    mean: Vec<f64>,
+    #[serde(with = "matrix")]
+    cov: DMatrix<f64>,
+}
+
+fn gaussian_repr(g: &Gaussian) -> GaussianRepr {
+    GaussianRepr {
+        mean: g.mean().as_slice().to_vec(),
+        cov: g.cov().clone(),
+    }
+}
+
+through_constructor!(Gaussian, GaussianRepr, |g| gaussian_repr(g), |r| {
+    Gaussian::new(DVector::from_vec(r.mean), r.cov, "gaussian")
+});
+
+#[derive(Serialize, Deserialize)]
+struct ComponentRepr {
+    weight: f64,
+    mean: Vec<f64>,
+    #[serde(with = "matrix")]
+    cov: DMatrix<f64>,
+}
+
+through_constructor!(
+    GaussianMixture,
+    Vec<ComponentRepr>,
+    |m| m
+        .components()
+        .iter()
+        .map(|(w, g)| ComponentRepr {
+            weight: *w,
+            mean: g.mean().as_slice().to_vec(),
+            cov: g.cov().clone(),
+        })
+        .collect(),
+    |r| {
+        r.into_iter()
+            .enumerate()
+            .map(|(j, c)| {
+                let what = alloc::format!("mixture[{j}]");
+                Gaussian::new(DVector::from_vec(c.mean), c.cov, &what).map(|g| (c.weight, g))
+            })
+            .collect::<Result<Vec<_>, Error>>()
+            .and_then(|components| GaussianMixture::new(components, "mixture"))
+    }
+);
+
+#[derive(Serialize, Deserialize)]
+struct TransitionRepr {
+    #[serde(with = "matrix")]
+    f: DMatrix<f64>,
+    #[serde(with = "matrix")]
+    q: DMatrix<f64>,
+}
+
+through_constructor!(
+    LinearGaussianTransition,
+    TransitionRepr,
+    |t| TransitionRepr {
+        f: t.f().clone(),
+        q: t.q().clone(),
+    },
+    |r| LinearGaussianTransition::new(r.f, r.q)
+);
+
+#[derive(Serialize, Deserialize)]
+struct LikelihoodRepr {
+    #[serde(with = "matrix")]
+    h: DMatrix<f64>,
+    #[serde(with = "matrix")]
+    r: DMatrix<f64>,
+}
+
+through_constructor!(
+    LinearGaussianLikelihood,
+    LikelihoodRepr,
+    |l| LikelihoodRepr {
+        h: l.h().clone(),
+        r: l.r().clone(),
+    },
+    |r| LinearGaussianLikelihood::new(r.h, r.r)
+);
+
+#[derive(Serialize, Deserialize)]
+struct GospaRepr {
+    c: f64,
+    p: f64,
+    alpha: f64,
+}
+
+through_constructor!(
+    Gospa,
+    GospaRepr,
+    |g| GospaRepr {
+        c: g.cutoff(),
+        p: g.order(),
+        alpha: g.alpha(),
+    },
+    |r| Gospa::new(r.c, r.p, r.alpha)
+);
+
+#[derive(Serialize, Deserialize)]
+struct OspaRepr {
+    c: f64,
+    p: f64,
+}
+
+through_constructor!(
+    Ospa,
+    OspaRepr,
+    |o| OspaRepr {
+        c: o.cutoff(),
+        p: o.order(),
+    },
+    |r| Ospa::new(r.c, r.p)
+);
+
+#[derive(Serialize, Deserialize)]
+struct CostsRepr {
+    c00: f64,
+    c01: f64,
+    c10: f64,
+    c11: f64,
+    c: f64,
+}
+
+through_constructor!(
+    Costs,
+    CostsRepr,
+    |k| CostsRepr {
+        c00: k.c00(),
+        c01: k.c01(),
+        c10: k.c10(),
+        c11: k.c11(),
+        c: k.c(),
+    },
+    |r| Costs::new(r.c00, r.c01, r.c10, r.c11, r.c)
+);
+
+#[derive(Serialize, Deserialize)]
+struct ApplicationLossRepr {
+    costs: Costs,
+    radius: f64,
+}
+
+through_constructor!(
+    ApplicationLoss,
+    ApplicationLossRepr,
+    |l| ApplicationLossRepr {
+        costs: *l.costs(),
+        radius: l.radius(),
+    },
+    |r| ApplicationLoss::new(r.costs, r.radius)
+);
+
+#[derive(Serialize, Deserialize)]
+struct AxisBoxRepr {
+    min: Vec<f64>,
+    max: Vec<f64>,
+}
+
+through_constructor!(
+    AxisBox,
+    AxisBoxRepr,
+    |b| AxisBoxRepr {
+        min: b.min().to_vec(),
+        max: b.max().to_vec(),
+    },
+    |r| AxisBox::new(&r.min, &r.max, "box")
+);
+
+#[derive(Serialize, Deserialize)]
+struct BallRepr {
+    center: Vec<f64>,
+    radius: f64,
+}
+
+through_constructor!(
+    Ball,
+    BallRepr,
+    |b| BallRepr {
+        center: b.center().to_vec(),
+        radius: b.radius(),
+    },
+    |r| Ball::new(&r.center, r.radius, "ball")
+);
+
+#[derive(Serialize, Deserialize)]
+struct PolygonRepr {
+    vertices: Vec<[f64; 2]>,
+}
+
+through_constructor!(
+    Polygon,
+    PolygonRepr,
+    |p| PolygonRepr {
+        vertices: p.vertices().to_vec(),
+    },
+    |r| Polygon::new(&r.vertices, "polygon")
+);
+
+#[derive(Serialize, Deserialize)]
+struct SplitLibraryRepr {
+    weights: Vec<f64>,
+    means: Vec<f64>,
+    sigma: f64,
+    lambda: f64,
+}
+
+through_constructor!(
+    SplitLibrary,
+    SplitLibraryRepr,
+    |l| SplitLibraryRepr {
+        weights: l.weights().to_vec(),
+        means: l.means().to_vec(),
+        sigma: l.sigma(),
+        lambda: l.lambda(),
+    },
+    |r| SplitLibrary::new(&r.weights, &r.means, r.sigma, r.lambda)
+);
+
+#[derive(Serialize, Deserialize)]
+struct MultiObjectLikelihoodRepr {
+    detection: f64,
+    clutter_rate: f64,
+}
+
+through_constructor!(
+    MultiObjectLikelihood,
+    MultiObjectLikelihoodRepr,
+    |m| MultiObjectLikelihoodRepr {
+        detection: m.detection(),
+        clutter_rate: m.clutter_rate(),
+    },
+    |r| MultiObjectLikelihood::new(r.detection, r.clutter_rate)
+);
+
+#[derive(Serialize, Deserialize)]
+struct ParticleSetRepr {
+    points: Vec<Vec<f64>>,
+    weights: Vec<f64>,
+}
+
+through_constructor!(
+    ParticleSet,
+    ParticleSetRepr,
+    |p| ParticleSetRepr {
+        points: (0..p.len()).map(|i| p.point(i).to_vec()).collect(),
+        weights: p.weights().to_vec(),
+    },
+    |r| ParticleSet::new(&r.points, Some(&r.weights))
+);
+
+#[derive(Serialize, Deserialize)]
+struct GmBernoulliRepr {
+    existence: f64,
+    mixture: GaussianMixture,
+}
+
+through_constructor!(
+    GmBernoulli,
+    GmBernoulliRepr,
+    |b| GmBernoulliRepr {
+        existence: b.existence,
+        mixture: b.mixture.clone(),
+    },
+    |r| GmBernoulli::new(r.existence, r.mixture)
+);
+
+#[derive(Serialize, Deserialize)]
+struct BirthRepr {
+    probability: f64,
+    mixture: GaussianMixture,
+}
+
+through_constructor!(
+    Birth,
+    BirthRepr,
+    |b| BirthRepr {
+        probability: b.probability,
+        mixture: b.mixture.clone(),
+    },
+    |r| Birth::new(r.probability, r.mixture)
+);
+
+#[derive(Serialize, Deserialize)]
+struct DetectionRepr {
+    probability: f64,
+    #[serde(default)]
+    fov: Option<Region>,
+}
+
+through_constructor!(
+    Detection,
+    DetectionRepr,
+    |d| DetectionRepr {
+        probability: d.probability,
+        fov: d.fov.clone(),
+    },
+    |r| Detection::new(r.probability, r.fov)
+);
+
+/// A region written as the constructor that builds it (externally tagged, snake_case).
+#[derive(Serialize)]
+#[serde(rename = "Region", rename_all = "snake_case")]
+enum RegionRef<'a> {
+    Box(&'a AxisBox),
+    Polygon(&'a Polygon),
+    Ball(&'a Ball),
+    Union(&'a [Region]),
+    Intersection(&'a [Region]),
+    Complement(&'a Region),
+}
+
+/// [`RegionRef`], owned, for reading.
+#[derive(Deserialize)]
+#[serde(rename = "Region")]
+enum RegionRepr {
+    #[serde(rename = "box")]
+    Box(AxisBox),
+    #[serde(rename = "polygon")]
+    Polygon(Polygon),
+    #[serde(rename = "ball")]
+    Ball(Ball),
+    #[serde(rename = "union")]
+    Union(Vec<Region>),
+    #[serde(rename = "intersection")]
+    Intersection(Vec<Region>),
+    #[serde(rename = "complement")]
+    Complement(Box<Region>),
+}
+
+impl Serialize for Region {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        match self.node() {
+            Node::Box(b) => RegionRef::Box(b),
+            Node::Polygon(p) => RegionRef::Polygon(p),
+            Node::Ball(b) => RegionRef::Ball(b),
+            Node::Union(m) => RegionRef::Union(m),
+            Node::Intersection(m) => RegionRef::Intersection(m),
+            Node::Complement(r) => RegionRef::Complement(r),
+        }
+        .serialize(serializer)
+    }
+}
+
+impl<'de> Deserialize<'de> for Region {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let built = match RegionRepr::deserialize(deserializer)? {
+            RegionRepr::Box(b) => Ok(Region::from(b)),
+            RegionRepr::Polygon(p) => Ok(Region::from(p)),
+            RegionRepr::Ball(b) => Ok(Region::from(b)),
+            RegionRepr::Union(m) => Region::union(m, "union"),
+            RegionRepr::Intersection(m) => Region::intersection(m, "intersection"),
+            RegionRepr::Complement(r) => Ok(Region::complement(*r)),
+        };
+        built.map_err(|e| D::Error::custom(e.to_string()))
+    }
+}
+
+/// [`Density1`] as the arguments of its constructors (Rust variant names).
+#[derive(Serialize, Deserialize)]
+#[serde(rename = "Density1")]
+enum Density1Repr {
+    Gaussian { mean: f64, variance: f64 },
+    Uniform { low: f64, high: f64 },
+    Mixture(Vec<(f64, f64, f64)>),
+    Table { x: Vec<f64>, density: Vec<f64> },
+}
+
+through_constructor!(
+    Density1,
+    Density1Repr,
+    |d| match d {
+        Density1::Gaussian { mean, variance } => Density1Repr::Gaussian {
+            mean: *mean,
+            variance: *variance,
+        },
+        Density1::Uniform { low, high } => Density1Repr::Uniform {
+            low: *low,
+            high: *high,
+        },
+        Density1::Mixture(c) => Density1Repr::Mixture(c.clone()),
+        Density1::Table { x, density, .. } => Density1Repr::Table {
+            x: x.clone(),
+            density: density.clone(),
+        },
+    },
+    |r| match r {
+        Density1Repr::Gaussian { mean, variance } => Density1::gaussian(mean, variance),
+        Density1Repr::Uniform { low, high } => Density1::uniform(low, high),
+        Density1Repr::Mixture(c) => Density1::mixture(&c),
+        Density1Repr::Table { x, density } => Density1::table(&x, &density),
+    }
+);
+
+/// [`BoundsDetection`] as the arguments of its constructors (Rust variant names).
+#[derive(Serialize, Deserialize)]
+#[serde(rename = "Detection")]
+enum BoundsDetectionRepr {
+    Constant(f64),
+    Table { x: Vec<f64>, probability: Vec<f64> },
+}
+
+through_constructor!(
+    BoundsDetection,
+    BoundsDetectionRepr,
+    |d| match d {
+        BoundsDetection::Constant(p) => BoundsDetectionRepr::Constant(*p),
+        BoundsDetection::Table { x, probability } => BoundsDetectionRepr::Table {
+            x: x.clone(),
+            probability: probability.clone(),
+        },
+    },
+    |r| match r {
+        BoundsDetectionRepr::Constant(p) => BoundsDetection::constant(p),
+        BoundsDetectionRepr::Table { x, probability } => BoundsDetection::table(&x, &probability),
+    }
+);
+
+#[derive(Serialize, Deserialize)]
+struct LinearGaussianRepr {
+    detection: BoundsDetection,
+    gain: f64,
+    offset: f64,
+    noise_variance: f64,
+}
+
+through_constructor!(
+    LinearGaussian,
+    LinearGaussianRepr,
+    |l| LinearGaussianRepr {
+        detection: l.detection.clone(),
+        gain: l.gain,
+        offset: l.offset,
+        noise_variance: l.noise_variance,
+    },
+    |r| LinearGaussian::new(r.detection, r.gain, r.offset, r.noise_variance)
+);
+
+/// [`SpatialDensity`] as the argument of its constructor (Rust variant names).
+#[derive(Serialize, Deserialize)]
+#[serde(rename = "SpatialDensity")]
+enum SpatialDensityRepr {
+    Gaussian(Gaussian),
+    Mixture(GaussianMixture),
+    Particles(ParticleSet),
+}
+
+impl Serialize for SpatialDensity {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::Error as _;
+        let repr = match (self.kind(), self.as_gaussian(), self.as_particles()) {
+            (DensityKind::Gaussian, Some(g), _) => SpatialDensityRepr::Gaussian(g.clone()),
+            (DensityKind::Particles, _, Some(p)) => SpatialDensityRepr::Particles(p.clone()),
+            _ => {
+                let components = self.mixture_components().unwrap_or_default();
+                let owned = components
+                    .into_iter()
+                    .map(|(w, g)| (w, g.clone()))
+                    .collect();
+                let mixture = GaussianMixture::new(owned, "density.mixture")
+                    .map_err(|e| S::Error::custom(e.to_string()))?;
+                SpatialDensityRepr::Mixture(mixture)
+            }
+        };
+        repr.serialize(serializer)
+    }
+}
+
+impl<'de> Deserialize<'de> for SpatialDensity {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let built = match SpatialDensityRepr::deserialize(deserializer)? {
+            SpatialDensityRepr::Gaussian(g) => SpatialDensity::gaussian(g),
+            SpatialDensityRepr::Mixture(m) => SpatialDensity::mixture(&m),
+            SpatialDensityRepr::Particles(p) => Ok(SpatialDensity::particles(p)),
+        };
+        built.map_err(|e| D::Error::custom(e.to_string()))
+    }
+}

@@ -1,0 +1,110 @@
+//! Writes the TypeScript declarations of the core's own types for the part being built.
+//!
+//! The bindings read and write the core's option and result types (serde, with the core's
+//! `serde` feature) under JavaScript names (`src/names_rule.rs`). Their TypeScript is generated
+//! here, from the core's source: every type that the part's exported functions name in an
+//! `unchecked_param_type` / `unchecked_return_type` and that the core derives serde for (with
+//! the types it holds), with its doc comments, fields in JavaScript names, `Option` and
+//! defaulted fields optional. Types the binding still declares itself (Tsify) are left out. The
+//! result is `$OUT_DIR/core_types.d.ts`, which `src/lib.rs` adds to the module's `.d.ts`; a part
+//! gets only its own names, since each part is built alone (`scripts/build-pkg.sh`).
+use std::collections::{BTreeMap, BTreeSet};
+use std::fs;
+use std::path::Path;
+
+use syn::Item;
+
+#[path = "src/names_rule.rs"]
+#[allow(dead_code)]
+mod names_rule;
+#[path = "tsgen.rs"]
+mod tsgen;
+use tsgen::{TokStr, collect};
+
+/// The identifiers in a TypeScript type text that may name a declared type.
+fn type_names(ts: &str) -> impl Iterator<Item = &str> {
+    ts.split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+        .filter(|w| w.starts_with(|c: char| c.is_ascii_uppercase()))
+}
+
+fn main() {
+    let manifest = std::env::var("CARGO_MANIFEST_DIR").unwrap();
+    let wasm_src = Path::new(&manifest).join("src");
+    let core_src = Path::new(&manifest).join("../core/src");
+    println!("cargo:rerun-if-changed={}", wasm_src.display());
+    println!("cargo:rerun-if-changed={}", core_src.display());
+    println!("cargo:rerun-if-changed=build.rs");
+
+    // the part's modules: `#[cfg(feature = "x")] mod y;` in lib.rs, for the enabled features
+    let lib = syn::parse_file(&fs::read_to_string(wasm_src.join("lib.rs")).unwrap()).unwrap();
+    let mut files = Vec::new();
+    for item in &lib.items {
+        let Item::Mod(m) = item else { continue };
+        let feature = m.attrs.iter().find_map(|a| {
+            let text = a.meta.to_token_stream_string();
+            text.strip_prefix("cfg (feature = \"")
+                .and_then(|t| t.strip_suffix("\")"))
+                .map(str::to_string)
+        });
+        let enabled = feature.is_none_or(|f| {
+            std::env::var_os(format!(
+                "CARGO_FEATURE_{}",
+                f.to_uppercase().replace('-', "_")
+            ))
+            .is_some()
+        });
+        if enabled {
+            files.push(wasm_src.join(format!("{}.rs", m.ident)));
+        }
+    }
+
+    // the names the part's functions take and return, and those the binding declares itself
+    let mut roots = BTreeSet::new();
+    let mut declared = BTreeSet::new();
+    for file in &files {
+        let text = fs::read_to_string(file).unwrap();
+        for key in ["unchecked_param_type = \"", "unchecked_return_type = \""] {
+            for piece in text.split(key).skip(1) {
+                let ts = piece.split('"').next().unwrap_or("");
+                roots.extend(type_names(ts).map(str::to_string));
+            }
+        }
+    }
+    for e in fs::read_dir(&wasm_src).unwrap() {
+        let path = e.unwrap().path();
+        if path.extension().is_some_and(|x| x == "rs") {
+            let text = fs::read_to_string(&path).unwrap();
+            let file = syn::parse_file(&text).unwrap();
+            for item in file.items {
+                match item {
+                    Item::Struct(s) => {
+                        declared.insert(s.ident.to_string());
+                    }
+                    Item::Enum(e) => {
+                        declared.insert(e.ident.to_string());
+                    }
+                    _ => {}
+                }
+            }
+            for key in ["export type ", "export interface "] {
+                for piece in text.split(key).skip(1) {
+                    declared.extend(type_names(piece).take(1).map(str::to_string));
+                }
+            }
+        }
+    }
+
+    let mut defs = BTreeMap::new();
+    collect(&core_src, &mut defs);
+    let wanted: Vec<&String> = roots
+        .iter()
+        .filter(|r| !declared.contains(*r) && defs.contains_key(*r))
+        .collect();
+
+    let (out, warnings) = tsgen::declarations(&defs, &wanted);
+    for w in warnings {
+        println!("cargo:warning=TypeScript of the core's types: {w}");
+    }
+    let out_dir = std::env::var("OUT_DIR").unwrap();
+    fs::write(Path::new(&out_dir).join("core_types.d.ts"), out).unwrap();
+}

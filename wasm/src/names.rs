@@ -1,0 +1,610 @@
+//! JavaScript names for the core's Rust names, in one place.
+//!
+//! The core's types serialise with their Rust field names (`future_scans`, `transition.f`); the
+//! JavaScript binding shows them in camelCase (`futureScans`), with the transition and
+//! measurement matrices in their papers' capitals (`F`, `Q`, `H`, `R`). [`js_name`] maps one
+//! field, [`render_path`] a whole error path, and [`Renamed`] wraps a value so that any serde
+//! `Serializer` writes its struct fields under their JavaScript names.
+
+use std::borrow::Cow;
+use std::boxed::Box;
+use std::cell::RefCell;
+use std::collections::BTreeMap;
+use std::string::String;
+
+use serde::ser::{self, Serialize, Serializer};
+
+// The rule itself (the exceptions and camelCase) is shared with `build.rs`, which writes the
+// TypeScript declarations of the core's types under the same names.
+#[path = "names_rule.rs"]
+pub(crate) mod rule;
+use rule::{EXCEPTIONS, camel_case};
+
+/// The JavaScript name of the Rust field `field` of a value held in the field `parent` (`""`
+/// at the top, either spelling: the parents of the exceptions are one word): camelCase
+/// (`future_scans` → `futureScans`) unless it is one of the matrix exceptions (`transition.f`
+/// → `F`). Each converted name is made once and kept for the life of the module (one small
+/// string per distinct Rust field name), so serde can use it as a `&'static str` key.
+pub fn js_name(parent: &str, field: &'static str) -> &'static str {
+    if let Some((_, _, js)) = EXCEPTIONS
+        .iter()
+        .find(|(p, f, _)| *p == parent && *f == field)
+    {
+        return js;
+    }
+    match camel_case(field) {
+        Cow::Borrowed(_) => field,
+        Cow::Owned(_) => INTERNED.with(|t| {
+            *t.borrow_mut()
+                .entry(field)
+                .or_insert_with(|| Box::leak(camel_case(field).into_owned().into_boxed_str()))
+        }),
+    }
+}
+
+/// An error path in Rust names (`transition.f`, `components[2].mean`, `future_scans`) in
+/// JavaScript names (`transition.F`, `components[2].mean`, `futureScans`).
+pub fn render_path(rust_path: &str) -> String {
+    let mut out = String::with_capacity(rust_path.len());
+    let mut parent = "";
+    for (i, segment) in rust_path.split('.').enumerate() {
+        if i > 0 {
+            out.push('.');
+        }
+        // `name[3][1]`: the name, then its indices as they are
+        let (name, indices) = segment.split_at(segment.find('[').unwrap_or(segment.len()));
+        out.push_str(&rule::js_name_of(parent, name));
+        out.push_str(indices);
+        parent = name;
+    }
+    out
+}
+
+thread_local! {
+    /// The camelCase names given out by [`js_name`], by Rust name.
+    static INTERNED: RefCell<BTreeMap<&'static str, &'static str>> =
+        const { RefCell::new(BTreeMap::new()) };
+}
+
+/// A value that serialises with its struct fields under their JavaScript names.
+pub struct Renamed<'a, T: ?Sized> {
+    value: &'a T,
+    parent: &'static str,
+}
+
+impl<'a, T: ?Sized> Renamed<'a, T> {
+    /// Wraps `value`, a top-level argument or result.
+    pub fn new(value: &'a T) -> Self {
+        Self { value, parent: "" }
+    }
+}
+
+impl<T: Serialize + ?Sized> Serialize for Renamed<'_, T> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.value.serialize(Rename {
+            inner: s,
+            parent: self.parent,
+        })
+    }
+}
+
+/// The serializer behind [`Renamed`]: forwards everything to `inner`, renaming struct fields
+/// and wrapping every nested value.
+struct Rename<S> {
+    inner: S,
+    parent: &'static str,
+}
+
+/// A compound serializer of `inner` whose elements are wrapped in [`Renamed`].
+struct Compound<C> {
+    inner: C,
+    parent: &'static str,
+}
+
+impl<C> Compound<C> {
+    fn wrap<'a, T: ?Sized>(&self, value: &'a T) -> Renamed<'a, T> {
+        Renamed {
+            value,
+            parent: self.parent,
+        }
+    }
+}
+
+macro_rules! forward {
+    ($($method:ident($($arg:ident: $ty:ty),*);)*) => {
+        $(fn $method(self, $($arg: $ty),*) -> Result<S::Ok, S::Error> {
+            self.inner.$method($($arg),*)
+        })*
+    };
+}
+
+impl<S: Serializer> Serializer for Rename<S> {
+    type Ok = S::Ok;
+    type Error = S::Error;
+    type SerializeSeq = Compound<S::SerializeSeq>;
+    type SerializeTuple = Compound<S::SerializeTuple>;
+    type SerializeTupleStruct = Compound<S::SerializeTupleStruct>;
+    type SerializeTupleVariant = Compound<S::SerializeTupleVariant>;
+    type SerializeMap = Compound<S::SerializeMap>;
+    type SerializeStruct = Compound<S::SerializeStruct>;
+    type SerializeStructVariant = Compound<S::SerializeStructVariant>;
+
+    forward! {
+        serialize_bool(v: bool);
+        serialize_i8(v: i8);
+        serialize_i16(v: i16);
+        serialize_i32(v: i32);
+        serialize_i64(v: i64);
+        serialize_u8(v: u8);
+        serialize_u16(v: u16);
+        serialize_u32(v: u32);
+        serialize_u64(v: u64);
+        serialize_f32(v: f32);
+        serialize_f64(v: f64);
+        serialize_char(v: char);
+        serialize_str(v: &str);
+        serialize_bytes(v: &[u8]);
+        serialize_none();
+        serialize_unit();
+        serialize_unit_struct(name: &'static str);
+        serialize_unit_variant(name: &'static str, index: u32, variant: &'static str);
+    }
+
+    fn serialize_some<T: Serialize + ?Sized>(self, value: &T) -> Result<S::Ok, S::Error> {
+        let parent = self.parent;
+        self.inner.serialize_some(&Renamed { value, parent })
+    }
+
+    fn serialize_newtype_struct<T: Serialize + ?Sized>(
+        self,
+        name: &'static str,
+        value: &T,
+    ) -> Result<S::Ok, S::Error> {
+        let parent = self.parent;
+        self.inner
+            .serialize_newtype_struct(name, &Renamed { value, parent })
+    }
+
+    fn serialize_newtype_variant<T: Serialize + ?Sized>(
+        self,
+        name: &'static str,
+        index: u32,
+        variant: &'static str,
+        value: &T,
+    ) -> Result<S::Ok, S::Error> {
+        let parent = self.parent;
+        self.inner
+            .serialize_newtype_variant(name, index, variant, &Renamed { value, parent })
+    }
+
+    fn serialize_seq(self, len: Option<usize>) -> Result<Self::SerializeSeq, S::Error> {
+        Ok(Compound {
+            inner: self.inner.serialize_seq(len)?,
+            parent: self.parent,
+        })
+    }
+
+    fn serialize_tuple(self, len: usize) -> Result<Self::SerializeTuple, S::Error> {
+        Ok(Compound {
+            inner: self.inner.serialize_tuple(len)?,
+            parent: self.parent,
+        })
+    }
+
+    fn serialize_tuple_struct(
+        self,
+        name: &'static str,
+        len: usize,
+    ) -> Result<Self::SerializeTupleStruct, S::Error> {
+        Ok(Compound {
+            inner: self.inner.serialize_tuple_struct(name, len)?,
+            parent: self.parent,
+        })
+    }
+
+    fn serialize_tuple_variant(
+        self,
+        name: &'static str,
+        index: u32,
+        variant: &'static str,
+        len: usize,
+    ) -> Result<Self::SerializeTupleVariant, S::Error> {
+        Ok(Compound {
+            inner: self
+                .inner
+                .serialize_tuple_variant(name, index, variant, len)?,
+            parent: self.parent,
+        })
+    }
+
+    fn serialize_map(self, len: Option<usize>) -> Result<Self::SerializeMap, S::Error> {
+        Ok(Compound {
+            inner: self.inner.serialize_map(len)?,
+            parent: self.parent,
+        })
+    }
+
+    fn serialize_struct(
+        self,
+        name: &'static str,
+        len: usize,
+    ) -> Result<Self::SerializeStruct, S::Error> {
+        Ok(Compound {
+            inner: self.inner.serialize_struct(name, len)?,
+            parent: self.parent,
+        })
+    }
+
+    fn serialize_struct_variant(
+        self,
+        name: &'static str,
+        index: u32,
+        variant: &'static str,
+        len: usize,
+    ) -> Result<Self::SerializeStructVariant, S::Error> {
+        Ok(Compound {
+            inner: self
+                .inner
+                .serialize_struct_variant(name, index, variant, len)?,
+            parent: self.parent,
+        })
+    }
+
+    fn is_human_readable(&self) -> bool {
+        self.inner.is_human_readable()
+    }
+}
+
+macro_rules! elements {
+    ($($trait:ident :: $method:ident;)*) => {
+        $(impl<C: ser::$trait> ser::$trait for Compound<C> {
+            type Ok = C::Ok;
+            type Error = C::Error;
+            fn $method<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), C::Error> {
+                let wrapped = self.wrap(value);
+                self.inner.$method(&wrapped)
+            }
+            fn end(self) -> Result<C::Ok, C::Error> {
+                self.inner.end()
+            }
+        })*
+    };
+}
+
+elements! {
+    SerializeSeq::serialize_element;
+    SerializeTuple::serialize_element;
+    SerializeTupleStruct::serialize_field;
+    SerializeTupleVariant::serialize_field;
+}
+
+impl<C: ser::SerializeMap> ser::SerializeMap for Compound<C> {
+    type Ok = C::Ok;
+    type Error = C::Error;
+    fn serialize_key<T: Serialize + ?Sized>(&mut self, key: &T) -> Result<(), C::Error> {
+        self.inner.serialize_key(key)
+    }
+    fn serialize_value<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), C::Error> {
+        let wrapped = self.wrap(value);
+        self.inner.serialize_value(&wrapped)
+    }
+    fn end(self) -> Result<C::Ok, C::Error> {
+        self.inner.end()
+    }
+}
+
+macro_rules! fields {
+    ($($trait:ident;)*) => {
+        $(impl<C: ser::$trait> ser::$trait for Compound<C> {
+            type Ok = C::Ok;
+            type Error = C::Error;
+            fn serialize_field<T: Serialize + ?Sized>(
+                &mut self,
+                key: &'static str,
+                value: &T,
+            ) -> Result<(), C::Error> {
+                let js = js_name(self.parent, key);
+                self.inner.serialize_field(js, &Renamed { value, parent: key })
+            }
+            fn skip_field(&mut self, key: &'static str) -> Result<(), C::Error> {
+                self.inner.skip_field(js_name(self.parent, key))
+            }
+            fn end(self) -> Result<C::Ok, C::Error> {
+                self.inner.end()
+            }
+        })*
+    };
+}
+
+fields! {
+    SerializeStruct;
+    SerializeStructVariant;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::string::ToString;
+    use std::vec;
+    use std::vec::Vec;
+
+    #[test]
+    fn js_name_camel_cases_and_keeps_the_matrix_capitals() {
+        assert_eq!(js_name("", "future_scans"), "futureScans");
+        assert_eq!(js_name("", "alpha"), "alpha");
+        assert_eq!(js_name("", "detection_probability"), "detectionProbability");
+        assert_eq!(js_name("transition", "f"), "F");
+        assert_eq!(js_name("likelihood", "r"), "R");
+        // `r` elsewhere is just `r`
+        assert_eq!(js_name("", "r"), "r");
+        assert_eq!(js_name("options", "r"), "r");
+    }
+
+    #[test]
+    fn render_path_renames_each_segment_and_keeps_indices() {
+        assert_eq!(render_path("future_scans"), "futureScans");
+        assert_eq!(render_path("transition.f"), "transition.F");
+        assert_eq!(
+            render_path("mixture[2].mean_vector[1]"),
+            "mixture[2].meanVector[1]"
+        );
+        assert_eq!(render_path("likelihood.r[0][1]"), "likelihood.R[0][1]");
+        assert_eq!(render_path(""), "");
+    }
+
+    #[derive(serde::Serialize)]
+    struct Transition {
+        f: Vec<f64>,
+        q: f64,
+        survival_probability: f64,
+    }
+
+    #[derive(serde::Serialize)]
+    struct Config {
+        transition: Transition,
+        future_scans: Option<usize>,
+        per_step: Vec<Step>,
+        kind: Kind,
+    }
+
+    #[derive(serde::Serialize)]
+    struct Step {
+        mean_distance: f64,
+    }
+
+    #[derive(serde::Serialize)]
+    enum Kind {
+        Particle { sample_count: usize },
+    }
+
+    /// The keys a value writes, in order (the quoted parts of its text).
+    fn keys(value: &impl Serialize) -> String {
+        let text = json(value);
+        let keys: Vec<&str> = text.split('"').skip(1).step_by(2).collect();
+        keys.join(",")
+    }
+
+    /// `value` as text, through the renaming wrapper around a minimal serializer.
+    fn json(value: &impl Serialize) -> String {
+        let mut out = String::new();
+        Renamed::new(value).serialize(&mut Text(&mut out)).unwrap();
+        out
+    }
+
+    /// A minimal text serializer (keys quoted, numbers bare), enough to see the keys.
+    struct Text<'a>(&'a mut String);
+
+    #[derive(Debug)]
+    struct TextError;
+    impl std::fmt::Display for TextError {
+        fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+            f.write_str("text error")
+        }
+    }
+    impl std::error::Error for TextError {}
+    impl ser::Error for TextError {
+        fn custom<T: std::fmt::Display>(_: T) -> Self {
+            TextError
+        }
+    }
+
+    macro_rules! text_number {
+        ($($m:ident: $t:ty),*) => {
+            $(fn $m(self, v: $t) -> Result<(), TextError> {
+                self.0.push_str(&v.to_string());
+                Ok(())
+            })*
+        };
+    }
+
+    impl<'a, 'b> Serializer for &'b mut Text<'a> {
+        type Ok = ();
+        type Error = TextError;
+        type SerializeSeq = Self;
+        type SerializeTuple = Self;
+        type SerializeTupleStruct = Self;
+        type SerializeTupleVariant = Self;
+        type SerializeMap = Self;
+        type SerializeStruct = Self;
+        type SerializeStructVariant = Self;
+        text_number!(serialize_bool: bool, serialize_i8: i8, serialize_i16: i16,
+            serialize_i32: i32, serialize_i64: i64, serialize_u8: u8, serialize_u16: u16,
+            serialize_u32: u32, serialize_u64: u64, serialize_f32: f32, serialize_f64: f64,
+            serialize_char: char);
+        fn serialize_str(self, v: &str) -> Result<(), TextError> {
+            self.0.push_str(&std::format!("'{v}'"));
+            Ok(())
+        }
+        fn serialize_bytes(self, _: &[u8]) -> Result<(), TextError> {
+            Err(TextError)
+        }
+        fn serialize_none(self) -> Result<(), TextError> {
+            self.0.push_str("null");
+            Ok(())
+        }
+        fn serialize_some<T: Serialize + ?Sized>(self, v: &T) -> Result<(), TextError> {
+            v.serialize(self)
+        }
+        fn serialize_unit(self) -> Result<(), TextError> {
+            self.serialize_none()
+        }
+        fn serialize_unit_struct(self, _: &'static str) -> Result<(), TextError> {
+            self.serialize_none()
+        }
+        fn serialize_unit_variant(
+            self,
+            _: &'static str,
+            _: u32,
+            v: &'static str,
+        ) -> Result<(), TextError> {
+            self.serialize_str(v)
+        }
+        fn serialize_newtype_struct<T: Serialize + ?Sized>(
+            self,
+            _: &'static str,
+            v: &T,
+        ) -> Result<(), TextError> {
+            v.serialize(self)
+        }
+        fn serialize_newtype_variant<T: Serialize + ?Sized>(
+            self,
+            _: &'static str,
+            _: u32,
+            k: &'static str,
+            v: &T,
+        ) -> Result<(), TextError> {
+            self.0.push_str(&std::format!("{{\"{k}\":"));
+            v.serialize(&mut *self)?;
+            self.0.push('}');
+            Ok(())
+        }
+        fn serialize_seq(self, _: Option<usize>) -> Result<Self, TextError> {
+            self.0.push('[');
+            Ok(self)
+        }
+        fn serialize_tuple(self, _: usize) -> Result<Self, TextError> {
+            self.serialize_seq(None)
+        }
+        fn serialize_tuple_struct(self, _: &'static str, _: usize) -> Result<Self, TextError> {
+            self.serialize_seq(None)
+        }
+        fn serialize_tuple_variant(
+            self,
+            _: &'static str,
+            _: u32,
+            _: &'static str,
+            _: usize,
+        ) -> Result<Self, TextError> {
+            self.serialize_seq(None)
+        }
+        fn serialize_map(self, _: Option<usize>) -> Result<Self, TextError> {
+            self.0.push('{');
+            Ok(self)
+        }
+        fn serialize_struct(self, _: &'static str, _: usize) -> Result<Self, TextError> {
+            self.serialize_map(None)
+        }
+        fn serialize_struct_variant(
+            self,
+            _: &'static str,
+            _: u32,
+            k: &'static str,
+            _: usize,
+        ) -> Result<Self, TextError> {
+            self.0.push_str(&std::format!("{{\"{k}\":{{"));
+            Ok(self)
+        }
+    }
+
+    macro_rules! text_seq {
+        ($($trait:ident::$m:ident),*) => {
+            $(impl ser::$trait for &mut Text<'_> {
+                type Ok = ();
+                type Error = TextError;
+                fn $m<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), TextError> {
+                    v.serialize(&mut **self)?;
+                    self.0.push(',');
+                    Ok(())
+                }
+                fn end(self) -> Result<(), TextError> {
+                    self.0.push(']');
+                    Ok(())
+                }
+            })*
+        };
+    }
+    text_seq!(
+        SerializeSeq::serialize_element,
+        SerializeTuple::serialize_element,
+        SerializeTupleStruct::serialize_field,
+        SerializeTupleVariant::serialize_field
+    );
+
+    impl ser::SerializeMap for &mut Text<'_> {
+        type Ok = ();
+        type Error = TextError;
+        fn serialize_key<T: Serialize + ?Sized>(&mut self, k: &T) -> Result<(), TextError> {
+            k.serialize(&mut **self)?;
+            self.0.push(':');
+            Ok(())
+        }
+        fn serialize_value<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), TextError> {
+            v.serialize(&mut **self)?;
+            self.0.push(',');
+            Ok(())
+        }
+        fn end(self) -> Result<(), TextError> {
+            self.0.push('}');
+            Ok(())
+        }
+    }
+
+    macro_rules! text_struct {
+        ($($trait:ident => $close:expr),*) => {
+            $(impl ser::$trait for &mut Text<'_> {
+                type Ok = ();
+                type Error = TextError;
+                fn serialize_field<T: Serialize + ?Sized>(
+                    &mut self,
+                    k: &'static str,
+                    v: &T,
+                ) -> Result<(), TextError> {
+                    self.0.push_str(&std::format!("\"{k}\":"));
+                    v.serialize(&mut **self)?;
+                    self.0.push(',');
+                    Ok(())
+                }
+                fn end(self) -> Result<(), TextError> {
+                    self.0.push_str($close);
+                    Ok(())
+                }
+            })*
+        };
+    }
+    text_struct!(SerializeStruct => "}", SerializeStructVariant => "}}");
+
+    #[test]
+    fn renamed_writes_every_nested_field_in_javascript_names() {
+        let c = Config {
+            transition: Transition {
+                f: vec![1.0],
+                q: 0.5,
+                survival_probability: 0.99,
+            },
+            future_scans: Some(3),
+            per_step: vec![Step { mean_distance: 1.5 }],
+            kind: Kind::Particle { sample_count: 10 },
+        };
+        assert_eq!(
+            keys(&c),
+            "transition,F,Q,survivalProbability,futureScans,perStep,meanDistance,kind,Particle,sampleCount"
+        );
+        // the values pass through unchanged
+        assert!(json(&c).contains("\"survivalProbability\":0.99,"));
+        // a name is converted once: the same string on every call
+        assert!(core::ptr::eq(
+            js_name("", "future_scans"),
+            js_name("x", "future_scans")
+        ));
+    }
+}

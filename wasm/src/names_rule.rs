@@ -1,0 +1,46 @@
+//! The naming rule, without dependencies: used by [`super`] and by `wasm/build.rs` (which
+//! includes this file), so the TypeScript declarations and the values agree.
+
+use std::borrow::Cow;
+use std::string::String;
+
+/// Fields whose JavaScript name is not their camelCase: `(parent field, Rust field, JS name)`.
+/// The matrices of a linear-Gaussian transition and measurement model keep the papers' capitals.
+pub const EXCEPTIONS: &[(&str, &str, &str)] = &[
+    ("transition", "f", "F"),
+    ("transition", "q", "Q"),
+    ("likelihood", "h", "H"),
+    ("likelihood", "r", "R"),
+];
+
+/// The JavaScript name of a Rust name that is not one of the exceptions: camelCase
+/// (`future_scans` → `futureScans`); a name without an underscore comes back borrowed.
+pub fn camel_case(field: &str) -> Cow<'_, str> {
+    if !field.contains('_') {
+        return Cow::Borrowed(field);
+    }
+    let mut out = String::with_capacity(field.len());
+    let mut upper = false;
+    for c in field.chars() {
+        if c == '_' {
+            upper = !out.is_empty();
+        } else if upper {
+            out.extend(c.to_uppercase());
+            upper = false;
+        } else {
+            out.push(c);
+        }
+    }
+    Cow::Owned(out)
+}
+
+/// The JavaScript name of `field` held in `parent`, as text (the exceptions, else camelCase).
+pub fn js_name_of(parent: &str, field: &str) -> String {
+    match EXCEPTIONS
+        .iter()
+        .find(|(p, f, _)| *p == parent && *f == field)
+    {
+        Some((_, _, js)) => String::from(*js),
+        None => camel_case(field).into_owned(),
+    }
+}

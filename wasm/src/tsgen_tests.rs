@@ -1,0 +1,94 @@
+//! Tests of the TypeScript generator of `build.rs` (`wasm/tsgen.rs`), on Rust source written
+//! here: what a core type's declaration looks like in JavaScript names.
+
+use crate::names::rule as names_rule;
+#[path = "../tsgen.rs"]
+#[allow(dead_code)]
+mod tsgen;
+
+use std::collections::BTreeMap;
+use std::string::{String, ToString};
+
+const SOURCE: &str = r#"
+/// Options of a filter.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct FilterOptions {
+    /// The cut-off [`Gospa`] uses, c > 0.
+    pub c: f64,
+    /// The order (default 2).
+    #[cfg_attr(feature = "serde", serde(default = "FilterOptions::default_p"))]
+    pub p: f64,
+    /// Scans ahead.
+    pub future_scans: Option<usize>,
+    pub transition: Transition,
+    pub pairs: Vec<(usize, usize)>,
+    pub shape: Shape,
+}
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Transition {
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::matrix"))]
+    pub f: DMatrix<f64>,
+    pub survival_probability: f64,
+}
+/// A region.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize), serde(rename_all = "camelCase"))]
+pub enum Shape {
+    BoxRegion { min: Vec<f64>, max_corner: Vec<f64> },
+    Disc(f64),
+    Everywhere,
+}
+pub struct NotSerde { pub x: f64 }
+"#;
+
+fn declarations(roots: &[&str]) -> (String, std::vec::Vec<String>) {
+    let mut defs = BTreeMap::new();
+    tsgen::walk(syn::parse_file(SOURCE).unwrap().items, &mut defs);
+    let roots: std::vec::Vec<String> = roots.iter().map(|r| r.to_string()).collect();
+    let refs: std::vec::Vec<&String> = roots.iter().collect();
+    tsgen::declarations(&defs, &refs)
+}
+
+#[test]
+fn a_struct_is_an_interface_in_javascript_names_with_its_docs() {
+    let (ts, warnings) = declarations(&["FilterOptions"]);
+    assert!(warnings.is_empty(), "{warnings:?}");
+    for expected in [
+        "/**\n * Options of a filter.\n */\nexport interface FilterOptions {",
+        "     * The cut-off `Gospa` uses, c > 0.\n",
+        "    c: number;",
+        "    p?: number;",
+        "    futureScans?: number;",
+        "    transition: Transition;",
+        "    pairs: [number, number][];",
+        "export interface Transition {",
+        // the matrix keeps its capital under `transition`, and is rows of numbers
+        "    F: number[][];",
+        "    survivalProbability: number;",
+        "    | { boxRegion: {",
+        "        maxCorner: number[];",
+        "    | { disc: number }",
+        "    | \"everywhere\";",
+    ] {
+        assert!(ts.contains(expected), "missing {expected:?} in\n{ts}");
+    }
+}
+
+#[test]
+fn only_the_roots_and_what_they_hold_are_declared() {
+    let (ts, _) = declarations(&["Shape"]);
+    assert!(ts.contains("export type Shape ="));
+    assert!(!ts.contains("FilterOptions"));
+    assert!(!ts.contains("Transition"));
+    assert!(!ts.contains("NotSerde"));
+}
+
+#[test]
+fn a_type_that_is_not_a_serde_type_is_a_warning_not_a_guess() {
+    let source = "#[cfg_attr(feature = \"serde\", derive(serde::Serialize))] pub struct A { pub b: NotSerde }";
+    let mut defs = BTreeMap::new();
+    tsgen::walk(syn::parse_file(source).unwrap().items, &mut defs);
+    let root = "A".to_string();
+    let (ts, warnings) = tsgen::declarations(&defs, &[&root]);
+    assert!(ts.contains("b: unknown;"));
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+}

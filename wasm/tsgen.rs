@@ -1,0 +1,479 @@
+//! The TypeScript generator of `build.rs` (see there): reads Rust source with `syn` and writes
+//! declarations of the serde types in JavaScript names. Tested in `src/tsgen_tests.rs`.
+
+use std::collections::{BTreeMap, BTreeSet, VecDeque};
+use std::fs;
+use std::path::Path;
+
+use syn::punctuated::Punctuated;
+
+use super::names_rule;
+use syn::{Attribute, Expr, Fields, GenericArgument, Item, Lit, Meta, PathArguments, Token, Type};
+
+#[derive(Default, Debug, Clone)]
+pub struct Serde {
+    derive: bool,
+    default: bool,
+    rename: Option<String>,
+    rename_all: Option<String>,
+    optional_out: bool,
+    with: Option<String>,
+    try_from: Option<String>,
+    tag: Option<String>,
+    untagged: bool,
+    transparent: bool,
+}
+
+fn lit_str(e: &Expr) -> Option<String> {
+    if let Expr::Lit(l) = e
+        && let Lit::Str(s) = &l.lit
+    {
+        return Some(s.value());
+    }
+    None
+}
+
+fn read_serde_list(list: &syn::MetaList, s: &mut Serde) {
+    let Ok(items) = list.parse_args_with(Punctuated::<Meta, Token![,]>::parse_terminated) else {
+        return;
+    };
+    for m in items {
+        let name = m
+            .path()
+            .get_ident()
+            .map(|i| i.to_string())
+            .unwrap_or_default();
+        match (&*name, &m) {
+            ("default", _) => s.default = true,
+            ("untagged", _) => s.untagged = true,
+            ("transparent", _) => s.transparent = true,
+            ("rename", Meta::NameValue(nv)) => s.rename = lit_str(&nv.value),
+            ("rename_all", Meta::NameValue(nv)) => s.rename_all = lit_str(&nv.value),
+            ("skip_serializing_if", _) => s.optional_out = true,
+            ("with" | "serialize_with" | "deserialize_with", Meta::NameValue(nv)) => {
+                s.with = lit_str(&nv.value)
+            }
+            ("try_from" | "from", Meta::NameValue(nv)) => s.try_from = lit_str(&nv.value),
+            ("tag", Meta::NameValue(nv)) => s.tag = lit_str(&nv.value),
+            _ => {}
+        }
+    }
+}
+
+pub fn serde_of(attrs: &[Attribute]) -> Serde {
+    let mut s = Serde::default();
+    for a in attrs {
+        if a.path().is_ident("serde") {
+            if let Meta::List(l) = &a.meta {
+                read_serde_list(l, &mut s);
+            }
+        } else if a.path().is_ident("derive") {
+            if a.meta.to_token_stream_string().contains("Serialize")
+                || a.meta.to_token_stream_string().contains("Deserialize")
+            {
+                s.derive = true;
+            }
+        } else if a.path().is_ident("cfg_attr") {
+            let Ok(items) = a.parse_args_with(Punctuated::<Meta, Token![,]>::parse_terminated)
+            else {
+                continue;
+            };
+            let mut it = items.iter();
+            let cond = it
+                .next()
+                .map(|m| m.to_token_stream_string())
+                .unwrap_or_default();
+            if !cond.contains("serde") {
+                continue;
+            }
+            for m in it {
+                if let Meta::List(l) = m {
+                    if l.path.is_ident("serde") {
+                        read_serde_list(l, &mut s);
+                    } else if l.path.is_ident("derive") {
+                        let t = l.tokens.to_string();
+                        if t.contains("Serialize") || t.contains("Deserialize") {
+                            s.derive = true;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    s
+}
+
+pub trait TokStr {
+    fn to_token_stream_string(&self) -> String;
+}
+impl<T: quote::ToTokens> TokStr for T {
+    fn to_token_stream_string(&self) -> String {
+        self.to_token_stream().to_string()
+    }
+}
+
+fn docs(attrs: &[Attribute]) -> Vec<String> {
+    attrs
+        .iter()
+        .filter(|a| a.path().is_ident("doc"))
+        .filter_map(|a| match &a.meta {
+            Meta::NameValue(nv) => lit_str(&nv.value),
+            _ => None,
+        })
+        .map(|s| strip_links(s.strip_prefix(' ').unwrap_or(&s)))
+        .collect()
+}
+
+/// Rustdoc's intra-doc links as plain code: "[`X`]" and "[`x`](path)" become "`X`", "`x`".
+fn strip_links(line: &str) -> String {
+    let mut out = String::with_capacity(line.len());
+    let mut rest = line;
+    while let Some(start) = rest.find("[`") {
+        let Some(end) = rest[start..].find("`]").map(|e| start + e) else {
+            break;
+        };
+        out.push_str(&rest[..start]);
+        out.push_str(&rest[start + 1..=end]);
+        rest = &rest[end + 2..];
+        // a link target in parentheses goes too
+        if rest.starts_with('(')
+            && let Some(close) = rest.find(')')
+        {
+            rest = &rest[close + 1..];
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+pub struct Def {
+    item: Item,
+}
+
+pub fn collect(dir: &Path, out: &mut BTreeMap<String, Def>) {
+    for e in fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            collect(&p, out);
+        } else if p.extension().is_some_and(|x| x == "rs") {
+            let f = syn::parse_file(&fs::read_to_string(&p).unwrap()).unwrap();
+            walk(f.items, out);
+        }
+    }
+}
+
+pub fn walk(items: Vec<Item>, out: &mut BTreeMap<String, Def>) {
+    for it in items {
+        match &it {
+            Item::Struct(s) if serde_of(&s.attrs).derive => {
+                out.insert(s.ident.to_string(), Def { item: it.clone() });
+            }
+            Item::Enum(e) if serde_of(&e.attrs).derive => {
+                out.insert(e.ident.to_string(), Def { item: it.clone() });
+            }
+            Item::Mod(m) => {
+                if let Some((_, inner)) = &m.content {
+                    walk(inner.clone(), out);
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+fn rename_variant(v: &str, rule: Option<&str>) -> String {
+    match rule {
+        Some("lowercase") => v.to_lowercase(),
+        Some("camelCase") => {
+            let mut c = v.chars();
+            c.next()
+                .map(|f| f.to_lowercase().collect::<String>() + c.as_str())
+                .unwrap_or_default()
+        }
+        Some("snake_case") => {
+            let mut s = String::new();
+            for (i, ch) in v.chars().enumerate() {
+                if ch.is_uppercase() && i > 0 {
+                    s.push('_');
+                }
+                s.extend(ch.to_lowercase());
+            }
+            s
+        }
+        _ => v.to_string(),
+    }
+}
+
+pub struct Gen<'a> {
+    pub defs: &'a BTreeMap<String, Def>,
+    pub queue: VecDeque<String>,
+    pub seen: BTreeSet<String>,
+    pub warnings: Vec<String>,
+    /// The field being typed (the parent of the types it names).
+    pub holder: String,
+    /// The fields each type is held in, which decide its fields' JavaScript names.
+    pub parents: BTreeMap<String, BTreeSet<String>>,
+}
+
+impl Gen<'_> {
+    pub fn want(&mut self, name: &str) {
+        self.parents
+            .entry(name.to_string())
+            .or_default()
+            .insert(self.holder.clone());
+        if self.seen.insert(name.to_string()) {
+            self.queue.push_back(name.to_string());
+        }
+    }
+
+    /// The JavaScript name of the field `field` of the type `owner`.
+    fn field_name(&self, owner: &str, field: &str) -> String {
+        let parents = self.parents.get(owner).cloned().unwrap_or_default();
+        parents
+            .iter()
+            .map(|p| names_rule::js_name_of(p, field))
+            .find(|js| *js != names_rule::camel_case(field))
+            .unwrap_or_else(|| names_rule::camel_case(field).into_owned())
+    }
+
+    fn ty(&mut self, t: &Type, with: Option<&str>) -> String {
+        if let Some(w) = with {
+            let last = w.rsplit("::").next().unwrap_or(w);
+            return match last {
+                "matrix" => "number[][]".into(),
+                "vector" => "number[] | Float64Array".into(),
+                other => {
+                    self.warnings.push(format!("unknown `with` module {other}"));
+                    "unknown".into()
+                }
+            };
+        }
+        match t {
+            Type::Reference(r) => self.ty(&r.elem, None),
+            Type::Array(a) => format!("{}[]", self.ty_paren(&a.elem)),
+            Type::Slice(a) => format!("{}[]", self.ty_paren(&a.elem)),
+            Type::Tuple(tp) => {
+                let parts: Vec<String> = tp.elems.iter().map(|e| self.ty(e, None)).collect();
+                format!("[{}]", parts.join(", "))
+            }
+            Type::Path(p) => {
+                let seg = p.path.segments.last().unwrap();
+                let name = seg.ident.to_string();
+                let args: Vec<Type> = match &seg.arguments {
+                    PathArguments::AngleBracketed(a) => a
+                        .args
+                        .iter()
+                        .filter_map(|g| {
+                            if let GenericArgument::Type(t) = g {
+                                Some(t.clone())
+                            } else {
+                                None
+                            }
+                        })
+                        .collect(),
+                    _ => vec![],
+                };
+                match &*name {
+                    "f64" | "f32" | "usize" | "u8" | "u16" | "u32" | "u64" | "i8" | "i16"
+                    | "i32" | "i64" | "isize" => "number".into(),
+                    "bool" => "boolean".into(),
+                    "String" | "str" => "string".into(),
+                    "Vec" | "VecDeque" | "Box" if !args.is_empty() => {
+                        if name == "Box" {
+                            self.ty(&args[0], None)
+                        } else {
+                            format!("{}[]", self.ty_paren(&args[0]))
+                        }
+                    }
+                    "Option" => format!("{} | undefined", self.ty(&args[0], None)),
+                    "ScalarOr" => {
+                        let inner = self.ty_paren(&args[0]);
+                        format!("{inner} | {inner}[]")
+                    }
+                    _ => {
+                        if self.defs.contains_key(&name) {
+                            self.want(&name);
+                            name
+                        } else {
+                            self.warnings
+                                .push(format!("type {name} is not a serde type of the core"));
+                            "unknown".into()
+                        }
+                    }
+                }
+            }
+            other => {
+                self.warnings.push(format!(
+                    "unsupported type {}",
+                    other.to_token_stream_string()
+                ));
+                "unknown".into()
+            }
+        }
+    }
+
+    fn ty_paren(&mut self, t: &Type) -> String {
+        let s = self.ty(t, None);
+        if s.contains(" | ") || s.contains(" & ") {
+            format!("({s})")
+        } else {
+            s
+        }
+    }
+
+    fn doc_block(lines: &[String], indent: &str) -> String {
+        if lines.is_empty() {
+            return String::new();
+        }
+        let mut s = format!("{indent}/**\n");
+        for l in lines {
+            s += &format!("{indent} * {}\n", l.replace("*/", "*\\/")).replace(" * \n", " *\n");
+        }
+        s + &format!("{indent} */\n")
+    }
+
+    fn fields(&mut self, owner: &str, fields: &Fields, container: &Serde, indent: &str) -> String {
+        let mut s = String::new();
+        for f in fields.iter() {
+            let fs = serde_of(&f.attrs);
+            let rust = f.ident.as_ref().unwrap().to_string();
+            let js = fs
+                .rename
+                .clone()
+                .unwrap_or_else(|| self.field_name(owner, &rust));
+            self.holder = rust.clone();
+            let (ty, opt) = match &f.ty {
+                Type::Path(p) if p.path.segments.last().unwrap().ident == "Option" => {
+                    let PathArguments::AngleBracketed(a) =
+                        &p.path.segments.last().unwrap().arguments
+                    else {
+                        unreachable!()
+                    };
+                    let GenericArgument::Type(inner) = &a.args[0] else {
+                        unreachable!()
+                    };
+                    (self.ty(inner, fs.with.as_deref()), true)
+                }
+                t => (
+                    self.ty(t, fs.with.as_deref()),
+                    fs.default || container.default || fs.optional_out,
+                ),
+            };
+            s += &Self::doc_block(&docs(&f.attrs), indent);
+            s += &format!("{indent}{js}{}: {ty};\n", if opt { "?" } else { "" });
+        }
+        s
+    }
+
+    pub fn emit(&mut self, name: &str) -> String {
+        let def = &self.defs[name];
+        let item = def.item.clone();
+        match item {
+            Item::Struct(st) => {
+                let c = serde_of(&st.attrs);
+                if let Some(repr) = &c.try_from {
+                    let repr_ty: Type = syn::parse_str(repr).unwrap();
+                    let inner = self.ty(&repr_ty, None);
+                    return format!(
+                        "{}export type {name} = {inner};\n",
+                        Self::doc_block(&docs(&st.attrs), "")
+                    );
+                }
+                match &st.fields {
+                    Fields::Named(_) => {
+                        let body = self.fields(name, &st.fields, &c, "    ");
+                        format!(
+                            "{}export interface {name} {{\n{body}}}\n",
+                            Self::doc_block(&docs(&st.attrs), "")
+                        )
+                    }
+                    Fields::Unnamed(u) => {
+                        let parts: Vec<String> =
+                            u.unnamed.iter().map(|f| self.ty(&f.ty, None)).collect();
+                        let t = if parts.len() == 1 {
+                            parts[0].clone()
+                        } else {
+                            format!("[{}]", parts.join(", "))
+                        };
+                        format!(
+                            "{}export type {name} = {t};\n",
+                            Self::doc_block(&docs(&st.attrs), "")
+                        )
+                    }
+                    Fields::Unit => format!("export type {name} = null;\n"),
+                }
+            }
+            Item::Enum(en) => {
+                let c = serde_of(&en.attrs);
+                let mut alts = Vec::new();
+                for v in &en.variants {
+                    let vs = serde_of(&v.attrs);
+                    let tag = vs.rename.clone().unwrap_or_else(|| {
+                        rename_variant(&v.ident.to_string(), c.rename_all.as_deref())
+                    });
+                    let doc = docs(&v.attrs);
+                    let body = match &v.fields {
+                        Fields::Unit => None,
+                        Fields::Unnamed(u) if u.unnamed.len() == 1 => {
+                            Some(self.ty(&u.unnamed[0].ty, vs.with.as_deref()))
+                        }
+                        Fields::Unnamed(u) => {
+                            let parts: Vec<String> =
+                                u.unnamed.iter().map(|f| self.ty(&f.ty, None)).collect();
+                            Some(format!("[{}]", parts.join(", ")))
+                        }
+                        Fields::Named(_) => Some(format!(
+                            "{{\n{}    }}",
+                            self.fields(name, &v.fields, &Serde::default(), "        ")
+                        )),
+                    };
+                    let alt = match (body, c.untagged, &c.tag) {
+                        (None, _, None) => format!("\"{tag}\""),
+                        (None, _, Some(t)) => format!("{{ {t}: \"{tag}\" }}"),
+                        (Some(b), true, _) => b,
+                        (Some(b), false, Some(t)) => format!("({{ {t}: \"{tag}\" }} & {b})"),
+                        (Some(b), false, None) => format!("{{ {tag}: {b} }}"),
+                    };
+                    alts.push(format!("{}    | {alt}", Self::doc_block(&doc, "    ")));
+                }
+                format!(
+                    "{}export type {name} =\n{};\n",
+                    Self::doc_block(&docs(&en.attrs), ""),
+                    alts.join("\n")
+                )
+            }
+            _ => unreachable!(),
+        }
+    }
+}
+
+/// The declarations of `roots` (names of serde types in `defs`) and of every type they hold,
+/// with the warnings (types it could not render, written `unknown`).
+pub fn declarations(defs: &BTreeMap<String, Def>, roots: &[&String]) -> (String, Vec<String>) {
+    // twice: the first pass learns which fields hold each type (their names decide the
+    // JavaScript names of the matrix fields), the second writes
+    let mut parents = BTreeMap::new();
+    let mut out = String::new();
+    let mut warnings = Vec::new();
+    for _ in 0..2 {
+        let mut g = Gen {
+            defs,
+            queue: VecDeque::new(),
+            seen: BTreeSet::new(),
+            warnings: vec![],
+            holder: String::new(),
+            parents: std::mem::take(&mut parents),
+        };
+        for r in roots {
+            g.want(r);
+        }
+        out.clear();
+        while let Some(n) = g.queue.pop_front() {
+            out += &g.emit(&n);
+            out.push('\n');
+        }
+        parents = g.parents;
+        warnings = g.warnings;
+    }
+    (out, warnings)
+}
