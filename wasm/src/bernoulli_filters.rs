@@ -22,44 +22,27 @@ use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
     self as core_filters, BernoulliFilterConfig as CoreConfig, Birth, Clutter, ClutterDensity,
     Detection, EstimateOptions, FilterEstimate, GmBernoulli, LinearGaussianLikelihood,
-    LinearGaussianTransition, PredictConfig, Splitting, UpdateConfig,
+    LinearGaussianTransition, PredictConfig, Splitting, UpdateConfig, UpdateInfo,
 };
 use fisst::mixture::ReductionOptions;
 use fisst::regions::Region as CoreRegion;
 use fisst::splitting::{Spacing, SplitLibrary, SplitOptions};
 
-fn two() -> usize {
-    2
-}
+/// p_S when omitted.
 fn survival() -> f64 {
-    0.99
+    core_filters::DEFAULT_SURVIVAL
 }
-fn four() -> usize {
-    4
+/// n_s when omitted.
+fn position_dims() -> usize {
+    core_filters::DEFAULT_POSITION_DIMS
 }
-fn lambda() -> f64 {
-    0.001
-}
-fn min_weight() -> f64 {
-    0.01
-}
-fn grid_bound() -> f64 {
-    2.0
-}
-fn grid_points() -> usize {
-    15
-}
-fn max_depth() -> usize {
-    16
-}
-fn max_split() -> usize {
-    10_000
-}
+/// N when omitted.
 fn particles() -> usize {
-    5000
+    core_filters::ParticleOptions::default().particles
 }
-fn one() -> usize {
-    1
+/// MCMC moves when omitted.
+fn mcmc_moves() -> usize {
+    core_filters::ParticleOptions::default().mcmc_moves
 }
 
 /// The linear-Gaussian transition N(x; F x′, Q) (eq. (44)): F and Q as n rows of n numbers
@@ -88,16 +71,16 @@ fn square(rows: &[Vec<f64>], path: &str) -> JsResult<(Vec<f64>, usize)> {
 }
 
 impl Transition {
-    fn into_core(self, path: &str) -> JsResult<LinearGaussianTransition> {
+    /// The transition of the argument `root` (the core names its errors `transition.F`, …).
+    fn into_core(self, root: &str) -> JsResult<LinearGaussianTransition> {
         if self.f.len() > 64 {
             return Err(range_error(format!(
-                "{path}.F: at most 64 states are supported"
+                "{root}.transition.F: at most 64 states are supported"
             )));
         }
-        let (f, _) = square(&self.f, &format!("{path}.F"))?;
-        let (q, _) = square(&self.q, &format!("{path}.Q"))?;
-        LinearGaussianTransition::from_row_slices(&f, &q)
-            .or_throw_in(path.trim_end_matches(".transition"))
+        let (f, _) = square(&self.f, &format!("{root}.transition.F"))?;
+        let (q, _) = square(&self.q, &format!("{root}.transition.Q"))?;
+        LinearGaussianTransition::from_row_slices(&f, &q).or_throw_in(root)
     }
 }
 
@@ -188,7 +171,9 @@ pub struct LikelihoodOptions {
 }
 
 impl LikelihoodOptions {
-    fn into_core(self, path: &str) -> JsResult<LinearGaussianLikelihood> {
+    /// The likelihood of the argument `root` (the core names its errors `likelihood.H`, …).
+    fn into_core(self, root: &str) -> JsResult<LinearGaussianLikelihood> {
+        let path = format!("{root}.likelihood");
         let m = self.h.len();
         if m == 0 || m > 64 {
             return Err(range_error(format!(
@@ -205,47 +190,51 @@ impl LikelihoodOptions {
             }
         }
         let (r, _) = square(&self.r, &format!("{path}.R"))?;
-        LinearGaussianLikelihood::from_row_slices(&self.h.concat(), m, &r)
-            .or_throw_in(path.trim_end_matches(".likelihood"))
+        LinearGaussianLikelihood::from_row_slices(&self.h.concat(), m, &r).or_throw_in(root)
     }
 }
 
 /// The splitting step (the options of `splitForRegions`, plus the library choice).
 #[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
+#[serde(rename_all = "camelCase", default)]
 pub struct SplittingOptions {
     /// false: no splitting (default true).
-    #[serde(default = "yes")]
     pub enabled: bool,
     /// w_min (default 0.01).
-    #[serde(default = "min_weight")]
     pub min_weight: f64,
     /// R (default 4: Table I), an integer in [2, 16].
-    #[serde(default = "four")]
     pub components: usize,
     /// λ (default 0.001).
-    #[serde(default = "lambda")]
     pub lambda: f64,
     /// true: the variance-preserving library of pyest (default false: Table I for R = 4,
     /// λ = 0.001, the filters' default; see the core docs for the measured errors of both).
-    #[serde(default)]
     pub variance_preserving: bool,
     /// ζ (default 2).
-    #[serde(default = "grid_bound")]
     pub grid_bound: f64,
     /// N_g (default 15; N_g^positionDims ≤ 20000).
-    #[serde(default = "grid_points")]
     pub grid_points: usize,
     /// Depth cap (default 16, at most 64).
-    #[serde(default = "max_depth")]
     pub max_depth: usize,
     /// Component cap (default 10000, at most 50000).
-    #[serde(default = "max_split")]
     pub max_components: usize,
 }
 
-fn yes() -> bool {
-    true
+/// The defaults: the core's [`Splitting::default`] (R and λ of its library).
+impl Default for SplittingOptions {
+    fn default() -> Self {
+        let s = Splitting::default();
+        Self {
+            enabled: s.enabled,
+            min_weight: s.options.min_weight,
+            components: s.library.components(),
+            lambda: s.library.lambda(),
+            variance_preserving: false,
+            grid_bound: s.options.grid_bound,
+            grid_points: s.options.grid_points,
+            max_depth: s.options.max_depth,
+            max_components: s.options.max_components,
+        }
+    }
 }
 
 impl SplittingOptions {
@@ -332,12 +321,13 @@ fn regions(items: Vec<Region>, path: &str) -> JsResult<Vec<CoreRegion>> {
         .collect()
 }
 
-fn birth(b: Option<BirthOptions>, path: &str) -> JsResult<Birth> {
+/// The birth of the argument `root` (the core names its errors `birth.probability`, …).
+fn birth(b: Option<BirthOptions>, root: &str) -> JsResult<Birth> {
     match b {
         None => Ok(Birth::none()),
         Some(b) => {
-            let m = types::mixture(b.mixture, &format!("{path}.mixture"))?;
-            Birth::new(b.probability, m).or_throw_in(path.trim_end_matches(".birth"))
+            let m = types::mixture(b.mixture, &format!("{root}.birth.mixture"))?;
+            Birth::new(b.probability, m).or_throw_in(root)
         }
     }
 }
@@ -385,9 +375,9 @@ pub fn gm_bernoulli_predict(
         mixture: density(o.mixture, "options.mixture")?,
     };
     let config = PredictConfig {
-        transition: o.transition.into_core("options.transition")?,
+        transition: o.transition.into_core("options")?,
         survival: o.survival,
-        birth: birth(o.birth, "options.birth")?,
+        birth: birth(o.birth, "options")?,
     };
     let out = core_filters::gm_bernoulli_predict(&state, &config).or_throw_in("options")?;
     write(&GmBernoulliResult {
@@ -405,7 +395,7 @@ pub struct GmBernoulliUpdateOptions {
     /// p_{k|k−1}: weights sum to 1.
     pub mixture: Vec<WeightedGaussian>,
     /// n_s (default 2, in [1, 8]).
-    #[serde(default = "two")]
+    #[serde(default = "position_dims")]
     pub position_dims: usize,
     /// p_D and the field of view.
     pub detection: DetectionOptions,
@@ -514,7 +504,7 @@ pub fn gm_bernoulli_update(
     )?;
     let out = match (o.measurements, o.likelihood) {
         (Some(z), Some(l)) => {
-            let lik = l.into_core("options.likelihood")?;
+            let lik = l.into_core("options")?;
             let z = measurements(z, "options.measurements")?;
             core_filters::gm_bernoulli_update_vector(&state, &z, &lik, &config)
                 .or_throw_in("options")?
@@ -556,7 +546,7 @@ pub struct BernoulliFilterConfig {
     #[tsify(optional)]
     pub birth: Option<BirthOptions>,
     /// n_s (default 2).
-    #[serde(default = "two")]
+    #[serde(default = "position_dims")]
     pub position_dims: usize,
     /// p_D, fov.
     pub detection: DetectionOptions,
@@ -581,7 +571,7 @@ pub struct BernoulliFilterConfig {
     #[tsify(optional)]
     pub birth_particles: Option<usize>,
     /// Particle filter: MCMC moves per update (default 1, at most 10).
-    #[serde(default = "one")]
+    #[serde(default = "mcmc_moves")]
     pub mcmc_moves: usize,
     /// Particle filter: the seed; omitted: fresh entropy (the `seed` getter returns it).
     #[tsify(optional)]
@@ -607,15 +597,15 @@ fn convert(c: BernoulliFilterConfig) -> JsResult<Converted> {
         "config",
     )?;
     let likelihood = match c.likelihood {
-        Some(l) => Some(l.into_core("config.likelihood")?),
+        Some(l) => Some(l.into_core("config")?),
         None => None,
     };
     let config = CoreConfig {
         existence: c.existence,
         mixture: density(c.mixture, "config.mixture")?,
-        transition: c.transition.into_core("config.transition")?,
+        transition: c.transition.into_core("config")?,
         survival: c.survival,
-        birth: birth(c.birth, "config.birth")?,
+        birth: birth(c.birth, "config")?,
         position_dims: update.position_dims,
         detection: update.detection,
         clutter: update.clutter,
@@ -747,12 +737,9 @@ impl GmBernoulliFilterJs {
         })
     }
 
-    /// One prediction (40)–(49).
+    /// One prediction (40)–(49); on failure the filter is unchanged.
     pub fn predict(&mut self) -> JsResult<()> {
-        let mut next = self.inner.clone();
-        next.predict().or_throw_in("config")?;
-        self.inner = next;
-        Ok(())
+        self.inner.predict().or_throw_in("config")
     }
 
     /// The update with `Region[]` (imprecise reports; `[]`: the non-detection update) or
@@ -763,17 +750,9 @@ impl GmBernoulliFilterJs {
         #[wasm_bindgen(unchecked_param_type = "Region[] | { measurements: Point[] }")]
         reports: JsValue,
     ) -> JsResult<JsValue> {
-        let s = scan(reports)?;
-        let mut next = self.inner.clone();
-        let info = match s {
-            Scan::Reports(r) => next.update(&r),
-            Scan::Measurements(z) => next.update_measurements(&z),
-        }
-        .map_err(scan_error)?;
-        self.inner = next;
-        write(&UpdateInfoJs {
-            delta: info.delta,
-            split_components: info.split_components,
+        run_update(reports, |s| match s {
+            Scan::Reports(r) => self.inner.update(&r),
+            Scan::Measurements(z) => self.inner.update_measurements(&z),
         })
     }
 
@@ -800,6 +779,19 @@ impl GmBernoulliFilterJs {
     pub fn mixture(&self) -> JsResult<JsValue> {
         write(&types::mixture_out(self.inner.mixture()))
     }
+}
+
+/// Reads the scan `reports`, runs the filter's update on it (the core filter is unchanged
+/// when it fails) and writes `{ delta, splitComponents }`.
+fn run_update(
+    reports: JsValue,
+    update: impl FnOnce(Scan) -> fisst::Result<UpdateInfo>,
+) -> JsResult<JsValue> {
+    let info = update(scan(reports)?).map_err(scan_error)?;
+    write(&UpdateInfoJs {
+        delta: info.delta,
+        split_components: info.split_components,
+    })
 }
 
 #[derive(Serialize)]
@@ -851,17 +843,9 @@ impl ParticleBernoulliFilterJs {
         #[wasm_bindgen(unchecked_param_type = "Region[] | { measurements: Point[] }")]
         reports: JsValue,
     ) -> JsResult<JsValue> {
-        let s = scan(reports)?;
-        let mut next = self.inner.clone();
-        let info = match s {
-            Scan::Reports(r) => next.update(&r),
-            Scan::Measurements(z) => next.update_measurements(&z),
-        }
-        .map_err(scan_error)?;
-        self.inner = next;
-        write(&UpdateInfoJs {
-            delta: info.delta,
-            split_components: info.split_components,
+        run_update(reports, |s| match s {
+            Scan::Reports(r) => self.inner.update(&r),
+            Scan::Measurements(z) => self.inner.update_measurements(&z),
         })
     }
 
@@ -916,8 +900,8 @@ impl ParticleBernoulliFilterJs {
     }
 }
 
-fn sixty() -> usize {
-    60
+fn airport_steps() -> usize {
+    fisst::sim::airport::AIRPORT_PAPER_STEPS
 }
 
 /// Options of `airportScenario`.
@@ -927,7 +911,7 @@ pub struct AirportScenarioOptions {
     #[tsify(optional)]
     pub seed: Option<u64>,
     /// Report times (default 60, at most 2000).
-    #[serde(default = "sixty")]
+    #[serde(default = "airport_steps")]
     pub steps: usize,
 }
 
@@ -1061,7 +1045,7 @@ pub fn airport_scenario(
     let o: AirportScenarioOptions = if options.is_undefined() {
         AirportScenarioOptions {
             seed: None,
-            steps: 60,
+            steps: airport_steps(),
         }
     } else {
         read(options, "options")?
@@ -1118,8 +1102,8 @@ pub fn airport_scenario(
             density,
         },
         exclusions: exclusions.clone(),
-        particles: 5000,
-        mcmc_moves: 1,
+        particles: particles(),
+        mcmc_moves: mcmc_moves(),
         seed,
     };
     write(&AirportScenarioResult {

@@ -87,6 +87,7 @@ pub fn multi_object_likelihood(
 
 // ------------------------------------------------------------------ the case study
 
+use fisst::control::case_study::MAX_WORK;
 use fisst::control::{
     Action, ControlConfig, ControlRun, MeanSeries, Scheme as CoreScheme, SchemeSummary, StepOutcome,
 };
@@ -94,31 +95,30 @@ use fisst::control::{
 use crate::boundary::{check_range, seed_or_entropy};
 use crate::types::Point;
 
-/// At most this many particles N.
-const MAX_PARTICLES: usize = 20_000;
-/// At most this many future scans M.
-const MAX_FUTURE_SCANS: usize = 2_000;
-/// At most this product N·M (one Rényi step then takes about a second).
-const MAX_WORK: usize = 1_000_000;
-/// At most this many steps K.
-const MAX_STEPS: usize = 1_000;
 /// At most this many runs per scheme in `compareSchemes`.
 const MAX_RUNS: usize = 1_000;
 
+/// The paper's settings (Sec. 5), read for the options that are omitted.
+fn paper() -> ControlConfig {
+    ControlConfig::paper(
+        CoreScheme::Random,
+        fisst::control::case_study::DEFAULT_STEPS,
+    )
+}
 fn particles_default() -> usize {
-    750
+    paper().particles
 }
 fn future_scans_default() -> usize {
-    200
+    paper().future_scans
 }
 fn alpha_default() -> f64 {
-    0.5
+    paper().alpha
 }
 fn steps_default() -> usize {
-    40
+    paper().steps
 }
 fn max_objects_default() -> usize {
-    4
+    paper().max_objects
 }
 
 /// A sensor-control scheme of Fig. 3: the expected Rényi divergence (15)–(17), the Fisher
@@ -204,21 +204,18 @@ struct Common {
 }
 
 fn config(scheme: CoreScheme, c: Common) -> JsResult<ControlConfig> {
-    check_range("options.particles", c.particles, 1, MAX_PARTICLES)?;
-    check_range("options.futureScans", c.future_scans, 1, MAX_FUTURE_SCANS)?;
+    let mut cfg = ControlConfig::paper(scheme, c.steps);
+    cfg.particles = c.particles;
+    cfg.future_scans = c.future_scans;
+    cfg.alpha = c.alpha;
+    cfg.max_objects = c.max_objects;
+    cfg.check_limits().or_throw_in("options")?;
     if c.particles.saturating_mul(c.future_scans) > MAX_WORK {
         return Err(range_error(format!(
             "options.futureScans: particles · futureScans must be at most {MAX_WORK}, got {}",
             c.particles * c.future_scans
         )));
     }
-    check_range("options.steps", c.steps, 1, MAX_STEPS)?;
-    check_range("options.maxObjects", c.max_objects, 1, 8)?;
-    let mut cfg = ControlConfig::paper(scheme, c.steps);
-    cfg.particles = c.particles;
-    cfg.future_scans = c.future_scans;
-    cfg.alpha = c.alpha;
-    cfg.max_objects = c.max_objects;
     if let Some(p) = c.start {
         let [x, y] = p.0[..] else {
             return Err(range_error(format!(

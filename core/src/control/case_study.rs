@@ -23,6 +23,19 @@ use crate::smc::{
     SetEstimate, State, regularise, resample, reweight,
 };
 
+/// K when a binding's options omit it (`steps`): 40 (the text of `004_…` does not state the
+/// length of the runs of Fig. 3).
+pub const DEFAULT_STEPS: usize = 40;
+
+/// The bindings' cap on N (`particles`).
+pub const MAX_PARTICLES: usize = 20_000;
+/// The bindings' cap on M (`futureScans`).
+pub const MAX_FUTURE_SCANS: usize = 2_000;
+/// The bindings' cap on N·M (one Rényi step then takes about a second).
+pub const MAX_WORK: usize = 1_000_000;
+/// The bindings' cap on K (`steps`).
+pub const MAX_STEPS: usize = 1_000;
+
 /// The four control schemes compared in Fig. 3.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -126,6 +139,37 @@ impl ControlConfig {
             actions: ActionGrid::default(),
             regularisation: Regularisation::default(),
         }
+    }
+
+    /// The bindings' work caps, before [`ControlConfig::validate`]: N in
+    /// [1, [`MAX_PARTICLES`]], M in [1, [`MAX_FUTURE_SCANS`]], K in [1, [`MAX_STEPS`]],
+    /// n_max in [1, 8] (N·M ≤ [`MAX_WORK`] is the caller's, whose message gives the product).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming `particles`, `futureScans`, `steps` or `maxObjects`.
+    pub fn check_limits(&self) -> Result<()> {
+        let limits: [(&str, usize, usize, &'static str); 4] = [
+            (
+                "particles",
+                self.particles,
+                MAX_PARTICLES,
+                "an integer in [1, 20000]",
+            ),
+            (
+                "futureScans",
+                self.future_scans,
+                MAX_FUTURE_SCANS,
+                "an integer in [1, 2000]",
+            ),
+            ("steps", self.steps, MAX_STEPS, "an integer in [1, 1000]"),
+            ("maxObjects", self.max_objects, 8, "an integer in [1, 8]"),
+        ];
+        for (what, value, max, expected) in limits {
+            if !(1..=max).contains(&value) {
+                return Err(Error::parameter(what, value as f64, expected));
+            }
+        }
+        Ok(())
     }
 
     /// Checks the fields (names as in the bindings).
@@ -247,7 +291,9 @@ impl ControlRun {
     /// regularise, estimate, score, choose the next action.
     ///
     /// # Errors
-    /// [`Error::Unsupported`] naming `steps` once K steps are done.
+    /// [`Error::Unsupported`] naming `steps` once K steps are done. On `Err`, the run is
+    /// unchanged (the step works on its own copies of the particles and of both random
+    /// streams, and stores them only on success).
     pub fn step(&mut self) -> Result<StepOutcome> {
         if self.k >= self.config.steps {
             return Err(Error::Unsupported {
@@ -256,46 +302,46 @@ impl ControlRun {
             });
         }
         let cfg = &self.config;
+        let (mut world, mut rng) = (self.world.clone(), self.rng.clone());
         let u = *self.path.last().unwrap_or(&cfg.start);
-        let z = cfg.sensor.scan(&cfg.truth, u, &mut self.world);
-        if self.k == 0 {
+        let z = cfg.sensor.scan(&cfg.truth, u, &mut world);
+        let mut particles = if self.k == 0 {
             let sensor = cfg.sensor;
-            self.particles = MultiObjectParticles::from_ranges(
+            MultiObjectParticles::from_ranges(
                 cfg.particles,
                 cfg.max_objects,
                 &cfg.area,
                 u,
                 &z,
                 |r| sensor.sigma(r),
-                &mut self.rng,
-            );
-        }
+                &mut rng,
+            )
+        } else {
+            // Resampling copies every set anyway: the step is out of place.
+            self.particles.clone()
+        };
         let (mut ws, mut buf) = (LikelihoodWorkspace::new(), Vec::new());
         let (sensor, model) = (cfg.sensor, self.model);
-        reweight(&mut self.particles, |set| {
+        reweight(&mut particles, |set| {
             sensor.ln_likelihood(&model, set, &z, u, &mut ws, &mut buf)
         });
-        resample(&mut self.particles, &mut self.rng);
-        regularise(
-            &mut self.particles,
-            &cfg.area,
-            &cfg.regularisation,
-            &mut self.rng,
-        );
-        let estimate = self.particles.estimate();
+        resample(&mut particles, &mut rng);
+        regularise(&mut particles, &cfg.area, &cfg.regularisation, &mut rng);
+        let estimate = particles.estimate();
         let ospa = Ospa::new(100.0, 2.0)?.decompose(&cfg.truth, &estimate.states)?;
         let actions = cfg.actions.actions(u, &cfg.area);
         let rewards = rewards(
             cfg,
             &self.model,
-            &self.particles,
+            &particles,
             &estimate,
             u,
             &actions,
-            &mut self.rng,
+            &mut rng,
         );
-        let chosen = choose(&rewards, cfg.scheme, &mut self.rng);
+        let chosen = choose(&rewards, cfg.scheme, &mut rng);
         let action = actions[chosen];
+        (self.world, self.rng, self.particles) = (world, rng, particles);
         self.path.push(action.position);
         self.measurements.push(z.clone());
         self.k += 1;

@@ -263,3 +263,47 @@ fn alg1_reduced_run_localises_both_sources() {
     assert!(run.step().is_err());
     assert_eq!(run.sensor_path().len(), 31);
 }
+
+/// A step after the last one fails naming `steps` and leaves the run unchanged: particles,
+/// path, scans and both random streams (every field, through `Debug`).
+#[test]
+fn alg1_step_after_the_last_leaves_the_run_unchanged() {
+    let mut cfg = ControlConfig::paper(Scheme::Random, 2);
+    cfg.particles = 50;
+    let mut run = ControlRun::new(cfg, 3).unwrap();
+    run.step().unwrap();
+    run.step().unwrap();
+    let before = alloc::format!("{run:?}");
+    let e = run.step().unwrap_err();
+    assert_eq!(e.field(), "steps");
+    assert_eq!(alloc::format!("{run:?}"), before);
+    assert_eq!(run.k(), 2);
+}
+
+/// The bindings' caps say their range in the message, with the values of the constants.
+#[test]
+fn alg1_work_caps_name_the_field_and_the_range() {
+    use super::case_study::{MAX_FUTURE_SCANS, MAX_PARTICLES, MAX_STEPS};
+    let base = ControlConfig::paper(Scheme::Random, 1);
+    assert!(base.check_limits().is_ok());
+    type Set = fn(&mut ControlConfig, usize);
+    let cases: [(&str, usize, Set); 4] = [
+        ("particles", MAX_PARTICLES, |c, v| c.particles = v),
+        ("futureScans", MAX_FUTURE_SCANS, |c, v| c.future_scans = v),
+        ("steps", MAX_STEPS, |c, v| c.steps = v),
+        ("maxObjects", 8, |c, v| c.max_objects = v),
+    ];
+    for (what, max, set) in cases {
+        for bad in [0, max + 1] {
+            let mut c = base.clone();
+            set(&mut c, bad);
+            assert_eq!(
+                alloc::string::ToString::to_string(&c.check_limits().unwrap_err()),
+                alloc::format!("{what} must be an integer in [1, {max}], got {bad}")
+            );
+        }
+        let mut c = base.clone();
+        set(&mut c, max);
+        assert!(c.check_limits().is_ok());
+    }
+}

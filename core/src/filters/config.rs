@@ -124,6 +124,14 @@ impl Birth {
     }
 }
 
+/// p_S when a binding's options omit it (`survival`): 0.99, the survival of the airport
+/// example of `001_…` Section V-C.
+pub const DEFAULT_SURVIVAL: f64 = 0.99;
+
+/// n_s when a binding's options omit it (`positionDims`): 2, a position in the plane, as in
+/// every example of `001_…` (and [`SplitOptions::default`]).
+pub const DEFAULT_POSITION_DIMS: usize = 2;
+
 /// The prediction model of eqs. (40)–(49) of `001_…` (`gmBernoulliPredict`'s `transition`,
 /// `survival`, `birth`).
 #[derive(Clone, Debug, PartialEq)]

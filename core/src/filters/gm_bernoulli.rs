@@ -709,7 +709,8 @@ impl GmBernoulliFilter {
     /// The prediction (40)–(49).
     ///
     /// # Errors
-    /// As [`gm_bernoulli_predict`].
+    /// As [`gm_bernoulli_predict`]. On `Err`, the filter is unchanged (the prediction is
+    /// computed out of place and stored only on success).
     pub fn predict(&mut self) -> Result<()> {
         self.state = gm_bernoulli_predict(&self.state, &self.predict)?;
         Ok(())
@@ -718,7 +719,8 @@ impl GmBernoulliFilter {
     /// The update with imprecise reports (regions); `&[]` is the non-detection update.
     ///
     /// # Errors
-    /// As [`gm_bernoulli_update`].
+    /// As [`gm_bernoulli_update`]. On `Err`, the filter is unchanged (the update is computed
+    /// out of place and stored only on success).
     pub fn update(&mut self, reports: &[Region]) -> Result<UpdateInfo> {
         let out = gm_bernoulli_update(&self.state, reports, &self.update)?;
         Ok(self.store(out))
@@ -727,7 +729,7 @@ impl GmBernoulliFilter {
     /// The update with a caller-supplied generalized likelihood.
     ///
     /// # Errors
-    /// As [`gm_bernoulli_update_with`].
+    /// As [`gm_bernoulli_update_with`]. On `Err`, the filter is unchanged.
     pub fn update_with<L: GeneralizedLikelihood + ?Sized>(
         &mut self,
         likelihood: &L,
@@ -740,7 +742,7 @@ impl GmBernoulliFilter {
     ///
     /// # Errors
     /// [`Error::Unsupported`] naming `likelihood` when the config has none; as
-    /// [`gm_bernoulli_update_vector`].
+    /// [`gm_bernoulli_update_vector`]. On `Err`, the filter is unchanged.
     pub fn update_measurements<M: AsRef<[f64]>>(
         &mut self,
         measurements: &[M],

@@ -86,8 +86,8 @@ mod transition;
 
 pub use clutter::{Clutter, ClutterDensity, ClutterFn, ClutterFunction};
 pub use config::{
-    BernoulliFilterConfig, Birth, GmBernoulli, PredictConfig, Splitting, UpdateConfig,
-    default_reduction, default_split_library,
+    BernoulliFilterConfig, Birth, DEFAULT_POSITION_DIMS, DEFAULT_SURVIVAL, GmBernoulli,
+    PredictConfig, Splitting, UpdateConfig, default_reduction, default_split_library,
 };
 pub use detection::Detection;
 pub use estimate::{EstimateOptions, FilterEstimate, gm_estimate};
@@ -105,3 +105,5 @@ pub use transition::LinearGaussianTransition;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod transactional_tests;

@@ -195,7 +195,8 @@ impl ParticleBernoulliFilter {
     }
 
     /// The prediction: survivors moved through the transition, birth particles added.
-    /// (A prediction that follows a prediction resamples back to N particles first.)
+    /// (A prediction that follows a prediction resamples back to N particles first.) It cannot
+    /// fail: the models were checked by [`ParticleBernoulliFilter::new`].
     pub fn predict(&mut self) {
         let n = self.options.particles;
         if self.weights.len() > n {
@@ -265,7 +266,8 @@ impl ParticleBernoulliFilter {
     ///
     /// # Errors
     /// [`Error::DimensionMismatch`] naming `reports[i]`; as
-    /// [`ParticleBernoulliFilter::update_with`].
+    /// [`ParticleBernoulliFilter::update_with`]. On `Err`, the filter is unchanged (particles,
+    /// weights, existence and random stream).
     pub fn update(&mut self, reports: &[Region]) -> Result<UpdateInfo> {
         for (i, r) in reports.iter().enumerate() {
             if r.dim() != self.update.position_dims {
@@ -285,7 +287,7 @@ impl ParticleBernoulliFilter {
     /// [`Error::InvalidParameter`] naming `likelihood[i]` when g̃ returns a negative or
     /// non-finite value, `exclusions` when every particle lies in an exclusion region,
     /// `reports` or `clutter.rate` as [`gm_bernoulli_update_with`](super::gm_bernoulli_update_with);
-    /// those of [`crate::filters::Clutter`].
+    /// those of [`crate::filters::Clutter`]. On `Err`, the filter is unchanged.
     pub fn update_with<L: GeneralizedLikelihood + ?Sized>(
         &mut self,
         likelihood: &L,
@@ -311,7 +313,8 @@ impl ParticleBernoulliFilter {
     /// # Errors
     /// [`Error::Unsupported`] naming `likelihood` when the config has none;
     /// [`Error::DimensionMismatch`] naming `measurements[j]`; [`Error::InvalidParameter`]
-    /// naming `measurements[j][i]`; as [`ParticleBernoulliFilter::update_with`].
+    /// naming `measurements[j][i]`; as [`ParticleBernoulliFilter::update_with`]. On `Err`, the
+    /// filter is unchanged.
     pub fn update_measurements<M: AsRef<[f64]>>(
         &mut self,
         measurements: &[M],
@@ -362,11 +365,8 @@ impl ParticleBernoulliFilter {
         zero_kappa: usize,
     ) -> Result<UpdateInfo> {
         let dim = self.dim;
-        if self.parents.len() != self.particles.len() {
-            // No prediction since the last update: there is no parent to move against.
-            self.parents = alloc::vec![0.0; self.particles.len()];
-            self.origins = alloc::vec![Origin::Fixed; self.weights.len()];
-        }
+        // Every check comes before the first change to `self` (On `Err`, the filter is
+        // unchanged): the exclusions, g̃ and the Bernoulli terms are read-only.
         // Exclusion constraint, then the Bernoulli update terms.
         let mut kept = NeumaierSum::new();
         let mut excluded = alloc::vec![false; self.weights.len()];
@@ -409,6 +409,12 @@ impl ParticleBernoulliFilter {
             terms.push(Term::new(w, pd, ratio, certain));
         }
         let (existence, weights, delta) = bernoulli_weights(self.existence, &terms, zero_kappa)?;
+        // Nothing below fails.
+        if self.parents.len() != self.particles.len() {
+            // No prediction since the last update: there is no parent to move against.
+            self.parents = alloc::vec![0.0; self.particles.len()];
+            self.origins = alloc::vec![Origin::Fixed; self.weights.len()];
+        }
         self.existence = existence;
         // Resample back to N.
         let n = self.options.particles;

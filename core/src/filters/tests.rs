@@ -201,7 +201,7 @@ fn no_fov_config(pd: f64) -> UpdateConfig {
     )
 }
 
-fn ncv_filter_config(existence: f64, pd: f64) -> BernoulliFilterConfig {
+pub(super) fn ncv_filter_config(existence: f64, pd: f64) -> BernoulliFilterConfig {
     let g = gauss(
         &[0.0, 0.0, 1.0, 0.0],
         &[

@@ -185,6 +185,8 @@ const ROUTE: [[f64; 2]; 13] = [
 pub const AIRPORT_DT: f64 = 15.0;
 /// ϖ of the example.
 pub const AIRPORT_NOISE: f64 = 0.004;
+/// The paper's number of report times (15 minutes at T = 15 s).
+pub const AIRPORT_PAPER_STEPS: usize = 60;
 /// The largest number of steps [`airport_scenario`] simulates.
 pub const MAX_AIRPORT_STEPS: usize = 100_000;
 
