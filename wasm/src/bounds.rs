@@ -1231,8 +1231,10 @@ pub fn jde_monte_carlo(
                 }
                 MonteCarloPriorShape::MultivariateGaussian(g) => {
                     match PriorShape::MultivariateGaussian(g).into_core(path)? {
-                        Prior::Vector(v) => v,
-                        Prior::Scalar(_) => unreachable!("a multivariateGaussian is a vector"),
+                        bounds::JdePrior::Vector(v) => v,
+                        bounds::JdePrior::Scalar(_) => {
+                            unreachable!("a multivariateGaussian is a vector")
+                        }
                     }
                 }
                 MonteCarloPriorShape::Example2 => unreachable!("matched above"),
