@@ -28,7 +28,8 @@ impl Region {
     /// # Ok::<(), fisst::Error>(())
     /// ```
     pub fn mass_cost_us(&self) -> f64 {
-        let nested = |dim: usize| 150f64.powi(dim.saturating_sub(2) as i32);
+        // 150^(dim − 2) by products (`powi` is std-only; exact while 150^k < 2^53, k ≤ 7)
+        let nested = |dim: usize| (2..dim).fold(1.0, |a: f64, _| a * 150.0);
         match self.node() {
             Node::Box(b) if b.dim() <= 2 => 1.0,
             Node::Box(b) => nested(b.dim()),
