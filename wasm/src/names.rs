@@ -6,11 +6,10 @@
 //! field, [`render_path`] a whole error path, and [`Renamed`] wraps a value so that any serde
 //! `Serializer` writes its struct fields under their JavaScript names.
 
-use std::borrow::Cow;
 use std::boxed::Box;
 use std::cell::RefCell;
-use std::collections::BTreeMap;
 use std::string::String;
+use std::vec::Vec;
 
 use serde::ser::{self, Serialize, Serializer};
 
@@ -32,14 +31,18 @@ pub fn js_name(parent: &str, field: &'static str) -> &'static str {
     {
         return js;
     }
-    match camel_case(field) {
-        Cow::Borrowed(_) => field,
-        Cow::Owned(_) => INTERNED.with(|t| {
-            *t.borrow_mut()
-                .entry(field)
-                .or_insert_with(|| Box::leak(camel_case(field).into_owned().into_boxed_str()))
-        }),
+    if !field.contains('_') {
+        return field;
     }
+    INTERNED.with(|t| {
+        let mut t = t.borrow_mut();
+        if let Some((_, js)) = t.iter().find(|(rust, _)| *rust == field) {
+            return *js;
+        }
+        let js: &'static str = Box::leak(camel_case(field).into_owned().into_boxed_str());
+        t.push((field, js));
+        js
+    })
 }
 
 /// An error path in Rust names (`transition.f`, `components[2].mean`, `future_scans`) in
@@ -62,8 +65,8 @@ pub fn render_path(rust_path: &str) -> String {
 
 thread_local! {
     /// The camelCase names given out by [`js_name`], by Rust name.
-    static INTERNED: RefCell<BTreeMap<&'static str, &'static str>> =
-        const { RefCell::new(BTreeMap::new()) };
+    /// (A list, not a map: a few dozen names, and no map code in every module.)
+    static INTERNED: RefCell<Vec<(&'static str, &'static str)>> = const { RefCell::new(Vec::new()) };
 }
 
 /// A value that serialises with its struct fields under their JavaScript names.

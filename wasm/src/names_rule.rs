@@ -14,7 +14,9 @@ pub const EXCEPTIONS: &[(&str, &str, &str)] = &[
 ];
 
 /// The JavaScript name of a Rust name that is not one of the exceptions: camelCase
-/// (`future_scans` → `futureScans`); a name without an underscore comes back borrowed.
+/// (`future_scans` → `futureScans`); a name without an underscore comes back borrowed. Rust
+/// field names are ASCII, so the ASCII case map is enough (and keeps Unicode's tables out of
+/// the module).
 pub fn camel_case(field: &str) -> Cow<'_, str> {
     if !field.contains('_') {
         return Cow::Borrowed(field);
@@ -25,7 +27,7 @@ pub fn camel_case(field: &str) -> Cow<'_, str> {
         if c == '_' {
             upper = !out.is_empty();
         } else if upper {
-            out.extend(c.to_uppercase());
+            out.push(c.to_ascii_uppercase());
             upper = false;
         } else {
             out.push(c);
