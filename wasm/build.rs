@@ -91,6 +91,16 @@ fn main() {
                     declared.extend(type_names(piece).take(1).map(str::to_string));
                 }
             }
+            // an alias the part declares for a core type (`export type
+            // LinearAssignmentResult = Assignment;`) makes that core type a root
+            if files.contains(&path) {
+                for piece in text.split("export type ").skip(1) {
+                    let rhs = piece.split(';').next().unwrap_or("");
+                    if let Some((_, rhs)) = rhs.split_once('=') {
+                        roots.extend(type_names(rhs).map(str::to_string));
+                    }
+                }
+            }
         }
     }
 
