@@ -451,8 +451,12 @@ impl<'a> De<'a> {
         let parent = self.path.parent_key();
         let mut known = Vec::with_capacity(fields.len());
         for (key, value) in self.present_entries(obj)? {
-            match fields.iter().find(|f| js_name(parent, f) == key) {
-                Some(f) => known.push((Cow::Borrowed(*f), Some(js_name(parent, f)), value)),
+            match fields
+                .iter()
+                .map(|f| (*f, js_name(parent, f)))
+                .find(|(_, js)| *js == key)
+            {
+                Some((f, js)) => known.push((Cow::Borrowed(f), Some(js), value)),
                 None => {
                     let names: Vec<&'static str> =
                         fields.iter().map(|f| js_name(parent, f)).collect();

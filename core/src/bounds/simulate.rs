@@ -123,6 +123,7 @@ impl Default for JdeMonteCarloOptions {
 /// An empirical mean square error and its standard error (the sample standard deviation of
 /// e² over √samples).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MonteCarloRisk {
     /// The mean of e².
     pub mse: f64,
@@ -133,6 +134,7 @@ pub struct MonteCarloRisk {
 /// What [`jde_monte_carlo`] returns: the risk after the last scan and its parts, per
 /// coordinate, and after each scan.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct JdeMonteCarlo {
     /// E e² (11), the mean over the samples.
     pub mse: f64,
@@ -153,6 +155,8 @@ pub struct JdeMonteCarlo {
     pub components: Vec<MonteCarloRisk>,
     /// After scan 1 … k (the last is `mse`, `se`).
     pub scans: Vec<MonteCarloRisk>,
+    /// The seed of the draws ([`JdeMonteCarloOptions::seed`]): the run is reproduced by it.
+    pub seed: u64,
 }
 
 /// Running mean and sum of squared deviations (Welford).
@@ -685,6 +689,7 @@ pub fn jde_monte_carlo(
         declare_on_empty: declare_empty[scans - 1],
         components: score.components.iter().map(Tally::risk).collect(),
         scans: score.scans.iter().map(Tally::risk).collect(),
+        seed: options.seed,
     })
 }
 
