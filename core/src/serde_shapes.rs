@@ -65,6 +65,72 @@ pub mod matrix {
     }
 }
 
+/// The elements of a [`ScalarOr`] array, and how its error message names them.
+pub trait ArrayElement {
+    /// What the array holds, for "expected a number or an array of …".
+    const ARRAY: &'static str;
+}
+
+impl ArrayElement for f64 {
+    const ARRAY: &'static str = "an array of numbers";
+}
+
+impl ArrayElement for Vec<f64> {
+    const ARRAY: &'static str = "an array of rows (arrays of numbers)";
+}
+
+/// A value a user gives as one number or as an array: `0.3` or `[0.1, 0.2]` (one per report,
+/// cell, …), `1` or `[[1, 0], [0, 1]]` (a scalar gain or a matrix). Core types whose shape is
+/// "a number or an array" read through it (`#[serde(from = "ScalarOr<f64>")]` or a
+/// `TryFrom`), so every binding accepts the same two forms with the same message.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ScalarOr<T> {
+    /// One number.
+    Scalar(f64),
+    /// An array.
+    Array(Vec<T>),
+}
+
+impl<T: Serialize> Serialize for ScalarOr<T> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            ScalarOr::Scalar(x) => s.serialize_f64(*x),
+            ScalarOr::Array(v) => v.serialize(s),
+        }
+    }
+}
+
+impl<'de, T: Deserialize<'de> + ArrayElement> Deserialize<'de> for ScalarOr<T> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        use serde::de::{SeqAccess, Visitor};
+        struct V<T>(core::marker::PhantomData<T>);
+        impl<'de, T: Deserialize<'de> + ArrayElement> Visitor<'de> for V<T> {
+            type Value = ScalarOr<T>;
+            fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                write!(f, "a number or {}", T::ARRAY)
+            }
+            fn visit_f64<E: serde::de::Error>(self, x: f64) -> Result<Self::Value, E> {
+                Ok(ScalarOr::Scalar(x))
+            }
+            // self-describing formats other than JavaScript's (JSON, Python) give integers
+            fn visit_i64<E: serde::de::Error>(self, x: i64) -> Result<Self::Value, E> {
+                Ok(ScalarOr::Scalar(x as f64))
+            }
+            fn visit_u64<E: serde::de::Error>(self, x: u64) -> Result<Self::Value, E> {
+                Ok(ScalarOr::Scalar(x as f64))
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+                let mut v = Vec::with_capacity(seq.size_hint().unwrap_or(0).min(4096));
+                while let Some(x) = seq.next_element::<T>()? {
+                    v.push(x);
+                }
+                Ok(ScalarOr::Array(v))
+            }
+        }
+        d.deserialize_any(V(core::marker::PhantomData))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -93,6 +159,28 @@ mod tests {
                 .unwrap_err()
                 .to_string()
                 .contains("row 1 has length 2, expected 1")
+        );
+    }
+
+    #[test]
+    fn scalar_or_reads_a_number_or_an_array() {
+        let one: ScalarOr<f64> = serde_json::from_str("0.5").unwrap();
+        assert_eq!(one, ScalarOr::Scalar(0.5));
+        let int: ScalarOr<f64> = serde_json::from_str("2").unwrap();
+        assert_eq!(int, ScalarOr::Scalar(2.0));
+        let many: ScalarOr<f64> = serde_json::from_str("[0.1, 0.2]").unwrap();
+        assert_eq!(many, ScalarOr::Array(alloc::vec![0.1, 0.2]));
+        let rows: ScalarOr<Vec<f64>> = serde_json::from_str("[[1, 0], [0, 1]]").unwrap();
+        assert_eq!(
+            rows,
+            ScalarOr::Array(alloc::vec![alloc::vec![1.0, 0.0], alloc::vec![0.0, 1.0]])
+        );
+        assert_eq!(serde_json::to_string(&many).unwrap(), "[0.1,0.2]");
+        let bad = serde_json::from_str::<ScalarOr<f64>>(r#""x""#).unwrap_err();
+        assert!(
+            bad.to_string()
+                .contains("expected a number or an array of numbers"),
+            "{bad}"
         );
     }
 }
