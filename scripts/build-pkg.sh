@@ -14,6 +14,6 @@ for part in "${parts[@]}"; do
   wasm-bindgen --target web --remove-name-section --remove-producers-section \
     --out-dir wasm/pkg --out-name "$part" "$target_dir/wasm32-unknown-unknown/release/fisst_wasm.wasm"
 done
-cp wasm/npm/README.md wasm/pkg/
+cp wasm/npm/README.md LICENSE-MIT LICENSE-APACHE CHANGELOG.md wasm/pkg/
 version=$(sed -n 's/^version = "\(.*\)"/\1/p' Cargo.toml | head -n 1)
 node scripts/pkg-facade.mjs wasm/pkg "$version" "${parts[@]}"
