@@ -5,6 +5,13 @@
 // - a call before `init()` (browser entry) throws `Error: fisst/<part>: call \`await init()\`
 //   first …`: the module's `wasm` starts as a Proxy that throws on any use, until init replaces it;
 // - a method (or `free()`) of an object already freed throws `TypeError: <Class> was freed …`.
+// It also rewrites the end of each part's `.d.ts` (issue 26, point 3) so that the declarations
+// check under `strict` with `lib: ["ES2022"]` alone and no `skipLibCheck`: `InitInput`,
+// `SyncInitInput` and `InitOutput` name the platform's types (`Response`, `URL`,
+// `WebAssembly.Module`, …) only through `typeof globalThis` (so they are precise where the DOM or
+// Node types are loaded and absent where not), `InitOutput` lists the memory only (not the
+// module's internal exports), and `[Symbol.dispose]` (ES2024's explicit resource management, a
+// type error under ES2022) is left out of the classes: call `free()`.
 // The patterns are those of wasm-bindgen 0.2.130 (pinned); a pattern not found fails the build.
 import { readFileSync, writeFileSync } from 'node:fs';
 
@@ -43,10 +50,41 @@ let wasmModule, wasmInstance, wasm = __fisst_uninit;`,
   return out;
 }
 
+const PLATFORM = `${MARK}
+/** A type of the platform (DOM, Node), or \`never\` where the compilation has no such type. */
+type Platform<K extends string> = typeof globalThis extends { [P in K]: { prototype: infer T } } ? T : never;
+/** \`WebAssembly.Module\` / \`WebAssembly.Memory\` where the platform's types are loaded. */
+type WasmType<K extends string> = typeof globalThis extends { WebAssembly: { [P in K]: { prototype: infer T } } } ? T : never;
+
+/** The part's \`.wasm\`: a URL (string or \`URL\`), a \`Request\` or \`Response\`, its bytes, or a compiled module. */
+export type InitInput = string | Platform<'URL'> | Platform<'Request'> | Platform<'Response'> | ArrayBuffer | ArrayBufferView | WasmType<'Module'>;
+
+/** What \`init()\` resolves to: the part's instantiated module (its memory). */
+export interface InitOutput {
+    readonly memory: WasmType<'Memory'>;
+}
+
+/** The part's \`.wasm\` for \`initSync\`: its bytes or a compiled module. */
+export type SyncInitInput = ArrayBuffer | ArrayBufferView | WasmType<'Module'>;
+`;
+
+export function declarations(source, part) {
+  if (source.includes(MARK)) return source;
+  const start = source.indexOf('export type InitInput =');
+  const sync = source.indexOf('export type SyncInitInput =');
+  const after = source.indexOf('\n', sync);
+  if (start < 0 || sync < start) {
+    throw new Error(`pkg-guards: ${part}.d.ts does not end as wasm-bindgen 0.2.130 writes it`);
+  }
+  return (source.slice(0, start) + PLATFORM + source.slice(after + 1)).replace(/^ +\[Symbol\.dispose\]\(\): void;\n/gm, '');
+}
+
 if (import.meta.url === `file://${process.argv[1]}`) {
   const [dir, ...parts] = process.argv.slice(2);
   for (const part of parts) {
     const file = `${dir}/${part}.js`;
     writeFileSync(file, guard(readFileSync(file, 'utf8'), part));
+    const dts = `${dir}/${part}.d.ts`;
+    writeFileSync(dts, declarations(readFileSync(dts, 'utf8'), part));
   }
 }
