@@ -38,9 +38,25 @@ echo "[cortex-m] the QEMU and native outputs are identical ($(wc -l <"$out/board
 
 # Flash = text (code, read-only data, vector table) + data (initial values copied to RAM).
 size_tool=$(command -v llvm-size || command -v size || true)
-if [ -n "$size_tool" ]; then
-  read -r text data bss _ < <("$size_tool" "$elf" | tail -1)
-  echo "[cortex-m] flash: $((text + data)) bytes (text $text + data $data); static RAM: $((data + bss)) bytes (incl. the 1 MiB heap)"
-else
-  echo "[cortex-m] flash: no size tool (llvm-size or binutils' size) found"
-fi
+[ -n "$size_tool" ] || { echo "[cortex-m] no size tool (llvm-size or binutils' size)" >&2; exit 1; }
+read -r text data bss _ < <("$size_tool" "$elf" | tail -1)
+flash=$((text + data))
+heap=$(sed -n 's/^heap peak: \([0-9]*\) bytes.*/\1/p' "$out/board-stderr.txt")
+stack=$(sed -n 's/^stack peak: \([0-9]*\) bytes.*/\1/p' "$out/board-stderr.txt")
+echo "[cortex-m] flash $flash bytes (text $text + data $data), heap peak $heap bytes, stack peak $stack bytes;" \
+  "static RAM $((data + bss)) bytes (incl. the 1 MiB heap)"
+
+# The README quotes these figures; they must stay within 5% of the build at hand.
+figures=$(grep -o 'flash [0-9.]* KB, heap peak [0-9.]* KB, stack peak [0-9.]* KB' ../../README.md || true)
+[ -n "$figures" ] || { echo "[cortex-m] the README's figures line is missing" >&2; exit 1; }
+read -r _ q_flash _ _ _ q_heap _ _ _ q_stack _ <<<"${figures//,/}"
+stale=0
+for pair in "flash $q_flash $flash" "heap $q_heap $heap" "stack $q_stack $stack"; do
+  read -r what quoted bytes <<<"$pair"
+  if ! awk -v q="$quoted" -v b="$bytes" 'BEGIN { d = q * 1000 - b; if (d < 0) d = -d; exit !(d <= 0.05 * b) }'; then
+    echo "[cortex-m] README says $what $quoted KB, the build has $bytes bytes: update README.md" >&2
+    stale=1
+  fi
+done
+[ "$stale" = 0 ] || exit 1
+echo "[cortex-m] ok"
