@@ -100,20 +100,21 @@ pub fn run(out: &mut dyn Write) -> Result<(), RunError> {
     let mut filter = GmBernoulliFilter::new(scenario.config.clone())?;
     writeln!(
         out,
-        "Airport GM Bernoulli filter (seed {AIRPORT_SEED}, {AIRPORT_STEPS} steps): k, reports, existence, x, y"
+        "Airport GM Bernoulli filter (seed {AIRPORT_SEED}, {AIRPORT_STEPS} steps): k, reports, existence r, position x, y (m)"
     )?;
     let mut last = None;
     for k in 0..AIRPORT_STEPS {
         filter.predict()?;
         filter.update(&scenario.report_regions(k))?;
         let e = filter.estimate(&EstimateOptions::default())?;
+        let (r, x, y) = (e.existence, e.mean[0], e.mean[1]);
         writeln!(
             out,
-            "  {k:2} {} {:016x} {:016x} {:016x}",
+            "  {k:2} {} {:016x} ({r:.4}) {:016x} ({x:.2}) {:016x} ({y:.2})",
             scenario.reports[k].len(),
-            e.existence.to_bits(),
-            e.mean[0].to_bits(),
-            e.mean[1].to_bits()
+            r.to_bits(),
+            x.to_bits(),
+            y.to_bits()
         )?;
         last = Some(e);
     }
