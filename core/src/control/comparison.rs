@@ -37,25 +37,31 @@ pub struct CompareOptions {
     /// N (default 750).
     #[cfg_attr(
         feature = "serde",
-        serde(default = "ControlOptions::default_particles")
+        serde(default = "crate::control::ControlOptions::default_particles")
     )]
     pub particles: usize,
     /// M (default 200).
     #[cfg_attr(
         feature = "serde",
-        serde(default = "ControlOptions::default_future_scans")
+        serde(default = "crate::control::ControlOptions::default_future_scans")
     )]
     pub future_scans: usize,
     /// α (default 0.5).
-    #[cfg_attr(feature = "serde", serde(default = "ControlOptions::default_alpha"))]
+    #[cfg_attr(
+        feature = "serde",
+        serde(default = "crate::control::ControlOptions::default_alpha")
+    )]
     pub alpha: f64,
     /// The sensor's initial location (default [0, 0]).
-    #[cfg_attr(feature = "serde", serde(default = "ControlOptions::default_start"))]
+    #[cfg_attr(
+        feature = "serde",
+        serde(default = "crate::control::ControlOptions::default_start")
+    )]
     pub start: State,
     /// n_max (default 4).
     #[cfg_attr(
         feature = "serde",
-        serde(default = "ControlOptions::default_max_objects")
+        serde(default = "crate::control::ControlOptions::default_max_objects")
     )]
     pub max_objects: usize,
 }
