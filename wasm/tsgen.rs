@@ -241,7 +241,8 @@ impl Gen<'_> {
             let last = w.rsplit("::").next().unwrap_or(w);
             return match last {
                 "matrix" => "number[][]".into(),
-                "vector" => "number[] | Float64Array".into(),
+                "vector" | "numbers" => "number[] | Float64Array".into(),
+                "point_sets" => "(number[] | Float64Array)[][]".into(),
                 other => {
                     self.warnings.push(format!("unknown `with` module {other}"));
                     "unknown".into()

@@ -65,6 +65,29 @@ pub mod matrix {
     }
 }
 
+/// `Vec<Vec<Vec<f64>>>`, one point set per time step, as `[[[x, …], …], …]`: the serde shape
+/// is the plain nested arrays; the module marks the field for the bindings' type generators
+/// (a point may be given as a typed array where the binding reads one).
+pub mod point_sets {
+    use super::*;
+
+    /// Writes the sets in order.
+    ///
+    /// # Errors
+    /// The serializer's.
+    pub fn serialize<S: Serializer>(v: &[Vec<Vec<f64>>], s: S) -> Result<S::Ok, S::Error> {
+        v.serialize(s)
+    }
+
+    /// Reads the nested arrays.
+    ///
+    /// # Errors
+    /// The deserializer's, for anything but arrays of arrays of numbers.
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<Vec<Vec<f64>>>, D::Error> {
+        Vec::deserialize(d)
+    }
+}
+
 /// The elements of a [`ScalarOr`] array, and how its error message names them.
 pub trait ArrayElement {
     /// What the array holds, for "expected a number or an array of …".
