@@ -88,6 +88,53 @@ pub mod point_sets {
     }
 }
 
+/// Numbers, `Vec<f64>` (or `Option<Vec<f64>>`), as `[x, …]`: the serde shape is the plain
+/// array; the module marks the field for the bindings' type generators (a binding may read a
+/// typed array, `Float64Array` in JavaScript, as well).
+pub mod numbers {
+    use super::*;
+
+    /// Writes the value as it is.
+    ///
+    /// # Errors
+    /// The serializer's.
+    pub fn serialize<T: Serialize, S: Serializer>(v: &T, s: S) -> Result<S::Ok, S::Error> {
+        v.serialize(s)
+    }
+
+    /// Reads the value as it is.
+    ///
+    /// # Errors
+    /// The deserializer's.
+    pub fn deserialize<'de, T: Deserialize<'de>, D: Deserializer<'de>>(
+        d: D,
+    ) -> Result<T, D::Error> {
+        T::deserialize(d)
+    }
+}
+
+/// `Vec<u8>` as bytes: a typed array (`Uint8Array`) where the format has one, else an array
+/// of numbers.
+pub mod bytes {
+    use super::*;
+
+    /// Writes the bytes with `serialize_bytes`.
+    ///
+    /// # Errors
+    /// The serializer's.
+    pub fn serialize<S: Serializer>(v: &[u8], s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_bytes(v)
+    }
+
+    /// Reads an array of bytes.
+    ///
+    /// # Errors
+    /// The deserializer's, for anything but an array of integers in [0, 255].
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<u8>, D::Error> {
+        Vec::deserialize(d)
+    }
+}
+
 /// The elements of a [`ScalarOr`] array, and how its error message names them.
 pub trait ArrayElement {
     /// What the array holds, for "expected a number or an array of …".
