@@ -208,11 +208,12 @@ fn rename_variant(v: &str, rule: Option<&str>) -> String {
                 .map(|f| f.to_lowercase().collect::<String>() + c.as_str())
                 .unwrap_or_default()
         }
-        Some("snake_case") => {
+        Some(rule @ ("snake_case" | "kebab-case")) => {
+            let sep = if rule == "snake_case" { '_' } else { '-' };
             let mut s = String::new();
             for (i, ch) in v.chars().enumerate() {
                 if ch.is_uppercase() && i > 0 {
-                    s.push('_');
+                    s.push(sep);
                 }
                 s.extend(ch.to_lowercase());
             }
@@ -261,6 +262,8 @@ impl Gen<'_> {
                 "matrix" => "number[][]".into(),
                 "vector" | "numbers" => "number[] | Float64Array".into(),
                 "rows_of_numbers" => "(number[] | Float64Array)[]".into(),
+                "point_sets" => "(number[] | Float64Array)[][]".into(),
+                "bytes" => "Uint8Array".into(),
                 other => {
                     self.warnings.push(format!("unknown `with` module {other}"));
                     "unknown".into()

@@ -65,28 +65,6 @@ pub mod matrix {
     }
 }
 
-/// `Vec<f64>` as `[x, …]`, serde's own shape: the marker of "a list of numbers" that a
-/// binding may also take as a typed array (TypeScript `number[] | Float64Array`).
-pub mod numbers {
-    use super::*;
-
-    /// Writes the entries in order.
-    ///
-    /// # Errors
-    /// The serializer's.
-    pub fn serialize<S: Serializer>(v: &[f64], s: S) -> Result<S::Ok, S::Error> {
-        v.serialize(s)
-    }
-
-    /// Reads `[x, …]`.
-    ///
-    /// # Errors
-    /// The deserializer's.
-    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<f64>, D::Error> {
-        Vec::<f64>::deserialize(d)
-    }
-}
-
 /// `Vec<Vec<f64>>` as `[[x, …], …]`, each row a [`numbers`] (rows may differ in length).
 pub mod rows_of_numbers {
     use super::*;
@@ -105,6 +83,76 @@ pub mod rows_of_numbers {
     /// The deserializer's.
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<Vec<f64>>, D::Error> {
         Vec::<Vec<f64>>::deserialize(d)
+    }
+}
+
+/// `Vec<Vec<Vec<f64>>>`, one point set per time step, as `[[[x, …], …], …]`: the serde shape
+/// is the plain nested arrays; the module marks the field for the bindings' type generators
+/// (a point may be given as a typed array where the binding reads one).
+pub mod point_sets {
+    use super::*;
+
+    /// Writes the sets in order.
+    ///
+    /// # Errors
+    /// The serializer's.
+    pub fn serialize<S: Serializer>(v: &[Vec<Vec<f64>>], s: S) -> Result<S::Ok, S::Error> {
+        v.serialize(s)
+    }
+
+    /// Reads the nested arrays.
+    ///
+    /// # Errors
+    /// The deserializer's, for anything but arrays of arrays of numbers.
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<Vec<Vec<f64>>>, D::Error> {
+        Vec::deserialize(d)
+    }
+}
+
+/// Numbers, `Vec<f64>` (or `Option<Vec<f64>>`), as `[x, …]`: the serde shape is the plain
+/// array; the module marks the field for the bindings' type generators (a binding may read a
+/// typed array, `Float64Array` in JavaScript, as well).
+pub mod numbers {
+    use super::*;
+
+    /// Writes the value as it is.
+    ///
+    /// # Errors
+    /// The serializer's.
+    pub fn serialize<T: Serialize, S: Serializer>(v: &T, s: S) -> Result<S::Ok, S::Error> {
+        v.serialize(s)
+    }
+
+    /// Reads the value as it is.
+    ///
+    /// # Errors
+    /// The deserializer's.
+    pub fn deserialize<'de, T: Deserialize<'de>, D: Deserializer<'de>>(
+        d: D,
+    ) -> Result<T, D::Error> {
+        T::deserialize(d)
+    }
+}
+
+/// `Vec<u8>` as bytes: a typed array (`Uint8Array`) where the format has one, else an array
+/// of numbers.
+pub mod bytes {
+    use super::*;
+
+    /// Writes the bytes with `serialize_bytes`.
+    ///
+    /// # Errors
+    /// The serializer's.
+    pub fn serialize<S: Serializer>(v: &[u8], s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_bytes(v)
+    }
+
+    /// Reads an array of bytes.
+    ///
+    /// # Errors
+    /// The deserializer's, for anything but an array of integers in [0, 255].
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<u8>, D::Error> {
+        Vec::deserialize(d)
     }
 }
 

@@ -63,7 +63,7 @@ fn build() -> Value {
             let e = optimal_estimate(&existence, metric, c, p).unwrap();
             optimal.push(
                 json!({"existence": existence, "metric": name, "c": c, "p": p,
-                "expected": {"report": e.report, "meanSquareError": e.mean_error}}),
+                "expected": {"report": e.report, "meanSquareError": e.mean_square_error}}),
             );
         }
     }

@@ -1,4 +1,5 @@
-//! `gospa`, `ospa`, `uospa`, `linearAssignment`.
+//! `gospa`, `ospa`, `uospa`, `gospaSeries`, `ospaSeries`, `linearAssignment`: the core's
+//! `fisst::metrics` options and results, under the contract's names.
 
 use serde::{Deserialize, Serialize};
 use tsify::Tsify;
@@ -7,74 +8,7 @@ use wasm_bindgen::prelude::*;
 use crate::boundary::{JsResult, OrThrow, read, write};
 use crate::names::Renamed;
 use crate::types::PointSet;
-use fisst::metrics::{Gospa, Ospa};
-
-fn two() -> f64 {
-    2.0
-}
-
-/// Options of `gospa`.
-#[derive(Deserialize, Tsify)]
-pub struct GospaOptions {
-    /// The cut-off c > 0, in the units of the points.
-    pub c: f64,
-    /// The order p ≥ 1 (finite; default 2).
-    #[serde(default = "two")]
-    pub p: f64,
-    /// α in (0, 2], the weight of cardinality mismatch (default 2; the decomposition into
-    /// localisation, missed and false targets exists for α = 2 only).
-    #[serde(default = "two")]
-    pub alpha: f64,
-}
-
-/// Result of `gospa`. `localisation` is Σ d^p over the assigned pairs (not rooted); `missed`
-/// and `falseTargets` count unassigned truth and estimate points; `assignment` lists
-/// `[truthIndex, estimateIndex]` pairs. Only `distance` is present when `alpha` ≠ 2.
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct GospaResult {
-    /// The GOSPA distance.
-    pub distance: f64,
-    /// Σ d^p over the assigned pairs (α = 2 only).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub localisation: Option<f64>,
-    /// Unassigned truth points (α = 2 only).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub missed: Option<usize>,
-    /// Unassigned estimate points (α = 2 only).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub false_targets: Option<usize>,
-    /// `[truthIndex, estimateIndex]` pairs of the optimal assignment (α = 2 only).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub assignment: Option<Vec<(usize, usize)>>,
-}
-
-/// Options of `ospa` and `uospa`.
-#[derive(Deserialize, Tsify)]
-pub struct OspaOptions {
-    /// The cut-off c > 0, in the units of the points.
-    pub c: f64,
-    /// The order p ≥ 1 (finite; default 2).
-    #[serde(default = "two")]
-    pub p: f64,
-}
-
-/// Result of `ospa`: rooted parts with distance^p = localisation^p + cardinality^p.
-#[derive(Serialize, Tsify)]
-pub struct OspaResult {
-    /// The OSPA distance, in [0, c].
-    pub distance: f64,
-    /// The localisation part (rooted).
-    pub localisation: f64,
-    /// The cardinality part (rooted).
-    pub cardinality: f64,
-    /// `[truthIndex, estimateIndex]` pairs of the optimal permutation.
-    pub assignment: Vec<(usize, usize)>,
-}
+use fisst::metrics::{GospaOptions, GospaSeriesOptions, OspaOptions, OspaSeriesOptions};
 
 /// Result of `uospa`.
 #[derive(Serialize, Tsify)]
@@ -83,107 +17,50 @@ pub struct UospaResult {
     pub distance: f64,
 }
 
-/// Options of `gospaSeries`: a whole scenario, one truth set and one estimate set per time
-/// step.
-#[derive(Deserialize, Tsify)]
-pub struct GospaSeriesOptions {
-    /// The truth at each step (arrays of points of one common dimension; empty sets allowed).
-    pub truths: Vec<PointSet>,
-    /// The estimate at each step (as many steps as `truths`).
-    pub estimates: Vec<PointSet>,
-    /// The cut-off c > 0, in the units of the points.
-    pub c: f64,
-    /// The order p ≥ 1 (finite; default 2).
-    #[serde(default = "two")]
-    pub p: f64,
-    /// α in (0, 2] (default 2; the decomposition exists for α = 2 only).
-    #[serde(default = "two")]
-    pub alpha: f64,
-}
-
-/// Result of `gospaSeries`: per-step values (arrays indexed by step) and their means. The
-/// decomposition (`localisation`, `missed`, `falseTargets` and their means) is present for
-/// α = 2 only.
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct GospaSeriesResult {
-    /// GOSPA at each step.
-    pub distance: Vec<f64>,
-    /// The mean of `distance` (0 for no steps).
-    pub mean_distance: f64,
-    /// Σ d^p over the assigned pairs at each step (α = 2 only).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub localisation: Option<Vec<f64>>,
-    /// Unassigned truths at each step (α = 2 only).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub missed: Option<Vec<usize>>,
-    /// Unassigned estimates at each step (α = 2 only).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub false_targets: Option<Vec<usize>>,
-    /// The mean of `localisation` (α = 2 only).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub mean_localisation: Option<f64>,
-    /// The mean of `missed` (α = 2 only).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub mean_missed: Option<f64>,
-    /// The mean of `falseTargets` (α = 2 only).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub mean_false_targets: Option<f64>,
-}
-
-/// Options of `ospaSeries`.
-#[derive(Deserialize, Tsify)]
-pub struct OspaSeriesOptions {
-    /// The truth at each step.
-    pub truths: Vec<PointSet>,
-    /// The estimate at each step (as many steps as `truths`).
-    pub estimates: Vec<PointSet>,
-    /// The cut-off c > 0.
-    pub c: f64,
-    /// The order p ≥ 1 (finite; default 2).
-    #[serde(default = "two")]
-    pub p: f64,
-}
-
-/// Result of `ospaSeries`: OSPA and its rooted parts at each step (distance^p =
-/// localisation^p + cardinality^p step by step), and the means of each over the steps.
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct OspaSeriesResult {
-    /// OSPA at each step, eq. (24) of `004_…`.
-    pub distance: Vec<f64>,
-    /// The localisation part at each step, eq. (26).
-    pub localisation: Vec<f64>,
-    /// The cardinality part at each step, eq. (25).
-    pub cardinality: Vec<f64>,
-    /// The mean of `distance` (0 for no steps).
-    pub mean_distance: f64,
-    /// The mean of `localisation`.
-    pub mean_localisation: f64,
-    /// The mean of `cardinality`.
-    pub mean_cardinality: f64,
-}
-
 /// A cost matrix: an array of rows of equal length.
 #[derive(Deserialize, Tsify)]
 #[tsify(type = "(number[] | Float64Array)[]")]
 pub struct CostMatrix(pub Vec<Vec<f64>>);
 
-// `linearAssignment` returns the core's own `fisst::math::Assignment` (its TypeScript is
-// generated by build.rs from the core's source); the contract's name for it stays.
+// The results are the core's own types (their TypeScript is generated by build.rs from the
+// core's source); the contract's names for them stay.
 #[wasm_bindgen(typescript_custom_section)]
-const LINEAR_ASSIGNMENT_RESULT: &str = r#"
+const RESULTS: &str = r#"
+/**
+ * Result of `gospa`: the core's `GospaReport`.
+ */
+export type GospaResult = GospaReport;
+/**
+ * Result of `ospa`: the core's `OspaDecomposition`.
+ */
+export type OspaResult = OspaDecomposition;
+/**
+ * Result of `gospaSeries`: the core's `GospaSeries`.
+ */
+export type GospaSeriesResult = GospaSeries;
+/**
+ * Result of `ospaSeries`: the core's `OspaSeries`.
+ */
+export type OspaSeriesResult = OspaSeries;
 /**
  * Result of `linearAssignment`: the core's `Assignment`.
  */
 export type LinearAssignmentResult = Assignment;
 "#;
+
+/// The coordinates of a point set, one `Vec` per point.
+type Rows = Vec<Vec<f64>>;
+
+/// The two point sets and the options of a two-set metric.
+fn sets_and<T: serde::de::DeserializeOwned>(
+    truth: JsValue,
+    estimate: JsValue,
+    options: JsValue,
+) -> JsResult<(Rows, Rows, T)> {
+    let truth = read::<PointSet>(truth, "truth")?.into_rows();
+    let estimate = read::<PointSet>(estimate, "estimate")?.into_rows();
+    Ok((truth, estimate, read(options, "options")?))
+}
 
 /// GOSPA between two point sets (García-Fernández & Svensson 2019, Def. 2 and Prop. 3).
 ///
@@ -198,28 +75,9 @@ pub fn gospa(
     #[wasm_bindgen(unchecked_param_type = "PointSet")] estimate: JsValue,
     #[wasm_bindgen(unchecked_param_type = "GospaOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let truth = read::<PointSet>(truth, "truth")?.into_rows();
-    let estimate = read::<PointSet>(estimate, "estimate")?.into_rows();
-    let o: GospaOptions = read(options, "options")?;
-    let g = Gospa::new(o.c, o.p, o.alpha).or_throw_in("options")?;
-    if o.alpha != 2.0 {
-        let distance = g.distance(&truth, &estimate).or_throw()?;
-        return write(&GospaResult {
-            distance,
-            localisation: None,
-            missed: None,
-            false_targets: None,
-            assignment: None,
-        });
-    }
-    let d = g.decompose(&truth, &estimate).or_throw()?;
-    write(&GospaResult {
-        distance: d.distance,
-        localisation: Some(d.localisation),
-        missed: Some(d.missed),
-        false_targets: Some(d.false_targets),
-        assignment: Some(d.assignment),
-    })
+    let (truth, estimate, o) = sets_and::<GospaOptions>(truth, estimate, options)?;
+    let g = o.metric().or_throw_in("options")?;
+    write(&Renamed::new(&g.report(&truth, &estimate).or_throw()?))
 }
 
 /// OSPA between two point sets with its rooted localisation and cardinality parts
@@ -232,17 +90,11 @@ pub fn ospa(
     #[wasm_bindgen(unchecked_param_type = "PointSet")] estimate: JsValue,
     #[wasm_bindgen(unchecked_param_type = "OspaOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let truth = read::<PointSet>(truth, "truth")?.into_rows();
-    let estimate = read::<PointSet>(estimate, "estimate")?.into_rows();
-    let o: OspaOptions = read(options, "options")?;
-    let metric = Ospa::new(o.c, o.p).or_throw_in("options")?;
-    let d = metric.decompose(&truth, &estimate).or_throw()?;
-    write(&OspaResult {
-        distance: d.distance,
-        localisation: d.localisation,
-        cardinality: d.cardinality,
-        assignment: d.assignment,
-    })
+    let (truth, estimate, o) = sets_and::<OspaOptions>(truth, estimate, options)?;
+    let metric = o.metric().or_throw_in("options")?;
+    write(&Renamed::new(
+        &metric.decompose(&truth, &estimate).or_throw()?,
+    ))
 }
 
 /// UOSPA (GOSPA with α = 1) between two point sets. Options `{ c, p = 2 }`; returns
@@ -253,16 +105,10 @@ pub fn uospa(
     #[wasm_bindgen(unchecked_param_type = "PointSet")] estimate: JsValue,
     #[wasm_bindgen(unchecked_param_type = "OspaOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let truth = read::<PointSet>(truth, "truth")?.into_rows();
-    let estimate = read::<PointSet>(estimate, "estimate")?.into_rows();
-    let o: OspaOptions = read(options, "options")?;
-    let g = Gospa::uospa(o.c, o.p).or_throw_in("options")?;
+    let (truth, estimate, o) = sets_and::<OspaOptions>(truth, estimate, options)?;
+    let g = o.uospa().or_throw_in("options")?;
     let distance = g.distance(&truth, &estimate).or_throw()?;
     write(&UospaResult { distance })
-}
-
-fn steps(sets: Vec<PointSet>) -> Vec<Vec<Vec<f64>>> {
-    sets.into_iter().map(PointSet::into_rows).collect()
 }
 
 /// GOSPA over a whole scenario in one call: `options.truths[t]` and `options.estimates[t]`
@@ -273,20 +119,7 @@ pub fn gospa_series(
     #[wasm_bindgen(unchecked_param_type = "GospaSeriesOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: GospaSeriesOptions = read(options, "options")?;
-    let g = Gospa::new(o.c, o.p, o.alpha).or_throw_in("options")?;
-    let (truths, estimates) = (steps(o.truths), steps(o.estimates));
-    let s = g.series(&truths, &estimates).or_throw_in("options")?;
-    let parts = s.parts;
-    write(&GospaSeriesResult {
-        distance: s.distance,
-        mean_distance: s.mean_distance,
-        mean_localisation: parts.as_ref().map(|p| p.mean_localisation),
-        mean_missed: parts.as_ref().map(|p| p.mean_missed),
-        mean_false_targets: parts.as_ref().map(|p| p.mean_false_targets),
-        localisation: parts.as_ref().map(|p| p.localisation.clone()),
-        missed: parts.as_ref().map(|p| p.missed.clone()),
-        false_targets: parts.map(|p| p.false_targets),
-    })
+    write(&Renamed::new(&o.series().or_throw_in("options")?))
 }
 
 /// OSPA with its localisation and cardinality parts over a whole scenario in one call
@@ -296,17 +129,7 @@ pub fn ospa_series(
     #[wasm_bindgen(unchecked_param_type = "OspaSeriesOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: OspaSeriesOptions = read(options, "options")?;
-    let metric = Ospa::new(o.c, o.p).or_throw_in("options")?;
-    let (truths, estimates) = (steps(o.truths), steps(o.estimates));
-    let s = metric.series(&truths, &estimates).or_throw_in("options")?;
-    write(&OspaSeriesResult {
-        distance: s.distance,
-        localisation: s.localisation,
-        cardinality: s.cardinality,
-        mean_distance: s.mean_distance,
-        mean_localisation: s.mean_localisation,
-        mean_cardinality: s.mean_cardinality,
-    })
+    write(&Renamed::new(&o.series().or_throw_in("options")?))
 }
 
 /// Exact rectangular linear assignment: `cost` is an array of rows (equal lengths). Returns

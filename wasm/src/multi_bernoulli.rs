@@ -1,238 +1,48 @@
 //! Multi-Bernoulli cardinality and optimal estimation (Section III of the spooky-effect
-//! paper).
+//! paper): the core's `fisst::estimators` options and results, under the contract's names.
 
-use js_sys::Uint8Array;
-use serde::{Deserialize, Serialize};
-use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, read, write};
+use crate::names::Renamed;
 use crate::types::Numbers;
 use fisst::cardinality::{leave_one_out_cardinalities, multi_bernoulli_cardinality};
-use fisst::estimators::alternatives::{self, alternative_estimate};
 use fisst::estimators::figures::{
-    self, DecisionMapOptions, IdenticalComponentCountsOptions, decision_map,
-    identical_component_counts,
+    DecisionMapOptions, IdenticalComponentCountsOptions, decision_map, identical_component_counts,
 };
-use fisst::estimators::multi_bernoulli::{SetMetric, mean_error, optimal_estimate};
+use fisst::estimators::{
+    MbAlternativeEstimateOptions, MbMeanSquareErrorOptions, MbOptimalEstimateOptions,
+};
 
-fn one() -> f64 {
-    1.0
-}
-
-fn two() -> f64 {
-    2.0
-}
-
-/// A set metric of Section III.
-#[derive(Clone, Copy, Debug, Deserialize, Tsify)]
-#[serde(rename_all = "lowercase")]
-pub enum SetMetricName {
-    /// GOSPA with the given `alpha`.
-    Gospa,
-    /// OSPA.
-    Ospa,
-    /// UOSPA (GOSPA with α = 1).
-    Uospa,
-}
-
-impl SetMetricName {
-    fn metric(self, alpha: f64) -> SetMetric {
-        match self {
-            SetMetricName::Gospa => SetMetric::Gospa { alpha },
-            SetMetricName::Ospa => SetMetric::Ospa,
-            SetMetricName::Uospa => SetMetric::Uospa,
-        }
-    }
-}
-
-/// Options of `mbOptimalEstimate`.
-#[derive(Deserialize, Tsify)]
-pub struct MbOptimalEstimateOptions {
-    /// Existence probability r_i in [0, 1] of each far-apart component.
-    pub existence: Numbers,
-    /// The metric whose mean error is minimised.
-    pub metric: SetMetricName,
-    /// Cut-off c > 0 (default 1).
-    #[serde(default = "one")]
-    pub c: f64,
-    /// Order p ≥ 1 (default 2). The error minimised is E[d^p], the mean square error for
-    /// p = 2.
-    #[serde(default = "two")]
-    pub p: f64,
-    /// GOSPA's α in (0, 2] (default 2; ignored by OSPA and UOSPA).
-    #[serde(default = "two")]
-    pub alpha: f64,
-}
-
-/// Result of `mbOptimalEstimate`.
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct MbOptimalEstimateResult {
-    /// `report[i]`: whether component i is in the optimal estimate.
-    pub report: Vec<bool>,
-    /// Its mean error E[d^p] (the mean square error for p = 2).
-    pub mean_square_error: f64,
-}
-
-/// Options of `mbMeanSquareError`.
-#[derive(Deserialize, Tsify)]
-pub struct MbMeanSquareErrorOptions {
-    /// Existence probability r_i in [0, 1] of each far-apart component.
-    pub existence: Numbers,
-    /// The estimate: `report[i]` says whether component i is reported (one per component).
-    pub report: Vec<bool>,
-    /// The metric.
-    pub metric: SetMetricName,
-    /// Cut-off c > 0 (default 1).
-    #[serde(default = "one")]
-    pub c: f64,
-    /// Order p ≥ 1 (default 2).
-    #[serde(default = "two")]
-    pub p: f64,
-    /// GOSPA's α in (0, 2] (default 2).
-    #[serde(default = "two")]
-    pub alpha: f64,
-}
-
-/// A classical multi-object estimator of Fig. 2.
-#[derive(Clone, Copy, Debug, Deserialize, Tsify)]
-#[serde(rename_all = "kebab-case")]
-pub enum AlternativeMethod {
-    /// Marginal multi-target.
-    Mam,
-    /// Joint multi-target.
-    Jom,
-    /// Maximise the cardinality pmf, then report the most probable components.
-    MapCardinality,
-}
-
-impl From<AlternativeMethod> for alternatives::AlternativeMethod {
-    fn from(m: AlternativeMethod) -> Self {
-        match m {
-            AlternativeMethod::Mam => Self::Mam,
-            AlternativeMethod::Jom => Self::Jom,
-            AlternativeMethod::MapCardinality => Self::MapCardinality,
-        }
-    }
-}
-
-/// Options of `mbAlternativeEstimate`.
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct MbAlternativeEstimateOptions {
-    /// Existence probability r_i in [0, 1] of each component.
-    pub existence: Numbers,
-    /// The estimator.
-    pub method: AlternativeMethod,
-    /// `lnPeak[i]` = −½ ln det(2π P_i) of component i's Gaussian (default 0 for all: equal
-    /// covariances); one per component.
-    #[tsify(optional)]
-    pub ln_peak: Option<Numbers>,
-    /// ln of JoM's constant (default 0, i.e. c = (2πε)^(d/2) for P = εI).
-    #[serde(default)]
-    pub ln_c: f64,
-}
-
-/// Result of `mbAlternativeEstimate`.
-#[derive(Serialize, Tsify)]
-pub struct MbAlternativeEstimateResult {
-    /// `report[i]`: whether component i is reported.
-    pub report: Vec<bool>,
-}
-
-/// An estimator of the decision maps.
-#[derive(Clone, Copy, Debug, Deserialize, Tsify)]
-#[serde(rename_all = "kebab-case")]
-pub enum DecisionEstimator {
-    /// Optimal GOSPA estimate.
-    Gospa,
-    /// Optimal OSPA estimate.
-    Ospa,
-    /// Optimal UOSPA estimate.
-    Uospa,
-    /// Marginal multi-target.
-    Mam,
-    /// Joint multi-target.
-    Jom,
-    /// MAP cardinality, then the most probable components.
-    MapCardinality,
-}
-
-impl From<DecisionEstimator> for figures::DecisionEstimator {
-    fn from(e: DecisionEstimator) -> Self {
-        match e {
-            DecisionEstimator::Gospa => Self::Gospa,
-            DecisionEstimator::Ospa => Self::Ospa,
-            DecisionEstimator::Uospa => Self::Uospa,
-            DecisionEstimator::Mam => Self::Mam,
-            DecisionEstimator::Jom => Self::Jom,
-            DecisionEstimator::MapCardinality => Self::MapCardinality,
-        }
-    }
-}
-
-fn hundred() -> usize {
-    100
-}
-
-/// Options of `mbDecisionMap`.
-#[derive(Deserialize, Tsify)]
-pub struct MbDecisionMapOptions {
-    /// The estimator whose decisions are mapped.
-    pub estimator: DecisionEstimator,
-    /// Cells per axis, an integer in [1, 2000] (default 100).
-    #[serde(default = "hundred")]
-    pub resolution: usize,
-    /// Cut-off c > 0 (default 1).
-    #[serde(default = "one")]
-    pub c: f64,
-    /// Order p ≥ 1 (default 2).
-    #[serde(default = "two")]
-    pub p: f64,
-    /// GOSPA's α in (0, 2] (default 2).
-    #[serde(default = "two")]
-    pub alpha: f64,
-}
-
-/// Result of `mbDecisionMap`.
-#[derive(Serialize, Tsify)]
-pub struct MbDecisionMapResult {
-    /// Cells per axis.
-    pub resolution: usize,
-    /// `decisions[row * resolution + col]` = u1 + 2·u2 at r1 = (col + ½)/resolution,
-    /// r2 = (row + ½)/resolution.
-    #[serde(with = "serde_wasm_bindgen::preserve")]
-    #[tsify(type = "Uint8Array")]
-    pub decisions: Uint8Array,
-}
-
-/// Options of `mbIdenticalComponentCounts`.
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct MbIdenticalComponentCountsOptions {
-    /// The common existence probability r in [0, 1].
-    pub existence: f64,
-    /// n runs over 1 … maxComponents, an integer in [1, 1000].
-    pub max_components: usize,
-}
-
-/// Result of `mbIdenticalComponentCounts`: for each n, the number of targets each rule
-/// reports.
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct MbIdenticalComponentCountsResult {
-    /// n = 1 … maxComponents.
-    pub n: Vec<usize>,
-    /// Optimal GOSPA estimate (α = 2).
-    pub gospa: Vec<usize>,
-    /// Optimal OSPA estimate.
-    pub ospa: Vec<usize>,
-    /// Optimal UOSPA estimate.
-    pub uospa: Vec<usize>,
-    /// MAP cardinality rule.
-    pub map_cardinality: Vec<usize>,
-}
+// The options and results are the core's own types (their TypeScript is generated by build.rs
+// from the core's source); the contract's names for them stay.
+#[wasm_bindgen(typescript_custom_section)]
+const NAMES: &str = r#"
+/**
+ * Result of `mbOptimalEstimate`: the core's `MbEstimate`.
+ */
+export type MbOptimalEstimateResult = MbEstimate;
+/**
+ * Result of `mbAlternativeEstimate`: the core's `AlternativeEstimate`.
+ */
+export type MbAlternativeEstimateResult = AlternativeEstimate;
+/**
+ * Options of `mbDecisionMap`: the core's `DecisionMapOptions`.
+ */
+export type MbDecisionMapOptions = DecisionMapOptions;
+/**
+ * Result of `mbDecisionMap`: the core's `DecisionMap`.
+ */
+export type MbDecisionMapResult = DecisionMap;
+/**
+ * Options of `mbIdenticalComponentCounts`: the core's `IdenticalComponentCountsOptions`.
+ */
+export type MbIdenticalComponentCountsOptions = IdenticalComponentCountsOptions;
+/**
+ * Result of `mbIdenticalComponentCounts`: the core's `IdenticalComponentCounts`.
+ */
+export type MbIdenticalComponentCountsResult = IdenticalComponentCounts;
+"#;
 
 /// The cardinality pmf of a multi-Bernoulli (Poisson-binomial): `pmf[n] = P(N = n)`,
 /// n = 0 … existence.length. Exact, nonnegative, sums to 1.
@@ -262,12 +72,7 @@ pub fn mb_optimal_estimate(
     #[wasm_bindgen(unchecked_param_type = "MbOptimalEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: MbOptimalEstimateOptions = read(options, "options")?;
-    let e = optimal_estimate(&o.existence.0, o.metric.metric(o.alpha), o.c, o.p)
-        .or_throw_in("options")?;
-    write(&MbOptimalEstimateResult {
-        report: e.report,
-        mean_square_error: e.mean_error,
-    })
+    write(&Renamed::new(&o.estimate().or_throw_in("options")?))
 }
 
 /// The mean error E[d^p] (mean square for p = 2) of the estimate `report` (a boolean per
@@ -278,14 +83,7 @@ pub fn mb_mean_square_error(
     #[wasm_bindgen(unchecked_param_type = "MbMeanSquareErrorOptions")] options: JsValue,
 ) -> JsResult<f64> {
     let o: MbMeanSquareErrorOptions = read(options, "options")?;
-    mean_error(
-        &o.existence.0,
-        &o.report,
-        o.metric.metric(o.alpha),
-        o.c,
-        o.p,
-    )
-    .or_throw_in("options")
+    o.mean_error().or_throw_in("options")
 }
 
 /// The classical estimators of Fig. 2: `method` is `'mam'` (marginal multi-target),
@@ -298,13 +96,7 @@ pub fn mb_alternative_estimate(
     #[wasm_bindgen(unchecked_param_type = "MbAlternativeEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: MbAlternativeEstimateOptions = read(options, "options")?;
-    let existence = o.existence.0;
-    let ln_peak = o
-        .ln_peak
-        .map_or_else(|| vec![0.0; existence.len()], |n| n.0);
-    let report = alternative_estimate(&existence, o.method.into(), &ln_peak, o.ln_c)
-        .or_throw_in("options")?;
-    write(&MbAlternativeEstimateResult { report })
+    write(&Renamed::new(&o.estimate().or_throw_in("options")?))
 }
 
 /// Fig. 1 / Fig. 2 decision maps for two far-apart components: for every cell of a
@@ -316,19 +108,10 @@ pub fn mb_alternative_estimate(
 pub fn mb_decision_map(
     #[wasm_bindgen(unchecked_param_type = "MbDecisionMapOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let o: MbDecisionMapOptions = read(options, "options")?;
-    let map = decision_map(&DecisionMapOptions {
-        estimator: o.estimator.into(),
-        resolution: o.resolution,
-        c: o.c,
-        p: o.p,
-        alpha: o.alpha,
-    })
-    .or_throw_rendered("options")?;
-    write(&MbDecisionMapResult {
-        resolution: map.resolution,
-        decisions: Uint8Array::from(map.decisions.as_slice()),
-    })
+    let o: DecisionMapOptions = read(options, "options")?;
+    write(&Renamed::new(
+        &decision_map(&o).or_throw_rendered("options")?,
+    ))
 }
 
 /// Fig. 3: the optimal number of reported targets for n = 1 … maxComponents identical
@@ -338,17 +121,8 @@ pub fn mb_decision_map(
 pub fn mb_identical_component_counts(
     #[wasm_bindgen(unchecked_param_type = "MbIdenticalComponentCountsOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let o: MbIdenticalComponentCountsOptions = read(options, "options")?;
-    let k = identical_component_counts(&IdenticalComponentCountsOptions {
-        existence: o.existence,
-        max_components: o.max_components,
-    })
-    .or_throw_rendered("options")?;
-    write(&MbIdenticalComponentCountsResult {
-        n: k.n,
-        gospa: k.gospa,
-        ospa: k.ospa,
-        uospa: k.uospa,
-        map_cardinality: k.map_cardinality,
-    })
+    let o: IdenticalComponentCountsOptions = read(options, "options")?;
+    write(&Renamed::new(
+        &identical_component_counts(&o).or_throw_rendered("options")?,
+    ))
 }

@@ -127,3 +127,43 @@ pub struct Run {
     assert!(!ts.contains("inside"), "{ts}");
     assert!(!ts.contains("State"), "{ts}");
 }
+
+const SHAPES: &str = r#"
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]
+pub enum Method {
+    Mam,
+    MapCardinality,
+}
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Inputs {
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::numbers"))]
+    pub existence: Vec<f64>,
+    #[cfg_attr(feature = "serde", serde(default, with = "crate::serde_shapes::numbers"))]
+    pub ln_peak: Option<Vec<f64>>,
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::point_sets"))]
+    pub truths: Vec<Vec<Vec<f64>>>,
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::bytes"))]
+    pub decisions: Vec<u8>,
+    pub method: Method,
+}
+"#;
+
+#[test]
+fn kebab_case_variants_and_the_number_shapes_of_serde_shapes() {
+    let mut defs = BTreeMap::new();
+    tsgen::walk(syn::parse_file(SHAPES).unwrap().items, &mut defs);
+    let root = "Inputs".to_string();
+    let (ts, warnings) = tsgen::declarations(&defs, &[&root]);
+    assert!(warnings.is_empty(), "{warnings:?}");
+    for expected in [
+        "    existence: number[] | Float64Array;",
+        "    lnPeak?: number[] | Float64Array;",
+        "    truths: (number[] | Float64Array)[][];",
+        "    decisions: Uint8Array;",
+        "    | \"mam\"",
+        "    | \"map-cardinality\"",
+    ] {
+        assert!(ts.contains(expected), "{expected:?} not in\n{ts}");
+    }
+}

@@ -31,13 +31,13 @@ fn main() {
                     .unwrap()
                     .series(&truths, &estimates)
                     .unwrap();
-                let parts = s.parts.expect("alpha = 2");
+                assert!(s.missed.is_some(), "alpha = 2");
                 json!({"distance": s.distance, "mean_distance": s.mean_distance,
-                       "localisation": parts.localisation, "missed": parts.missed,
-                       "false_targets": parts.false_targets,
-                       "mean_localisation": parts.mean_localisation,
-                       "mean_missed": parts.mean_missed,
-                       "mean_false_targets": parts.mean_false_targets})
+                       "localisation": s.localisation, "missed": s.missed,
+                       "false_targets": s.false_targets,
+                       "mean_localisation": s.mean_localisation,
+                       "mean_missed": s.mean_missed,
+                       "mean_false_targets": s.mean_false_targets})
             }
             "ospa" => {
                 let s = Ospa::new(c, p)

@@ -189,6 +189,8 @@ pub fn jom_estimate(existence: &[f64], ln_peak: &[f64], ln_c: f64) -> Result<Vec
 
 /// One of the classical estimators of Fig. 2 of `003_…`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]
 pub enum AlternativeMethod {
     /// Marginal multi-target ([`mam_estimate`]).
     Mam,

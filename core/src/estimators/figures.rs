@@ -13,6 +13,7 @@ use alloc::vec::Vec;
 use super::alternatives::{AlternativeMethod, alternative_estimate, map_cardinality_estimate};
 use super::multi_bernoulli::{SetMetric, optimal_estimate};
 use crate::error::{Error, Result, check_probability};
+use crate::metrics::{default_alpha, default_order};
 
 /// Largest [`DecisionMapOptions::resolution`]: 2000 × 2000 cells.
 pub const MAX_DECISION_MAP_RESOLUTION: usize = 2000;
@@ -22,6 +23,8 @@ pub const MAX_IDENTICAL_COMPONENTS: usize = 1000;
 
 /// An estimator whose decisions [`decision_map`] maps.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]
 pub enum DecisionEstimator {
     /// The optimal GOSPA estimate (with [`DecisionMapOptions::alpha`]).
     Gospa,
@@ -37,18 +40,34 @@ pub enum DecisionEstimator {
     MapCardinality,
 }
 
+/// The default [`DecisionMapOptions::resolution`]: 100 cells per axis.
+pub const fn default_resolution() -> usize {
+    100
+}
+
+/// The default cut-off c of the figures' metrics: 1 (the components are far apart, so the
+/// decisions do not depend on it).
+pub const fn default_cutoff() -> f64 {
+    1.0
+}
+
 /// Options of [`decision_map`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct DecisionMapOptions {
     /// The estimator whose decisions are mapped.
     pub estimator: DecisionEstimator,
-    /// Cells per axis, in [1, [`MAX_DECISION_MAP_RESOLUTION`]] (default 100).
+    /// Cells per axis, an integer in [1, 2000] ([`MAX_DECISION_MAP_RESOLUTION`]; default 100).
+    #[cfg_attr(feature = "serde", serde(default = "default_resolution"))]
     pub resolution: usize,
     /// The metrics' cut-off c > 0 (default 1; the metric estimators only).
+    #[cfg_attr(feature = "serde", serde(default = "default_cutoff"))]
     pub c: f64,
     /// The metrics' order p ≥ 1 (default 2; the metric estimators only).
+    #[cfg_attr(feature = "serde", serde(default = "default_order"))]
     pub p: f64,
     /// GOSPA's α in (0, 2] (default 2; [`DecisionEstimator::Gospa`] only).
+    #[cfg_attr(feature = "serde", serde(default = "default_alpha"))]
     pub alpha: f64,
 }
 
@@ -57,21 +76,23 @@ impl DecisionMapOptions {
     pub fn new(estimator: DecisionEstimator) -> Self {
         Self {
             estimator,
-            resolution: 100,
-            c: 1.0,
-            p: 2.0,
-            alpha: 2.0,
+            resolution: default_resolution(),
+            c: default_cutoff(),
+            p: default_order(),
+            alpha: default_alpha(),
         }
     }
 }
 
 /// A decision map: the decision of every cell of a grid of (r1, r2).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct DecisionMap {
     /// Cells per axis.
     pub resolution: usize,
     /// `decisions[row * resolution + col]` = u1 + 2·u2 at r1 = (col + ½)/resolution,
     /// r2 = (row + ½)/resolution.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::bytes"))]
     pub decisions: Vec<u8>,
 }
 
@@ -140,15 +161,18 @@ pub fn decision_map(options: &DecisionMapOptions) -> Result<DecisionMap> {
 
 /// Options of [`identical_component_counts`] (both required).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct IdenticalComponentCountsOptions {
     /// The common existence probability r in [0, 1].
     pub existence: f64,
-    /// n runs over 1 … `max_components`, in [1, [`MAX_IDENTICAL_COMPONENTS`]].
+    /// n runs over 1 … `max_components`, an integer in [1, 1000]
+    /// ([`MAX_IDENTICAL_COMPONENTS`]).
     pub max_components: usize,
 }
 
 /// For each n, the number of targets each rule reports ([`identical_component_counts`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct IdenticalComponentCounts {
     /// n = 1 … `max_components`.
     pub n: Vec<usize>,

@@ -8,7 +8,14 @@
 //! | [`alternatives`] (MaM, JoM, MAP cardinality) | Fig. 2 | `alternatives::tests::two_component_rules`, `alternatives::tests::fig2_alternative_estimate_dispatches_to_each_rule`, `alternatives::tests::mam_prefers_the_sharper_component_when_spreads_differ`, `paper_003_spooky::fig2_decision_rules_match_a_direct_maximisation`, `paper_003_spooky::fig2_estimators_are_spooky_too` |
 //! | [`figures::decision_map`] | Figs 1 and 2: decisions over a grid of (r1, r2) | `figures::tests::fig1_decision_map_cells_are_the_optimal_estimates`, `figures::tests::fig2_decision_map_uses_the_alternatives_with_equal_covariances`, `figures::tests::fig1_decision_map_checks_its_options` |
 //! | [`figures::identical_component_counts`] | Fig. 3, eqs. (9) and (11) | `figures::tests::fig3_counts_follow_eq9_and_eq11`, `figures::tests::fig3_counts_check_their_options` |
+//! | [`options`]: [`MbOptimalEstimateOptions`], [`MbMeanSquareErrorOptions`], [`MbAlternativeEstimateOptions`] | the inputs of (9)/(11), Lemma 4 and Fig. 2 as data | `options::tests::lemma4_and_eq9_options_call_the_estimators`, `options::tests::fig2_alternative_options_default_ln_peak_to_zero` |
 
 pub mod alternatives;
 pub mod figures;
 pub mod multi_bernoulli;
+pub mod options;
+
+pub use options::{
+    AlternativeEstimate, MbAlternativeEstimateOptions, MbMeanSquareErrorOptions,
+    MbOptimalEstimateOptions, SetMetricName,
+};

@@ -107,8 +107,9 @@ enum Kind {
 pub struct MbEstimate {
     /// u: `report[i]` is true when component i is reported.
     pub report: Vec<bool>,
-    /// E[d^p] of this estimate (the mean square error for p = 2).
-    pub mean_error: f64,
+    /// E[d^p] of this estimate: the mean square error for p = 2, its usual order (the name
+    /// the JavaScript contract gives it, `meanSquareError`).
+    pub mean_square_error: f64,
 }
 
 fn check_inputs(existence: &[f64], metric: SetMetric, c: f64, p: f64) -> Result<Kind> {
@@ -272,7 +273,10 @@ pub fn optimal_estimate(
     {
         let report: Vec<bool> = existence.iter().map(|&r| r > 0.5).collect();
         let mean_error = mean_error(existence, &report, SetMetric::GOSPA, c, p)?;
-        return Ok(MbEstimate { report, mean_error });
+        return Ok(MbEstimate {
+            report,
+            mean_square_error: mean_error,
+        });
     }
     // Components by decreasing existence, ties in index order.
     let mut order: Vec<usize> = (0..n).collect();
@@ -302,7 +306,7 @@ pub fn optimal_estimate(
     }
     Ok(MbEstimate {
         report,
-        mean_error: scaled(fns::powp(c, p), best),
+        mean_square_error: scaled(fns::powp(c, p), best),
     })
 }
 
@@ -377,7 +381,7 @@ mod overflow_tests {
     fn huge_orders_give_zero_or_infinity_never_nan() {
         // Found by the boundary fuzzer: c^p overflows for p = 1e308.
         let e = optimal_estimate(&[], SetMetric::GOSPA, 1.0000000000000002, 1e308).unwrap();
-        assert_eq!(e.mean_error, 0.0);
+        assert_eq!(e.mean_square_error, 0.0);
         let m = mean_error(&[0.5], &[true], SetMetric::Ospa, 2.0, 1e308).unwrap();
         assert_eq!(m, f64::INFINITY);
         let m = mean_error(&[1.0], &[true], SetMetric::Uospa, 2.0, 1e308).unwrap();
@@ -481,12 +485,12 @@ mod tests {
                 for metric in METRICS {
                     let best = optimal_estimate(&r, metric, 1.0, 2.0).unwrap();
                     let check = mean_error(&r, &best.report, metric, 1.0, 2.0).unwrap();
-                    assert!((check - best.mean_error).abs() <= 1e-12);
+                    assert!((check - best.mean_square_error).abs() <= 1e-12);
                     let truth = exhaustive_best(&r, metric);
                     assert!(
-                        best.mean_error <= truth + 1e-12,
+                        best.mean_square_error <= truth + 1e-12,
                         "{metric:?} r={r:?}: {} > {truth}",
-                        best.mean_error
+                        best.mean_square_error
                     );
                 }
             }
@@ -500,7 +504,7 @@ mod tests {
         assert_eq!(e.report, vec![false, true, false, true, false, true]);
         // c²/2 Σ min(r, 1 − r)
         let expected = 4.5 * (0.2 + 0.49 + 0.5 + 0.01);
-        assert!((e.mean_error - expected).abs() < 1e-12);
+        assert!((e.mean_square_error - expected).abs() < 1e-12);
     }
 
     #[test]
@@ -528,12 +532,14 @@ mod tests {
         ] {
             let best = optimal_estimate(&r, metric, 1.0, 2.0).unwrap();
             let again = mean_error(&r, &best.report, metric, 1.0, 2.0).unwrap();
-            assert!((again - best.mean_error).abs() <= 1e-10 * (1.0 + again));
+            assert!((again - best.mean_square_error).abs() <= 1e-10 * (1.0 + again));
             // Local optimality: flipping any one component does not help.
             for i in (0..1000).step_by(97) {
                 let mut u = best.report.clone();
                 u[i] = !u[i];
-                assert!(mean_error(&r, &u, metric, 1.0, 2.0).unwrap() >= best.mean_error - 1e-12);
+                assert!(
+                    mean_error(&r, &u, metric, 1.0, 2.0).unwrap() >= best.mean_square_error - 1e-12
+                );
             }
         }
     }
@@ -565,6 +571,6 @@ mod tests {
             "c"
         );
         let e = optimal_estimate(&[], SetMetric::Ospa, 1.0, 2.0).unwrap();
-        assert_eq!((e.report.len(), e.mean_error), (0, 0.0));
+        assert_eq!((e.report.len(), e.mean_square_error), (0, 0.0));
     }
 }

@@ -78,6 +78,52 @@ pub struct GospaDecomposition {
     pub assignment: Vec<(usize, usize)>,
 }
 
+/// GOSPA between two point sets with, for α = 2, its decomposition (Prop. 3 of the
+/// spooky-effect paper): what [`Gospa::report`] returns. For α ≠ 2 only `distance` is set
+/// (the decomposition into localisation, missed and false targets exists for α = 2 only).
+#[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct GospaReport {
+    /// The GOSPA distance.
+    pub distance: f64,
+    /// Σ d^p over the assigned pairs, not rooted (α = 2 only).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub localisation: Option<f64>,
+    /// Unassigned truth points (α = 2 only).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub missed: Option<usize>,
+    /// Unassigned estimate points (α = 2 only).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub false_targets: Option<usize>,
+    /// `(truth index, estimate index)` pairs of the optimal assignment (α = 2 only).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub assignment: Option<Vec<(usize, usize)>>,
+}
+
+impl From<GospaDecomposition> for GospaReport {
+    fn from(d: GospaDecomposition) -> Self {
+        Self {
+            distance: d.distance,
+            localisation: Some(d.localisation),
+            missed: Some(d.missed),
+            false_targets: Some(d.false_targets),
+            assignment: Some(d.assignment),
+        }
+    }
+}
+
 impl Gospa {
     /// GOSPA with cut-off `c`, order `p` and `alpha`.
     ///

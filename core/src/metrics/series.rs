@@ -9,8 +9,8 @@ use crate::error::{Error, Result};
 use crate::math::sum::sum;
 
 /// GOSPA over a scenario: the distance at every time step and its mean, with the α = 2
-/// decomposition when it exists. The fields are the ones the JavaScript `gospaSeries`
-/// returns (`meanDistance`, `falseTargets`, … in camelCase).
+/// decomposition (Prop. 3 of `003_…`: localisation, missed and false targets) per step and
+/// averaged, when it exists.
 ///
 /// Built by [`Gospa::series`] / [`Gospa::series_with`], or collected from per-step
 /// decompositions: `steps.map(|(x, y)| g.decompose(x, y)).collect::<Result<GospaSeries>>()`.
@@ -21,32 +21,47 @@ pub struct GospaSeries {
     pub distance: Vec<f64>,
     /// The mean of `distance` over the steps (0 for no steps).
     pub mean_distance: f64,
-    /// The decomposition at each step, for α = 2 only (`None` for other α, like
-    /// [`Gospa::decompose`]).
-    pub parts: Option<GospaSeriesParts>,
-}
-
-/// The α = 2 decomposition of a [`GospaSeries`] (Prop. 3 of `003_…`), per step and averaged.
-#[derive(Clone, Debug, Default, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct GospaSeriesParts {
     /// Σ d^p over the assigned pairs at each step (not rooted, as in
-    /// [`GospaDecomposition::localisation`]).
-    pub localisation: Vec<f64>,
-    /// Missed targets (unassigned truths) at each step.
-    pub missed: Vec<usize>,
-    /// False targets (unassigned estimates) at each step.
-    pub false_targets: Vec<usize>,
-    /// The mean of `localisation`.
-    pub mean_localisation: f64,
-    /// The mean of `missed`.
-    pub mean_missed: f64,
-    /// The mean of `false_targets`.
-    pub mean_false_targets: f64,
+    /// [`GospaDecomposition::localisation`]; α = 2 only, like [`Gospa::decompose`]).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub localisation: Option<Vec<f64>>,
+    /// Missed targets (unassigned truths) at each step (α = 2 only).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub missed: Option<Vec<usize>>,
+    /// False targets (unassigned estimates) at each step (α = 2 only).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub false_targets: Option<Vec<usize>>,
+    /// The mean of `localisation` (α = 2 only).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub mean_localisation: Option<f64>,
+    /// The mean of `missed` (α = 2 only).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub mean_missed: Option<f64>,
+    /// The mean of `false_targets` (α = 2 only).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub mean_false_targets: Option<f64>,
 }
 
 /// OSPA over a scenario: distance, localisation and cardinality parts at every time step and
-/// their means. The fields are the ones the JavaScript `ospaSeries` returns.
+/// their means.
 ///
 /// The means are of the rooted per-step values, so `mean_distance^p` is in general not
 /// `mean_localisation^p + mean_cardinality^p` (that identity holds step by step).
@@ -78,19 +93,20 @@ fn mean(values: impl IntoIterator<Item = f64>, len: usize) -> f64 {
 impl GospaSeries {
     fn from_parts(distance: Vec<f64>, parts: Option<(Vec<f64>, Vec<usize>, Vec<usize>)>) -> Self {
         let t = distance.len();
-        let parts = parts.map(|(localisation, missed, false_targets)| GospaSeriesParts {
-            mean_localisation: mean(localisation.iter().copied(), t),
-            mean_missed: mean(missed.iter().map(|&k| k as f64), t),
-            mean_false_targets: mean(false_targets.iter().map(|&k| k as f64), t),
-            localisation,
-            missed,
-            false_targets,
-        });
-        Self {
+        let mut s = Self {
             mean_distance: mean(distance.iter().copied(), t),
             distance,
-            parts,
+            ..Self::default()
+        };
+        if let Some((localisation, missed, false_targets)) = parts {
+            s.mean_localisation = Some(mean(localisation.iter().copied(), t));
+            s.mean_missed = Some(mean(missed.iter().map(|&k| k as f64), t));
+            s.mean_false_targets = Some(mean(false_targets.iter().map(|&k| k as f64), t));
+            s.localisation = Some(localisation);
+            s.missed = Some(missed);
+            s.false_targets = Some(false_targets);
         }
+        s
     }
 }
 
@@ -210,7 +226,7 @@ where
 
 impl Gospa {
     /// GOSPA at every step of a scenario under the Euclidean distance: `truths[t]` against
-    /// `estimates[t]`, with the α = 2 decomposition (`parts`) when α = 2.
+    /// `estimates[t]`, with the α = 2 decomposition when α = 2.
     ///
     /// Each step is exactly [`Gospa::decompose`] (α = 2) or [`Gospa::distance`] (other α),
     /// so the values are identical to per-step calls; the steps run in parallel with the
@@ -232,8 +248,7 @@ impl Gospa {
     /// // step 0: one pair at 0.5; step 1: two missed targets at c/2 = 1 each
     /// assert_eq!(s.distance, vec![0.5, 2.0]);
     /// assert_eq!(s.mean_distance, 1.25);
-    /// let parts = s.parts.unwrap();
-    /// assert_eq!((parts.missed, parts.mean_missed), (vec![0, 2], 1.0));
+    /// assert_eq!((s.missed, s.mean_missed), (Some(vec![0, 2]), Some(1.0)));
     /// # Ok::<(), fisst::Error>(())
     /// ```
     pub fn series<A, B, P>(&self, truths: &[A], estimates: &[B]) -> Result<GospaSeries>
@@ -382,25 +397,26 @@ mod tests {
                 .zip(&estimates)
                 .map(|(x, y)| g.decompose(x, y).unwrap())
                 .collect();
-            let parts = s.parts.clone().unwrap();
+            let (localisation, missed, false_targets) = (
+                s.localisation.clone().unwrap(),
+                s.missed.clone().unwrap(),
+                s.false_targets.clone().unwrap(),
+            );
             for (t, d) in per_step.iter().enumerate() {
                 assert_eq!(s.distance[t], d.distance);
-                assert_eq!(parts.localisation[t], d.localisation);
-                assert_eq!(
-                    (parts.missed[t], parts.false_targets[t]),
-                    (d.missed, d.false_targets)
-                );
+                assert_eq!(localisation[t], d.localisation);
+                assert_eq!((missed[t], false_targets[t]), (d.missed, d.false_targets));
             }
             let naive = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
             assert!((s.mean_distance - naive(&s.distance)).abs() <= 1e-13 * s.mean_distance);
-            let missed: Vec<f64> = parts.missed.iter().map(|&k| k as f64).collect();
-            assert_eq!(parts.mean_missed, naive(&missed));
+            let missed: Vec<f64> = missed.iter().map(|&k| k as f64).collect();
+            assert_eq!(s.mean_missed, Some(naive(&missed)));
             // Collecting the per-step decompositions gives the same series.
             assert_eq!(per_step.into_iter().collect::<GospaSeries>(), s);
             for alpha in [1.0, 0.5] {
                 let g = Gospa::new(c, p, alpha).unwrap();
                 let s = g.series(&truths, &estimates).unwrap();
-                assert!(s.parts.is_none());
+                assert!(s.localisation.is_none() && s.mean_false_targets.is_none());
                 for t in 0..truths.len() {
                     assert_eq!(
                         s.distance[t],
@@ -441,7 +457,7 @@ mod tests {
         let none: [Vec<[f64; 2]>; 0] = [];
         let s = g.series(&none, &none).unwrap();
         assert_eq!((s.distance.len(), s.mean_distance), (0, 0.0));
-        assert_eq!(s.parts.unwrap().mean_missed, 0.0);
+        assert_eq!(s.mean_missed, Some(0.0));
         let empty: Vec<Vec<[f64; 2]>> = vec![vec![], vec![]];
         let s = Ospa::new(1.0, 2.0).unwrap().series(&empty, &empty).unwrap();
         assert_eq!(s.distance, vec![0.0, 0.0]);
