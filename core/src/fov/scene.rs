@@ -64,8 +64,8 @@ impl Default for SceneOptions {
 /// parts the paper gives and which are chosen.
 ///
 /// # Errors
-/// Using the JavaScript field names: [`Error::InvalidParameter`] naming `count` (more than
-/// [`MAX_SCENE_COUNT`]), `extent` (not finite and > 0), `sigma[0]` (not finite and > 0) or
+/// [`Error::OutOfRange`] naming `count` (more than [`MAX_SCENE_COUNT`]);
+/// [`Error::InvalidParameter`] naming `extent` (not finite and > 0), `sigma[0]` (not finite and > 0) or
 /// `sigma[1]` (not finite and ≥ `sigma[0]`).
 ///
 /// # Examples
@@ -86,13 +86,7 @@ pub fn placement_scene(options: &SceneOptions) -> Result<Vec<(f64, Gaussian)>> {
         extent,
         sigma: [s0, s1],
     } = options;
-    if count > MAX_SCENE_COUNT {
-        return Err(Error::parameter(
-            "count",
-            count as f64,
-            "an integer count in [0, 10000]",
-        ));
-    }
+    Error::check_range("count", count, 0, MAX_SCENE_COUNT)?;
     if !(extent.is_finite() && extent > 0.0) {
         return Err(Error::parameter("extent", extent, "finite and > 0"));
     }
