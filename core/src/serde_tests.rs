@@ -107,33 +107,18 @@ fn gaussians_read_nested_flat_and_scalar_covariances() {
     assert_eq!(nested, flat);
     let scalar: Gaussian = serde_json::from_str(r#"{"mean":[1],"cov":4}"#).expect("1D");
     assert_eq!(scalar, gaussian(&[1.0], &[4.0]));
-    for (json, message) in [
-        (
-            r#"{"mean":[0,0],"cov":4}"#,
-            ".cov must be a nested 2×2 array (a bare number is a 1D variance)",
-        ),
-        (
-            r#"{"mean":[0,0],"cov":[1,0,0]}"#,
-            ".cov has length 3, expected 2 rows or 4 row-major numbers",
-        ),
-        (
-            r#"{"mean":[0,0],"cov":[[1,0]]}"#,
-            ".cov has length 1, expected 2",
-        ),
-        (
-            r#"{"mean":[0,0],"cov":[[1,0],[0]]}"#,
-            ".cov[1] has length 1, expected 2",
-        ),
-        (
-            r#"{"mean":[0,0],"cov":[[1,0],0]}"#,
-            ".cov[1] must be a row (array of numbers) like the entries before it",
-        ),
-        (
-            r#"{"mean":[0,0],"cov":[1,[0]]}"#,
-            ".cov[1] must be a number like the entries before it",
-        ),
+    // `cov` of a 2D Gaussian | the message
+    for case in [
+        "4 | .cov must be a nested 2×2 array (a bare number is a 1D variance)",
+        "[1,0,0] | .cov has length 3, expected 2 rows or 4 row-major numbers",
+        "[[1,0]] | .cov has length 1, expected 2",
+        "[[1,0],[0]] | .cov[1] has length 1, expected 2",
+        "[[1,0],0] | .cov[1] must be a row (array of numbers) like the entries before it",
+        "[1,[0]] | .cov[1] must be a number like the entries before it",
     ] {
-        assert_eq!(rejected::<Gaussian>(json), message, "{json}");
+        let (cov, message) = case.split_once(" | ").unwrap();
+        let json = alloc::format!(r#"{{"mean":[0,0],"cov":{cov}}}"#);
+        assert_eq!(rejected::<Gaussian>(&json), message, "{json}");
     }
     let wrong = rejected::<Gaussian>(r#"{"mean":[0],"cov":"x"}"#);
     assert!(
