@@ -250,21 +250,7 @@ impl Gen<'_> {
         }
         match t {
             Type::Reference(r) => self.ty(&r.elem, None),
-            // `[T; N]` with a literal N is a tuple of N (serde writes and reads exactly N)
-            Type::Array(a) => match &a.len {
-                syn::Expr::Lit(syn::ExprLit {
-                    lit: syn::Lit::Int(n),
-                    ..
-                }) if n
-                    .base10_parse::<usize>()
-                    .is_ok_and(|n| (1..=8).contains(&n)) =>
-                {
-                    let n: usize = n.base10_parse().unwrap_or(0);
-                    let one = self.ty(&a.elem, None);
-                    format!("[{}]", vec![one; n].join(", "))
-                }
-                _ => format!("{}[]", self.ty_paren(&a.elem)),
-            },
+            Type::Array(a) => format!("{}[]", self.ty_paren(&a.elem)),
             Type::Slice(a) => format!("{}[]", self.ty_paren(&a.elem)),
             Type::Tuple(tp) => {
                 let parts: Vec<String> = tp.elems.iter().map(|e| self.ty(e, None)).collect();

@@ -23,7 +23,6 @@ pub struct FilterOptions {
     pub transition: Transition,
     pub pairs: Vec<(usize, usize)>,
     pub shape: Shape,
-    pub sigma: [f64; 2],
 }
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Transition {
@@ -61,7 +60,6 @@ fn a_struct_is_an_interface_in_javascript_names_with_its_docs() {
         "    futureScans?: number;",
         "    transition: Transition;",
         "    pairs: [number, number][];",
-        "    sigma: [number, number];",
         "export interface Transition {",
         // the matrix keeps its capital under `transition`, and is rows of numbers
         "    F: number[][];",
