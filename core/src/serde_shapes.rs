@@ -160,6 +160,8 @@ pub mod bytes {
 pub trait ArrayElement {
     /// What the array holds, for "expected a number or an array of …".
     const ARRAY: &'static str;
+    /// What the whole value is, when "a number or {ARRAY}" does not say it well.
+    const EXPECTING: Option<&'static str> = None;
 }
 
 impl ArrayElement for f64 {
@@ -168,6 +170,12 @@ impl ArrayElement for f64 {
 
 impl ArrayElement for Vec<f64> {
     const ARRAY: &'static str = "an array of rows (arrays of numbers)";
+}
+
+impl ArrayElement for ScalarOr<f64> {
+    const ARRAY: &'static str = "an array of numbers or of rows";
+    const EXPECTING: Option<&'static str> =
+        Some("a covariance (nested rows, flat row-major numbers, or a 1D variance)");
 }
 
 /// A value a user gives as one number or as an array: `0.3` or `[0.1, 0.2]` (one per report,
@@ -198,7 +206,10 @@ impl<'de, T: Deserialize<'de> + ArrayElement> Deserialize<'de> for ScalarOr<T> {
         impl<'de, T: Deserialize<'de> + ArrayElement> Visitor<'de> for V<T> {
             type Value = ScalarOr<T>;
             fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-                write!(f, "a number or {}", T::ARRAY)
+                match T::EXPECTING {
+                    Some(what) => f.write_str(what),
+                    None => write!(f, "a number or {}", T::ARRAY),
+                }
             }
             fn visit_f64<E: serde::de::Error>(self, x: f64) -> Result<Self::Value, E> {
                 Ok(ScalarOr::Scalar(x))
@@ -220,6 +231,102 @@ impl<'de, T: Deserialize<'de> + ArrayElement> Deserialize<'de> for ScalarOr<T> {
         }
         d.deserialize_any(V(core::marker::PhantomData))
     }
+}
+
+/// A covariance as a user writes it: n rows of n numbers, n·n numbers in row-major order,
+/// or (1D only) the variance as a bare number. [`covariance_row_major`] checks it against
+/// the mean's length n.
+pub type Covariance = ScalarOr<ScalarOr<f64>>;
+
+/// Why a [`Covariance`] does not fit its mean: the message names the covariance by the path
+/// given to [`covariance_row_major`]. `wrong_type` marks a bare number where n > 1 (a type
+/// error for bindings that tell those apart); the others are range errors.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CovarianceError {
+    /// A bare number given for n > 1.
+    pub wrong_type: bool,
+    /// The message, starting with the path.
+    pub message: alloc::string::String,
+}
+
+impl core::fmt::Display for CovarianceError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+/// The n·n row-major entries of `cov` for a mean of length `n`; errors name `path`
+/// (`options.mixture[2].cov`, or `.cov` relative to the Gaussian being read).
+///
+/// # Errors
+/// A [`CovarianceError`] for a bare number when n ≠ 1, a flat array of other than n·n
+/// numbers, other than n rows, a row of other than n numbers, or numbers and rows mixed.
+pub fn covariance_row_major(
+    cov: Covariance,
+    n: usize,
+    path: &str,
+) -> Result<Vec<f64>, CovarianceError> {
+    use alloc::format;
+    let range = |message| CovarianceError {
+        wrong_type: false,
+        message,
+    };
+    let entries = match cov {
+        ScalarOr::Scalar(x) if n == 1 => return Ok(alloc::vec![x]),
+        ScalarOr::Scalar(_) => {
+            return Err(CovarianceError {
+                wrong_type: true,
+                message: format!(
+                    "{path} must be a nested {n}×{n} array (a bare number is a 1D variance)"
+                ),
+            });
+        }
+        ScalarOr::Array(entries) => entries,
+    };
+    let nested = matches!(entries.first(), Some(ScalarOr::Array(_)));
+    let mut flat = Vec::with_capacity(n * n);
+    for (i, entry) in entries.iter().enumerate() {
+        match (entry, nested) {
+            (ScalarOr::Scalar(x), false) => flat.push(*x),
+            (ScalarOr::Array(row), true) => flat.extend_from_slice(row),
+            (ScalarOr::Scalar(_), true) => {
+                return Err(range(format!(
+                    "{path}[{i}] must be a row (array of numbers) like the entries before it"
+                )));
+            }
+            (ScalarOr::Array(_), false) => {
+                return Err(range(format!(
+                    "{path}[{i}] must be a number like the entries before it"
+                )));
+            }
+        }
+    }
+    if !nested {
+        if flat.len() != n * n {
+            return Err(range(format!(
+                "{path} has length {}, expected {n} rows or {} row-major numbers",
+                flat.len(),
+                n * n
+            )));
+        }
+        return Ok(flat);
+    }
+    if entries.len() != n {
+        return Err(range(format!(
+            "{path} has length {}, expected {n}",
+            entries.len()
+        )));
+    }
+    if let Some((i, row)) = entries.iter().enumerate().find_map(|(i, e)| match e {
+        ScalarOr::Array(row) if row.len() != n => Some((i, row)),
+        _ => None,
+    }) {
+        return Err(range(format!(
+            "{path}[{i}] has length {}, expected {n}",
+            row.len()
+        )));
+    }
+    Ok(flat)
 }
 
 #[cfg(test)]

@@ -85,13 +85,46 @@ fn gaussians_are_rows_and_reject_a_non_positive_definite_covariance() {
     round_trip(&m);
     assert_eq!(
         rejected::<Gaussian>(r#"{"mean":[0.0,0.0],"cov":[[1.0,2.0],[2.0,1.0]]}"#),
-        "gaussian.cov must be symmetric positive definite"
+        ".cov must be symmetric positive definite"
     );
     assert_eq!(
         rejected::<GaussianMixture>(r#"[{"weight":1.0,"mean":[0.0],"cov":[[-1.0]]}]"#),
-        "mixture[0].cov must be symmetric positive definite"
+        "[0].cov must be symmetric positive definite"
+    );
+    assert_eq!(
+        rejected::<GaussianMixture>(r#"[{"weight":-1.0,"mean":[0.0],"cov":1.0}]"#),
+        "[0].weight must be finite and >= 0, got -1"
     );
     assert!(rejected::<Gaussian>(r#"{"mean":[0.0]}"#).contains("missing field `cov`"));
+}
+
+#[test]
+fn gaussians_read_nested_flat_and_scalar_covariances() {
+    let nested: Gaussian =
+        serde_json::from_str(r#"{"mean":[0,0],"cov":[[2,0.5],[0.5,1]]}"#).expect("nested rows");
+    let flat: Gaussian =
+        serde_json::from_str(r#"{"mean":[0,0],"cov":[2,0.5,0.5,1]}"#).expect("row-major");
+    assert_eq!(nested, flat);
+    let scalar: Gaussian = serde_json::from_str(r#"{"mean":[1],"cov":4}"#).expect("1D");
+    assert_eq!(scalar, gaussian(&[1.0], &[4.0]));
+    // `cov` of a 2D Gaussian | the message
+    for case in [
+        "4 | .cov must be a nested 2×2 array (a bare number is a 1D variance)",
+        "[1,0,0] | .cov has length 3, expected 2 rows or 4 row-major numbers",
+        "[[1,0]] | .cov has length 1, expected 2",
+        "[[1,0],[0]] | .cov[1] has length 1, expected 2",
+        "[[1,0],0] | .cov[1] must be a row (array of numbers) like the entries before it",
+        "[1,[0]] | .cov[1] must be a number like the entries before it",
+    ] {
+        let (cov, message) = case.split_once(" | ").unwrap();
+        let json = alloc::format!(r#"{{"mean":[0,0],"cov":{cov}}}"#);
+        assert_eq!(rejected::<Gaussian>(&json), message, "{json}");
+    }
+    let wrong = rejected::<Gaussian>(r#"{"mean":[0],"cov":"x"}"#);
+    assert!(
+        wrong.contains("a covariance (nested rows, flat row-major numbers, or a 1D variance)"),
+        "{wrong}"
+    );
 }
 
 #[test]

@@ -5,8 +5,8 @@
 //!
 //! | type | shape | constructor |
 //! |---|---|---|
-//! | [`Gaussian`] | `{mean, cov}` | [`Gaussian::new`] (`gaussian.mean`, `gaussian.cov`) |
-//! | [`GaussianMixture`] | `[{weight, mean, cov}, …]` | [`GaussianMixture::new`] (`mixture[j]…`) |
+//! | [`Gaussian`] | `{mean, cov}`, `cov` any [`Covariance`] form (written as rows) | [`Gaussian::from_slices`] (`.mean`, `.cov`) |
+//! | [`GaussianMixture`] | `[{weight, mean, cov}, …]` | [`GaussianMixture::new`] (`[j].weight`, `[j].cov`) |
 //! | [`LinearGaussianTransition`] | `{f, q}` | [`LinearGaussianTransition::new`] |
 //! | [`LinearGaussianLikelihood`] | `{h, r}` | [`LinearGaussianLikelihood::new`] |
 //! | [`Gospa`], [`Ospa`] | `{c, p, alpha}`, `{c, p}` | [`Gospa::new`], [`Ospa::new`] |
@@ -23,13 +23,17 @@
 //! | [`SpatialDensity`] | `{"Gaussian": gaussian}`, `{"Mixture": mixture}`, `{"Particles": particle set}` | [`SpatialDensity::gaussian`], [`SpatialDensity::mixture`], [`SpatialDensity::particles`] |
 //! | [`Region`] | `{"box": …}`, `{"polygon": …}`, `{"ball": …}`, `{"union": [regions]}`, `{"intersection": [regions]}`, `{"complement": region}` | [`Region::from`], [`Region::union`], … |
 //!
+//! Errors of the Gaussian types name the field relative to the value being read (`.cov`,
+//! `[2].weight`), so that a deserializer that tracks paths (the JavaScript one) continues its
+//! own path with them: `options.mixture` + `[2].cov`.
+//!
 //! No paper: these are data formats only.
 
 use alloc::boxed::Box;
 use alloc::string::ToString;
 use alloc::vec::Vec;
 
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DMatrix;
 use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
@@ -42,7 +46,7 @@ use crate::filters::{
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::metrics::{Gospa, Ospa};
 use crate::regions::{AxisBox, Ball, Node, Polygon, Region};
-use crate::serde_shapes::matrix;
+use crate::serde_shapes::{Covariance, covariance_row_major, matrix};
 use crate::smc::MultiObjectLikelihood;
 use crate::splitting::SplitLibrary;
 
@@ -68,25 +72,45 @@ macro_rules! through_constructor {
     };
 }
 
-#[derive(Serialize, Deserialize)]
+#[derive(Serialize)]
 struct GaussianRepr {
     mean: Vec<f64>,
     #[serde(with = "matrix")]
     cov: DMatrix<f64>,
 }
 
-fn gaussian_repr(g: &Gaussian) -> GaussianRepr {
-    GaussianRepr {
-        mean: g.mean().as_slice().to_vec(),
-        cov: g.cov().clone(),
+/// A Gaussian as read: the covariance in any of the [`Covariance`] forms.
+#[derive(Deserialize)]
+struct GaussianIn {
+    mean: Vec<f64>,
+    cov: Covariance,
+}
+
+/// N(mean, cov) from its read form; errors name the fields relative to the Gaussian
+/// (`.cov`, `.mean[1]`), which a path-tracking deserializer appends to its path.
+fn gaussian_in(g: GaussianIn, at: &str) -> Result<Gaussian, alloc::string::String> {
+    let cov = covariance_row_major(g.cov, g.mean.len(), &alloc::format!("{at}.cov"))
+        .map_err(|e| e.message)?;
+    Gaussian::from_slices(&g.mean, &cov, at).map_err(|e| e.to_string())
+}
+
+impl Serialize for Gaussian {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        GaussianRepr {
+            mean: self.mean().as_slice().to_vec(),
+            cov: self.cov().clone(),
+        }
+        .serialize(serializer)
     }
 }
 
-through_constructor!(Gaussian, GaussianRepr, |g| gaussian_repr(g), |r| {
-    Gaussian::new(DVector::from_vec(r.mean), r.cov, "gaussian")
-});
+impl<'de> Deserialize<'de> for Gaussian {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        gaussian_in(GaussianIn::deserialize(deserializer)?, "").map_err(D::Error::custom)
+    }
+}
 
-#[derive(Serialize, Deserialize)]
+#[derive(Serialize)]
 struct ComponentRepr {
     weight: f64,
     mean: Vec<f64>,
@@ -94,29 +118,44 @@ struct ComponentRepr {
     cov: DMatrix<f64>,
 }
 
-through_constructor!(
-    GaussianMixture,
-    Vec<ComponentRepr>,
-    |m| m
-        .components()
-        .iter()
-        .map(|(w, g)| ComponentRepr {
-            weight: *w,
-            mean: g.mean().as_slice().to_vec(),
-            cov: g.cov().clone(),
-        })
-        .collect(),
-    |r| {
-        r.into_iter()
-            .enumerate()
-            .map(|(j, c)| {
-                let what = alloc::format!("mixture[{j}]");
-                Gaussian::new(DVector::from_vec(c.mean), c.cov, &what).map(|g| (c.weight, g))
+/// A mixture component as read.
+#[derive(Deserialize)]
+struct ComponentIn {
+    weight: f64,
+    mean: Vec<f64>,
+    cov: Covariance,
+}
+
+impl Serialize for GaussianMixture {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let components: Vec<ComponentRepr> = self
+            .components()
+            .iter()
+            .map(|(w, g)| ComponentRepr {
+                weight: *w,
+                mean: g.mean().as_slice().to_vec(),
+                cov: g.cov().clone(),
             })
-            .collect::<Result<Vec<_>, Error>>()
-            .and_then(|components| GaussianMixture::new(components, "mixture"))
+            .collect();
+        components.serialize(serializer)
     }
-);
+}
+
+impl<'de> Deserialize<'de> for GaussianMixture {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let read = Vec::<ComponentIn>::deserialize(deserializer)?;
+        let mut components = Vec::with_capacity(read.len());
+        for (j, c) in read.into_iter().enumerate() {
+            let g = GaussianIn {
+                mean: c.mean,
+                cov: c.cov,
+            };
+            let g = gaussian_in(g, &alloc::format!("[{j}]")).map_err(D::Error::custom)?;
+            components.push((c.weight, g));
+        }
+        GaussianMixture::new(components, "").map_err(|e| D::Error::custom(e.to_string()))
+    }
+}
 
 #[derive(Serialize, Deserialize)]
 struct TransitionRepr {

@@ -95,25 +95,8 @@ pub use crate::names::render_path;
 /// The JS exception for a core error about `prefix.field`, the field rendered by
 /// [`render_path`] (`max_components` → `options.maxComponents`).
 pub fn core_error_in(e: fisst::Error, prefix: &str) -> JsValue {
-    let field = render_path(e.field());
-    let renamed = match e {
-        fisst::Error::InvalidParameter {
-            value, expected, ..
-        } => fisst::Error::parameter(field, value, expected),
-        fisst::Error::InvalidProbability { value, .. } => fisst::Error::probability(field, value),
-        fisst::Error::DimensionMismatch {
-            expected, found, ..
-        } => fisst::Error::dimension(field, expected, found),
-        fisst::Error::NotPositiveDefinite { .. } => {
-            fisst::Error::NotPositiveDefinite { what: field }
-        }
-        fisst::Error::Unsupported { reason, .. } => fisst::Error::Unsupported {
-            what: field,
-            reason,
-        },
-        other => other,
-    };
-    core_error(renamed.within(prefix))
+    // every variant, `OutOfRange` and `OverBudget` included (`map_field` covers them all)
+    core_error_rendered(e, prefix)
 }
 
 /// The seed of a seeded function: the caller's, or fresh platform entropy when omitted

@@ -133,9 +133,12 @@ impl Error {
                     "{} is required",
                     Path::Key(path, js_name(path.parent_key(), field))
                 ),
-                // A message about a part of this value ("[2] must be …") continues the
-                // path; any other continues the sentence ("… must be …").
-                None if self.message.starts_with('[') => std::format!("{path}{}", self.message),
+                // A message about a part of this value ("[2] must be …", ".cov must be …",
+                // as the core's Gaussian types write them) continues the path; any other
+                // continues the sentence ("… must be …").
+                None if self.message.starts_with(['[', '.']) => {
+                    std::format!("{path}{}", self.message)
+                }
                 None => std::format!("{path} {}", self.message),
             };
             self.located = true;

@@ -7,14 +7,15 @@ use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, check_range, range_error, read, write};
 use crate::types::{self, BoxRegion, MixtureComponent, Region, WeightedGaussian, mixture_out};
+use fisst::Error;
 use fisst::mixture::{merge_close, prune, runnalls};
 use fisst::regions::Region as CoreRegion;
 use fisst::splitting::{
-    MAX_GRID_SIZE as MAX_GRID, MAX_REGIONS, MAX_RUNNALLS_INPUT,
-    MAX_SPLIT_RESULT_COMPONENTS as MAX_SPLIT_COMPONENTS,
-    NegativeInformationScenario as Fig5Scenario, NegativeInformationStep as Fig5Step,
-    SPLIT_WORK_BUDGET, Spacing, SplitLibrary, SplitOptions, SplitStop, exact_mass_affordable,
-    grid_size, partition, split_for_regions, split_work,
+    MAX_GRID_SIZE as MAX_GRID, MAX_REDUCED_COMPONENTS, MAX_REGIONS, MAX_RUNNALLS_INPUT,
+    MAX_SPLIT_COMPONENTS, MIN_SPLIT_COMPONENTS, NegativeInformationScenario as Fig5Scenario,
+    NegativeInformationStep as Fig5Step, SPLIT_WORK_BUDGET, Spacing, SplitLibrary, SplitOptions,
+    SplitStop, check_bounded_split, defaults, exact_mass_affordable, grid_size, partition,
+    split_for_regions, split_work,
 };
 
 /// The family of a split library.
@@ -66,38 +67,6 @@ pub struct SplitLibraryResult {
     pub variance: f64,
 }
 
-fn two_dims() -> usize {
-    2
-}
-
-fn min_weight() -> f64 {
-    0.01
-}
-
-fn three() -> usize {
-    3
-}
-
-fn lambda() -> f64 {
-    0.001
-}
-
-fn grid_bound() -> f64 {
-    2.0
-}
-
-fn grid_points() -> usize {
-    15
-}
-
-fn max_depth() -> usize {
-    16
-}
-
-fn max_components() -> usize {
-    10_000
-}
-
 /// Options of `splitForRegions`.
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
@@ -107,16 +76,16 @@ pub struct SplitForRegionsOptions {
     /// One or more regions (at most 32) of dimension `positionDims`.
     pub regions: Vec<Region>,
     /// n_s: the first `positionDims` state components are positions (default 2; in [1, 8]).
-    #[serde(default = "two_dims")]
+    #[serde(default = "defaults::position_dims")]
     pub position_dims: usize,
     /// w_min: lighter components are not split (default 0.01; absolute weight).
-    #[serde(default = "min_weight")]
+    #[serde(default = "defaults::min_weight")]
     pub min_weight: f64,
     /// R (default 3), an integer in [2, 16].
-    #[serde(default = "three")]
+    #[serde(default = "defaults::components")]
     pub components: usize,
     /// λ of the split library (default 0.001).
-    #[serde(default = "lambda")]
+    #[serde(default = "defaults::lambda")]
     pub lambda: f64,
     /// Split library family (default `'equal'`).
     #[serde(default)]
@@ -125,17 +94,17 @@ pub struct SplitForRegionsOptions {
     /// Components whose boundary lies beyond ζ are not split, which floors the partition
     /// error at a few 1e-3 to 1e-2 of mass; 3 lowers that part to about 1e-4, with more
     /// components.
-    #[serde(default = "grid_bound")]
+    #[serde(default = "defaults::grid_bound")]
     pub grid_bound: f64,
     /// N_g, grid points per axis (default 15; N_g^positionDims ≤ 20000).
-    #[serde(default = "grid_points")]
+    #[serde(default = "defaults::grid_points")]
     pub grid_points: usize,
     /// Recursion depth cap (default 16, at most 64); 0 splits nothing: the result is the
     /// mean-based partition of `mixture` itself.
-    #[serde(default = "max_depth")]
+    #[serde(default = "defaults::max_depth")]
     pub max_depth: usize,
     /// Component count cap (default 10000, at most 50000).
-    #[serde(default = "max_components")]
+    #[serde(default = "defaults::max_components")]
     pub max_components: usize,
 }
 
@@ -280,7 +249,13 @@ pub fn split_library_js(
     #[wasm_bindgen(unchecked_param_type = "SplitLibraryOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: SplitLibraryOptions = read(options, "options")?;
-    let r = check_range("options.components", o.components, 2, 16)?;
+    let r = Error::check_range(
+        "components",
+        o.components,
+        MIN_SPLIT_COMPONENTS,
+        MAX_SPLIT_COMPONENTS,
+    )
+    .or_throw_in("options")?;
     let lib = library(r, o.lambda, o.spacing.into(), "options")?;
     write(&SplitLibraryResult {
         weights: lib.weights().to_vec(),
@@ -316,16 +291,16 @@ pub fn split_for_regions_js(
         .enumerate()
         .map(|(i, r)| r.into_core(&format!("options.regions[{i}]")))
         .collect::<JsResult<Vec<(CoreRegion, f64)>>>()?;
-    let position_dims = check_range("options.positionDims", o.position_dims, 1, 8)?;
-    let r = check_range("options.components", o.components, 2, 16)?;
-    let grid_points = check_range("options.gridPoints", o.grid_points, 2, MAX_GRID)?;
-    let max_depth = check_range("options.maxDepth", o.max_depth, 0, 64)?;
-    let max_components = check_range(
-        "options.maxComponents",
-        o.max_components,
-        1,
-        MAX_SPLIT_COMPONENTS,
-    )?;
+    let split_opts = SplitOptions {
+        position_dims: o.position_dims,
+        min_weight: o.min_weight,
+        grid_bound: o.grid_bound,
+        grid_points: o.grid_points,
+        max_depth: o.max_depth,
+        max_components: o.max_components,
+    };
+    check_bounded_split(o.components, &split_opts).or_throw_rendered("options")?;
+    let (position_dims, grid_points) = (o.position_dims, o.grid_points);
     let grid_size = grid_size(position_dims, grid_points).ok_or_else(|| {
         range_error(format!(
             "options.gridPoints^positionDims must be at most {MAX_GRID}, got \
@@ -333,7 +308,7 @@ pub fn split_for_regions_js(
         ))
     })?;
     let only: Vec<CoreRegion> = regions.into_iter().map(|(reg, _)| reg).collect();
-    let work = split_work(max_components, grid_size, &only);
+    let work = split_work(o.max_components, grid_size, &only);
     if work > SPLIT_WORK_BUDGET {
         return Err(range_error(format!(
             "options.maxComponents × gridPoints^positionDims × regions is {work:.2e} inclusion \
@@ -341,15 +316,7 @@ pub fn split_for_regions_js(
              maxComponents, gridPoints or the number of regions"
         )));
     }
-    let library = library(r, o.lambda, o.spacing.into(), "options")?;
-    let split_opts = SplitOptions {
-        position_dims,
-        min_weight: o.min_weight,
-        grid_bound: o.grid_bound,
-        grid_points,
-        max_depth,
-        max_components,
-    };
+    let library = library(o.components, o.lambda, o.spacing.into(), "options")?;
     let out = split_for_regions(&mixture, &only, &library, &split_opts).or_throw_in("options")?;
     let first = &only[0];
     let part = partition(&out.mixture, first).or_throw_in("options")?;
@@ -399,8 +366,9 @@ pub fn reduce_mixture_js(
     let mixture = types::mixture(o.mixture, "options.mixture")?;
     let max_components = o
         .max_components
-        .map(|m| check_range("options.maxComponents", m, 1, 1_000_000))
-        .transpose()?;
+        .map(|m| Error::check_range("max_components", m, 1, MAX_REDUCED_COMPONENTS))
+        .transpose()
+        .or_throw_rendered("options")?;
     let mut out = prune(&mixture, o.prune_below).or_throw_in("options")?;
     if let Some(d) = o.merge_distance {
         out = merge_close(&out, d).or_throw_in("options")?;

@@ -8,7 +8,6 @@
 use std::format;
 use std::vec::Vec;
 
-use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 use tsify::Tsify;
 
@@ -45,123 +44,23 @@ impl PointSet {
 
 /// A covariance matrix: n rows of n numbers, n·n numbers in row-major order, or (1D only)
 /// the variance as a bare number. Symmetric positive definite.
-#[derive(Clone, Debug, Tsify)]
+#[derive(Clone, Debug, Deserialize, Tsify)]
+#[serde(transparent)]
 #[tsify(type = "(number[] | Float64Array)[] | number[] | Float64Array | number")]
-pub enum Covariance {
-    /// Nested rows.
-    Rows(Vec<Vec<f64>>),
-    /// Row-major entries.
-    Flat(Vec<f64>),
-    /// A 1D variance.
-    Scalar(f64),
-}
-
-/// One entry of a covariance array: a number (flat form) or a row (nested form).
-enum CovEntry {
-    Number(f64),
-    Row(Vec<f64>),
-}
-
-impl<'de> Deserialize<'de> for CovEntry {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = CovEntry;
-            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str("a number or an array of numbers")
-            }
-            fn visit_f64<E: de::Error>(self, x: f64) -> Result<CovEntry, E> {
-                Ok(CovEntry::Number(x))
-            }
-            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<CovEntry, A::Error> {
-                let mut row = Vec::with_capacity(seq.size_hint().unwrap_or(0));
-                while let Some(x) = seq.next_element::<f64>()? {
-                    row.push(x);
-                }
-                Ok(CovEntry::Row(row))
-            }
-        }
-        d.deserialize_any(V)
-    }
-}
-
-impl<'de> Deserialize<'de> for Covariance {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = Covariance;
-            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str("a covariance (nested rows, flat row-major numbers, or a 1D variance)")
-            }
-            fn visit_f64<E: de::Error>(self, x: f64) -> Result<Covariance, E> {
-                Ok(Covariance::Scalar(x))
-            }
-            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Covariance, A::Error> {
-                let mut rows = Vec::new();
-                let mut flat = Vec::new();
-                let mut i = 0usize;
-                while let Some(e) = seq.next_element::<CovEntry>()? {
-                    match e {
-                        CovEntry::Number(x) if rows.is_empty() => flat.push(x),
-                        CovEntry::Row(r) if flat.is_empty() => rows.push(r),
-                        CovEntry::Number(_) => {
-                            return Err(de::Error::custom(format!(
-                                "[{i}] must be a row (array of numbers) like the entries before it"
-                            )));
-                        }
-                        CovEntry::Row(_) => {
-                            return Err(de::Error::custom(format!(
-                                "[{i}] must be a number like the entries before it"
-                            )));
-                        }
-                    }
-                    i += 1;
-                }
-                Ok(if rows.is_empty() {
-                    Covariance::Flat(flat)
-                } else {
-                    Covariance::Rows(rows)
-                })
-            }
-        }
-        d.deserialize_any(V)
-    }
-}
+pub struct Covariance(pub fisst::serde_shapes::Covariance);
 
 impl Covariance {
-    /// The n·n row-major entries for a mean of length `n`; errors name `path`.
+    /// The n·n row-major entries for a mean of length `n`; errors name `path`
+    /// ([`fisst::serde_shapes::covariance_row_major`]: a bare number for n > 1 is a
+    /// `TypeError`, every other misfit a `RangeError`).
     pub fn row_major(self, n: usize, path: &str) -> JsResult<Vec<f64>> {
-        match self {
-            Covariance::Scalar(x) if n == 1 => Ok(std::vec![x]),
-            Covariance::Scalar(_) => Err(type_error(format!(
-                "{path} must be a nested {n}×{n} array (a bare number is a 1D variance)"
-            ))),
-            Covariance::Flat(v) if v.len() == n * n => Ok(v),
-            Covariance::Flat(v) => Err(range_error(format!(
-                "{path} has length {}, expected {n} rows or {} row-major numbers",
-                v.len(),
-                n * n
-            ))),
-            Covariance::Rows(rows) => {
-                if rows.len() != n {
-                    return Err(range_error(format!(
-                        "{path} has length {}, expected {n}",
-                        rows.len()
-                    )));
-                }
-                let mut flat = Vec::with_capacity(n * n);
-                for (i, row) in rows.into_iter().enumerate() {
-                    if row.len() != n {
-                        return Err(range_error(format!(
-                            "{path}[{i}] has length {}, expected {n}",
-                            row.len()
-                        )));
-                    }
-                    flat.extend(row);
-                }
-                Ok(flat)
+        fisst::serde_shapes::covariance_row_major(self.0, n, path).map_err(|e| {
+            if e.wrong_type {
+                type_error(e.message)
+            } else {
+                range_error(e.message)
             }
-        }
+        })
     }
 }
 

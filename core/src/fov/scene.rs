@@ -37,14 +37,16 @@ pub const MAX_SCENE_COUNT: usize = 10_000;
     serde(default)
 )]
 pub struct SceneOptions {
-    /// Number of multi-Bernoulli components (≤ [`MAX_SCENE_COUNT`]; default 100).
+    /// Number of multi-Bernoulli components, an integer in [0, 10000]
+    /// ([`MAX_SCENE_COUNT`]; default 100).
     pub count: usize,
-    /// Seed of the SplitMix64 stream (default 1).
+    /// Seed of the SplitMix64 stream, an integer in [0, 2^53 − 1] (default 1: a fixed
+    /// default, so the same call always gives the same scene).
     pub seed: u64,
-    /// Half side of the square of means, [−extent, extent]² (finite, > 0; default 3).
+    /// Means uniform in [−extent, extent]², extent finite and > 0 (default 3).
     pub extent: f64,
-    /// Range of the two principal standard deviations (0 < `sigma[0]` ≤ `sigma[1]`, finite;
-    /// default [0.1, 0.5]).
+    /// Principal standard deviations uniform in [min, max], 0 < min ≤ max, finite (default
+    /// [0.1, 0.5]). Existence is uniform in [0.35, 1).
     pub sigma: [f64; 2],
 }
 
@@ -64,8 +66,8 @@ impl Default for SceneOptions {
 /// parts the paper gives and which are chosen.
 ///
 /// # Errors
-/// Using the JavaScript field names: [`Error::InvalidParameter`] naming `count` (more than
-/// [`MAX_SCENE_COUNT`]), `extent` (not finite and > 0), `sigma[0]` (not finite and > 0) or
+/// [`Error::OutOfRange`] naming `count` (more than [`MAX_SCENE_COUNT`]);
+/// [`Error::InvalidParameter`] naming `extent` (not finite and > 0), `sigma[0]` (not finite and > 0) or
 /// `sigma[1]` (not finite and ≥ `sigma[0]`).
 ///
 /// # Examples
@@ -86,13 +88,7 @@ pub fn placement_scene(options: &SceneOptions) -> Result<Vec<(f64, Gaussian)>> {
         extent,
         sigma: [s0, s1],
     } = options;
-    if count > MAX_SCENE_COUNT {
-        return Err(Error::parameter(
-            "count",
-            count as f64,
-            "an integer count in [0, 10000]",
-        ));
-    }
+    Error::check_range("count", count, 0, MAX_SCENE_COUNT)?;
     if !(extent.is_finite() && extent > 0.0) {
         return Err(Error::parameter("extent", extent, "finite and > 0"));
     }

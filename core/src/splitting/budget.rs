@@ -4,7 +4,16 @@
 //! than a few seconds before starting it; and the budget of the exact inside mass reported
 //! next to the mean-based partition.
 
+use super::{MAX_DEPTH_LIMIT, MAX_SPLIT_COMPONENTS, MIN_SPLIT_COMPONENTS, SplitOptions};
+use crate::error::{Error, Result};
 use crate::regions::{MAX_MASS_DIM, Region};
+
+/// At most this many position dimensions n_s in a bounded split request.
+pub const MAX_POSITION_DIMS: usize = 8;
+
+/// At most this many components asked of Runnalls' reduction
+/// ([`runnalls`](crate::mixture::runnalls)'s `max_components`) by a bounded caller.
+pub const MAX_REDUCED_COMPONENTS: usize = 1_000_000;
 
 /// At most this many regions in one [`split_for_regions`](super::split_for_regions) call.
 pub const MAX_REGIONS: usize = 32;
@@ -27,6 +36,35 @@ pub const EXACT_MASS_BUDGET_US: f64 = 5e5;
 /// At most this many components enter Runnalls' reduction
 /// ([`runnalls`](crate::mixture::runnalls): O(L²) bound evaluations).
 pub const MAX_RUNNALLS_INPUT: usize = 5_000;
+
+/// Checks the integer knobs of a bounded split request (an interactive caller's caps, tighter
+/// than [`split_for_regions`](super::split_for_regions)'s own checks), in this order:
+/// `position_dims` in [1, [`MAX_POSITION_DIMS`]], the library's `components` R in
+/// [[`MIN_SPLIT_COMPONENTS`], [`MAX_SPLIT_COMPONENTS`]], `grid_points` in
+/// [2, [`MAX_GRID_SIZE`]], `max_depth` in [0, [`MAX_DEPTH_LIMIT`]], `max_components` in
+/// [1, [`MAX_SPLIT_RESULT_COMPONENTS`]].
+///
+/// # Errors
+/// [`Error::OutOfRange`] naming the first field outside its interval (Rust names:
+/// `position_dims`, `components`, `grid_points`, `max_depth`, `max_components`).
+pub fn check_bounded_split(components: usize, options: &SplitOptions) -> Result<()> {
+    Error::check_range("position_dims", options.position_dims, 1, MAX_POSITION_DIMS)?;
+    Error::check_range(
+        "components",
+        components,
+        MIN_SPLIT_COMPONENTS,
+        MAX_SPLIT_COMPONENTS,
+    )?;
+    Error::check_range("grid_points", options.grid_points, 2, MAX_GRID_SIZE)?;
+    Error::check_range("max_depth", options.max_depth, 0, MAX_DEPTH_LIMIT)?;
+    Error::check_range(
+        "max_components",
+        options.max_components,
+        1,
+        MAX_SPLIT_RESULT_COMPONENTS,
+    )?;
+    Ok(())
+}
 
 /// The collocation grid's size N_g^{n_s} (`grid_points^position_dims`), or `None` when it
 /// exceeds [`MAX_GRID_SIZE`] (or overflows).
@@ -81,5 +119,64 @@ mod tests {
         assert!(!exact_mass_affordable(3334, &d));
         let b5 = Region::axis_box(&[0.0; 5], &[1.0; 5], "b").unwrap();
         assert!(!exact_mass_affordable(1, &b5));
+    }
+
+    #[test]
+    fn alg2_bounded_request_names_the_first_field_out_of_range() {
+        use alloc::string::ToString;
+        let ok = SplitOptions::default();
+        assert_eq!(check_bounded_split(3, &ok), Ok(()));
+        let cases = [
+            (
+                3,
+                SplitOptions {
+                    position_dims: 9,
+                    ..ok.clone()
+                },
+                Error::range("position_dims", 9, 1, 8),
+            ),
+            (17, ok.clone(), Error::range("components", 17, 2, 16)),
+            (1, ok.clone(), Error::range("components", 1, 2, 16)),
+            (
+                3,
+                SplitOptions {
+                    grid_points: 1,
+                    ..ok.clone()
+                },
+                Error::range("grid_points", 1, 2, MAX_GRID_SIZE),
+            ),
+            (
+                3,
+                SplitOptions {
+                    max_depth: 65,
+                    ..ok.clone()
+                },
+                Error::range("max_depth", 65, 0, 64),
+            ),
+            (
+                3,
+                SplitOptions {
+                    max_components: 0,
+                    ..ok.clone()
+                },
+                Error::range("max_components", 0, 1, MAX_SPLIT_RESULT_COMPONENTS),
+            ),
+            // two fields out of range: the first in the documented order is named
+            (
+                0,
+                SplitOptions {
+                    position_dims: 0,
+                    ..ok.clone()
+                },
+                Error::range("position_dims", 0, 1, 8),
+            ),
+        ];
+        for (components, options, expected) in cases {
+            assert_eq!(check_bounded_split(components, &options), Err(expected));
+        }
+        assert_eq!(
+            Error::range("max_depth", 65, 0, 64).to_string(),
+            "max_depth must be an integer in [0, 64], got 65"
+        );
     }
 }

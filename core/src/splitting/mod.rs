@@ -31,7 +31,7 @@
 //! | [`split_component`] | (27)–(31) | `eq27_split_preserves_the_mean_and_removes_the_library_variance_defect`, `split_component_rejects_bad_arguments` |
 //! | [`split_for_region`], [`split_for_regions`] | Algorithms 1 and 2, (26), (32) | `alg1_is_alg2_with_one_region`, `alg2_does_not_depend_on_the_order_of_the_regions`, `alg2_components_away_from_boundaries_or_too_light_are_not_split`, `eq26_split_direction_follows_the_boundary_and_ties_go_to_the_largest_eigenvalue`, `eq32_full_state_direction_is_the_best_aligned_eigenvector`, `caps_stop_the_recursion_and_say_so`, `extreme_inputs_give_sane_results_or_typed_errors` |
 //! | [`partition`], [`partition_accuracy`] | (11)–(12) | `eq11_partition_splits_the_weight_by_the_means`, `eq11_partition_error_falls_as_the_recursion_deepens` |
-//! | [`split_work`], [`grid_size`], [`exact_mass_affordable`] and the caps | the worst-case work of Algorithm 2 and of the exact mass of (8) | `budget::tests::alg2_work_and_grid_caps` |
+//! | [`split_work`], [`grid_size`], [`exact_mass_affordable`], [`check_bounded_split`] and the caps | the worst-case work of Algorithm 2 and of the exact mass of (8) | `budget::tests::alg2_work_and_grid_caps`, `budget::tests::alg2_bounded_request_names_the_first_field_out_of_range` |
 //! | [`non_detection_update`] | (57)–(58) | `eq57_non_detection_update_reweights_by_the_mean_based_partition` |
 //! | [`NegativeInformationScenario`] | Fig. 5 | `fig5_negative_information_scenario`, `fig5_accuracy_improves_with_a_smaller_min_weight`, `filters::tests::fig5_no_report_reduces_to_the_negative_information_scenario` |
 //!
@@ -71,8 +71,9 @@ mod recursive;
 mod variance_preserving;
 
 pub use budget::{
-    EXACT_MASS_BUDGET_US, MAX_GRID_SIZE, MAX_REGIONS, MAX_RUNNALLS_INPUT,
-    MAX_SPLIT_RESULT_COMPONENTS, SPLIT_WORK_BUDGET, exact_mass_affordable, grid_size, split_work,
+    EXACT_MASS_BUDGET_US, MAX_GRID_SIZE, MAX_POSITION_DIMS, MAX_REDUCED_COMPONENTS, MAX_REGIONS,
+    MAX_RUNNALLS_INPUT, MAX_SPLIT_RESULT_COMPONENTS, SPLIT_WORK_BUDGET, check_bounded_split,
+    exact_mass_affordable, grid_size, split_work,
 };
 pub use component::{Eigen, split_component};
 pub use library::{
@@ -84,8 +85,8 @@ pub use negative_information::{
 };
 pub use partition::{Partition, PartitionAccuracy, partition, partition_accuracy};
 pub use recursive::{
-    MAX_DEPTH_LIMIT, MAX_GRID_POINTS, SplitOptions, SplitOutcome, SplitStop, split_for_region,
-    split_for_regions,
+    MAX_DEPTH_LIMIT, MAX_GRID_POINTS, SplitOptions, SplitOutcome, SplitStop, defaults,
+    split_for_region, split_for_regions,
 };
 #[cfg(test)]
 pub(crate) use variance_preserving::optimise as variance_preserving_optimise;

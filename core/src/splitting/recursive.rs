@@ -64,13 +64,51 @@ pub struct SplitOptions {
 impl Default for SplitOptions {
     fn default() -> Self {
         Self {
-            position_dims: 2,
-            min_weight: 0.01,
-            grid_bound: 2.0,
-            grid_points: 15,
-            max_depth: 16,
-            max_components: 10_000,
+            position_dims: defaults::position_dims(),
+            min_weight: defaults::min_weight(),
+            grid_bound: defaults::grid_bound(),
+            grid_points: defaults::grid_points(),
+            max_depth: defaults::max_depth(),
+            max_components: defaults::max_components(),
         }
+    }
+}
+
+/// The defaults of a split request, one function per field (the form serde's
+/// `#[serde(default = "…")]` takes): [`SplitOptions::default`] is built from them, and so are
+/// the bindings' options that hold the split library's R and λ next to these fields.
+pub mod defaults {
+    /// n_s = 2 ([`SplitOptions::position_dims`](super::SplitOptions::position_dims)).
+    pub const fn position_dims() -> usize {
+        2
+    }
+    /// w_min = 0.01 ([`SplitOptions::min_weight`](super::SplitOptions::min_weight)).
+    pub const fn min_weight() -> f64 {
+        0.01
+    }
+    /// ζ = 2 ([`SplitOptions::grid_bound`](super::SplitOptions::grid_bound)).
+    pub const fn grid_bound() -> f64 {
+        2.0
+    }
+    /// N_g = 15 ([`SplitOptions::grid_points`](super::SplitOptions::grid_points)).
+    pub const fn grid_points() -> usize {
+        15
+    }
+    /// 16 levels ([`SplitOptions::max_depth`](super::SplitOptions::max_depth)).
+    pub const fn max_depth() -> usize {
+        16
+    }
+    /// 10 000 components ([`SplitOptions::max_components`](super::SplitOptions::max_components)).
+    pub const fn max_components() -> usize {
+        10_000
+    }
+    /// R = 3: the split library's component count of a split request (Fig. 5's R).
+    pub const fn components() -> usize {
+        3
+    }
+    /// λ = 0.001 of eq. (13): the split library's weight of a split request (Table I's λ).
+    pub const fn lambda() -> f64 {
+        0.001
     }
 }
 
