@@ -92,7 +92,7 @@ pub fn run(out: &mut dyn Write) -> Result<(), RunError> {
     for (name, metric) in [("OSPA", SetMetric::Ospa), ("GOSPA", SetMetric::GOSPA)] {
         let best = optimal_estimate(&r, metric, 1.0, 2.0)?;
         writeln!(out, "  {name}: report = {:?}", best.report)?;
-        number(out, "    mean error", best.mean_error)?;
+        number(out, "    mean error", best.mean_square_error)?;
     }
 
     // 3. The airport GM Bernoulli filter: predict, update with the scan's report discs, estimate.
