@@ -17,7 +17,7 @@ use crate::bounds::{
 use crate::control::case_study::{ControlConfig, Scheme};
 use crate::estimators::multi_bernoulli::{SetMetric, optimal_estimate};
 use crate::filters::{
-    BernoulliFilterConfig, Clutter, ClutterDensity, ClutterFunction, Detection, GmBernoulli,
+    BernoulliFilterOptions, Clutter, ClutterDensity, ClutterFunction, Detection, GmBernoulli,
     ParticleOptions, Splitting, default_reduction,
 };
 use crate::fov::{FovCardinality, MultiObjectDensity, SceneOptions};
@@ -103,12 +103,12 @@ fn filter_config_round_trips_and_omitted_fields_take_the_defaults() {
     for optional in ["likelihood", "splitting", "reduction", "exclusions"] {
         map.remove(optional);
     }
-    let back: BernoulliFilterConfig = serde_json::from_value(value.clone()).unwrap();
+    let back: BernoulliFilterOptions = serde_json::from_value(value.clone()).unwrap();
     assert_eq!(back.splitting, Splitting::default());
     assert_eq!(back.reduction, default_reduction());
     assert!(back.exclusions.is_empty() && back.likelihood.is_none());
     value.as_object_mut().unwrap().remove("survival");
-    let missing = serde_json::from_value::<BernoulliFilterConfig>(value).unwrap_err();
+    let missing = serde_json::from_value::<BernoulliFilterOptions>(value).unwrap_err();
     assert!(
         missing.to_string().contains("missing field `survival`"),
         "{missing}"

@@ -20,9 +20,9 @@ use crate::types::{
 };
 use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
-    self as core_filters, BernoulliFilterConfig as CoreConfig, Birth, Clutter, ClutterDensity,
+    self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, ClutterDensity,
     Detection, EstimateOptions, FilterEstimate, GmBernoulli, LinearGaussianLikelihood,
-    LinearGaussianTransition, PredictConfig, Splitting, UpdateConfig, UpdateInfo,
+    LinearGaussianTransition, PredictOptions, Splitting, UpdateInfo, UpdateOptions,
 };
 use fisst::mixture::ReductionOptions;
 use fisst::regions::Region as CoreRegion;
@@ -374,7 +374,7 @@ pub fn gm_bernoulli_predict(
         existence: o.existence,
         mixture: density(o.mixture, "options.mixture")?,
     };
-    let config = PredictConfig {
+    let config = PredictOptions {
         transition: o.transition.into_core("options")?,
         survival: o.survival,
         birth: birth(o.birth, "options")?,
@@ -445,13 +445,13 @@ fn update_config(
     red: Option<ReductionOptionsJs>,
     exclusions: Option<Vec<Region>>,
     root: &str,
-) -> JsResult<UpdateConfig> {
+) -> JsResult<UpdateOptions> {
     check_range(&format!("{root}.positionDims"), position_dims, 1, 8)?;
     let fov = match detection.fov {
         Some(r) => Some(r.into_core(&format!("{root}.detection.fov"))?.0),
         None => None,
     };
-    Ok(UpdateConfig {
+    Ok(UpdateOptions {
         position_dims,
         detection: Detection {
             probability: detection.probability,

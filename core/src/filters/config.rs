@@ -136,7 +136,7 @@ pub const DEFAULT_POSITION_DIMS: usize = 2;
 /// `survival`, `birth`).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct PredictConfig {
+pub struct PredictOptions {
     /// π(x | x′) = N(x; F x′, Q) (`transition: { F, Q }`).
     pub transition: LinearGaussianTransition,
     /// p_S, the probability that an existing object survives one step (`survival`).
@@ -145,7 +145,7 @@ pub struct PredictConfig {
     pub birth: Birth,
 }
 
-impl PredictConfig {
+impl PredictOptions {
     /// Checks p_S and the dimensions of the birth density against F.
     ///
     /// # Errors
@@ -165,7 +165,7 @@ impl PredictConfig {
 
 /// The splitting step of Algorithm 3 (`splitting`): the split library and the options of
 /// Algorithms 1–2 ([`crate::splitting::split_for_regions`]). `position_dims` of the options
-/// is overridden by [`UpdateConfig::position_dims`].
+/// is overridden by [`UpdateOptions::position_dims`].
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(
     feature = "serde",
@@ -253,7 +253,7 @@ pub fn default_reduction() -> ReductionOptions {
 /// `exclusions`).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct UpdateConfig {
+pub struct UpdateOptions {
     /// n_s: the position is the first `position_dims` state components (`positionDims`,
     /// default 2). Every region (FoV, report, exclusion) has this dimension.
     pub position_dims: usize,
@@ -273,7 +273,7 @@ pub struct UpdateConfig {
     pub exclusions: Vec<Region>,
 }
 
-impl UpdateConfig {
+impl UpdateOptions {
     /// The configuration with the default splitting, reduction and no exclusions.
     pub fn new(position_dims: usize, detection: Detection, clutter: Clutter) -> Self {
         Self {
@@ -347,7 +347,7 @@ impl UpdateConfig {
 /// parentheses. The particle filter ignores `splitting` and `reduction`.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct BernoulliFilterConfig {
+pub struct BernoulliFilterOptions {
     /// r_{0|0} (`existence`).
     pub existence: f64,
     /// p_{0|0} (`mixture`), weights summing to 1.
@@ -379,10 +379,10 @@ pub struct BernoulliFilterConfig {
     pub exclusions: Vec<Region>,
 }
 
-impl BernoulliFilterConfig {
+impl BernoulliFilterOptions {
     /// The prediction part.
-    pub fn predict_config(&self) -> PredictConfig {
-        PredictConfig {
+    pub fn predict_options(&self) -> PredictOptions {
+        PredictOptions {
             transition: self.transition.clone(),
             survival: self.survival,
             birth: self.birth.clone(),
@@ -390,8 +390,8 @@ impl BernoulliFilterConfig {
     }
 
     /// The update part.
-    pub fn update_config(&self) -> UpdateConfig {
-        UpdateConfig {
+    pub fn update_options(&self) -> UpdateOptions {
+        UpdateOptions {
             position_dims: self.position_dims,
             detection: self.detection.clone(),
             clutter: self.clutter.clone(),
@@ -404,8 +404,8 @@ impl BernoulliFilterConfig {
     /// Checks the whole configuration.
     ///
     /// # Errors
-    /// Those of [`GmBernoulli::new`], [`PredictConfig::validate`],
-    /// [`UpdateConfig::validate`]; [`Error::DimensionMismatch`] naming `mixture` (its
+    /// Those of [`GmBernoulli::new`], [`PredictOptions::validate`],
+    /// [`UpdateOptions::validate`]; [`Error::DimensionMismatch`] naming `mixture` (its
     /// dimension differs from F's) or `likelihood.H` (its column count differs).
     pub fn validate(&self) -> Result<()> {
         GmBernoulli::new(self.existence, self.mixture.clone())?;
@@ -417,8 +417,8 @@ impl BernoulliFilterConfig {
                 self.mixture.dim().unwrap_or(0),
             ));
         }
-        self.predict_config().validate()?;
-        self.update_config().validate(n)?;
+        self.predict_options().validate()?;
+        self.update_options().validate(n)?;
         if let Some(l) = &self.likelihood
             && l.state_dim() != n
         {

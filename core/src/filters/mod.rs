@@ -16,7 +16,7 @@
 //! with the models [`LinearGaussianTransition`] (and the nearly-constant-velocity model
 //! (70)–(71) in any number of position dimensions), [`Detection`] (p_D inside an optional
 //! field of view, (51)), [`Clutter`] (Poisson false reports, rate λ_c and density c̃),
-//! [`Birth`], and [`BernoulliFilterConfig`] for both filter objects
+//! [`Birth`], and [`BernoulliFilterOptions`] for both filter objects
 //! ([`GmBernoulliFilter`], [`ParticleBernoulliFilter`]).
 //!
 //! # The GM update (Algorithm 3)
@@ -86,8 +86,8 @@ mod transition;
 
 pub use clutter::{Clutter, ClutterDensity, ClutterFn, ClutterFunction};
 pub use config::{
-    BernoulliFilterConfig, Birth, DEFAULT_POSITION_DIMS, DEFAULT_SURVIVAL, GmBernoulli,
-    PredictConfig, Splitting, UpdateConfig, default_reduction, default_split_library,
+    BernoulliFilterOptions, Birth, DEFAULT_POSITION_DIMS, DEFAULT_SURVIVAL, GmBernoulli,
+    PredictOptions, Splitting, UpdateOptions, default_reduction, default_split_library,
 };
 pub use detection::Detection;
 pub use estimate::{EstimateOptions, FilterEstimate, gm_estimate};

@@ -5,7 +5,7 @@ use alloc::vec::Vec;
 
 use rand::Rng;
 
-use super::config::{BernoulliFilterConfig, PredictConfig, UpdateConfig};
+use super::config::{BernoulliFilterOptions, PredictOptions, UpdateOptions};
 use super::estimate::{EstimateOptions, FilterEstimate, particle_estimate};
 use super::gm_bernoulli::{
     Term, UpdateInfo, add_report, bernoulli_weights, check_measurements, count_zero_kappa,
@@ -68,7 +68,7 @@ enum Origin {
 /// The Bernoulli particle filter of B. Ristic, B.-T. Vo, B.-N. Vo, A. Farina, "A tutorial on
 /// Bernoulli filters: theory, implementation and applications," IEEE Trans. Signal Process.
 /// 61(13):3406–3430, 2013, doi:10.1109/TSP.2013.2257765 (reference \[23\] of `001_…`), with the
-/// models of a [`BernoulliFilterConfig`] (`ParticleBernoulliFilter`):
+/// models of a [`BernoulliFilterOptions`] (`ParticleBernoulliFilter`):
 ///
 /// - **Prediction** (their eqs. (34)–(35), with a known birth density instead of the
 ///   measurement-driven one): r_{k|k−1} = p_b (1 − r) + p_S r; every particle moves by
@@ -100,8 +100,8 @@ pub struct ParticleBernoulliFilter {
     /// F x′ of each particle's parent (survivors) since the last prediction.
     parents: Vec<f64>,
     origins: Vec<Origin>,
-    predict: PredictConfig,
-    update: UpdateConfig,
+    predict: PredictOptions,
+    update: UpdateOptions,
     likelihood: Option<LinearGaussianLikelihood>,
     options: ParticleOptions,
     rng: SeededRng,
@@ -112,12 +112,12 @@ impl ParticleBernoulliFilter {
     /// A filter at r_{0|0} with N particles drawn from p_{0|0} (equal weights).
     ///
     /// # Errors
-    /// As [`BernoulliFilterConfig::validate`]; [`Error::InvalidParameter`] naming
+    /// As [`BernoulliFilterOptions::validate`]; [`Error::InvalidParameter`] naming
     /// `particles` (0 or above [`MAX_PARTICLES`]), `birthParticles` (above
     /// [`MAX_PARTICLES`]) or `mcmcMoves` (above [`MAX_MCMC_MOVES`]);
     /// [`Error::NotPositiveDefinite`] naming `transition.Q` when `mcmc_moves > 0` and Q is
     /// singular.
-    pub fn new(config: BernoulliFilterConfig, options: ParticleOptions) -> Result<Self> {
+    pub fn new(config: BernoulliFilterOptions, options: ParticleOptions) -> Result<Self> {
         config.validate()?;
         if options.particles == 0 || options.particles > MAX_PARTICLES {
             return Err(Error::parameter(
@@ -160,8 +160,8 @@ impl ParticleBernoulliFilter {
             weights: alloc::vec![1.0 / n as f64; n],
             parents: Vec::new(),
             origins: Vec::new(),
-            predict: config.predict_config(),
-            update: config.update_config(),
+            predict: config.predict_options(),
+            update: config.update_options(),
             likelihood: config.likelihood,
             options,
             rng,

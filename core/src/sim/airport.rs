@@ -9,7 +9,7 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::error::{Error, Result};
 use crate::filters::{
-    BernoulliFilterConfig, Birth, Clutter, ClutterDensity, Detection, LinearGaussianTransition,
+    BernoulliFilterOptions, Birth, Clutter, ClutterDensity, Detection, LinearGaussianTransition,
     Splitting, default_reduction,
 };
 use crate::gaussian::{Gaussian, GaussianMixture, normal};
@@ -127,7 +127,7 @@ pub struct AirportScenario {
     /// T = 15 s (`dt`).
     pub dt: f64,
     /// The configuration of both filters (`config`).
-    pub config: BernoulliFilterConfig,
+    pub config: BernoulliFilterOptions,
     /// The truth at t = T, 2T, … (`truth`).
     pub truth: Vec<TruthPoint>,
     /// The anchor indices reported at each step (`reports`), ascending.
@@ -371,7 +371,7 @@ fn airport_config(
     fov: Region,
     exclusions: Vec<Region>,
     anchor_list: &[Anchor],
-) -> Result<BernoulliFilterConfig> {
+) -> Result<BernoulliFilterOptions> {
     let anchors = anchor_list.len();
     let entrance = Gaussian::new(
         DVector::from_column_slice(&[5.0, 15.0, 0.5, 0.0]),
@@ -395,7 +395,7 @@ fn airport_config(
         ));
     }
     let birth = GaussianMixture::new(birth, "birth.mixture")?;
-    Ok(BernoulliFilterConfig {
+    Ok(BernoulliFilterOptions {
         existence: 0.5,
         mixture: mixture.clone(),
         transition: LinearGaussianTransition::nearly_constant_velocity(
