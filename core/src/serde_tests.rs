@@ -137,11 +137,11 @@ fn eq39_existence_and_detection_probability_1_5_are_rejected() {
 #[test]
 fn clutter_functions_cannot_be_serialised() {
     let constant = Clutter::new(2.0, ClutterDensity::Constant(0.1)).unwrap();
+    assert_eq!(round_trip(&constant), r#"{"rate":2.0,"density":0.1}"#);
     assert_eq!(
-        round_trip(&constant),
-        r#"{"rate":2.0,"density":{"Constant":0.1}}"#
+        round_trip(&Clutter::new(2.0, ClutterDensity::PerReport(vec![0.1, 0.2])).unwrap()),
+        r#"{"rate":2.0,"density":[0.1,0.2]}"#
     );
-    round_trip(&Clutter::new(2.0, ClutterDensity::PerReport(vec![0.1, 0.2])).unwrap());
     let f = ClutterDensity::Function(ClutterFunction(alloc::sync::Arc::new(|_: &[f64]| 1.0)));
     assert!(serde_json::to_string(&f).is_err());
     assert!(serde_json::from_str::<ClutterDensity>(r#"{"Function":null}"#).is_err());

@@ -145,15 +145,7 @@ pub fn gm_bernoulli_update(
     reports: &[Region],
     config: &UpdateOptions,
 ) -> Result<GmBernoulliUpdate> {
-    for (i, r) in reports.iter().enumerate() {
-        if r.dim() != config.position_dims {
-            return Err(Error::dimension(
-                alloc::format!("reports[{i}]"),
-                config.position_dims,
-                r.dim(),
-            ));
-        }
-    }
+    super::likelihood::check_reports(reports, config.position_dims)?;
     gm_bernoulli_update_with(state, &RegionReports(reports), config)
 }
 
@@ -306,6 +298,13 @@ pub(crate) fn count_zero_kappa(kappa: &[f64]) -> usize {
 /// [`Error::DimensionMismatch`] naming `measurements[j]`, [`Error::InvalidParameter`] naming
 /// `measurements[j][i]`.
 pub(crate) fn check_measurements<M: AsRef<[f64]>>(measurements: &[M], mdim: usize) -> Result<()> {
+    Error::check_count(
+        "measurements",
+        "measurements",
+        measurements.len(),
+        0,
+        super::config::MAX_MEASUREMENTS,
+    )?;
     for (j, z) in measurements.iter().enumerate() {
         let z = z.as_ref();
         if z.len() != mdim {
@@ -538,7 +537,7 @@ fn finish(
 /// this is the Kalman filter.
 ///
 /// # Errors
-/// [`Error::DimensionMismatch`] naming `likelihood.H` (its column count is not the state
+/// [`Error::DimensionMismatch`] naming `likelihood.h` (its column count is not the state
 /// dimension) or `measurements[j]` (length not m); [`Error::InvalidParameter`] naming
 /// `measurements[j][i]` for a non-finite coordinate; [`Error::NotPositiveDefinite`] naming
 /// `mixture[ℓ].cov` if an innovation covariance fails Cholesky; as
@@ -553,7 +552,7 @@ pub fn gm_bernoulli_update_vector<M: AsRef<[f64]>>(
     let n = state.dim();
     config.validate(n)?;
     if likelihood.state_dim() != n {
-        return Err(Error::dimension("likelihood.H", n, likelihood.state_dim()));
+        return Err(Error::dimension("likelihood.h", n, likelihood.state_dim()));
     }
     check_measurements(measurements, likelihood.measurement_dim())?;
     let kappa = config

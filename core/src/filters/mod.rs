@@ -87,7 +87,9 @@ mod transition;
 pub use clutter::{Clutter, ClutterDensity, ClutterFn, ClutterFunction};
 pub use config::{
     BernoulliFilterOptions, Birth, DEFAULT_POSITION_DIMS, DEFAULT_SURVIVAL, GmBernoulli,
-    PredictOptions, Splitting, UpdateOptions, default_reduction, default_split_library,
+    MAX_GRID_POINTS, MAX_MEASUREMENTS, MAX_POSITION_DIMS, MAX_REDUCED_COMPONENTS, MAX_REGIONS,
+    PredictOptions, Splitting, SplittingOptions, UpdateOptions, default_reduction,
+    default_split_library,
 };
 pub use detection::Detection;
 pub use estimate::{EstimateOptions, FilterEstimate, gm_estimate};
@@ -96,13 +98,16 @@ pub use gm_bernoulli::{
     gm_bernoulli_update_vector, gm_bernoulli_update_with,
 };
 pub use likelihood::{
-    FnLikelihood, GeneralizedLikelihood, LinearGaussianLikelihood, RegionReports,
+    FnLikelihood, GeneralizedLikelihood, LinearGaussianLikelihood, MAX_MEASUREMENT_DIM,
+    RegionReports,
 };
 pub use particle_bernoulli::{
     MAX_MCMC_MOVES, MAX_PARTICLES, ParticleBernoulliFilter, ParticleOptions,
 };
-pub use transition::LinearGaussianTransition;
+pub use transition::{LinearGaussianTransition, MAX_STATES};
 
+#[cfg(test)]
+mod limits_tests;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]

@@ -19,9 +19,9 @@ use crate::math::sum::NeumaierSum;
 use crate::regions::Region;
 
 /// Largest particle count (memory: 2 n f64 per particle).
-pub const MAX_PARTICLES: usize = 10_000_000;
+pub const MAX_PARTICLES: usize = 200_000;
 /// Largest number of MCMC moves per update.
-pub const MAX_MCMC_MOVES: usize = 100;
+pub const MAX_MCMC_MOVES: usize = 10;
 
 /// The particle filter's own settings (`particles`, `mcmcMoves`, `seed`, `birthParticles`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -112,37 +112,21 @@ impl ParticleBernoulliFilter {
     /// A filter at r_{0|0} with N particles drawn from p_{0|0} (equal weights).
     ///
     /// # Errors
-    /// As [`BernoulliFilterOptions::validate`]; [`Error::InvalidParameter`] naming
-    /// `particles` (0 or above [`MAX_PARTICLES`]), `birthParticles` (above
-    /// [`MAX_PARTICLES`]) or `mcmcMoves` (above [`MAX_MCMC_MOVES`]);
-    /// [`Error::NotPositiveDefinite`] naming `transition.Q` when `mcmc_moves > 0` and Q is
+    /// As [`BernoulliFilterOptions::validate`]; [`Error::OutOfRange`] naming `particles`
+    /// (outside [1, [`MAX_PARTICLES`]]), `birth_particles` (above [`MAX_PARTICLES`]) or
+    /// `mcmc_moves` (above [`MAX_MCMC_MOVES`]);
+    /// [`Error::NotPositiveDefinite`] naming `transition.q` when `mcmc_moves > 0` and Q is
     /// singular.
     pub fn new(config: BernoulliFilterOptions, options: ParticleOptions) -> Result<Self> {
         config.validate()?;
-        if options.particles == 0 || options.particles > MAX_PARTICLES {
-            return Err(Error::parameter(
-                "particles",
-                options.particles as f64,
-                "an integer in [1, 10000000]",
-            ));
+        Error::check_range("particles", options.particles, 1, MAX_PARTICLES)?;
+        if let Some(b) = options.birth_particles {
+            Error::check_range("birth_particles", b, 0, MAX_PARTICLES)?;
         }
-        if options.birth_particles.is_some_and(|b| b > MAX_PARTICLES) {
-            return Err(Error::parameter(
-                "birthParticles",
-                options.birth_particles.unwrap_or(0) as f64,
-                "an integer in [0, 10000000]",
-            ));
-        }
-        if options.mcmc_moves > MAX_MCMC_MOVES {
-            return Err(Error::parameter(
-                "mcmcMoves",
-                options.mcmc_moves as f64,
-                "an integer in [0, 100]",
-            ));
-        }
+        Error::check_range("mcmc_moves", options.mcmc_moves, 0, MAX_MCMC_MOVES)?;
         if options.mcmc_moves > 0 && !config.transition.has_density() {
             return Err(Error::NotPositiveDefinite {
-                what: "transition.Q".into(),
+                what: "transition.q".into(),
             });
         }
         let dim = config.transition.dim();
@@ -269,15 +253,7 @@ impl ParticleBernoulliFilter {
     /// [`ParticleBernoulliFilter::update_with`]. On `Err`, the filter is unchanged (particles,
     /// weights, existence and random stream).
     pub fn update(&mut self, reports: &[Region]) -> Result<UpdateInfo> {
-        for (i, r) in reports.iter().enumerate() {
-            if r.dim() != self.update.position_dims {
-                return Err(Error::dimension(
-                    alloc::format!("reports[{i}]"),
-                    self.update.position_dims,
-                    r.dim(),
-                ));
-            }
-        }
+        super::likelihood::check_reports(reports, self.update.position_dims)?;
         self.update_with(&RegionReports(reports))
     }
 

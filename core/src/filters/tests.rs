@@ -74,7 +74,7 @@ fn nearly_constant_velocity_in_one_to_three_dimensions() {
     for (e, field) in [
         (
             LinearGaussianTransition::nearly_constant_velocity(0, 1.0, 0.1),
-            "positionDims",
+            "position_dims",
         ),
         (
             LinearGaussianTransition::nearly_constant_velocity(2, f64::NAN, 0.1),
@@ -86,21 +86,21 @@ fn nearly_constant_velocity_in_one_to_three_dimensions() {
         ),
         (
             LinearGaussianTransition::from_row_slices(&[1.0, 0.0, 0.0], &[1.0]),
-            "transition.F",
+            "transition.f",
         ),
         (
             LinearGaussianTransition::from_row_slices(
                 &[1.0, 0.0, 0.0, 1.0],
                 &[1.0, 0.5, 0.5, -1.0],
             ),
-            "transition.Q",
+            "transition.q",
         ),
         (
             LinearGaussianTransition::from_row_slices(
                 &[1.0, f64::INFINITY, 0.0, 1.0],
                 &[1.0, 0.0, 0.0, 1.0],
             ),
-            "transition.F[0][1]",
+            "transition.f[0][1]",
         ),
     ] {
         assert_eq!(e.unwrap_err().field(), field);
@@ -970,7 +970,7 @@ fn vector_update_matches_its_closed_form() {
         DMatrix::from_row_slice(1, 1, &[-1.0]),
     )
     .unwrap_err();
-    assert_eq!(e.field(), "likelihood.R");
+    assert_eq!(e.field(), "likelihood.r");
 }
 
 /// A clutter density given as a function of the measurement.
@@ -1065,7 +1065,7 @@ fn update_errors_name_the_field() {
     c.detection.fov = None;
     assert_eq!(
         gm_bernoulli_update(&state, &[], &c).unwrap_err().field(),
-        "positionDims"
+        "position_dims",
     );
     let mut c = good.clone();
     c.clutter.density = ClutterDensity::PerReport(vec![0.1]);
@@ -1097,7 +1097,7 @@ fn update_errors_name_the_field() {
         gm_bernoulli_update(&state, &reports, &c)
             .unwrap_err()
             .field(),
-        "reduction.maxComponents"
+        "reduction.max_components"
     );
     let bad_state = GmBernoulli {
         existence: f64::NAN,

@@ -188,7 +188,7 @@ pub const AIRPORT_NOISE: f64 = 0.004;
 /// The paper's number of report times (15 minutes at T = 15 s).
 pub const AIRPORT_PAPER_STEPS: usize = 60;
 /// The largest number of steps [`airport_scenario`] simulates.
-pub const MAX_AIRPORT_STEPS: usize = 100_000;
+pub const MAX_AIRPORT_STEPS: usize = 2000;
 
 /// The anchors of the layout with their radii 2 d_a / 3.
 pub fn airport_anchors() -> Vec<Anchor> {
@@ -226,7 +226,7 @@ fn blocked(p: [f64; 2], boxes: &[AxisBox]) -> bool {
 /// run ([`AirportScenario`] documents the layout, the truth and the reports).
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] naming `steps` above [`MAX_AIRPORT_STEPS`].
+/// [`Error::OutOfRange`] naming `steps` above [`MAX_AIRPORT_STEPS`].
 ///
 /// # Examples
 /// ```
@@ -237,13 +237,7 @@ fn blocked(p: [f64; 2], boxes: &[AxisBox]) -> bool {
 /// # Ok::<(), fisst::Error>(())
 /// ```
 pub fn airport_scenario(seed: u64, steps: usize) -> Result<AirportScenario> {
-    if steps > MAX_AIRPORT_STEPS {
-        return Err(Error::parameter(
-            "steps",
-            steps as f64,
-            "an integer in [0, 100000]",
-        ));
-    }
+    Error::check_range("steps", steps, 0, MAX_AIRPORT_STEPS)?;
     let anchors = airport_anchors();
     let discs: Vec<Region> = anchors.iter().map(Anchor::disc).collect::<Result<_>>()?;
     let fov = Region::union(discs.clone(), "fov")?;
