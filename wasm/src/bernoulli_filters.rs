@@ -32,23 +32,6 @@ fn rendered(root: &'static str) -> impl Fn(fisst::Error) -> JsValue {
     move |e| core_error_rendered(e, root)
 }
 
-/// p_S when omitted.
-fn survival() -> f64 {
-    core_filters::DEFAULT_SURVIVAL
-}
-/// n_s when omitted.
-fn position_dims() -> usize {
-    core_filters::DEFAULT_POSITION_DIMS
-}
-/// N when omitted.
-fn particles() -> usize {
-    core_filters::ParticleOptions::default().particles
-}
-/// MCMC moves when omitted.
-fn mcmc_moves() -> usize {
-    core_filters::ParticleOptions::default().mcmc_moves
-}
-
 /// The linear-Gaussian transition N(x; F x′, Q) (eq. (44)): F and Q as n rows of n numbers
 /// (Q symmetric positive semidefinite).
 #[derive(Clone, Debug, Deserialize, Serialize, Tsify)]
@@ -190,7 +173,7 @@ pub struct GmBernoulliPredictOptions {
     /// F, Q.
     pub transition: Transition,
     /// p_S in [0, 1] (default 0.99).
-    #[serde(default = "survival")]
+    #[serde(default = "core_filters::default_survival")]
     pub survival: f64,
     /// p_b and b(x); omitted: no birth.
     #[tsify(optional)]
@@ -239,7 +222,7 @@ pub struct GmBernoulliUpdateOptions {
     /// p_{k|k−1}: weights sum to 1.
     pub mixture: Vec<WeightedGaussian>,
     /// n_s (default 2, in [1, 8]).
-    #[serde(default = "position_dims")]
+    #[serde(default = "core_filters::default_position_dims")]
     pub position_dims: usize,
     /// p_D and the field of view.
     pub detection: DetectionOptions,
@@ -377,13 +360,13 @@ pub struct BernoulliFilterConfig {
     /// F, Q.
     pub transition: Transition,
     /// p_S (default 0.99).
-    #[serde(default = "survival")]
+    #[serde(default = "core_filters::default_survival")]
     pub survival: f64,
     /// p_b, b(x); omitted: no birth.
     #[tsify(optional)]
     pub birth: Option<BirthOptions>,
     /// n_s (default 2).
-    #[serde(default = "position_dims")]
+    #[serde(default = "core_filters::default_position_dims")]
     pub position_dims: usize,
     /// p_D, fov.
     pub detection: DetectionOptions,
@@ -402,13 +385,13 @@ pub struct BernoulliFilterConfig {
     #[tsify(optional)]
     pub exclusions: Option<Vec<Region>>,
     /// Particle filter: N (default 5000, at most 200000).
-    #[serde(default = "particles")]
+    #[serde(default = "core_filters::default_particles")]
     pub particles: usize,
     /// Particle filter: birth particles per prediction (default N/10).
     #[tsify(optional)]
     pub birth_particles: Option<usize>,
     /// Particle filter: MCMC moves per update (default 1, at most 10).
-    #[serde(default = "mcmc_moves")]
+    #[serde(default = "core_filters::default_mcmc_moves")]
     pub mcmc_moves: usize,
     /// Particle filter: the seed; omitted: fresh entropy (the `seed` getter returns it).
     #[tsify(optional)]
@@ -732,10 +715,6 @@ impl ParticleBernoulliFilterJs {
     }
 }
 
-fn airport_steps() -> usize {
-    fisst::sim::airport::AIRPORT_PAPER_STEPS
-}
-
 /// Options of `airportScenario`.
 #[derive(Deserialize, Tsify)]
 pub struct AirportScenarioOptions {
@@ -743,7 +722,7 @@ pub struct AirportScenarioOptions {
     #[tsify(optional)]
     pub seed: Option<u64>,
     /// Report times (default 60, at most 2000).
-    #[serde(default = "airport_steps")]
+    #[serde(default = "fisst::sim::airport::default_steps")]
     pub steps: usize,
 }
 
@@ -877,7 +856,7 @@ pub fn airport_scenario(
     let o: AirportScenarioOptions = if options.is_undefined() {
         AirportScenarioOptions {
             seed: None,
-            steps: airport_steps(),
+            steps: fisst::sim::airport::default_steps(),
         }
     } else {
         read(options, "options")?
@@ -933,8 +912,8 @@ pub fn airport_scenario(
             density,
         },
         exclusions: exclusions.clone(),
-        particles: particles(),
-        mcmc_moves: mcmc_moves(),
+        particles: core_filters::default_particles(),
+        mcmc_moves: core_filters::default_mcmc_moves(),
         seed,
     };
     write(&AirportScenarioResult {

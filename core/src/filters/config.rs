@@ -124,13 +124,17 @@ impl Birth {
     }
 }
 
-/// p_S when a binding's options omit it (`survival`): 0.99, the survival of the airport
+/// p_S when a user's options omit it (`survival`): 0.99, the survival of the airport
 /// example of `001_…` Section V-C.
-pub const DEFAULT_SURVIVAL: f64 = 0.99;
+pub const fn default_survival() -> f64 {
+    0.99
+}
 
-/// n_s when a binding's options omit it (`positionDims`): 2, a position in the plane, as in
+/// n_s when a user's options omit it (`position_dims`): 2, a position in the plane, as in
 /// every example of `001_…` (and [`SplitOptions::default`]).
-pub const DEFAULT_POSITION_DIMS: usize = 2;
+pub const fn default_position_dims() -> usize {
+    2
+}
 
 /// The largest n_s (`position_dims`): 8 position coordinates (the splitting's collocation
 /// grid has N_g^{n_s} points).

@@ -86,10 +86,10 @@ mod transition;
 
 pub use clutter::{Clutter, ClutterDensity, ClutterFn, ClutterFunction};
 pub use config::{
-    BernoulliFilterOptions, Birth, DEFAULT_POSITION_DIMS, DEFAULT_SURVIVAL, GmBernoulli,
-    MAX_GRID_POINTS, MAX_MEASUREMENTS, MAX_POSITION_DIMS, MAX_REDUCED_COMPONENTS, MAX_REGIONS,
-    PredictOptions, Splitting, SplittingOptions, UpdateOptions, default_reduction,
-    default_split_library,
+    BernoulliFilterOptions, Birth, GmBernoulli, MAX_GRID_POINTS, MAX_MEASUREMENTS,
+    MAX_POSITION_DIMS, MAX_REDUCED_COMPONENTS, MAX_REGIONS, PredictOptions, Splitting,
+    SplittingOptions, UpdateOptions, default_position_dims, default_reduction,
+    default_split_library, default_survival,
 };
 pub use detection::Detection;
 pub use estimate::{EstimateOptions, FilterEstimate, gm_estimate};
@@ -102,7 +102,8 @@ pub use likelihood::{
     RegionReports,
 };
 pub use particle_bernoulli::{
-    MAX_MCMC_MOVES, MAX_PARTICLES, ParticleBernoulliFilter, ParticleOptions,
+    MAX_MCMC_MOVES, MAX_PARTICLES, ParticleBernoulliFilter, ParticleOptions, default_mcmc_moves,
+    default_particles,
 };
 pub use transition::{LinearGaussianTransition, MAX_STATES};
 

@@ -43,12 +43,22 @@ pub struct ParticleOptions {
     pub seed: u64,
 }
 
+/// N when a user's options omit it (`particles`): 5000, the paper's count.
+pub const fn default_particles() -> usize {
+    5000
+}
+
+/// The MCMC moves per update when a user's options omit them (`mcmc_moves`): 1.
+pub const fn default_mcmc_moves() -> usize {
+    1
+}
+
 impl Default for ParticleOptions {
     fn default() -> Self {
         Self {
-            particles: 5000,
+            particles: default_particles(),
             birth_particles: None,
-            mcmc_moves: 1,
+            mcmc_moves: default_mcmc_moves(),
             seed: 0,
         }
     }

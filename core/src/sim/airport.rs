@@ -187,6 +187,11 @@ pub const AIRPORT_DT: f64 = 15.0;
 pub const AIRPORT_NOISE: f64 = 0.004;
 /// The paper's number of report times (15 minutes at T = 15 s).
 pub const AIRPORT_PAPER_STEPS: usize = 60;
+
+/// The steps of [`airport_scenario`] when a user's options omit them: [`AIRPORT_PAPER_STEPS`].
+pub const fn default_steps() -> usize {
+    AIRPORT_PAPER_STEPS
+}
 /// The largest number of steps [`airport_scenario`] simulates.
 pub const MAX_AIRPORT_STEPS: usize = 2000;
 
