@@ -4,14 +4,14 @@ SHELL := /bin/bash
 PORT ?= 8000
 export CHROMEDRIVER ?= /usr/bin/chromedriver
 
-.PHONY: demo test pkg web-pkg setup setup-test check lint test-native test-nostd test-wasm test-js fuzz soak bench clean
+.PHONY: demo test pkg web-pkg setup setup-test check lint test-native test-nostd test-embedded test-wasm test-js fuzz soak bench clean
 
 ## make demo: install what is missing, build the npm package, serve web/ on 127.0.0.1:$(PORT)
 demo: setup web-pkg
 	node scripts/serve.mjs web $(PORT)
 
-## make test: install what is missing, then every test (native, no_std, wasm in Node and Chromium, npm package, pages)
-test: setup-test lint test-native test-nostd test-wasm test-js
+## make test: install what is missing, then every test (native, no_std, Cortex-M4 in QEMU, wasm in Node and Chromium, npm package, pages)
+test: setup-test lint test-native test-nostd test-embedded test-wasm test-js
 	@echo "make test: all passed"
 
 ## make pkg: the npm package `fisst` in wasm/pkg/
@@ -39,6 +39,9 @@ lint:
 	# benches/ is its own workspace (criterion stays out of the main build); check that every
 	# bench and bin still compiles against the core, in the main target directory.
 	cd benches && CARGO_TARGET_DIR=$(CURDIR)/target cargo check --locked --all-targets
+	# examples/cortex-m is its own crate too (built for thumbv7em-none-eabihf by default).
+	cd examples/cortex-m && cargo fmt -- --check
+	cd examples/cortex-m && cargo clippy --locked --release -- -D warnings
 
 test-native:
 	cargo test --locked
@@ -51,13 +54,17 @@ test-nostd:
 	cargo test --locked -p fisst --no-default-features --features serde --lib
 	cargo build --locked -p fisst --no-default-features --features serde --target thumbv7em-none-eabihf
 
+## make test-embedded: the Cortex-M4 example in QEMU, its output compared bit for bit with the native run
+test-embedded:
+	examples/cortex-m/run.sh
+
 test-wasm:
 	cargo test --locked --target wasm32-unknown-unknown -p fisst-wasm --test node
 	cargo test --locked --target wasm32-unknown-unknown -p fisst-wasm --test browser
 
 test-js: web-pkg
 	scripts/npm-deps.sh
-	cd tests/js && node --test contract.test.mjs readme.test.mjs types.test.mjs lib.test.mjs bernoulli_filters.test.mjs metrics_series.test.mjs bounds.test.mjs control.test.mjs package.test.mjs
+	cd tests/js && node --test contract.test.mjs readme.test.mjs types.test.mjs lib.test.mjs bernoulli_filters.test.mjs metrics_series.test.mjs bounds.test.mjs control.test.mjs package.test.mjs recipes.test.mjs
 	cd tests/js && node --expose-gc --test fuzz/ soak/
 	cd tests/js && node --test --test-concurrency=1 pages/
 
@@ -83,4 +90,5 @@ bench: pkg
 
 clean:
 	cargo clean
+	rm -rf examples/cortex-m/target
 	rm -rf wasm/pkg web/pkg web/vendor web/node_modules tests/js/node_modules tests/browser/screenshots

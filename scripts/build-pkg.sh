@@ -13,7 +13,8 @@ for part in "${parts[@]}"; do
     --no-default-features --features "$part"
   wasm-bindgen --target web --remove-name-section --remove-producers-section \
     --out-dir wasm/pkg --out-name "$part" "$target_dir/wasm32-unknown-unknown/release/fisst_wasm.wasm"
+  node scripts/pkg-guards.mjs wasm/pkg "$part"
 done
-cp wasm/npm/README.md wasm/pkg/
+cp wasm/npm/README.md LICENSE-MIT LICENSE-APACHE CHANGELOG.md wasm/pkg/
 version=$(sed -n 's/^version = "\(.*\)"/\1/p' Cargo.toml | head -n 1)
 node scripts/pkg-facade.mjs wasm/pkg "$version" "${parts[@]}"

@@ -195,6 +195,9 @@ pkg.files = [
   'fisst_wasm.d.ts',
   'node.js',
   'README.md',
+  'LICENSE-MIT',
+  'LICENSE-APACHE',
+  'CHANGELOG.md',
   ...parts.flatMap((p) => [`${p}.js`, `${p}.d.ts`, `${p}_bg.wasm`, `${p}_bg.wasm.d.ts`, `${p}.node.js`]),
 ];
 pkg.sideEffects = ['./node.js', ...parts.map((p) => `./${p}.node.js`)];

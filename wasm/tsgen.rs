@@ -22,6 +22,7 @@ pub struct Serde {
     tag: Option<String>,
     untagged: bool,
     transparent: bool,
+    skip: bool,
 }
 
 fn lit_str(e: &Expr) -> Option<String> {
@@ -47,6 +48,7 @@ fn read_serde_list(list: &syn::MetaList, s: &mut Serde) {
             ("default", _) => s.default = true,
             ("untagged", _) => s.untagged = true,
             ("transparent", _) => s.transparent = true,
+            ("skip", _) => s.skip = true,
             ("rename", Meta::NameValue(nv)) => s.rename = lit_str(&nv.value),
             ("rename_all", Meta::NameValue(nv)) => s.rename_all = lit_str(&nv.value),
             ("skip_serializing_if", _) => s.optional_out = true,
@@ -171,6 +173,11 @@ pub fn walk(items: Vec<Item>, out: &mut BTreeMap<String, Def>) {
             Item::Enum(e) if serde_of(&e.attrs).derive => {
                 out.insert(e.ident.to_string(), Def { item: it.clone() });
             }
+            // a plain alias (`pub type State = [f64; 2];`), written inline where it is used
+            Item::Type(t) if t.generics.params.is_empty() => {
+                out.entry(t.ident.to_string())
+                    .or_insert(Def { item: it.clone() });
+            }
             Item::Mod(m) => {
                 if let Some((_, inner)) = &m.content {
                     walk(inner.clone(), out);
@@ -178,6 +185,17 @@ pub fn walk(items: Vec<Item>, out: &mut BTreeMap<String, Def>) {
             }
             _ => {}
         }
+    }
+}
+
+/// The length of an array type `[T; N]` written as a tuple: a literal N of at most 16.
+fn tuple_len(len: &Expr) -> Option<usize> {
+    match len {
+        Expr::Lit(l) => match &l.lit {
+            Lit::Int(n) => n.base10_parse().ok().filter(|&n| n <= 16),
+            _ => None,
+        },
+        _ => None,
     }
 }
 
@@ -241,7 +259,8 @@ impl Gen<'_> {
             let last = w.rsplit("::").next().unwrap_or(w);
             return match last {
                 "matrix" => "number[][]".into(),
-                "vector" => "number[] | Float64Array".into(),
+                "vector" | "numbers" => "number[] | Float64Array".into(),
+                "rows_of_numbers" => "(number[] | Float64Array)[]".into(),
                 other => {
                     self.warnings.push(format!("unknown `with` module {other}"));
                     "unknown".into()
@@ -250,7 +269,14 @@ impl Gen<'_> {
         }
         match t {
             Type::Reference(r) => self.ty(&r.elem, None),
-            Type::Array(a) => format!("{}[]", self.ty_paren(&a.elem)),
+            // `[T; N]` is a tuple of N (as tsify writes it), for the small N of points
+            Type::Array(a) => match tuple_len(&a.len) {
+                Some(n) => {
+                    let one = self.ty(&a.elem, None);
+                    format!("[{}]", vec![one; n].join(", "))
+                }
+                None => format!("{}[]", self.ty_paren(&a.elem)),
+            },
             Type::Slice(a) => format!("{}[]", self.ty_paren(&a.elem)),
             Type::Tuple(tp) => {
                 let parts: Vec<String> = tp.elems.iter().map(|e| self.ty(e, None)).collect();
@@ -291,6 +317,13 @@ impl Gen<'_> {
                         format!("{inner} | {inner}[]")
                     }
                     _ => {
+                        if let Some(Def {
+                            item: Item::Type(alias),
+                        }) = self.defs.get(&name)
+                        {
+                            let aliased = (*alias.ty).clone();
+                            return self.ty(&aliased, None);
+                        }
                         if self.defs.contains_key(&name) {
                             self.want(&name);
                             name
@@ -336,6 +369,9 @@ impl Gen<'_> {
         let mut s = String::new();
         for f in fields.iter() {
             let fs = serde_of(&f.attrs);
+            if fs.skip {
+                continue;
+            }
             let rust = f.ident.as_ref().unwrap().to_string();
             let js = fs
                 .rename
@@ -440,6 +476,13 @@ impl Gen<'_> {
                     "{}export type {name} =\n{};\n",
                     Self::doc_block(&docs(&en.attrs), ""),
                     alts.join("\n")
+                )
+            }
+            Item::Type(t) => {
+                let ty = self.ty(&t.ty, None);
+                format!(
+                    "{}export type {name} = {ty};\n",
+                    Self::doc_block(&docs(&t.attrs), "")
                 )
             }
             _ => unreachable!(),

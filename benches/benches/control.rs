@@ -39,7 +39,7 @@
 //! benches/control_node.mjs renyi 5`, one thread, same steps 6–10): median 91–109 ms →
 //! 85–94 ms, i.e. 1.6–1.8× native on one thread and 2.3–2.8× native on two.
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
-use fisst::control::{ControlConfig, ControlRun, Scheme};
+use fisst::control::{ControlOptions, ControlRun, Scheme};
 use fisst::smc::{brute_force_ln_likelihood, ln_likelihood};
 use std::hint::black_box;
 
@@ -51,7 +51,7 @@ fn control_step(c: &mut Criterion) {
         ("fisher", Scheme::Fisher),
         ("pent", Scheme::Pent),
     ] {
-        let mut run = ControlRun::new(ControlConfig::paper(scheme, 1000), 3).unwrap();
+        let mut run = ControlRun::new(ControlOptions::paper(scheme, 1000), 3).unwrap();
         for _ in 0..5 {
             run.step().unwrap();
         }

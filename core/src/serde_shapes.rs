@@ -65,6 +65,49 @@ pub mod matrix {
     }
 }
 
+/// `Vec<f64>` as `[x, …]`, serde's own shape: the marker of "a list of numbers" that a
+/// binding may also take as a typed array (TypeScript `number[] | Float64Array`).
+pub mod numbers {
+    use super::*;
+
+    /// Writes the entries in order.
+    ///
+    /// # Errors
+    /// The serializer's.
+    pub fn serialize<S: Serializer>(v: &[f64], s: S) -> Result<S::Ok, S::Error> {
+        v.serialize(s)
+    }
+
+    /// Reads `[x, …]`.
+    ///
+    /// # Errors
+    /// The deserializer's.
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<f64>, D::Error> {
+        Vec::<f64>::deserialize(d)
+    }
+}
+
+/// `Vec<Vec<f64>>` as `[[x, …], …]`, each row a [`numbers`] (rows may differ in length).
+pub mod rows_of_numbers {
+    use super::*;
+
+    /// Writes the rows in order.
+    ///
+    /// # Errors
+    /// The serializer's.
+    pub fn serialize<S: Serializer>(v: &[Vec<f64>], s: S) -> Result<S::Ok, S::Error> {
+        v.serialize(s)
+    }
+
+    /// Reads `[[x, …], …]`.
+    ///
+    /// # Errors
+    /// The deserializer's.
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<Vec<f64>>, D::Error> {
+        Vec::<Vec<f64>>::deserialize(d)
+    }
+}
+
 /// The elements of a [`ScalarOr`] array, and how its error message names them.
 pub trait ArrayElement {
     /// What the array holds, for "expected a number or an array of …".

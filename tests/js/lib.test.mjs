@@ -66,3 +66,39 @@ test('grids, formats and CSV', () => {
   assert.equal(median([3, 1, 2]), 2);
   assert.equal(toCSV(['a', 'b'], [[1, null], ['x,y', 0.1]]), 'a,b\n1,\n"x,y",0.1\n');
 });
+
+// Issue 26, point 4: the two first-day mistakes outside the argument checks get typed errors.
+test('a freed filter or control run used again throws a TypeError naming its class', async () => {
+  const { GmBernoulliFilter, SensorControlRun } = await import('fisst');
+  const make = () =>
+    new GmBernoulliFilter({
+      transition: { F: [[1]], Q: [[0.1]] },
+      likelihood: { H: [[1]], R: [[1]] },
+      birth: { probability: 0.1, mixture: [{ weight: 1, mean: [0], cov: [[1]] }] },
+      detection: { probability: 0.9 },
+      clutter: { rate: 1, density: 0.1 },
+      existence: 0.5,
+      mixture: [{ weight: 1, mean: [0], cov: [[1]] }],
+      positionDims: 1,
+    });
+  const f = make();
+  f.free();
+  assert.throws(() => f.predict(), { name: 'TypeError', message: /^GmBernoulliFilter was freed/ });
+  assert.throws(() => f.existence, { name: 'TypeError', message: /^GmBernoulliFilter was freed/ });
+  assert.throws(() => f.free(), { name: 'TypeError', message: /^GmBernoulliFilter was freed/ });
+  const run = new SensorControlRun({ scheme: 'random', futureScans: 1 });
+  run.free();
+  assert.throws(() => run.step(), { name: 'TypeError', message: /^SensorControlRun was freed/ });
+});
+
+test('a browser-entry call before init() throws an Error saying to call init() first', async () => {
+  const { execFileSync } = await import('node:child_process');
+  const { createRequire } = await import('node:module');
+  const require = createRequire(import.meta.url);
+  const entry = require.resolve('fisst/package.json').replace(/package\.json$/, 'metrics.js');
+  const code = `import { gospa } from ${JSON.stringify(entry)};
+try { gospa([[0]], [[1]], { c: 2 }); console.log('no error'); }
+catch (e) { console.log(e.constructor.name + ': ' + e.message); }`;
+  const out = execFileSync(process.execPath, ['--input-type=module', '-e', code], { encoding: 'utf8' });
+  assert.match(out, /^Error: fisst\/metrics: call `await init\(\)` first/);
+});

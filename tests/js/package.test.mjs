@@ -77,3 +77,22 @@ test('the browser entry rejects init options that name no part', async () => {
   await assert.rejects(async () => browser.default('metrics_bg.wasm'), TypeError);
   assert.throws(() => browser.initSync({}), (e) => e instanceof TypeError && /options\.bernoulli/.test(e.message));
 });
+
+test('the package carries its licence files, a changelog with its version, and a description naming every part', () => {
+  assert.equal(manifest.license, 'MIT OR Apache-2.0');
+  for (const file of ['LICENSE-MIT', 'LICENSE-APACHE', 'CHANGELOG.md']) {
+    assert.ok(manifest.files.includes(file), `${file} is not in package.json's files`);
+    assert.ok(readFileSync(path.join(pkgDir, file), 'utf8').length > 500, `${file} is missing or empty`);
+  }
+  assert.match(readFileSync(path.join(pkgDir, 'LICENSE-APACHE'), 'utf8'), /Apache License\s+Version 2\.0/);
+  assert.match(readFileSync(path.join(pkgDir, 'LICENSE-MIT'), 'utf8'), /Permission is hereby granted/);
+  const changelog = readFileSync(path.join(pkgDir, 'CHANGELOG.md'), 'utf8');
+  assert.ok(changelog.includes(`## [${manifest.version}]`) || changelog.includes('## [Unreleased]'), 'CHANGELOG names no version');
+  const description = manifest.description.toLowerCase();
+  for (const words of ['bernoulli estimation', 'field-of-view', 'splitting', 'filters', 'bounds', 'gospa', 'multi-bernoulli', 'sensor control']) {
+    assert.ok(description.includes(words), `the description does not mention ${words}`);
+  }
+  for (const key of ['repository', 'homepage']) {
+    assert.ok(!JSON.stringify(manifest[key] ?? '').includes('example.invalid'), `${key} is a placeholder`);
+  }
+});

@@ -8,11 +8,16 @@ import { fileURLToPath } from 'node:url';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 
-test('TypeScript declarations', () => {
-  const tsc = path.join(here, 'node_modules/typescript/bin/tsc');
+const tsc = (config) => {
   try {
-    execFileSync(process.execPath, [tsc, '-p', path.join(here, 'types/tsconfig.json')], { encoding: 'utf8' });
+    execFileSync(process.execPath, [path.join(here, 'node_modules/typescript/bin/tsc'), '-p', path.join(here, config)], { encoding: 'utf8' });
   } catch (e) {
-    assert.fail(`tsc failed:\n${e.stdout}${e.stderr}`);
+    assert.fail(`tsc -p ${config} failed:\n${e.stdout}${e.stderr}`);
   }
-});
+};
+
+test('TypeScript declarations', () => tsc('types/tsconfig.json'));
+
+// Issue 26, point 3: a strict consumer with `lib: ["ES2022"]` only (no DOM, no Node types) and no
+// `skipLibCheck` type-checks against the package's declarations.
+test('TypeScript declarations under strict, lib ES2022, no skipLibCheck', () => tsc('types/tsconfig.es2022.json'));

@@ -6,14 +6,14 @@
 //! "At the end" is the mean over the last 5 steps (k = 21 … 25) of the run-averaged series,
 //! which halves the noise of a single step.
 
-use fisst::control::{ControlConfig, Scheme, SchemeSummary, compare_schemes};
+use fisst::control::{ControlOptions, Scheme, SchemeSummary, compare_schemes};
 
 fn tail(s: &[f64]) -> f64 {
     s[s.len() - 5..].iter().sum::<f64>() / 5.0
 }
 
 fn comparison(runs: usize, steps: usize, particles: usize, scans: usize) -> Vec<SchemeSummary> {
-    let mut cfg = ControlConfig::paper(Scheme::Renyi, steps);
+    let mut cfg = ControlOptions::paper(Scheme::Renyi, steps);
     cfg.particles = particles;
     cfg.future_scans = scans;
     compare_schemes::<fisst::Error>(

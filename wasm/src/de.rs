@@ -449,6 +449,11 @@ impl<'a> De<'a> {
         // the object's keys are the fields' JavaScript names (`futureScans` for the Rust field
         // `future_scans`); serde is given the Rust name, paths show the JavaScript one
         let parent = self.path.parent_key();
+        // a callback the binding reads itself (`onProgress`), at the top level only
+        let callback = match self.depth {
+            0 => CALLBACK.with(|c| c.borrow().as_ref().map(|(key, _)| *key)),
+            _ => None,
+        };
         let mut known = Vec::with_capacity(fields.len());
         for (key, value) in self.present_entries(obj)? {
             match fields
@@ -457,9 +462,13 @@ impl<'a> De<'a> {
                 .find(|(_, js)| *js == key)
             {
                 Some((f, js)) => known.push((Cow::Borrowed(f), Some(js), value)),
+                None if callback == Some(key.as_str()) => {
+                    known.push((Cow::Borrowed(CALLBACK_ENTRY), callback, value));
+                }
                 None => {
-                    let names: Vec<&'static str> =
+                    let mut names: Vec<&'static str> =
                         fields.iter().map(|f| js_name(parent, f)).collect();
+                    names.extend(callback);
                     return Err(unknown_key(&self.path, &key, &names));
                 }
             }
@@ -646,9 +655,23 @@ impl<'de> de::MapAccess<'de> for Entries<'_> {
     type Error = Error;
 
     fn next_key_seed<K: DeserializeSeed<'de>>(&mut self, seed: K) -> Result<Option<K::Value>> {
-        let Some((key, js, value)) = self.entries.next() else {
+        let Some((mut key, mut js, mut value)) = self.entries.next() else {
             return Ok(None);
         };
+        // the callback is checked in its place among the keys, and kept for the binding
+        while key == CALLBACK_ENTRY {
+            let name = js.unwrap_or_default();
+            let Some(f) = value.dyn_ref::<js_sys::Function>().cloned() else {
+                let path = Path::Key(&self.path, name);
+                let e = std::format!("must be a function, got {}", describe(&value));
+                return Err(Error::type_error(&path, e));
+            };
+            CALLBACK.with(|c| *c.borrow_mut() = Some((name, Some(f))));
+            let Some(next) = self.entries.next() else {
+                return Ok(None);
+            };
+            (key, js, value) = next;
+        }
         let out = seed.deserialize(key.as_ref().into_deserializer());
         self.pending = Some((key, js, value));
         out.map(Some)
@@ -1057,6 +1080,32 @@ impl<'de> de::Deserialize<'de> for JsFunction {
         }
         d.deserialize_newtype_struct(RAW_JS_VALUE, V)
     }
+}
+
+/// The entry name that marks the callback of [`from_js_with_callback`] among an object's keys.
+const CALLBACK_ENTRY: &str = "\0callback";
+
+thread_local! {
+    /// The callback key being read by [`from_js_with_callback`], and the function found.
+    static CALLBACK: std::cell::RefCell<Option<(&'static str, Option<js_sys::Function>)>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+/// Reads `value` (the argument `root`) as a `T` whose object may also hold the JavaScript
+/// callback `key` (`onProgress`: a function, which the core's option types cannot hold). The
+/// key is checked in its place among the object's keys (anything but a function is a
+/// `TypeError` naming it) and listed after `T`'s own in an unknown-key error.
+pub fn from_js_with_callback<T: de::DeserializeOwned>(
+    value: JsValue,
+    root: &str,
+    key: &'static str,
+) -> Result<(T, Option<js_sys::Function>)> {
+    CALLBACK.with(|c| *c.borrow_mut() = Some((key, None)));
+    let out = from_js(value, root);
+    let f = CALLBACK
+        .with(|c| c.borrow_mut().take())
+        .and_then(|(_, f)| f);
+    out.map(|t| (t, f))
 }
 
 /// Reads `value` (the argument `root`) as a `T`.

@@ -92,3 +92,38 @@ fn a_type_that_is_not_a_serde_type_is_a_warning_not_a_guess() {
     assert!(ts.contains("b: unknown;"));
     assert_eq!(warnings.len(), 1, "{warnings:?}");
 }
+
+#[test]
+fn arrays_are_tuples_aliases_inline_skipped_fields_absent_and_number_lists_typed_arrays() {
+    let source = r#"
+pub type State = [f64; 2];
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Run {
+    pub start: State,
+    pub path: Vec<[f64; 2]>,
+    pub big: [f64; 17],
+    #[cfg_attr(feature = "serde", serde(skip))]
+    pub inside: bool,
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::numbers"))]
+    pub clutter_density: Vec<f64>,
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::rows_of_numbers"))]
+    pub likelihoods: Vec<Vec<f64>>,
+}
+"#;
+    let mut defs = BTreeMap::new();
+    tsgen::walk(syn::parse_file(source).unwrap().items, &mut defs);
+    let root = "Run".to_string();
+    let (ts, warnings) = tsgen::declarations(&defs, &[&root]);
+    assert!(warnings.is_empty(), "{warnings:?}");
+    for expected in [
+        "    start: [number, number];",
+        "    path: [number, number][];",
+        "    big: number[];",
+        "    clutterDensity: number[] | Float64Array;",
+        "    likelihoods: (number[] | Float64Array)[];",
+    ] {
+        assert!(ts.contains(expected), "missing {expected:?} in\n{ts}");
+    }
+    assert!(!ts.contains("inside"), "{ts}");
+    assert!(!ts.contains("State"), "{ts}");
+}

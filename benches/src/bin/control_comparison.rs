@@ -2,7 +2,7 @@
 //! (rayon, the `parallel` feature), with its wall-clock time and the last-step figures.
 //!
 //! `cargo run --release --bin control_comparison -- [runs=200] [steps=40] [particles=750] [futureScans=200] [seed=1]`
-use fisst::control::{ControlConfig, Scheme, compare_schemes};
+use fisst::control::{ControlOptions, Scheme, compare_schemes};
 use std::time::Instant;
 
 fn main() {
@@ -13,7 +13,7 @@ fn main() {
     let get = |i: usize, d: u64| args.get(i).copied().unwrap_or(d);
     let (runs, steps, particles, scans, seed) =
         (get(0, 200), get(1, 40), get(2, 750), get(3, 200), get(4, 1));
-    let mut cfg = ControlConfig::paper(Scheme::Renyi, steps as usize);
+    let mut cfg = ControlOptions::paper(Scheme::Renyi, steps as usize);
     cfg.particles = particles as usize;
     cfg.future_scans = scans as usize;
     let schemes = [Scheme::Renyi, Scheme::Fisher, Scheme::Pent, Scheme::Random];

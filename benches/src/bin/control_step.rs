@@ -5,7 +5,7 @@
 //! `RAYON_NUM_THREADS=1 valgrind --tool=callgrind --toggle-collect='*timed_step*' target/release/control_step [particles=750] [futureScans=200] [steps=1]`
 //!
 //! It prints the rewards (to check that a change left the numbers as they were) and the time.
-use fisst::control::{ControlConfig, ControlRun, Scheme, StepOutcome};
+use fisst::control::{ControlOptions, ControlRun, Scheme, StepOutcome};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -21,7 +21,7 @@ fn main() {
         .collect();
     let get = |i: usize, d: usize| args.get(i).copied().unwrap_or(d);
     let (particles, scans, steps) = (get(0, 750), get(1, 200), get(2, 1));
-    let mut cfg = ControlConfig::paper(Scheme::Renyi, 1000);
+    let mut cfg = ControlOptions::paper(Scheme::Renyi, 1000);
     cfg.particles = particles;
     cfg.future_scans = scans;
     let mut run = ControlRun::new(cfg, 3).unwrap();

@@ -11,15 +11,16 @@ use crate::smc::{Area, State};
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Action {
-    /// 0 for stay, else 1 + (ring − 1)·N_θ + (heading − 1).
+    /// 0 for stay, else 1 + (ring − 1)·N_θ + (heading − 1) (0 … 16 in the paper's grid).
     pub index: usize,
-    /// j: 0 (stay) … N_ρ; the move is j·ρ₀.
+    /// j: 0 (stay) … N_ρ; the move is j·ρ₀ (ρ₀ = 50 m).
     pub ring: usize,
-    /// ℓ: 0 for stay, else 1 … N_θ (angle ℓ·θ₀ counter-clockwise from +x).
+    /// ℓ: 0 for stay, else 1 … N_θ (angle ℓ·θ₀ = ℓ·45° counter-clockwise from +x).
     pub heading: usize,
-    /// The sensor location after the action.
+    /// The sensor's next location [x, y].
     pub position: State,
-    /// Whether `position` lies in the area (admissible).
+    /// Whether `position` lies in the area (admissible; not serialised).
+    #[cfg_attr(feature = "serde", serde(skip))]
     pub inside: bool,
 }
 

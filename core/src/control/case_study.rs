@@ -23,106 +23,169 @@ use crate::smc::{
     SetEstimate, State, regularise, resample, reweight,
 };
 
-/// K when a binding's options omit it (`steps`): 40 (the text of `004_…` does not state the
-/// length of the runs of Fig. 3).
+/// K when the options omit it (`steps`): 40 (the text of `004_…` does not state the length of
+/// the runs of Fig. 3).
 pub const DEFAULT_STEPS: usize = 40;
 
 /// The bindings' cap on N (`particles`).
 pub const MAX_PARTICLES: usize = 20_000;
-/// The bindings' cap on M (`futureScans`).
+/// The bindings' cap on M (`future_scans`).
 pub const MAX_FUTURE_SCANS: usize = 2_000;
 /// The bindings' cap on N·M (one Rényi step then takes about a second).
 pub const MAX_WORK: usize = 1_000_000;
 /// The bindings' cap on K (`steps`).
 pub const MAX_STEPS: usize = 1_000;
+/// The largest n_max (`max_objects`).
+pub const MAX_MAX_OBJECTS: usize = 8;
 
-/// The four control schemes compared in Fig. 3.
+/// A sensor-control scheme of Fig. 3: the expected Rényi divergence (15)–(17), the Fisher
+/// information gain (27)–(29), PENT (30)–(34), or a uniformly random admissible action.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "lowercase")
+)]
 pub enum Scheme {
     /// The expected Rényi divergence (15)–(17).
     Renyi,
     /// The trace of the Fisher information gain (27)–(29).
     Fisher,
-    /// PENT (30)–(34).
+    /// PENT, the posterior expected number of targets (30)–(34).
     Pent,
     /// Uniformly random among the admissible actions.
     Random,
 }
 
-/// Settings of one run of Algorithm 1.
+impl Scheme {
+    /// The four schemes of Fig. 3, in its order.
+    pub const ALL: [Scheme; 4] = [Scheme::Renyi, Scheme::Fisher, Scheme::Pent, Scheme::Random];
+
+    /// The scheme's name: `renyi`, `fisher`, `pent` or `random` (its serde name).
+    pub fn name(self) -> &'static str {
+        match self {
+            Scheme::Renyi => "renyi",
+            Scheme::Fisher => "fisher",
+            Scheme::Pent => "pent",
+            Scheme::Random => "random",
+        }
+    }
+}
+
+/// Options of one run of Algorithm 1 on the case study of paper `004`, Sec. 5 (𝒜 = [0, 1000]²
+/// m, p_D = 0.95, λ = 0.8, sources at (300, 600) and (750, 250), σ = 10 + 4·10⁻⁵ d²). The
+/// scene (area, truth, sensor, actions, regularisation) is the paper's and is not read by
+/// serde.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct ControlConfig {
+pub struct ControlOptions {
+    /// Seed (integer in [0, 2^53 − 1]); omitted: fresh entropy, read back as `run.seed`
+    /// (a binding draws it; [`ControlRun::new`] takes the seed it uses).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub seed: Option<u64>,
     /// The control scheme.
     pub scheme: Scheme,
-    /// N (750).
-    #[cfg_attr(feature = "serde", serde(default = "ControlConfig::default_particles"))]
-    pub particles: usize,
-    /// M (200): ideal future scans per step (Rényi only).
+    /// N, the number of multi-object particles (default 750; 1 … 20,000).
     #[cfg_attr(
         feature = "serde",
-        serde(default = "ControlConfig::default_future_scans")
+        serde(default = "ControlOptions::default_particles")
+    )]
+    pub particles: usize,
+    /// M, the ideal future scans per Rényi reward (default 200; 1 … 2,000; N·M ≤
+    /// 1,000,000).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default = "ControlOptions::default_future_scans")
     )]
     pub future_scans: usize,
-    /// α of the Rényi divergence (0.5); α = 1 is the Kullback–Leibler divergence.
-    #[cfg_attr(feature = "serde", serde(default = "ControlConfig::default_alpha"))]
+    /// α > 0 of the Rényi divergence (default 0.5; 1 is the Kullback–Leibler divergence).
+    #[cfg_attr(feature = "serde", serde(default = "ControlOptions::default_alpha"))]
     pub alpha: f64,
-    /// K: the number of steps.
+    /// K, the number of steps (default 40; 1 … 1,000).
+    #[cfg_attr(feature = "serde", serde(default = "ControlOptions::default_steps"))]
     pub steps: usize,
-    /// The sensor's initial location (the paper does not state it; default [0, 0]).
-    #[cfg_attr(feature = "serde", serde(default = "ControlConfig::default_start"))]
+    /// The sensor's initial location [x, y] in the area (the paper does not state it;
+    /// default [0, 0]).
+    #[cfg_attr(feature = "serde", serde(default = "ControlOptions::default_start"))]
     pub start: State,
-    /// n_max (4; the paper does not state it).
+    /// n_max, the largest cardinality of a particle (default 4; 1 … 8; the paper does not
+    /// state it).
     #[cfg_attr(
         feature = "serde",
-        serde(default = "ControlConfig::default_max_objects")
+        serde(default = "ControlOptions::default_max_objects")
     )]
     pub max_objects: usize,
-    /// 𝒜.
+    /// 𝒜 = [0, 1000]².
+    #[cfg_attr(feature = "serde", serde(skip, default = "ControlOptions::paper_area"))]
     pub area: Area,
-    /// The true objects.
+    /// The true objects, (300, 600) and (750, 250).
+    #[cfg_attr(
+        feature = "serde",
+        serde(skip, default = "ControlOptions::paper_truth")
+    )]
     pub truth: Vec<State>,
     /// The sensor.
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[cfg_attr(feature = "serde", serde(skip))]
     pub sensor: RangeSensor,
     /// The actions (23).
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[cfg_attr(feature = "serde", serde(skip))]
     pub actions: ActionGrid,
     /// The regularisation (Sec. 5.2).
-    #[cfg_attr(feature = "serde", serde(default))]
+    #[cfg_attr(feature = "serde", serde(skip))]
     pub regularisation: Regularisation,
 }
 
-impl ControlConfig {
+impl ControlOptions {
     /// The default N (the paper's).
-    const fn default_particles() -> usize {
+    pub const fn default_particles() -> usize {
         750
     }
 
     /// The default M (the paper's).
-    const fn default_future_scans() -> usize {
+    pub const fn default_future_scans() -> usize {
         200
     }
 
     /// The default α (the paper's).
-    const fn default_alpha() -> f64 {
+    pub const fn default_alpha() -> f64 {
         0.5
     }
 
+    /// The default K, [`DEFAULT_STEPS`].
+    pub const fn default_steps() -> usize {
+        DEFAULT_STEPS
+    }
+
     /// The default initial sensor location.
-    const fn default_start() -> State {
+    pub const fn default_start() -> State {
         [0.0, 0.0]
     }
 
     /// The default n_max.
-    const fn default_max_objects() -> usize {
+    pub const fn default_max_objects() -> usize {
         4
+    }
+
+    /// The paper's 𝒜.
+    const fn paper_area() -> Area {
+        Area {
+            lo: [0.0, 0.0],
+            hi: [1000.0, 1000.0],
+        }
+    }
+
+    /// The paper's sources.
+    fn paper_truth() -> Vec<State> {
+        vec![[300.0, 600.0], [750.0, 250.0]]
     }
 
     /// The paper's case study with `scheme` and K = `steps`.
     pub fn paper(scheme: Scheme, steps: usize) -> Self {
         Self {
+            seed: None,
             scheme,
             particles: Self::default_particles(),
             future_scans: Self::default_future_scans(),
@@ -130,55 +193,50 @@ impl ControlConfig {
             steps,
             start: Self::default_start(),
             max_objects: Self::default_max_objects(),
-            area: Area {
-                lo: [0.0, 0.0],
-                hi: [1000.0, 1000.0],
-            },
-            truth: vec![[300.0, 600.0], [750.0, 250.0]],
+            area: Self::paper_area(),
+            truth: Self::paper_truth(),
             sensor: RangeSensor::default(),
             actions: ActionGrid::default(),
             regularisation: Regularisation::default(),
         }
     }
 
-    /// The bindings' work caps, before [`ControlConfig::validate`]: N in
+    /// The bindings' work caps, before [`ControlOptions::validate`]: N in
     /// [1, [`MAX_PARTICLES`]], M in [1, [`MAX_FUTURE_SCANS`]], K in [1, [`MAX_STEPS`]],
-    /// n_max in [1, 8] (N·M ≤ [`MAX_WORK`] is the caller's, whose message gives the product).
+    /// n_max in [1, [`MAX_MAX_OBJECTS`]], then N·M ≤ [`MAX_WORK`].
     ///
     /// # Errors
-    /// [`Error::InvalidParameter`] naming `particles`, `futureScans`, `steps` or `maxObjects`.
+    /// [`Error::OutOfRange`] naming `particles`, `future_scans`, `steps` or `max_objects`;
+    /// [`Error::OverBudget`] naming `future_scans` when N·M exceeds [`MAX_WORK`].
     pub fn check_limits(&self) -> Result<()> {
-        let limits: [(&str, usize, usize, &'static str); 4] = [
-            (
-                "particles",
-                self.particles,
-                MAX_PARTICLES,
-                "an integer in [1, 20000]",
-            ),
-            (
-                "futureScans",
-                self.future_scans,
-                MAX_FUTURE_SCANS,
-                "an integer in [1, 2000]",
-            ),
-            ("steps", self.steps, MAX_STEPS, "an integer in [1, 1000]"),
-            ("maxObjects", self.max_objects, 8, "an integer in [1, 8]"),
-        ];
-        for (what, value, max, expected) in limits {
-            if !(1..=max).contains(&value) {
-                return Err(Error::parameter(what, value as f64, expected));
-            }
+        Error::check_range("particles", self.particles, 1, MAX_PARTICLES)?;
+        Error::check_range("future_scans", self.future_scans, 1, MAX_FUTURE_SCANS)?;
+        Error::check_range("steps", self.steps, 1, MAX_STEPS)?;
+        Error::check_range("max_objects", self.max_objects, 1, MAX_MAX_OBJECTS)?;
+        let work = self.particles.saturating_mul(self.future_scans);
+        if work > MAX_WORK {
+            return Err(Error::OverBudget {
+                what: "future_scans".into(),
+                measure: "particles · future_scans",
+                work,
+                limit: "1000000",
+                at_most: MAX_WORK / self.particles,
+            });
         }
         Ok(())
     }
 
-    /// Checks the fields (names as in the bindings).
+    /// Checks the fields (Rust names).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming `particles`, `future_scans`, `alpha`, `steps`,
+    /// `max_objects` or `start`.
     pub fn validate(&self) -> Result<()> {
         if self.particles == 0 {
             return Err(Error::parameter("particles", 0.0, "≥ 1"));
         }
         if self.future_scans == 0 {
-            return Err(Error::parameter("futureScans", 0.0, "≥ 1"));
+            return Err(Error::parameter("future_scans", 0.0, "≥ 1"));
         }
         if !(self.alpha.is_finite() && self.alpha > 0.0) {
             return Err(Error::parameter("alpha", self.alpha, "finite and > 0"));
@@ -186,9 +244,9 @@ impl ControlConfig {
         if self.steps == 0 {
             return Err(Error::parameter("steps", 0.0, "≥ 1"));
         }
-        if !(1..=8).contains(&self.max_objects) {
+        if !(1..=MAX_MAX_OBJECTS).contains(&self.max_objects) {
             return Err(Error::parameter(
-                "maxObjects",
+                "max_objects",
                 self.max_objects as f64,
                 "an integer in [1, 8]",
             ));
@@ -213,26 +271,71 @@ impl ControlConfig {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct StepOutcome {
-    /// k (1-based).
+    /// k, the 1-based step just processed.
     pub k: usize,
-    /// Where Z_k was taken.
+    /// Where Z_k was taken [x, y].
     pub sensor: State,
-    /// Z_k.
+    /// Z_k, the ranges received (m).
     pub measurements: Vec<f64>,
-    /// u_k, the action chosen after the update.
+    /// u_k, chosen after the update: where the sensor goes next.
     pub action: Action,
-    /// The reward of each of the actions (−∞ outside the area).
+    /// The reward of each action, indexed like `action.index`; −∞ for actions outside the
+    /// area (in JavaScript `-Infinity`, a number: postMessage keeps it, JSON.stringify writes
+    /// null). The random scheme: 0 when admissible.
     pub rewards: Vec<f64>,
-    /// X̂_k.
+    /// X̂_k, the estimate (22).
     pub estimate: SetEstimate,
-    /// OSPA (c = 100, p = 2) of X̂_k against the truth: (distance, localisation, cardinality).
-    pub ospa: [f64; 3],
+    /// OSPA of X̂_k against the truth.
+    pub ospa: OspaParts,
+}
+
+/// OSPA (c = 100 m, p = 2) of the estimate against the truth, with its rooted parts
+/// (distance² = localisation² + cardinality²), eqs (24)–(26).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct OspaParts {
+    /// OSPA (24), in [0, 100].
+    pub distance: f64,
+    /// The localisation part (26).
+    pub localisation: f64,
+    /// The cardinality part (25).
+    pub cardinality: f64,
+}
+
+impl OspaParts {
+    /// (distance, localisation, cardinality).
+    pub fn to_array(self) -> [f64; 3] {
+        [self.distance, self.localisation, self.cardinality]
+    }
+}
+
+/// The particles, flat: particle i has `cardinalities[i]` objects whose x, y are
+/// `positions[2o]`, `positions[2o + 1]` for o = Σ_{i′<i} cardinalities[i′] + 0 … − 1.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ControlParticles {
+    /// w_i (1/N after each step).
+    pub weights: Vec<f64>,
+    /// n_i.
+    pub cardinalities: Vec<usize>,
+    /// The objects' x, y, particle after particle.
+    pub positions: Vec<f64>,
+}
+
+impl From<&MultiObjectParticles> for ControlParticles {
+    fn from(p: &MultiObjectParticles) -> Self {
+        Self {
+            weights: p.weights.clone(),
+            cardinalities: p.sets.iter().map(|s| s.len()).collect(),
+            positions: p.sets.iter().flatten().flat_map(|x| [x[0], x[1]]).collect(),
+        }
+    }
 }
 
 /// One run of Algorithm 1.
 #[derive(Clone, Debug)]
 pub struct ControlRun {
-    config: ControlConfig,
+    config: ControlOptions,
     pub(super) model: MultiObjectLikelihood,
     world: SeededRng,
     rng: SeededRng,
@@ -244,7 +347,7 @@ pub struct ControlRun {
 
 impl ControlRun {
     /// A run seeded by `seed` (the scans and the filter draw from two streams derived from it).
-    pub fn new(config: ControlConfig, seed: u64) -> Result<Self> {
+    pub fn new(config: ControlOptions, seed: u64) -> Result<Self> {
         config.validate()?;
         let model =
             MultiObjectLikelihood::new(config.sensor.detection, config.sensor.clutter_rate)?;
@@ -266,8 +369,8 @@ impl ControlRun {
         })
     }
 
-    /// The settings.
-    pub fn config(&self) -> &ControlConfig {
+    /// The options.
+    pub fn options(&self) -> &ControlOptions {
         &self.config
     }
     /// The particles (empty before the first step).
@@ -352,7 +455,11 @@ impl ControlRun {
             action,
             rewards,
             estimate,
-            ospa: [ospa.distance, ospa.localisation, ospa.cardinality],
+            ospa: OspaParts {
+                distance: ospa.distance,
+                localisation: ospa.localisation,
+                cardinality: ospa.cardinality,
+            },
         })
     }
 }
@@ -380,7 +487,7 @@ fn choose<R: Rng + ?Sized>(rewards: &[f64], scheme: Scheme, rng: &mut R) -> usiz
 
 /// The rewards of every action for the scheme of `cfg` (−∞ outside the area).
 fn rewards<R: Rng + ?Sized>(
-    cfg: &ControlConfig,
+    cfg: &ControlOptions,
     model: &MultiObjectLikelihood,
     particles: &MultiObjectParticles,
     estimate: &SetEstimate,

@@ -4,22 +4,156 @@
 use alloc::vec;
 use alloc::vec::Vec;
 
-use super::case_study::{ControlConfig, ControlRun, Scheme};
-use crate::error::Result;
+use super::case_study::{ControlOptions, ControlRun, Scheme};
+use crate::error::{Error, Result};
 use crate::math::fns::sqrt;
 use crate::math::rng::{js_safe_seed, seeded};
+use crate::smc::State;
 
-/// A mean over runs with its standard error, per time step.
+/// The cap on the runs per scheme of [`CompareOptions`].
+pub const MAX_RUNS: usize = 1_000;
+/// The cap on the number of schemes of [`CompareOptions`].
+pub const MAX_SCHEMES: usize = 16;
+
+/// Options of the comparison of Fig. 3: `runs` seeded runs of each scheme of the case study,
+/// averaged (the rest as in [`ControlOptions`]).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct CompareOptions {
+    /// Monte Carlo runs per scheme (1 … 1,000).
+    pub runs: usize,
+    /// K, the steps of each run (1 … 1,000).
+    pub steps: usize,
+    /// Master seed; run r of every scheme uses the same derived seed ([`run_seeds`]).
+    /// Omitted: entropy (a binding draws it).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub seed: Option<u64>,
+    /// The schemes (default all four: renyi, fisher, pent, random; 1 … 16 of them).
+    #[cfg_attr(feature = "serde", serde(default = "CompareOptions::default_schemes"))]
+    pub schemes: Vec<Scheme>,
+    /// N (default 750).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default = "crate::control::ControlOptions::default_particles")
+    )]
+    pub particles: usize,
+    /// M (default 200).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default = "crate::control::ControlOptions::default_future_scans")
+    )]
+    pub future_scans: usize,
+    /// α (default 0.5).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default = "crate::control::ControlOptions::default_alpha")
+    )]
+    pub alpha: f64,
+    /// The sensor's initial location (default [0, 0]).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default = "crate::control::ControlOptions::default_start")
+    )]
+    pub start: State,
+    /// n_max (default 4).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default = "crate::control::ControlOptions::default_max_objects")
+    )]
+    pub max_objects: usize,
+}
+
+impl CompareOptions {
+    /// All four schemes, in the order of Fig. 3.
+    pub fn default_schemes() -> Vec<Scheme> {
+        Scheme::ALL.to_vec()
+    }
+
+    /// The options of one run (its scheme [`Scheme::Random`], replaced per scheme; no seed).
+    pub fn run_options(&self) -> ControlOptions {
+        ControlOptions {
+            particles: self.particles,
+            future_scans: self.future_scans,
+            alpha: self.alpha,
+            start: self.start,
+            max_objects: self.max_objects,
+            ..ControlOptions::paper(Scheme::Random, self.steps)
+        }
+    }
+
+    /// The bindings' caps, then the run options' ([`ControlOptions::check_limits`] and
+    /// [`ControlOptions::validate`]).
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `runs` (1 … [`MAX_RUNS`]) or `schemes.length`
+    /// (1 … [`MAX_SCHEMES`]), or the run options' errors.
+    pub fn check(&self) -> Result<()> {
+        Error::check_range("runs", self.runs, 1, MAX_RUNS)?;
+        Error::check_range("schemes.length", self.schemes.len(), 1, MAX_SCHEMES)?;
+        let run = self.run_options();
+        run.check_limits()?;
+        run.validate()
+    }
+
+    /// Checks the options ([`CompareOptions::check`]) and runs the comparison from `seed`
+    /// ([`compare_schemes`]; `progress` as there).
+    ///
+    /// # Errors
+    /// The options' errors, the runs', or the one `progress` returns.
+    pub fn compare<E: From<Error>>(
+        &self,
+        seed: u64,
+        progress: impl FnMut(usize, usize) -> core::result::Result<(), E>,
+    ) -> core::result::Result<Comparison, E> {
+        self.check()?;
+        let schemes = compare_schemes(
+            &self.run_options(),
+            &self.schemes,
+            self.runs,
+            seed,
+            progress,
+        )?;
+        Ok(Comparison {
+            seed,
+            run_seeds: run_seeds(seed, self.runs),
+            runs: self.runs,
+            steps: self.steps,
+            schemes,
+        })
+    }
+}
+
+/// The result of the comparison of Fig. 3.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Comparison {
+    /// The master seed used.
+    pub seed: u64,
+    /// The seed of run r (the same for every scheme; 53-bit integers): a run of the case
+    /// study seeded with it, with the same options and scheme, repeats that run exactly.
+    pub run_seeds: Vec<u64>,
+    /// Runs per scheme.
+    pub runs: usize,
+    /// K.
+    pub steps: usize,
+    /// One entry per requested scheme, in order.
+    pub schemes: Vec<SchemeSummary>,
+}
+
+/// A mean over runs per step, with its standard error (sample sd / √runs; 0 for one run).
 #[derive(Clone, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MeanSeries {
     /// The mean at k = 1 … K.
     pub mean: Vec<f64>,
-    /// The sample standard deviation / √runs (0 for one run).
+    /// The standard error at k = 1 … K.
     pub standard_error: Vec<f64>,
 }
 
-/// One scheme's averaged errors.
+/// One scheme's averaged errors over time.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SchemeSummary {
@@ -27,17 +161,17 @@ pub struct SchemeSummary {
     pub scheme: Scheme,
     /// OSPA (24).
     pub distance: MeanSeries,
-    /// Its localisation part (26).
+    /// The localisation part (26).
     pub localisation: MeanSeries,
-    /// Its cardinality part (25).
+    /// The cardinality part (25).
     pub cardinality: MeanSeries,
 }
 
 /// The OSPA series (distance, localisation, cardinality) of one run of `config` from `seed`.
-pub fn run_series(config: &ControlConfig, seed: u64) -> Result<Vec<[f64; 3]>> {
+pub fn run_series(config: &ControlOptions, seed: u64) -> Result<Vec<[f64; 3]>> {
     let mut run = ControlRun::new(config.clone(), seed)?;
     (0..config.steps)
-        .map(|_| run.step().map(|s| s.ospa))
+        .map(|_| run.step().map(|s| s.ospa.to_array()))
         .collect()
 }
 
@@ -83,7 +217,7 @@ fn summarise(scheme: Scheme, series: &[Vec<[f64; 3]>], steps: usize) -> SchemeSu
 /// schemes); an error it returns stops the comparison. With the `parallel` feature the runs
 /// go in batches across all cores (progress after each batch); results are identical.
 pub fn compare_schemes<E>(
-    base: &ControlConfig,
+    base: &ControlOptions,
     schemes: &[Scheme],
     runs: usize,
     seed: u64,
@@ -98,9 +232,9 @@ where
         .flat_map(|s| seeds.iter().map(move |&r| (s, r)))
         .collect();
     let total = jobs.len();
-    let configs: Vec<ControlConfig> = schemes
+    let configs: Vec<ControlOptions> = schemes
         .iter()
-        .map(|&scheme| ControlConfig {
+        .map(|&scheme| ControlOptions {
             scheme,
             ..base.clone()
         })
@@ -139,10 +273,11 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+    use alloc::string::ToString;
 
     #[test]
     fn fig3_summaries_have_the_stated_shape_and_progress_counts() {
-        let mut cfg = ControlConfig::paper(Scheme::Random, 3);
+        let mut cfg = ControlOptions::paper(Scheme::Random, 3);
         cfg.particles = 50;
         cfg.future_scans = 5;
         let mut calls = Vec::new();
@@ -179,5 +314,61 @@ mod tests {
                 assert!(d <= 100.0 + 1e-9 && l <= d + 1e-9 && c <= d + 1e-9);
             }
         }
+    }
+
+    /// The options' checks in the npm package's order: runs, the number of schemes, then the
+    /// run's caps and values; `compare` returns the seeds and the summaries of
+    /// `compare_schemes`.
+    #[test]
+    fn fig3_options_check_runs_schemes_and_the_run_caps() {
+        let ok = CompareOptions {
+            runs: 2,
+            steps: 2,
+            seed: None,
+            schemes: alloc::vec![Scheme::Random],
+            particles: 30,
+            future_scans: 2,
+            alpha: 0.5,
+            start: [0.0, 0.0],
+            max_objects: 4,
+        };
+        let out = ok.compare::<Error>(5, |_, _| Ok(())).unwrap();
+        assert_eq!((out.seed, out.runs, out.steps), (5, 2, 2));
+        assert_eq!(out.run_seeds, run_seeds(5, 2));
+        let direct =
+            compare_schemes::<Error>(&ok.run_options(), &ok.schemes, 2, 5, |_, _| Ok(())).unwrap();
+        assert_eq!(out.schemes, direct);
+        let field = |o: &CompareOptions| o.check().unwrap_err().field().to_string();
+        let with = |f: fn(&mut CompareOptions)| {
+            let mut o = ok.clone();
+            f(&mut o);
+            o
+        };
+        type Change = fn(&mut CompareOptions);
+        let cases: [(Change, &str); 6] = [
+            (
+                |o| (o.runs, o.steps, o.schemes) = (0, 0, alloc::vec![]),
+                "runs",
+            ),
+            (|o| o.runs = MAX_RUNS + 1, "runs"),
+            (
+                |o| (o.steps, o.schemes) = (0, alloc::vec![]),
+                "schemes.length",
+            ),
+            (
+                |o| o.schemes = alloc::vec![Scheme::Pent; 17],
+                "schemes.length",
+            ),
+            (|o| (o.steps, o.alpha) = (0, 0.0), "steps"),
+            (
+                |o| (o.particles, o.future_scans, o.alpha) = (2000, 501, 0.0),
+                "future_scans",
+            ),
+        ];
+        for (f, what) in cases {
+            assert_eq!(field(&with(f)), what);
+        }
+        assert_eq!(field(&with(|o| o.alpha = 0.0)), "alpha");
+        assert_eq!(CompareOptions::default_schemes(), Scheme::ALL.to_vec());
     }
 }

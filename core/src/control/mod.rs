@@ -13,11 +13,13 @@
 //! | `rewards.rs` | Fisher information gain | (27)–(29) | `eq29_fisher_reward_by_hand` |
 //! | `rewards.rs` | PENT | (30)–(34) | `eq30_pent_reward_by_hand` |
 //! | `actions.rs` | the admissible actions | (23) | `eq23_seventeen_actions_with_corner_exclusions`, `eq23_diagonal_move_back_to_the_corner_is_inside` |
-//! | `comparison.rs` | the Monte Carlo comparison of the schemes | Fig. 3 | `fig3_summaries_have_the_stated_shape_and_progress_counts` |
+//! | `comparison.rs` | the Monte Carlo comparison of the schemes, its options and caps | Fig. 3 | `fig3_summaries_have_the_stated_shape_and_progress_counts`, `fig3_options_check_runs_schemes_and_the_run_caps` |
+//! | `particle_likelihood.rs` | (20) of one particle as the bindings take it, with its caps | (20) | `eq20_options_caps_come_before_the_values` |
 
 pub mod actions;
 pub mod case_study;
 pub mod comparison;
+pub mod particle_likelihood;
 #[cfg(test)]
 mod reference;
 mod renyi_kernel;
@@ -27,7 +29,12 @@ pub mod sensor;
 mod tests;
 
 pub use actions::{Action, ActionGrid};
-pub use case_study::{ControlConfig, ControlRun, Scheme, StepOutcome};
-pub use comparison::{MeanSeries, SchemeSummary, compare_schemes, run_seeds, run_series};
+pub use case_study::{
+    ControlOptions, ControlParticles, ControlRun, OspaParts, Scheme, StepOutcome,
+};
+pub use comparison::{
+    CompareOptions, Comparison, MeanSeries, SchemeSummary, compare_schemes, run_seeds, run_series,
+};
+pub use particle_likelihood::{MultiObjectLikelihoodOptions, ParticleLikelihood};
 pub use rewards::{expected_renyi, fisher_reward, pent_reward, renyi_divergence};
 pub use sensor::RangeSensor;

@@ -4,7 +4,7 @@
 
 use alloc::vec::Vec;
 
-use super::case_study::ControlConfig;
+use super::case_study::ControlOptions;
 use super::renyi_kernel::{FutureScans, ObjectRanges};
 use super::rewards::expected_renyi;
 use crate::math::fns::ln;
@@ -15,7 +15,7 @@ use crate::smc::{LikelihoodWorkspace, MultiObjectLikelihood, MultiObjectParticle
 /// exact in log space), then [`expected_renyi`]: the plain mean of the divergences (15).
 /// O(M · N) likelihoods and no shortcut; the batched kernel must agree with it to rounding.
 pub(super) struct RenyiReference<'a> {
-    cfg: &'a ControlConfig,
+    cfg: &'a ControlOptions,
     model: &'a MultiObjectLikelihood,
     particles: &'a MultiObjectParticles,
 }
@@ -23,7 +23,7 @@ pub(super) struct RenyiReference<'a> {
 impl<'a> RenyiReference<'a> {
     /// The reference for the particles `particles` of a run of `cfg` with the model `model`.
     pub(super) fn new(
-        cfg: &'a ControlConfig,
+        cfg: &'a ControlOptions,
         model: &'a MultiObjectLikelihood,
         particles: &'a MultiObjectParticles,
     ) -> Self {

@@ -11,7 +11,7 @@ use alloc::vec::Vec;
 use rand::Rng;
 
 use super::actions::Action;
-use super::case_study::ControlConfig;
+use super::case_study::ControlOptions;
 use super::rewards::renyi_divergence;
 use super::sensor::RangeSensor;
 use crate::gaussian::normal;
@@ -32,7 +32,7 @@ pub(super) const SCANS_PER_TASK: usize = 50;
 /// divergences are then summed per action in the order of the scans: the same bits as one
 /// [`renyi_reward`] per action, whatever the split.
 pub(super) fn renyi_rewards(
-    cfg: &ControlConfig,
+    cfg: &ControlOptions,
     model: &MultiObjectLikelihood,
     particles: &MultiObjectParticles,
     actions: &[Action],
@@ -205,7 +205,7 @@ const MAX_SCAN: usize = 16;
 /// the rewards are the same bits.
 #[cfg(test)]
 pub(super) fn renyi_reward(
-    cfg: &ControlConfig,
+    cfg: &ControlOptions,
     model: &MultiObjectLikelihood,
     p: &MultiObjectParticles,
     u: State,
@@ -232,7 +232,7 @@ fn mean_divergence<'a>(chunks: impl IntoIterator<Item = &'a [Option<f64>]>) -> f
 /// for a scan the particles cannot explain): the body of [`renyi_reward`], which the
 /// parallel build splits by action and by chunk of scans (see [`renyi_rewards`]).
 fn renyi_divergences(
-    cfg: &ControlConfig,
+    cfg: &ControlOptions,
     model: &MultiObjectLikelihood,
     p: &MultiObjectParticles,
     setup: &RenyiSetup,
@@ -331,7 +331,7 @@ struct RenyiSetup {
 
 impl RenyiSetup {
     fn new(
-        cfg: &ControlConfig,
+        cfg: &ControlOptions,
         model: &MultiObjectLikelihood,
         p: &MultiObjectParticles,
         u: State,

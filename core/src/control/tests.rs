@@ -4,9 +4,10 @@
 use alloc::vec;
 use alloc::vec::Vec;
 
-use super::case_study::{ControlConfig, ControlRun, Scheme};
+use super::case_study::{ControlOptions, ControlRun, Scheme};
 use super::reference::RenyiReference;
 use super::renyi_kernel::{FutureScans, SCANS_PER_TASK, renyi_reward, renyi_rewards};
+use crate::error::Error;
 use crate::math::rng::seeded;
 use crate::smc::LikelihoodWorkspace;
 
@@ -14,9 +15,9 @@ use crate::smc::LikelihoodWorkspace;
 /// with 30 future scans drawn from seed 99: the paper's settings (N = 200, M = 30) with noise
 /// of 40σ on every third scan (pair factors underflow to 0), n_max = 6 (sets beyond the fixed
 /// kernels), α = 1, and σ₀ = 0.1 (factors above 1: the log path).
-fn cases() -> Vec<(ControlConfig, ControlRun, FutureScans)> {
+fn cases() -> Vec<(ControlOptions, ControlRun, FutureScans)> {
     let base = {
-        let mut c = ControlConfig::paper(Scheme::Renyi, 6);
+        let mut c = ControlOptions::paper(Scheme::Renyi, 6);
         c.particles = 200;
         c.future_scans = 30;
         c
@@ -183,7 +184,7 @@ fn eq17_renyi_rewards_are_pinned() {
 /// `parallel`) are the bits of one [`renyi_reward`] per action.
 #[test]
 fn eq17_chunked_rewards_are_the_whole_ones() {
-    let mut cfg = ControlConfig::paper(Scheme::Renyi, 6);
+    let mut cfg = ControlOptions::paper(Scheme::Renyi, 6);
     cfg.particles = 200;
     cfg.future_scans = 2 * SCANS_PER_TASK + 7;
     let mut run = ControlRun::new(cfg.clone(), 21).unwrap();
@@ -226,7 +227,7 @@ fn eq17_chunked_rewards_are_the_whole_ones() {
 /// 45 m.
 #[test]
 fn alg1_reduced_run_localises_both_sources() {
-    let mut cfg = ControlConfig::paper(Scheme::Renyi, 30);
+    let mut cfg = ControlOptions::paper(Scheme::Renyi, 30);
     cfg.particles = 300;
     cfg.future_scans = 40;
     let truth = cfg.truth.clone();
@@ -245,8 +246,8 @@ fn alg1_reduced_run_localises_both_sources() {
         );
         if k > 20 {
             assert_eq!(s.estimate.cardinality, 2, "k={k}");
-            assert_eq!(s.ospa[2], 0.0, "k={k}");
-            assert!(s.ospa[0] <= 40.0, "k={k}: {:?}", s.ospa);
+            assert_eq!(s.ospa.cardinality, 0.0, "k={k}");
+            assert!(s.ospa.distance <= 40.0, "k={k}: {:?}", s.ospa);
         }
         last = Some(s);
     }
@@ -268,7 +269,7 @@ fn alg1_reduced_run_localises_both_sources() {
 /// path, scans and both random streams (every field, through `Debug`).
 #[test]
 fn alg1_step_after_the_last_leaves_the_run_unchanged() {
-    let mut cfg = ControlConfig::paper(Scheme::Random, 2);
+    let mut cfg = ControlOptions::paper(Scheme::Random, 2);
     cfg.particles = 50;
     let mut run = ControlRun::new(cfg, 3).unwrap();
     run.step().unwrap();
@@ -280,30 +281,52 @@ fn alg1_step_after_the_last_leaves_the_run_unchanged() {
     assert_eq!(run.k(), 2);
 }
 
-/// The bindings' caps say their range in the message, with the values of the constants.
+/// The bindings' caps say their range in the message, with the values of the constants,
+/// in the order particles, future_scans, steps, max_objects, then N·M; a second fault
+/// (α = 0, checked by `validate`) is reported after them.
 #[test]
 fn alg1_work_caps_name_the_field_and_the_range() {
-    use super::case_study::{MAX_FUTURE_SCANS, MAX_PARTICLES, MAX_STEPS};
-    let base = ControlConfig::paper(Scheme::Random, 1);
+    use super::case_study::{
+        MAX_FUTURE_SCANS, MAX_MAX_OBJECTS, MAX_PARTICLES, MAX_STEPS, MAX_WORK,
+    };
+    let mut base = ControlOptions::paper(Scheme::Random, 1);
+    (base.particles, base.future_scans) = (1, 1);
     assert!(base.check_limits().is_ok());
-    type Set = fn(&mut ControlConfig, usize);
+    type Set = fn(&mut ControlOptions, usize);
     let cases: [(&str, usize, Set); 4] = [
         ("particles", MAX_PARTICLES, |c, v| c.particles = v),
-        ("futureScans", MAX_FUTURE_SCANS, |c, v| c.future_scans = v),
+        ("future_scans", MAX_FUTURE_SCANS, |c, v| c.future_scans = v),
         ("steps", MAX_STEPS, |c, v| c.steps = v),
-        ("maxObjects", 8, |c, v| c.max_objects = v),
+        ("max_objects", MAX_MAX_OBJECTS, |c, v| c.max_objects = v),
     ];
     for (what, max, set) in cases {
         for bad in [0, max + 1] {
             let mut c = base.clone();
             set(&mut c, bad);
-            assert_eq!(
-                alloc::string::ToString::to_string(&c.check_limits().unwrap_err()),
-                alloc::format!("{what} must be an integer in [1, {max}], got {bad}")
-            );
+            c.alpha = 0.0;
+            assert_eq!(c.check_limits(), Err(Error::range(what, bad, 1, max)));
         }
         let mut c = base.clone();
         set(&mut c, max);
         assert!(c.check_limits().is_ok());
     }
+    // N·M: after the four ranges, naming M with the largest M within the cap.
+    let mut c = base.clone();
+    (c.particles, c.future_scans) = (2000, 501);
+    let over = Error::OverBudget {
+        what: "future_scans".into(),
+        measure: "particles · future_scans",
+        work: 1_002_000,
+        limit: "1000000",
+        at_most: 500,
+    };
+    assert_eq!(c.check_limits(), Err(over.clone()));
+    c.steps = 0;
+    assert_eq!(c.check_limits().unwrap_err().field(), "steps");
+    c.steps = 1;
+    c.alpha = 0.0;
+    assert_eq!(c.check_limits(), Err(over));
+    (c.particles, c.future_scans) = (2000, MAX_WORK / 2000);
+    assert!(c.check_limits().is_ok());
+    assert_eq!(c.validate().unwrap_err().field(), "alpha");
 }

@@ -66,12 +66,12 @@ pub struct MultiObjectLikelihood {
 }
 
 impl MultiObjectLikelihood {
-    /// Validates p_D ∈ [0, 1] (`detectionProbability`) and λ ≥ 0 finite (`clutterRate`).
+    /// Validates p_D ∈ [0, 1] (`detection_probability`) and λ ≥ 0 finite (`clutter_rate`).
     pub fn new(detection: f64, clutter_rate: f64) -> Result<Self> {
-        crate::error::check_probability(|| "detectionProbability".into(), detection)?;
+        crate::error::check_probability(|| "detection_probability".into(), detection)?;
         if !(clutter_rate.is_finite() && clutter_rate >= 0.0) {
             return Err(Error::parameter(
-                "clutterRate",
+                "clutter_rate",
                 clutter_rate,
                 "finite and ≥ 0",
             ));
@@ -144,8 +144,8 @@ impl MultiObjectLikelihood {
 /// p_D ∈ [0, 1], λ ≥ 0. A zero likelihood is −∞.
 ///
 /// # Errors
-/// Field-named errors (`likelihoods[i][j]`, `clutterDensity[j]`, `detectionProbability`,
-/// `clutterRate`), and [`Error::Unsupported`] when min(n, m) > [`MAX_SMALLER_SIDE`].
+/// Field-named errors (`likelihoods[i][j]`, `clutter_density[j]`, `detection_probability`,
+/// `clutter_rate`), and [`Error::Unsupported`] when min(n, m) > [`MAX_SMALLER_SIDE`].
 pub fn ln_likelihood<R: AsRef<[f64]>>(
     likelihoods: &[R],
     detection: f64,
@@ -180,7 +180,7 @@ pub fn ln_likelihood<R: AsRef<[f64]>>(
     for (j, &c) in clutter_density.iter().enumerate() {
         if !(c.is_finite() && c >= 0.0) {
             return Err(Error::parameter(
-                alloc::format!("clutterDensity[{j}]"),
+                alloc::format!("clutter_density[{j}]"),
                 c,
                 "finite and ≥ 0",
             ));
@@ -376,10 +376,10 @@ mod tests {
         let e = ln_likelihood(&[[0.5]], 0.9, 0.8, &[1.0, 1.0]).unwrap_err();
         assert_eq!(e.field(), "likelihoods[0]");
         let e = ln_likelihood(&[[0.5]], 1.5, 0.8, &[1.0]).unwrap_err();
-        assert_eq!(e.field(), "detectionProbability");
+        assert_eq!(e.field(), "detection_probability");
         let e = ln_likelihood(&[[0.5]], 0.5, f64::NAN, &[1.0]).unwrap_err();
-        assert_eq!(e.field(), "clutterRate");
+        assert_eq!(e.field(), "clutter_rate");
         let e = ln_likelihood(&[[0.5]], 0.5, 1.0, &[f64::INFINITY]).unwrap_err();
-        assert_eq!(e.field(), "clutterDensity[0]");
+        assert_eq!(e.field(), "clutter_density[0]");
     }
 }

@@ -11,9 +11,21 @@
 //   - the module still works afterwards (a canary call returns the right number).
 // fast-check shrinks a failing input to a small one; `run.mjs` (make fuzz) and
 // `fuzz.test.mjs` (make test) print the failures with the shrunk input.
+//
+// Besides these, the `extreme` cases replace one number, one array of numbers or every number
+// of a valid input by a value from EXTREMES (±1e308, ±Number.MAX_VALUE, 2^53, 2^53 + 2,
+// subnormals, the smallest normal, −0): the result must be a RangeError naming the field, or
+// a value without NaN. And `runLarge` runs the fixed inputs at each export's size cap
+// (specs.mjs, `largeCases`) each in a child process under a watchdog (see there).
+//
+// Time: every call (each method of a class on its own) is held to its spec's bound, 2 s
+// unless the spec says otherwise, on the smaller of its wall-clock and its CPU time (so that
+// a machine busy with other work does not fail the run; a call that computes too long fails).
 import fc from 'fast-check';
+import { fork } from 'node:child_process';
+import { readFileSync } from 'node:fs';
 import * as fisst from 'fisst';
-import { pastCaps, specs } from './specs.mjs';
+import { EXTREMES, largeCases, pastCaps, specs } from './specs.mjs';
 
 /** A JSON-ish rendering that survives cycles, NaN, typed arrays, undefined and BigInt. */
 export function show(v, depth = 0, seen = new Set()) {
@@ -186,6 +198,46 @@ export function mutate(name, args, a, b, c) {
   return [setAt(copy, path, bad), `${path.join('.')} = ${show(bad)}`];
 }
 
+/** Paths to every number of `v` (array elements and object fields, typed array elements too). */
+function numberPaths(v, prefix = [], out = [], depth = 0) {
+  if (typeof v === 'number') out.push(prefix);
+  if (depth > 8 || v === null || typeof v !== 'object') return out;
+  if (v instanceof Float64Array || v instanceof Float32Array) {
+    for (let i = 0; i < Math.min(v.length, 64); i++) out.push([...prefix, i]);
+    return out;
+  }
+  if (ArrayBuffer.isView(v)) return out;
+  const keys = Array.isArray(v) ? v.map((_, i) => i) : Object.keys(v);
+  for (const k of keys.slice(0, 64)) numberPaths(v[k], [...prefix, k], out, depth + 1);
+  return out;
+}
+
+/**
+ * Replaces numbers of a copy of `args` by extreme magnitudes: one number (most often), every
+ * number of one array (a whole point, a box corner, a row), or every number of the input.
+ * Returns `[args, description]`.
+ */
+export function extremize(args, a, b, c) {
+  const copy = clone(args);
+  const all = numberPaths(copy);
+  if (all.length === 0) return [copy, 'no number to replace'];
+  const value = (k) => EXTREMES[(c + k) % EXTREMES.length];
+  const mode = a % 6;
+  if (mode <= 3) {
+    const path = all[b % all.length];
+    setAt(copy, path, value(0));
+    return [copy, `extreme: ${path.join('.')} = ${show(value(0))}`];
+  }
+  if (mode === 4) {
+    const parentKey = all[b % all.length].slice(0, -1).join('.');
+    const group = all.filter((p) => p.slice(0, -1).join('.') === parentKey);
+    group.forEach((p, k) => setAt(copy, p, (a >> 3) % 2 ? value(0) : value(k)));
+    return [copy, `extreme: every number of ${parentKey || 'args'} from ${show(value(0))}`];
+  }
+  all.forEach((p) => setAt(copy, p, value(0)));
+  return [copy, `extreme: every number = ${show(value(0))}`];
+}
+
 // ------------------------------------------------------------------ checks
 /** The path of the first NaN in `v`, or null. */
 export function findNaN(v, path = 'result', depth = 0, seen = new Set()) {
@@ -215,25 +267,52 @@ export function alive() {
   }
 }
 
-const DEFAULT_MAX_MS = 5000;
+/** The bound on one call, in ms (issue 26: every call under 2 s in Node at its cap). */
+export const DEFAULT_MAX_MS = 2000;
+
+// In a child process of `runLarge`: tells the parent which call is running (for the watchdog's report).
+let onCall = null;
+
+/** CPU time of this process so far, in ms (user + system). */
+const cpuMs = () => {
+  const u = process.cpuUsage();
+  return (u.user + u.system) / 1000;
+};
 
 /**
  * Calls `spec` with `args` and returns null when every check passes, or a description of the
- * failure. `stats` (optional) collects counts.
+ * failure. `stats` (optional) collects counts; `stats.slowest` is the slowest call seen,
+ * `{ ms, wallMs, cpuMs, call }`.
  */
 export function check(spec, args, stats) {
-  const start = performance.now();
+  const calls = [];
+  // `timed(label, f)`: one call, timed on its own (the class drivers time each method).
+  const timed = (label, f) => {
+    onCall?.(label);
+    const wall0 = performance.now();
+    const cpu0 = cpuMs();
+    try {
+      return f();
+    } finally {
+      const wallMs = performance.now() - wall0;
+      const cpu = cpuMs() - cpu0;
+      calls.push({ call: label, wallMs, cpuMs: cpu, ms: Math.min(wallMs, cpu) });
+    }
+  };
   let result;
   let error;
   try {
-    // A spec may drive a class: `call(fisst, args)` constructs, calls its methods, frees.
-    result = spec.call ? spec.call(fisst, args) : fisst[spec.name](...args);
+    // A spec may drive a class: `call(fisst, args, timed)` constructs, calls its methods, frees.
+    result = spec.call ? spec.call(fisst, args, timed) : timed(`${spec.name}()`, () => fisst[spec.name](...args));
   } catch (e) {
     error = e;
   }
-  const ms = performance.now() - start;
+  const slowest = calls.reduce((m, x) => (x.ms > m.ms ? x : m), { ms: 0, wallMs: 0, cpuMs: 0, call: '' });
+  const ms = slowest.ms;
   if (stats) {
     stats.calls++;
+    stats.lastOutcome = error === undefined ? 'returned' : `${error?.name}: ${String(error?.message).slice(0, 200)}`;
+    if (ms >= stats.slowestMs) stats.slowest = slowest;
     stats.slowestMs = Math.max(stats.slowestMs, ms);
   }
   if (error !== undefined) {
@@ -248,29 +327,49 @@ export function check(spec, args, stats) {
     const nan = findNaN(result);
     if (nan) return `NaN at ${nan}`;
   }
-  if (ms > (spec.maxMs ?? DEFAULT_MAX_MS)) return `took ${ms.toFixed(0)} ms (bound ${spec.maxMs ?? DEFAULT_MAX_MS} ms)`;
+  const bound = spec.maxMs ?? DEFAULT_MAX_MS;
+  if (ms > bound) return `${slowest.call} took ${slowest.wallMs.toFixed(0)} ms (CPU ${slowest.cpuMs.toFixed(0)} ms; bound ${bound} ms)`;
   if (!alive()) return 'the module stopped working after this call';
   return null;
 }
 
-/** The arbitrary of one fuzz case of `spec`: valid arguments, or a mutation of them. */
+/**
+ * The arbitrary of one fuzz case of `spec`: valid arguments (3 in 8), a malformed mutation of
+ * them (3 in 8), or valid arguments with numbers at the extremes (2 in 8).
+ */
 export function caseOf(spec) {
   return fc.tuple(spec.args, fc.nat(), fc.nat(), fc.nat(), fc.nat()).map(([args, kind, a, b, c]) => {
-    if (kind % 2 === 0) return { args, what: 'valid' };
+    if (kind % 8 < 3) return { args, what: 'valid' };
+    if (kind % 8 >= 6) {
+      const [ext, what] = extremize(args, a, b, c);
+      return { args: ext, what };
+    }
     const [bad, what] = mutate(spec.name, args, a, b, c);
     return { args: bad, what };
   });
 }
 
 export function newStats() {
-  return { calls: 0, returned: 0, typeErrors: 0, rangeErrors: 0, otherErrors: 0, slowestMs: 0 };
+  return { calls: 0, returned: 0, typeErrors: 0, rangeErrors: 0, otherErrors: 0, slowestMs: 0, slowest: null, known: {} };
+}
+
+/** The id of the first of `known` (known-edges.mjs entries) that `message` on `args` of `name` is. */
+export function knownEdge(known, name, args, message) {
+  for (const edge of known ?? []) {
+    try {
+      if ((edge.exports ?? [edge.export]).includes(name) && edge.matches(args, message)) return edge.id;
+    } catch {
+      // a matcher that does not apply to this input
+    }
+  }
+  return null;
 }
 
 /**
  * Runs `total` cases spread over the specs by weight, seeded by `seed`. Returns per-spec
  * `{ stats, failure }` where `failure` is null or `{ message, input, shrinks }`.
  */
-export function fuzz({ total, seed, only, progress, shrinkMs = 60_000 }) {
+export function fuzz({ total, seed, only, progress, shrinkMs = 60_000, known = [] }) {
   const chosen = specs.filter((s) => !only || only.includes(s.name));
   const weights = chosen.map((s) => s.weight ?? 1);
   const sum = weights.reduce((a, b) => a + b, 0);
@@ -279,8 +378,16 @@ export function fuzz({ total, seed, only, progress, shrinkMs = 60_000 }) {
     const numRuns = Math.max(1, Math.round((total * weights[i]) / sum));
     const stats = newStats();
     let lastMessage = null;
-    const prop = fc.property(caseOf(spec), ({ args }) => {
+    const prop = fc.property(caseOf(spec), ({ args, what }) => {
       lastMessage = check(spec, args, stats);
+      // A failure that is a known edge (known-edges.mjs, the `known` passed in) is counted,
+      // with its first input, and not failed.
+      const edge = lastMessage && knownEdge(known, spec.name, args, lastMessage);
+      if (edge) {
+        stats.known[edge] ??= { count: 0, message: lastMessage, input: `${what}: ${spec.name}(${args.map((x) => show(x)).join(', ')})` };
+        stats.known[edge].count++;
+        return;
+      }
       if (lastMessage) throw new Error(lastMessage);
     });
     // Shrinking re-runs the function many times: bound it so one slow failure cannot stall the
@@ -295,4 +402,148 @@ export function fuzz({ total, seed, only, progress, shrinkMs = 60_000 }) {
     progress?.(report[report.length - 1]);
   }
   return report;
+}
+
+// ------------------------------------------------------------------ sizes at the caps, under a watchdog
+/**
+ * Runs the fixed large inputs (specs.mjs, `largeCases`; all of them, or those whose label is in
+ * `labels`), one at a time, each in a fresh child process (this file, forked with
+ * FISST_FUZZ_CHILD=1) so that a runaway call cannot hang the run or exhaust this process's
+ * memory: the child builds the input, runs `check` on it (the call held to its spec's bound, 2
+ * s, on min(wall, CPU)) and sends back the outcome; the parent kills it (SIGKILL) when, after
+ * the input was built, the child has used `cpuLimitMs` of CPU time (default: the bound + 0.5
+ * s, read from /proc/<pid>/stat every 100 ms) or `watchdogMs` of wall time without answering,
+ * and reports the case as still running then. Resolves to `[{ label, name, failure, ms, wallMs, cpuMs, known }]`
+ * (`failure` null when it passed; a failure that is one of the `known` edges is reported with
+ * `known` set to its id instead).
+ */
+export async function runLarge({ labels, known = [], watchdogMs = 20_000, cpuLimitMs, progress } = {}) {
+  const chosen = largeCases.filter((c) => !labels || labels.includes(c.label));
+  const out = [];
+  for (const c of chosen) {
+    const bound = specs.find((s) => s.name === c.name)?.maxMs ?? DEFAULT_MAX_MS;
+    const r = await runChild(c, watchdogMs, cpuLimitMs ?? bound + 500);
+    const edge = r.failure ? known.find((e) => e.export === c.name && e.largeLabel === c.label)?.id ?? null : null;
+    const row = { label: c.label, name: c.name, ...r, known: edge, failure: edge ? null : r.failure, knownFailure: edge ? r.failure : null };
+    out.push(row);
+    progress?.(row);
+  }
+  return out;
+}
+
+/** The CPU time (user + system) of process `pid` in ms, from /proc; null where there is none. */
+function childCpuMs(pid) {
+  try {
+    const stat = readFileSync(`/proc/${pid}/stat`, 'utf8');
+    const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
+    return ((Number(fields[11]) + Number(fields[12])) * 1000) / CLOCK_TICKS;
+  } catch {
+    return null;
+  }
+}
+const CLOCK_TICKS = 100; // USER_HZ on Linux
+
+function runChild(c, watchdogMs, cpuLimitMs) {
+  return new Promise((resolve) => {
+    const child = fork(new URL(import.meta.url), [], { env: { ...process.env, FISST_FUZZ_CHILD: '1' }, execArgv: ['--max-old-space-size=4096'], serialization: 'advanced', stdio: ['ignore', 'ignore', 'pipe', 'ipc'] });
+    let stderr = '';
+    child.stderr.on('data', (d) => {
+      stderr = (stderr + d).slice(-2000);
+    });
+    let timer = null;
+    let done = false;
+    const finish = (r) => {
+      if (done) return;
+      done = true;
+      clearTimeout(timer);
+      if (child.exitCode === null && child.signalCode === null) child.kill('SIGKILL');
+      resolve(r);
+    };
+    let running = '';
+    child.on('message', (m) => {
+      if (m.calling) {
+        running = ` in ${m.calling}`;
+        return;
+      }
+      if (!m.built) return finish(m);
+      // The input is built: the call starts now, and the watchdog with it. It polls the child's
+      // CPU time (Linux: /proc/<pid>/stat) and kills it once that passes `cpuLimitMs` (the
+      // call has then failed its bound whatever the load of the machine), or once the wall
+      // time passes `watchdogMs` (elsewhere, or when the machine is too busy to tell).
+      const wall0 = performance.now();
+      const cpu0 = childCpuMs(child.pid);
+      const poll = () => {
+        const wallMs = performance.now() - wall0;
+        const cpu = cpu0 === null ? null : childCpuMs(child.pid) - cpu0;
+        if (cpu !== null && cpu > cpuLimitMs) {
+          return finish({ failure: `still running${running} after ${cpu.toFixed(0)} ms of CPU time (${wallMs.toFixed(0)} ms wall; killed by the watchdog)`, wallMs, cpuMs: cpu, ms: Math.min(cpu, wallMs), killed: true, call: running.slice(4) });
+        }
+        if (wallMs > watchdogMs) {
+          return finish({ failure: `still running${running} after ${wallMs.toFixed(0)} ms of wall time${cpu === null ? '' : ` (${cpu.toFixed(0)} ms CPU)`} (killed by the watchdog)`, wallMs, cpuMs: cpu, ms: Math.min(cpu ?? wallMs, wallMs), killed: true, call: running.slice(4) });
+        }
+        timer = setTimeout(poll, 100);
+      };
+      timer = setTimeout(poll, 100);
+    });
+    child.on('exit', (code, signal) => finish({ failure: `the child process died (exit ${code}, signal ${signal}): ${stderr.trim().split('\n').slice(-3).join(' | ')}`, wallMs: null, cpuMs: null, ms: null }));
+    child.send({ label: c.label });
+    // Building a 10^6-element input can take a while: a last-resort bound on the whole child.
+    setTimeout(() => finish({ failure: `the child did not finish building its input within 120 s`, ms: null }), 120_000).unref();
+  });
+}
+
+if (process.env.FISST_FUZZ_CHILD === '1' && process.send) {
+  process.once('message', ({ label }) => {
+    const c = largeCases.find((x) => x.label === label);
+    const spec = specs.find((s) => s.name === c.name);
+    const args = c.args();
+    onCall = (label) => process.send({ calling: label });
+    process.send({ built: true });
+    const stats = newStats();
+    let failure;
+    try {
+      failure = check(spec, args, stats);
+    } catch (e) {
+      failure = `the harness threw ${e?.name}: ${e?.message}`;
+    }
+    const s = stats.slowest ?? { ms: null, wallMs: null, cpuMs: null, call: '' };
+    process.send({ failure, outcome: stats.lastOutcome, ms: s.ms, wallMs: s.wallMs, cpuMs: s.cpuMs, call: s.call }, () => process.exit(0));
+  });
+}
+
+// ------------------------------------------------------------------ every numeric field at every extreme
+/**
+ * The systematic sweep (`make fuzz`): for `inputs` valid inputs of each spec (seeded), every
+ * number of the input (up to 64) replaced in turn by every value of EXTREMES, each checked.
+ * Returns per spec `{ name, calls, failures: [{ message, input }] (the first of each distinct
+ * message shape), known: { id: count } }`.
+ */
+export function sweepExtremes({ seed, inputs = 2, only, known = [], progress }) {
+  const out = [];
+  for (const [i, spec] of specs.filter((s) => !only || only.includes(s.name)).entries()) {
+    const row = { name: spec.name, calls: 0, failures: [], known: {} };
+    const seen = new Set();
+    for (const args of fc.sample(spec.args, { numRuns: inputs, seed: seed + i })) {
+      for (const path of numberPaths(args).slice(0, 64)) {
+        for (const value of EXTREMES) {
+          const copy = setAt(clone(args), path, value);
+          const message = check(spec, copy);
+          row.calls++;
+          if (!message) continue;
+          const edge = knownEdge(known, spec.name, copy, message);
+          if (edge) {
+            row.known[edge] = (row.known[edge] ?? 0) + 1;
+            continue;
+          }
+          const shape = message.replace(/[-\d.e+]+/g, '#');
+          if (seen.has(shape)) continue;
+          seen.add(shape);
+          row.failures.push({ message, input: `${path.join('.')} = ${show(value)}: ${spec.name}(${copy.map((a) => show(a)).join(', ')})` });
+        }
+      }
+    }
+    out.push(row);
+    progress?.(row);
+  }
+  return out;
 }

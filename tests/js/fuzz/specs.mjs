@@ -6,10 +6,21 @@
 import fc from 'fast-check';
 
 // ------------------------------------------------------------------ numbers and points
+/**
+ * The extreme magnitudes every numeric field is also tried with (harness.mjs, the `extreme`
+ * cases: one to all numbers of a valid input replaced by these): the largest doubles, the
+ * integers where doubles stop being exact, the subnormals and the smallest normal, and −0.
+ */
+export const EXTREMES = [
+  1e308, -1e308, Number.MAX_VALUE, -Number.MAX_VALUE, 2 ** 53, 2 ** 53 + 2, -(2 ** 53),
+  Number.MIN_VALUE, -Number.MIN_VALUE, 1e-310, 2.2250738585072014e-308, -0,
+];
+
 /** A coordinate: mostly moderate, sometimes at the edges of the scale. */
 const coord = fc.oneof(
   { weight: 12, arbitrary: fc.double({ min: -50, max: 50, noNaN: true, noDefaultInfinity: true }) },
   { weight: 1, arbitrary: fc.constantFrom(0, -0, 1e-300, -1e-300, 1e150, -1e150, 1e300, 5e-324) },
+  { weight: 1, arbitrary: fc.constantFrom(...EXTREMES) },
   { weight: 1, arbitrary: fc.integer({ min: -3, max: 3 }) },
 );
 
@@ -93,10 +104,24 @@ const mixture = (n, max = 4, free = false) =>
 const bernoulli = (n) => fc.record({ existence: probability, mean: point(n), cov: nestedCov(n) });
 
 // ------------------------------------------------------------------ regions
+// A box: a corner and widths, or (1 in 8) one corner at the extremes with the other near the
+// origin: a half-unbounded region ("everything below x"), every coordinate of the far corner at
+// ±1e308 or ±Number.MAX_VALUE.
 const box = (n) =>
-  fc.tuple(point(n), fc.array(fc.double({ min: 0, max: 20, noNaN: true }), { minLength: n, maxLength: n })).map(([lo, w]) => ({
-    box: { min: Array.from(lo), max: Array.from(lo, (v, i) => v + w[i]) },
-  }));
+  fc.oneof(
+    {
+      weight: 7,
+      arbitrary: fc.tuple(point(n), fc.array(fc.double({ min: 0, max: 20, noNaN: true }), { minLength: n, maxLength: n })).map(([lo, w]) => ({
+        box: { min: Array.from(lo), max: Array.from(lo, (v, i) => v + w[i]) },
+      })),
+    },
+    {
+      weight: 1,
+      arbitrary: fc.tuple(fc.constantFrom(1e308, Number.MAX_VALUE, 1e200), fc.boolean(), fc.array(fc.double({ min: -5, max: 5, noNaN: true }), { minLength: n, maxLength: n })).map(([far, below, near]) => ({
+        box: below ? { min: near.map(() => -far), max: near } : { min: near, max: near.map(() => far) },
+      })),
+    },
+  );
 
 const disc = (n) => fc.record({ center: point(n), radius: fc.oneof(fc.double({ min: 1e-3, max: 20, noNaN: true }), fc.constantFrom(1e-9, 1e9)) }).map((d) => ({ disc: d }));
 
@@ -134,8 +159,14 @@ const density = (n) =>
     },
   );
 
+// The cut-off: moderate, or at the ends of the doubles (c^p overflows or underflows).
+const cutOff = fc.oneof(
+  { weight: 4, arbitrary: fc.double({ min: 0.01, max: 100, noNaN: true }) },
+  { weight: 1, arbitrary: fc.constantFrom(1e-300, 1e300, 1e308, Number.MAX_VALUE, 2 ** 53, 5e-324, 2.2250738585072014e-308) },
+);
+
 const metricOpts = fc.record(
-  { c: fc.oneof(fc.double({ min: 0.01, max: 100, noNaN: true }), fc.constantFrom(1e-300, 1e300)), p: fc.oneof(fc.constantFrom(1, 2, 3), fc.double({ min: 1, max: 10, noNaN: true })) },
+  { c: cutOff, p: fc.oneof(fc.constantFrom(1, 2, 3), fc.double({ min: 1, max: 10, noNaN: true })) },
   { requiredKeys: ['c'] },
 );
 
@@ -429,10 +460,10 @@ export const specs = [
   {
     name: 'SensorControlRun',
     roots: ['options', 'step'],
-    // A mutation that deletes particles/futureScans gets the paper's size (N = 750, M = 200):
-    // a few seconds per step in wasm, so the class is drawn rarely and steps at most twice.
+    // A mutation that deletes particles/futureScans gets the paper's size (N = 750, M = 200),
+    // so the class is drawn rarely and steps at most twice; each call (the constructor, each
+    // step) is held to the 2 s bound on its own.
     weight: 0.1,
-    maxMs: 20_000,
     args: fc
       .record(
         {
@@ -448,14 +479,15 @@ export const specs = [
         { requiredKeys: ['scheme', 'seed'] },
       )
       .map((o) => [o]),
-    call: (fisst, args) => {
-      const run = new fisst.SensorControlRun(args[0]);
+    // `timed(label, f)` times each call on its own (harness.mjs: each is held to the bound).
+    call: (fisst, args, timed = (_, f) => f()) => {
+      const run = timed('new SensorControlRun', () => new fisst.SensorControlRun(args[0]));
       try {
         let last;
-        for (let k = 0; k < Math.min(run.steps, 2); k++) last = run.step();
-        void run.particles;
-        void run.sensorPath;
-        return last;
+        for (let k = 0; k < Math.min(run.steps, 2); k++) last = timed(`step() #${k + 1}`, () => run.step());
+        const particles = timed('particles', () => run.particles);
+        const sensorPath = timed('sensorPath', () => run.sensorPath);
+        return { last, particles, sensorPath };
       } finally {
         run.free();
       }
@@ -600,12 +632,14 @@ const filterConfig = (particleFilter) =>
       scanOf(m.p),
     ),
   );
-const driveFilter = (cls) => (fisst, [config, scan]) => {
-  const f = new fisst[cls](config);
+const driveFilter = (cls) => (fisst, [config, scan], timed = (_, f) => f()) => {
+  const f = timed(`new ${cls}`, () => new fisst[cls](config));
   try {
-    f.predict();
-    f.update(scan);
-    return { e: f.estimate(), existence: f.existence, state: cls === 'GmBernoulliFilter' ? f.mixture : f.particles };
+    timed('predict()', () => f.predict());
+    timed('update()', () => f.update(scan));
+    const e = timed('estimate()', () => f.estimate());
+    const state = timed(cls === 'GmBernoulliFilter' ? 'mixture' : 'particles', () => (cls === 'GmBernoulliFilter' ? f.mixture : f.particles));
+    return { e, existence: f.existence, state, ...(cls === 'ParticleBernoulliFilter' ? { weights: f.weights } : {}) };
   } finally {
     f.free();
   }
@@ -670,3 +704,105 @@ export const pastCaps = {
   ParticleBernoulliFilter: [['0.particles', 200001], ['0.mcmcMoves', 11], ['0.birthParticles', 200001], ['0.seed', 2 ** 53]],
   airportScenario: [['0.steps', 2001], ['0.seed', 2 ** 53]],
 };
+
+// ------------------------------------------------------------------ sizes at the caps
+/**
+ * Inputs at each export's documented size cap, or 10^6 elements where an array has none: one
+ * fixed case per entry, `{ label, name, args() }` (`args` builds the argument list afresh;
+ * `name` is the export, or the class spec that `call` drives). harness.mjs (`runLarge`) runs
+ * each in a child process under a watchdog: the call must return (or throw a TypeError /
+ * RangeError naming a field) within its spec's bound (2 s), with no NaN. `slice: true` marks
+ * the few that `make test` runs (fuzz.test.mjs); `make fuzz` runs them all.
+ */
+const N = 1_000_000;
+const fill = (n, f) => Array.from({ length: n }, (_, i) => f(i));
+const eye = (n) => fill(n, (i) => fill(n, (j) => (i === j ? 1 : 0)));
+const halves = (n) => new Float64Array(n).fill(0.5);
+// Deterministic spread values in [0, 1) (a Weyl sequence), so that nothing is degenerate.
+const spread = (i) => (i * 0.6180339887498949) % 1;
+const comps = (n, d = 2) => fill(n, (i) => ({ weight: 1 / n, mean: fill(d, (k) => 10 * spread(i + k * 7919)), cov: eye(d) }));
+const points = (n, d) => fill(n, (i) => fill(d, (k) => 100 * spread(i * d + k)));
+const filterBase = (n) => ({
+  existence: 0.5, mixture: comps(n), transition: { F: eye(2), Q: [[0.1, 0], [0, 0.1]] },
+  detection: { probability: 0.9 }, clutter: { rate: 0.25, density: 0.01 }, likelihood: { H: eye(2), R: eye(2) },
+});
+const discs = (n) => fill(n, (i) => ({ disc: { center: [10 * spread(i), 10 * spread(i + 3)], radius: 1 } }));
+
+export const largeCases = [
+  // the metrics
+  { label: 'gospa: 10^6 truth points, empty estimate', name: 'gospa', slice: true, args: () => [points(N, 1), [], { c: 1 }] },
+  { label: 'gospa: 1000 × 1000 points (2D)', name: 'gospa', args: () => [points(1000, 2), points(1000, 2).reverse(), { c: 10 }] },
+  { label: 'gospa: 10^6 × 10^6 points (1D)', name: 'gospa', args: () => [points(N, 1), points(N, 1).reverse(), { c: 10 }] },
+  { label: 'gospa: one point of dimension 10^6 each side', name: 'gospa', args: () => [[new Float64Array(N).fill(1)], [new Float64Array(N)], { c: 10 }] },
+  { label: 'ospa: 10^6 × 10^6 points (1D)', name: 'ospa', args: () => [points(N, 1), points(N, 1).reverse(), { c: 10 }] },
+  { label: 'ospa: 10^6 truth points, one estimate', name: 'ospa', args: () => [points(N, 1), [[0]], { c: 10 }] },
+  { label: 'uospa: 10^6 truth points, one estimate', name: 'uospa', args: () => [points(N, 1), [[0]], { c: 10 }] },
+  { label: 'uospa: 1000 × 1000 points (2D)', name: 'uospa', args: () => [points(1000, 2), points(1000, 2).reverse(), { c: 10 }] },
+  { label: 'gospaSeries: 10^6 steps of one point each side', name: 'gospaSeries', args: () => [{ truths: fill(N, () => [[0]]), estimates: fill(N, () => [[1]]), c: 10 }] },
+  { label: 'gospaSeries: one step of 10^6 points, empty estimate', name: 'gospaSeries', args: () => [{ truths: [points(N, 1)], estimates: [[]], c: 10 }] },
+  { label: 'ospaSeries: 10^6 steps of one point each side', name: 'ospaSeries', args: () => [{ truths: fill(N, () => [[0]]), estimates: fill(N, () => [[1]]), c: 10 }] },
+  { label: 'linearAssignment: 1000 × 1000', name: 'linearAssignment', slice: true, args: () => [fill(1000, (i) => fill(1000, (j) => spread(i * 1000 + j)))] },
+  { label: 'linearAssignment: 1 × 10^6', name: 'linearAssignment', args: () => [[fill(N, spread)]] },
+  { label: 'linearAssignment: 10^6 × 1', name: 'linearAssignment', args: () => [fill(N, (i) => [spread(i)])] },
+  // multi-Bernoulli
+  { label: 'multiBernoulliCardinality: 10^6 existence probabilities', name: 'multiBernoulliCardinality', slice: true, args: () => [halves(N)] },
+  { label: 'multiBernoulliLeaveOneOut: 10^6 existence probabilities', name: 'multiBernoulliLeaveOneOut', slice: true, args: () => [halves(N)] },
+  { label: 'mbOptimalEstimate (gospa): 10^6 existence probabilities', name: 'mbOptimalEstimate', slice: true, args: () => [{ existence: halves(N), metric: 'gospa' }] },
+  { label: 'mbOptimalEstimate (ospa): 10^6 existence probabilities', name: 'mbOptimalEstimate', args: () => [{ existence: halves(N), metric: 'ospa' }] },
+  { label: 'mbOptimalEstimate (uospa): 10^6 existence probabilities', name: 'mbOptimalEstimate', args: () => [{ existence: halves(N), metric: 'uospa' }] },
+  { label: 'mbMeanSquareError (gospa): 10^6 components', name: 'mbMeanSquareError', args: () => [{ existence: halves(N), report: fill(N, (i) => i % 2 === 0), metric: 'gospa' }] },
+  { label: 'mbMeanSquareError (ospa): 10^6 components', name: 'mbMeanSquareError', args: () => [{ existence: halves(N), report: fill(N, (i) => i % 2 === 0), metric: 'ospa' }] },
+  { label: 'mbAlternativeEstimate (mam): 10^6 components', name: 'mbAlternativeEstimate', args: () => [{ existence: halves(N), method: 'mam', lnPeak: new Float64Array(N), lnC: 0 }] },
+  { label: 'mbAlternativeEstimate (jom): 10^6 components', name: 'mbAlternativeEstimate', args: () => [{ existence: halves(N), method: 'jom', lnPeak: new Float64Array(N), lnC: 0 }] },
+  { label: 'mbAlternativeEstimate (map-cardinality): 10^6 components', name: 'mbAlternativeEstimate', args: () => [{ existence: halves(N), method: 'map-cardinality' }] },
+  { label: 'mbDecisionMap: resolution 2000 (cap), gospa', name: 'mbDecisionMap', args: () => [{ estimator: 'gospa', resolution: 2000 }] },
+  { label: 'mbDecisionMap: resolution 2000 (cap), jom', name: 'mbDecisionMap', args: () => [{ estimator: 'jom', resolution: 2000 }] },
+  { label: 'mbIdenticalComponentCounts: maxComponents 1000 (cap)', name: 'mbIdenticalComponentCounts', args: () => [{ existence: 0.5, maxComponents: 1000 }] },
+  // FoV, grids, scenes
+  { label: 'fovCardinality: multiBernoulli of 10,000 components (cap)', name: 'fovCardinality', args: () => [{ rfs: { multiBernoulli: comps(10_000).map(({ mean, cov }) => ({ existence: 0.5, mean, cov })) }, fov: { box: { min: [0, 0], max: [5, 5] } } }] },
+  { label: 'fovCardinality: poisson of 10,000 components (cap)', name: 'fovCardinality', args: () => [{ rfs: { poisson: comps(10_000).map((c) => ({ ...c, weight: 1 })) }, fov: { disc: { center: [5, 5], radius: 3 } } }] },
+  { label: 'fovCardinality: iidCluster with 20,001 cardinality entries (cap)', name: 'fovCardinality', args: () => [{ rfs: { iidCluster: { cardinality: new Float64Array(20_001).fill(1 / 20_001), density: comps(3) } }, fov: { box: { min: [0, 0], max: [5, 5] } } }] },
+  { label: 'fovVarianceMap: 47 components × 2048² cells (2e8 cap)', name: 'fovVarianceMap', args: () => [{ multiBernoulli: comps(47).map(({ mean, cov }) => ({ existence: 0.5, mean, cov })), fovSize: [1, 1], grid: { x: [0, 10, 2048], y: [0, 10, 2048] } }] },
+  { label: 'mixtureDensityGrid: 5 components × 2048² cells (2^22 cells, 2.5e7 cap)', name: 'mixtureDensityGrid', args: () => [{ mixture: comps(5), grid: { x: [0, 10, 2048], y: [0, 10, 2048] } }] },
+  { label: 'mixtureDensityGrid: 1525 components × 128² cells (2.5e7 cap)', name: 'mixtureDensityGrid', args: () => [{ mixture: comps(1525), grid: { x: [0, 10, 128], y: [0, 10, 128] } }] },
+  { label: 'placementScene: count 10,000 (cap)', name: 'placementScene', args: () => [{ count: 10_000, seed: 1 }] },
+  // splitting and reduction
+  { label: 'splitLibrary: 16 components (cap), free spacing', name: 'splitLibrary', args: () => [{ components: 16, lambda: 1e-6, spacing: 'free' }] },
+  { label: 'splitForRegions: 32 regions, maxComponents 34,000, maxDepth 64, 15² grid points (5e8 tests cap)', name: 'splitForRegions', args: () => [{ mixture: comps(3), regions: discs(32), minWeight: 1e-12, maxDepth: 64, gridPoints: 15, maxComponents: 34_000 }] },
+  { label: 'splitForRegions: 12 regions, maxComponents 1000, 141² grid points (5e8 tests cap)', name: 'splitForRegions', args: () => [{ mixture: comps(3), regions: discs(12), minWeight: 1e-12, maxDepth: 64, gridPoints: 141, maxComponents: 1000 }] },
+  { label: 'splitForRegions: 10,000-component mixture', name: 'splitForRegions', args: () => [{ mixture: comps(10_000), regions: [{ box: { min: [0, 0], max: [5, 5] } }], maxDepth: 2 }] },
+  { label: "reduceMixture: 5000 components to 1 (Runnalls' cap)", name: 'reduceMixture', args: () => [{ mixture: comps(5000), maxComponents: 1 }] },
+  { label: 'reduceMixture: 10^6 components, maxComponents 10^6 (cap)', name: 'reduceMixture', args: () => [{ mixture: comps(N, 1), maxComponents: N, mergeDistance: 0 }] },
+  // Bernoulli estimates
+  { label: 'bernoulliEstimate: 10^6 particles (1D)', name: 'bernoulliEstimate', args: () => [{ existence: 0.5, density: { particles: points(N, 1) }, radius: 1, costs: 'mpe' }] },
+  { label: 'bernoulliEstimate: 10,000-component mixture', name: 'bernoulliEstimate', args: () => [{ existence: 0.5, density: { mixture: comps(10_000) }, radius: 1, costs: 'mpe' }] },
+  { label: 'probabilityOutsideBall: 10^6 particles (2D)', name: 'probabilityOutsideBall', args: () => [{ density: { particles: points(N, 2), weights: new Float64Array(N).fill(1) }, center: [50, 50], radius: 10 }] },
+  { label: 'bernoulliThresholdCurve: 10^6 sigmas, dim 10,000 (cap)', name: 'bernoulliThresholdCurve', args: () => [{ sigmas: fill(N, (i) => 0.1 + spread(i)), radius: 1, costs: 'mpe', dim: 10_000 }] },
+  { label: 'mmucEstimate: 10^6 particles (2D)', name: 'mmucEstimate', args: () => [{ density: { particles: points(N, 2) }, radius: 1 }] },
+  { label: 'multiBernoulliPointEstimate: 10,000 components (cap)', name: 'multiBernoulliPointEstimate', args: () => [{ components: comps(10_000).map(({ mean, cov }) => ({ existence: 0.5, density: { mean, cov } })), radius: 1, costs: 'mpe' }] },
+  { label: 'bernoulliLossCurve: 10^6 existences', name: 'bernoulliLossCurve', args: () => [{ existences: fill(N, spread), missProbability: 0.1, costs: 'mpe' }] },
+  { label: 'multiObjectLikelihood: 12 objects × 1000 measurements (cap)', name: 'multiObjectLikelihood', args: () => [{ likelihoods: fill(12, (i) => fill(1000, (j) => spread(i * 1000 + j))), detectionProbability: 0.9, clutterRate: 5, clutterDensity: new Float64Array(1000).fill(0.01) }] },
+  { label: 'multiObjectLikelihood: 64 objects (cap) × 12 measurements', name: 'multiObjectLikelihood', args: () => [{ likelihoods: fill(64, (i) => fill(12, (j) => spread(i * 12 + j))), detectionProbability: 0.9, clutterRate: 5, clutterDensity: new Float64Array(12).fill(0.01) }] },
+  // bounds
+  { label: 'jdeSequentialBound: 5000 steps (cap), enumeration', name: 'jdeSequentialBound', args: () => [{ method: 'enumeration', priorInformation: 1, detectedInformation: 2, detectionProbability: 0.5, steps: 5000 }] },
+  { label: 'jdeSequentialBound: 5000 steps (cap), irf', name: 'jdeSequentialBound', args: () => [{ method: 'irf', priorInformation: 1, detectedInformation: 2, detectionProbability: 0.5, steps: 5000 }] },
+  { label: 'jdeBound: model II, 185,000 samples at λ = 1 (samples × Σ n ≤ 10^7 cap)', name: 'jdeBound', args: () => [{ model: 'II', existence: 0.5, prior: { gaussian: { mean: 0, variance: 1 } }, observation: { detectionProbability: 0.9, noiseVariance: 1 }, clutter: { rate: 1, density: { uniform: { low: -10, high: 10 } } }, samples: 185_000, seed: 1, falseAlarmError: 1, missError: 1 }] },
+  { label: 'jdeBound: model II, 10^6 samples (cap) at λ = 0.01', name: 'jdeBound', args: () => [{ model: 'II', existence: 0.5, prior: { gaussian: { mean: 0, variance: 1 } }, observation: { detectionProbability: 0.9, noiseVariance: 1 }, clutter: { rate: 0.01, density: { uniform: { low: -10, high: 10 } } }, samples: N, seed: 1, falseAlarmError: 1, missError: 1 }] },
+  { label: 'jdeBound: table prior of 10,000 points (cap)', name: 'jdeBound', args: () => [{ model: 'I', existence: 0.5, prior: { table: { x: fill(10_000, (i) => -5 + (10 * i) / 9999), density: fill(10_000, (i) => Math.exp(-0.5 * (-5 + (10 * i) / 9999) ** 2)) } }, observation: { detectionProbability: 0.9, noiseVariance: 1 }, falseAlarmError: 1, missError: 1 }] },
+  { label: 'jdeBound: 64 gain rows (cap), no clutter', name: 'jdeBound', args: () => [{ model: 'I', existence: 0.5, prior: { multivariateGaussian: { mean: [0, 0], cov: eye(2) } }, observation: { detectionProbability: 0.9, gain: fill(64, (i) => [1, spread(i)]), noiseCov: eye(64) }, falseAlarmError: 1, missError: 1 }] },
+  { label: 'jdeMonteCarlo: 10^7 / 4 samples, model II (samples × scans × (1 + ⌈λ⌉) cap)', name: 'jdeMonteCarlo', args: () => [{ model: 'II', existence: 0.5, prior: { gaussian: { mean: 0, variance: 1 } }, observation: { detectionProbability: 0.9, noiseVariance: 1 }, clutter: { rate: 1, density: { uniform: { low: -10, high: 10 } } }, samples: 2_500_000, seed: 1, falseAlarmError: 1, missError: 1 }] },
+  { label: 'jdeMonteCarlo: 5·10^6 samples, no clutter, 2 scans', name: 'jdeMonteCarlo', args: () => [{ model: 'I', existence: 0.5, prior: { gaussian: { mean: 0, variance: 1 } }, observation: { detectionProbability: 0.9, noiseVariance: 1 }, samples: 5_000_000, seed: 1, scans: 2, falseAlarmError: 1, missError: 1 }] },
+  // filters
+  { label: 'gmBernoulliPredict: 10,000 components (cap) + 10,000 birth', name: 'gmBernoulliPredict', args: () => [{ existence: 0.5, mixture: comps(10_000), transition: { F: eye(2), Q: [[0.1, 0], [0, 0.1]] }, survival: 0.99, birth: { probability: 0.1, mixture: comps(10_000) } }] },
+  { label: 'gmBernoulliUpdate: 10,000 components × 1000 reports (caps)', name: 'gmBernoulliUpdate', slice: true, args: () => [{ existence: 0.5, mixture: comps(10_000), detection: { probability: 0.9 }, reports: discs(1000), clutter: { rate: 0.25, density: 0.01 } }] },
+  { label: 'gmBernoulliUpdate: 10,000 components × 10,000 measurements (caps)', name: 'gmBernoulliUpdate', args: () => [{ existence: 0.5, mixture: comps(10_000), detection: { probability: 0.9 }, measurements: points(10_000, 2), likelihood: { H: eye(2), R: eye(2) }, clutter: { rate: 0.25, density: 0.01 } }] },
+  { label: 'GmBernoulliFilter: 10,000 components, predict and 1000 reports', name: 'GmBernoulliFilter', args: () => [filterBase(10_000), discs(1000)] },
+  { label: 'GmBernoulliFilter: 10,000 components, 10,000 measurements', name: 'GmBernoulliFilter', args: () => [filterBase(10_000), { measurements: points(10_000, 2) }] },
+  { label: 'ParticleBernoulliFilter: 200,000 particles and birth particles (caps), 10 MCMC moves', name: 'ParticleBernoulliFilter', slice: true, args: () => [{ ...filterBase(1), particles: 200_000, birthParticles: 200_000, mcmcMoves: 10, birth: { probability: 0.1, mixture: comps(1) }, seed: 1 }, discs(3)] },
+  { label: 'ParticleBernoulliFilter: 200,000 particles, 1000 reports', name: 'ParticleBernoulliFilter', args: () => [{ ...filterBase(1), particles: 200_000, seed: 1 }, discs(1000)] },
+  { label: 'airportScenario: 2000 steps (cap)', name: 'airportScenario', args: () => [{ seed: 1, steps: 2000 }] },
+  // sensor control (compareSchemes is a batch call: left out)
+  { label: 'SensorControlRun: 20,000 particles × 50 future scans (10^6 cap), renyi', name: 'SensorControlRun', args: () => [{ scheme: 'renyi', seed: 1, particles: 20_000, futureScans: 50 }] },
+  { label: 'SensorControlRun: paper size (defaults), pent', name: 'SensorControlRun', args: () => [{ scheme: 'pent', seed: 1 }] },
+  { label: 'SensorControlRun: 1000 steps (cap), 8 objects (cap), random', name: 'SensorControlRun', args: () => [{ scheme: 'random', seed: 1, steps: 1000, maxObjects: 8, particles: 10, futureScans: 1 }] },
+];

@@ -7,6 +7,10 @@ import { jdeBoundNoClutter } from 'fisst/bounds';
 
 const loaded: fisst.InitOutput = await init({ metrics: { module_or_path: './pkg/metrics_bg.wasm' } });
 const memory: WebAssembly.Memory = loaded.control.memory;
+// With the DOM types loaded, the platform types are the real ones (not `never`).
+type IsNever<T> = [T] extends [never] ? true : false;
+const memoryTyped: IsNever<fisst.InitOutput['control']['memory']> = false;
+const inputTyped: IsNever<Extract<Parameters<typeof initMetrics>[0], Response>> = false;
 await initMetrics();
 const partNames: readonly fisst.PartName[] = fisst.parts;
 
@@ -25,4 +29,4 @@ const r: number = jdeBoundNoClutter({
 // @ts-expect-error: `metrcs` names no part
 await init({ metrcs: {} });
 
-export { memory, partNames, same, filter, r };
+export { memoryTyped, inputTyped, memory, partNames, same, filter, r };

@@ -64,7 +64,7 @@ fn a_control_run_matches_the_core_step_by_step() {
         r#"{"seed":7,"scheme":"renyi","particles":60,"futureScans":8,"steps":3}"#,
     ))
     .unwrap();
-    let mut cfg = fisst::control::ControlConfig::paper(fisst::control::Scheme::Renyi, 3);
+    let mut cfg = fisst::control::ControlOptions::paper(fisst::control::Scheme::Renyi, 3);
     cfg.particles = 60;
     cfg.future_scans = 8;
     let mut core = fisst::control::ControlRun::new(cfg, 7).unwrap();
@@ -82,7 +82,7 @@ fn a_control_run_matches_the_core_step_by_step() {
         assert_eq!(num(&action, "index"), c.action.index as f64);
         assert_eq!(nums(&get(&action, "position")), c.action.position.to_vec());
         let ospa = get(&s, "ospa");
-        assert_eq!(num(&ospa, "distance"), c.ospa[0]);
+        assert_eq!(num(&ospa, "distance"), c.ospa.distance);
         let est = get(&s, "estimate");
         assert_eq!(num(&est, "cardinality"), c.estimate.cardinality as f64);
         assert_eq!(nums(&get(&est, "cardinalityPmf")).len(), 5);
