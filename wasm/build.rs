@@ -63,7 +63,12 @@ fn main() {
     let mut declared = BTreeSet::new();
     for file in &files {
         let text = fs::read_to_string(file).unwrap();
-        for key in ["unchecked_param_type = \"", "unchecked_return_type = \""] {
+        // and the core types a binding's own type holds (`#[tsify(type = "SplittingOptions")]`)
+        for key in [
+            "unchecked_param_type = \"",
+            "unchecked_return_type = \"",
+            "tsify(optional, type = \"",
+        ] {
             for piece in text.split(key).skip(1) {
                 let ts = piece.split('"').next().unwrap_or("");
                 roots.extend(type_names(ts).map(str::to_string));

@@ -74,6 +74,20 @@ pub enum Error {
         /// The largest value of `what` within the cap.
         at_most: usize,
     },
+    /// A list whose number of entries lies outside [min, max] (a scan of at most 1000 report
+    /// regions, a measurement matrix of 1 to 64 rows).
+    Count {
+        /// The list, e.g. `reports`.
+        what: String,
+        /// What it holds, plural: "regions", "rows".
+        noun: &'static str,
+        /// The number of entries found.
+        found: usize,
+        /// The fewest allowed.
+        min: usize,
+        /// The most allowed.
+        max: usize,
+    },
 }
 
 /// `Result` with [`Error`] as its default error type.
@@ -116,6 +130,27 @@ impl Error {
         }
     }
 
+    /// `Ok` if the list `what` of `found` `noun` has between `min` and `max` entries, else an
+    /// [`Error::Count`].
+    pub fn check_count(
+        what: &str,
+        noun: &'static str,
+        found: usize,
+        min: usize,
+        max: usize,
+    ) -> Result<()> {
+        if found < min || found > max {
+            return Err(Error::Count {
+                what: what.into(),
+                noun,
+                found,
+                min,
+                max,
+            });
+        }
+        Ok(())
+    }
+
     /// `value` if it lies in [`min`, `max`], else an [`Error::OutOfRange`] naming `what`.
     pub fn check_range(what: &str, value: usize, min: usize, max: usize) -> Result<usize> {
         if value < min || value > max {
@@ -130,6 +165,7 @@ impl Error {
         match &mut self {
             Error::OutOfRange { what, .. }
             | Error::OverBudget { what, .. }
+            | Error::Count { what, .. }
             | Error::InvalidParameter { what, .. }
             | Error::InvalidProbability { what, .. }
             | Error::DimensionMismatch { what, .. }
@@ -166,7 +202,8 @@ impl Error {
             | Error::NotPositiveDefinite { what }
             | Error::Unsupported { what, .. }
             | Error::OutOfRange { what, .. }
-            | Error::OverBudget { what, .. } => what,
+            | Error::OverBudget { what, .. }
+            | Error::Count { what, .. } => what,
         }
     }
 }
@@ -210,6 +247,21 @@ impl fmt::Display for Error {
                 f,
                 "{what}: {measure} = {work} exceeds {limit} (at most {at_most})"
             ),
+            // a list with no lower bound only has a cap to say
+            Error::Count {
+                what,
+                noun,
+                found,
+                min: 0,
+                max,
+            } => write!(f, "{what} has {found} {noun}, at most {max} are supported"),
+            Error::Count {
+                what,
+                noun,
+                found,
+                min,
+                max,
+            } => write!(f, "{what} must have {min} to {max} {noun}, got {found}"),
         }
     }
 }
@@ -255,6 +307,19 @@ mod tests {
             e.to_string(),
             "samples must be an integer in [100, 1000], got 5"
         );
+    }
+
+    #[test]
+    fn count_says_the_cap_or_the_interval() {
+        let e = Error::check_count("reports", "regions", 1001, 0, 1000).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "reports has 1001 regions, at most 1000 are supported"
+        );
+        let e = Error::check_count("likelihood.h", "rows", 0, 1, 64).unwrap_err();
+        assert_eq!(e.to_string(), "likelihood.h must have 1 to 64 rows, got 0");
+        assert_eq!(e.within("options").field(), "options.likelihood.h");
+        assert!(Error::check_count("reports", "regions", 1000, 0, 1000).is_ok());
     }
 
     #[test]

@@ -17,7 +17,7 @@ use crate::bounds::{
 use crate::control::case_study::{ControlOptions, Scheme};
 use crate::estimators::multi_bernoulli::{SetMetric, optimal_estimate};
 use crate::filters::{
-    BernoulliFilterConfig, Clutter, ClutterDensity, ClutterFunction, Detection, GmBernoulli,
+    BernoulliFilterOptions, Clutter, ClutterDensity, ClutterFunction, Detection, GmBernoulli,
     ParticleOptions, Splitting, default_reduction,
 };
 use crate::fov::{FovCardinality, MultiObjectDensity, SceneOptions};
@@ -136,12 +136,12 @@ fn filter_config_round_trips_and_omitted_fields_take_the_defaults() {
     for optional in ["likelihood", "splitting", "reduction", "exclusions"] {
         map.remove(optional);
     }
-    let back: BernoulliFilterConfig = serde_json::from_value(value.clone()).unwrap();
+    let back: BernoulliFilterOptions = serde_json::from_value(value.clone()).unwrap();
     assert_eq!(back.splitting, Splitting::default());
     assert_eq!(back.reduction, default_reduction());
     assert!(back.exclusions.is_empty() && back.likelihood.is_none());
     value.as_object_mut().unwrap().remove("survival");
-    let missing = serde_json::from_value::<BernoulliFilterConfig>(value).unwrap_err();
+    let missing = serde_json::from_value::<BernoulliFilterOptions>(value).unwrap_err();
     assert!(
         missing.to_string().contains("missing field `survival`"),
         "{missing}"
@@ -170,11 +170,11 @@ fn eq39_existence_and_detection_probability_1_5_are_rejected() {
 #[test]
 fn clutter_functions_cannot_be_serialised() {
     let constant = Clutter::new(2.0, ClutterDensity::Constant(0.1)).unwrap();
+    assert_eq!(round_trip(&constant), r#"{"rate":2.0,"density":0.1}"#);
     assert_eq!(
-        round_trip(&constant),
-        r#"{"rate":2.0,"density":{"Constant":0.1}}"#
+        round_trip(&Clutter::new(2.0, ClutterDensity::PerReport(vec![0.1, 0.2])).unwrap()),
+        r#"{"rate":2.0,"density":[0.1,0.2]}"#
     );
-    round_trip(&Clutter::new(2.0, ClutterDensity::PerReport(vec![0.1, 0.2])).unwrap());
     let f = ClutterDensity::Function(ClutterFunction(alloc::sync::Arc::new(|_: &[f64]| 1.0)));
     assert!(serde_json::to_string(&f).is_err());
     assert!(serde_json::from_str::<ClutterDensity>(r#"{"Function":null}"#).is_err());

@@ -6,43 +6,30 @@ use std::format;
 use std::string::String;
 use std::vec::Vec;
 
-use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::bernoulli::{BernoulliCosts, BernoulliEstimateResult, estimate_out};
-use crate::boundary::{
-    JsResult, OrThrow, check_range, core_error, range_error, read, seed_or_entropy, write,
-};
+use crate::boundary::{JsResult, core_error_rendered, range_error, read, seed_or_entropy, write};
 use crate::types::{
     self, BoxRegion, DiscRegion, MixtureComponent, Point, Region, WeightedGaussian,
 };
 use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
-    self as core_filters, BernoulliFilterConfig as CoreConfig, Birth, Clutter, ClutterDensity,
+    self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, ClutterDensity,
     Detection, EstimateOptions, FilterEstimate, GmBernoulli, LinearGaussianLikelihood,
-    LinearGaussianTransition, PredictConfig, Splitting, UpdateConfig, UpdateInfo,
+    LinearGaussianTransition, PredictOptions, Splitting, SplittingOptions, UpdateInfo,
+    UpdateOptions,
 };
 use fisst::mixture::ReductionOptions;
 use fisst::regions::Region as CoreRegion;
-use fisst::splitting::{Spacing, SplitLibrary, SplitOptions};
+use fisst::serde_shapes::ScalarOr;
 
-/// p_S when omitted.
-fn survival() -> f64 {
-    core_filters::DEFAULT_SURVIVAL
-}
-/// n_s when omitted.
-fn position_dims() -> usize {
-    core_filters::DEFAULT_POSITION_DIMS
-}
-/// N when omitted.
-fn particles() -> usize {
-    core_filters::ParticleOptions::default().particles
-}
-/// MCMC moves when omitted.
-fn mcmc_moves() -> usize {
-    core_filters::ParticleOptions::default().mcmc_moves
+/// A core error whose field is a Rust path under the argument `root`, in JavaScript names
+/// (`transition.q` → `options.transition.Q`).
+fn rendered(root: &'static str) -> impl Fn(fisst::Error) -> JsValue {
+    move |e| core_error_rendered(e, root)
 }
 
 /// The linear-Gaussian transition N(x; F x′, Q) (eq. (44)): F and Q as n rows of n numbers
@@ -57,30 +44,10 @@ pub struct Transition {
     pub q: Vec<Vec<f64>>,
 }
 
-fn square(rows: &[Vec<f64>], path: &str) -> JsResult<(Vec<f64>, usize)> {
-    let n = rows.len();
-    for (i, r) in rows.iter().enumerate() {
-        if r.len() != n {
-            return Err(range_error(format!(
-                "{path}[{i}] has length {}, expected {n}",
-                r.len()
-            )));
-        }
-    }
-    Ok((rows.concat(), n))
-}
-
 impl Transition {
-    /// The transition of the argument `root` (the core names its errors `transition.F`, …).
-    fn into_core(self, root: &str) -> JsResult<LinearGaussianTransition> {
-        if self.f.len() > 64 {
-            return Err(range_error(format!(
-                "{root}.transition.F: at most 64 states are supported"
-            )));
-        }
-        let (f, _) = square(&self.f, &format!("{root}.transition.F"))?;
-        let (q, _) = square(&self.q, &format!("{root}.transition.Q"))?;
-        LinearGaussianTransition::from_row_slices(&f, &q).or_throw_in(root)
+    /// The transition of the argument `root` (the core checks the rows and the size).
+    fn into_core(self, root: &'static str) -> JsResult<LinearGaussianTransition> {
+        LinearGaussianTransition::from_rows(&self.f, &self.q).map_err(rendered(root))
     }
 }
 
@@ -105,38 +72,10 @@ pub struct DetectionOptions {
     pub fov: Option<Region>,
 }
 
-/// c̃(ζ): one number for every report, or one per report.
-#[derive(Clone, Debug, Tsify)]
+/// c̃(ζ): one number for every report, or one per report (the core's `ScalarOr`).
+#[derive(Clone, Debug, Deserialize, Tsify)]
 #[tsify(type = "number | number[]")]
-pub enum ClutterDensityOption {
-    /// One value.
-    One(f64),
-    /// One per report.
-    PerReport(Vec<f64>),
-}
-
-impl<'de> Deserialize<'de> for ClutterDensityOption {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = ClutterDensityOption;
-            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str("a number or an array of numbers")
-            }
-            fn visit_f64<E: de::Error>(self, x: f64) -> Result<Self::Value, E> {
-                Ok(ClutterDensityOption::One(x))
-            }
-            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
-                let mut v = Vec::new();
-                while let Some(x) = seq.next_element::<f64>()? {
-                    v.push(x);
-                }
-                Ok(ClutterDensityOption::PerReport(v))
-            }
-        }
-        d.deserialize_any(V)
-    }
-}
+pub struct ClutterDensityOption(ScalarOr<f64>);
 
 /// Poisson false reports: rate λ_c and density c̃(ζ).
 #[derive(Deserialize, Tsify)]
@@ -151,10 +90,7 @@ impl ClutterOptions {
     fn into_core(self) -> Clutter {
         Clutter {
             rate: self.rate,
-            density: match self.density {
-                ClutterDensityOption::One(c) => ClutterDensity::Constant(c),
-                ClutterDensityOption::PerReport(v) => ClutterDensity::PerReport(v),
-            },
+            density: ClutterDensity::from(self.density.0),
         }
     }
 }
@@ -171,107 +107,9 @@ pub struct LikelihoodOptions {
 }
 
 impl LikelihoodOptions {
-    /// The likelihood of the argument `root` (the core names its errors `likelihood.H`, …).
-    fn into_core(self, root: &str) -> JsResult<LinearGaussianLikelihood> {
-        let path = format!("{root}.likelihood");
-        let m = self.h.len();
-        if m == 0 || m > 64 {
-            return Err(range_error(format!(
-                "{path}.H must have 1 to 64 rows, got {m}"
-            )));
-        }
-        let n = self.h[0].len();
-        for (i, r) in self.h.iter().enumerate() {
-            if r.len() != n {
-                return Err(range_error(format!(
-                    "{path}.H[{i}] has length {}, expected {n}",
-                    r.len()
-                )));
-            }
-        }
-        let (r, _) = square(&self.r, &format!("{path}.R"))?;
-        LinearGaussianLikelihood::from_row_slices(&self.h.concat(), m, &r).or_throw_in(root)
-    }
-}
-
-/// The splitting step (the options of `splitForRegions`, plus the library choice).
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase", default)]
-pub struct SplittingOptions {
-    /// false: no splitting (default true).
-    pub enabled: bool,
-    /// w_min (default 0.01).
-    pub min_weight: f64,
-    /// R (default 4: Table I), an integer in [2, 16].
-    pub components: usize,
-    /// λ (default 0.001).
-    pub lambda: f64,
-    /// true: the variance-preserving library of pyest (default false: Table I for R = 4,
-    /// λ = 0.001, the filters' default; see the core docs for the measured errors of both).
-    pub variance_preserving: bool,
-    /// ζ (default 2).
-    pub grid_bound: f64,
-    /// N_g (default 15; N_g^positionDims ≤ 20000).
-    pub grid_points: usize,
-    /// Depth cap (default 16, at most 64).
-    pub max_depth: usize,
-    /// Component cap (default 10000, at most 50000).
-    pub max_components: usize,
-}
-
-/// The defaults: the core's [`Splitting::default`] (R and λ of its library).
-impl Default for SplittingOptions {
-    fn default() -> Self {
-        let s = Splitting::default();
-        Self {
-            enabled: s.enabled,
-            min_weight: s.options.min_weight,
-            components: s.library.components(),
-            lambda: s.library.lambda(),
-            variance_preserving: false,
-            grid_bound: s.options.grid_bound,
-            grid_points: s.options.grid_points,
-            max_depth: s.options.max_depth,
-            max_components: s.options.max_components,
-        }
-    }
-}
-
-impl SplittingOptions {
-    fn into_core(self, position_dims: usize, path: &str) -> JsResult<Splitting> {
-        let r = check_range(&format!("{path}.components"), self.components, 2, 16)?;
-        check_range(&format!("{path}.maxDepth"), self.max_depth, 0, 64)?;
-        check_range(
-            &format!("{path}.maxComponents"),
-            self.max_components,
-            1,
-            50_000,
-        )?;
-        let grid = (0..position_dims).try_fold(1usize, |a, _| a.checked_mul(self.grid_points));
-        if self.grid_points < 2 || grid.is_none_or(|g| g > 20_000) {
-            return Err(range_error(format!(
-                "{path}.gridPoints must be an integer >= 2 with gridPoints^positionDims <= 20000, got {}",
-                self.grid_points
-            )));
-        }
-        let library = if self.variance_preserving {
-            SplitLibrary::variance_preserving(r, self.lambda)
-        } else {
-            SplitLibrary::for_components(r, self.lambda, Spacing::Equal)
-        }
-        .or_throw_in(path)?;
-        Ok(Splitting {
-            enabled: self.enabled,
-            library,
-            options: SplitOptions {
-                position_dims,
-                min_weight: self.min_weight,
-                grid_bound: self.grid_bound,
-                grid_points: self.grid_points,
-                max_depth: self.max_depth,
-                max_components: self.max_components,
-            },
-        })
+    /// The likelihood of the argument `root` (the core checks the rows and the size).
+    fn into_core(self, root: &'static str) -> JsResult<LinearGaussianLikelihood> {
+        LinearGaussianLikelihood::from_rows(&self.h, &self.r).map_err(rendered(root))
     }
 }
 
@@ -291,29 +129,18 @@ pub struct ReductionOptionsJs {
     pub max_components: Option<usize>,
 }
 
-fn reduction(r: Option<ReductionOptionsJs>, path: &str) -> JsResult<ReductionOptions> {
-    Ok(match r {
+fn reduction(r: Option<ReductionOptionsJs>) -> ReductionOptions {
+    match r {
         None => core_filters::default_reduction(),
-        Some(r) => {
-            if let Some(m) = r.max_components {
-                check_range(&format!("{path}.maxComponents"), m, 1, 1_000_000)?;
-            }
-            ReductionOptions {
-                prune_below: r.prune_below,
-                merge_distance: r.merge_distance,
-                max_components: r.max_components,
-            }
-        }
-    })
+        Some(r) => ReductionOptions {
+            prune_below: r.prune_below,
+            merge_distance: r.merge_distance,
+            max_components: r.max_components,
+        },
+    }
 }
 
 fn regions(items: Vec<Region>, path: &str) -> JsResult<Vec<CoreRegion>> {
-    if items.len() > 1000 {
-        return Err(range_error(format!(
-            "{path} has {} regions, at most 1000 are supported",
-            items.len()
-        )));
-    }
     items
         .into_iter()
         .enumerate()
@@ -322,12 +149,12 @@ fn regions(items: Vec<Region>, path: &str) -> JsResult<Vec<CoreRegion>> {
 }
 
 /// The birth of the argument `root` (the core names its errors `birth.probability`, …).
-fn birth(b: Option<BirthOptions>, root: &str) -> JsResult<Birth> {
+fn birth(b: Option<BirthOptions>, root: &'static str) -> JsResult<Birth> {
     match b {
         None => Ok(Birth::none()),
         Some(b) => {
             let m = types::mixture(b.mixture, &format!("{root}.birth.mixture"))?;
-            Birth::new(b.probability, m).or_throw_in(root)
+            Birth::new(b.probability, m).map_err(rendered(root))
         }
     }
 }
@@ -346,7 +173,7 @@ pub struct GmBernoulliPredictOptions {
     /// F, Q.
     pub transition: Transition,
     /// p_S in [0, 1] (default 0.99).
-    #[serde(default = "survival")]
+    #[serde(default = "core_filters::default_survival")]
     pub survival: f64,
     /// p_b and b(x); omitted: no birth.
     #[tsify(optional)]
@@ -374,12 +201,12 @@ pub fn gm_bernoulli_predict(
         existence: o.existence,
         mixture: density(o.mixture, "options.mixture")?,
     };
-    let config = PredictConfig {
+    let config = PredictOptions {
         transition: o.transition.into_core("options")?,
         survival: o.survival,
         birth: birth(o.birth, "options")?,
     };
-    let out = core_filters::gm_bernoulli_predict(&state, &config).or_throw_in("options")?;
+    let out = core_filters::gm_bernoulli_predict(&state, &config).map_err(rendered("options"))?;
     write(&GmBernoulliResult {
         existence: out.existence,
         mixture: types::mixture_out(&out.mixture),
@@ -395,7 +222,7 @@ pub struct GmBernoulliUpdateOptions {
     /// p_{k|k−1}: weights sum to 1.
     pub mixture: Vec<WeightedGaussian>,
     /// n_s (default 2, in [1, 8]).
-    #[serde(default = "position_dims")]
+    #[serde(default = "core_filters::default_position_dims")]
     pub position_dims: usize,
     /// p_D and the field of view.
     pub detection: DetectionOptions,
@@ -412,7 +239,7 @@ pub struct GmBernoulliUpdateOptions {
     /// λ_c, c̃.
     pub clutter: ClutterOptions,
     /// The splitting step; omitted: the defaults.
-    #[tsify(optional)]
+    #[tsify(optional, type = "SplittingOptions")]
     pub splitting: Option<SplittingOptions>,
     /// The reduction; omitted: prune 1e-6, merge within 2, Runnalls to 100.
     #[tsify(optional)]
@@ -444,14 +271,13 @@ fn update_config(
     splitting: Option<SplittingOptions>,
     red: Option<ReductionOptionsJs>,
     exclusions: Option<Vec<Region>>,
-    root: &str,
-) -> JsResult<UpdateConfig> {
-    check_range(&format!("{root}.positionDims"), position_dims, 1, 8)?;
+    root: &'static str,
+) -> JsResult<UpdateOptions> {
     let fov = match detection.fov {
         Some(r) => Some(r.into_core(&format!("{root}.detection.fov"))?.0),
         None => None,
     };
-    Ok(UpdateConfig {
+    Ok(UpdateOptions {
         position_dims,
         detection: Detection {
             probability: detection.probability,
@@ -459,10 +285,10 @@ fn update_config(
         },
         clutter: clutter.into_core(),
         splitting: match splitting {
-            Some(s) => s.into_core(position_dims, &format!("{root}.splitting"))?,
+            Some(s) => s.build(position_dims).map_err(rendered(root))?,
             None => Splitting::default(),
         },
-        reduction: reduction(red, &format!("{root}.reduction"))?,
+        reduction: reduction(red),
         exclusions: regions(
             exclusions.unwrap_or_default(),
             &format!("{root}.exclusions"),
@@ -470,14 +296,8 @@ fn update_config(
     })
 }
 
-fn measurements(points: Vec<Point>, path: &str) -> JsResult<Vec<Vec<f64>>> {
-    if points.len() > 10_000 {
-        return Err(range_error(format!(
-            "{path} has {} measurements, at most 10000 are supported",
-            points.len()
-        )));
-    }
-    Ok(points.into_iter().map(|p| p.0).collect())
+fn measurements(points: Vec<Point>) -> Vec<Vec<f64>> {
+    points.into_iter().map(|p| p.0).collect()
 }
 
 /// The GM Bernoulli update (Algorithm 3 of paper 001: split about ∂S, every ∂ζ and every
@@ -505,9 +325,9 @@ pub fn gm_bernoulli_update(
     let out = match (o.measurements, o.likelihood) {
         (Some(z), Some(l)) => {
             let lik = l.into_core("options")?;
-            let z = measurements(z, "options.measurements")?;
+            let z = measurements(z);
             core_filters::gm_bernoulli_update_vector(&state, &z, &lik, &config)
-                .or_throw_in("options")?
+                .map_err(rendered("options"))?
         }
         (Some(_), None) => {
             return Err(range_error(
@@ -516,7 +336,7 @@ pub fn gm_bernoulli_update(
         }
         (None, _) => {
             let r = regions(o.reports.unwrap_or_default(), "options.reports")?;
-            core_filters::gm_bernoulli_update(&state, &r, &config).or_throw_in("options")?
+            core_filters::gm_bernoulli_update(&state, &r, &config).map_err(rendered("options"))?
         }
     };
     write(&GmBernoulliUpdateResult {
@@ -540,13 +360,13 @@ pub struct BernoulliFilterConfig {
     /// F, Q.
     pub transition: Transition,
     /// p_S (default 0.99).
-    #[serde(default = "survival")]
+    #[serde(default = "core_filters::default_survival")]
     pub survival: f64,
     /// p_b, b(x); omitted: no birth.
     #[tsify(optional)]
     pub birth: Option<BirthOptions>,
     /// n_s (default 2).
-    #[serde(default = "position_dims")]
+    #[serde(default = "core_filters::default_position_dims")]
     pub position_dims: usize,
     /// p_D, fov.
     pub detection: DetectionOptions,
@@ -556,7 +376,7 @@ pub struct BernoulliFilterConfig {
     #[tsify(optional)]
     pub likelihood: Option<LikelihoodOptions>,
     /// GM filter only.
-    #[tsify(optional)]
+    #[tsify(optional, type = "SplittingOptions")]
     pub splitting: Option<SplittingOptions>,
     /// GM filter only.
     #[tsify(optional)]
@@ -565,13 +385,13 @@ pub struct BernoulliFilterConfig {
     #[tsify(optional)]
     pub exclusions: Option<Vec<Region>>,
     /// Particle filter: N (default 5000, at most 200000).
-    #[serde(default = "particles")]
+    #[serde(default = "core_filters::default_particles")]
     pub particles: usize,
     /// Particle filter: birth particles per prediction (default N/10).
     #[tsify(optional)]
     pub birth_particles: Option<usize>,
     /// Particle filter: MCMC moves per update (default 1, at most 10).
-    #[serde(default = "mcmc_moves")]
+    #[serde(default = "core_filters::default_mcmc_moves")]
     pub mcmc_moves: usize,
     /// Particle filter: the seed; omitted: fresh entropy (the `seed` getter returns it).
     #[tsify(optional)]
@@ -614,15 +434,12 @@ fn convert(c: BernoulliFilterConfig) -> JsResult<Converted> {
         reduction: update.reduction,
         exclusions: update.exclusions,
     };
-    config.validate().or_throw_in("config")?;
+    config.validate().map_err(rendered("config"))?;
     Ok(Converted {
         config,
-        particles: check_range("config.particles", c.particles, 1, 200_000)?,
-        birth_particles: match c.birth_particles {
-            Some(b) => Some(check_range("config.birthParticles", b, 0, 200_000)?),
-            None => None,
-        },
-        mcmc_moves: check_range("config.mcmcMoves", c.mcmc_moves, 0, 10)?,
+        particles: c.particles,
+        birth_particles: c.birth_particles,
+        mcmc_moves: c.mcmc_moves,
         seed: c.seed,
     })
 }
@@ -644,10 +461,7 @@ fn scan(value: JsValue) -> JsResult<Scan> {
         Ok(Scan::Reports(regions(r, "reports")?))
     } else {
         let m: MeasurementsArg = read(value, "reports")?;
-        Ok(Scan::Measurements(measurements(
-            m.measurements,
-            "reports.measurements",
-        )?))
+        Ok(Scan::Measurements(measurements(m.measurements)))
     }
 }
 
@@ -657,11 +471,11 @@ fn scan(value: JsValue) -> JsResult<Scan> {
 fn scan_error(e: fisst::Error) -> JsValue {
     let field = e.field();
     if field.starts_with("reports") {
-        core_error(e)
+        core_error_rendered(e, "")
     } else if field.starts_with("measurements") {
-        core_error(e.within("reports"))
+        core_error_rendered(e, "reports")
     } else {
-        core_error(e.within("config"))
+        core_error_rendered(e, "config")
     }
 }
 
@@ -700,7 +514,8 @@ fn estimate_options(options: JsValue) -> JsResult<EstimateOptions> {
     Ok(match (o.radius, o.costs) {
         (Some(r), Some(c)) => EstimateOptions {
             loss: Some(
-                ApplicationLoss::new(c.into_core("options.costs")?, r).or_throw_in("options")?,
+                ApplicationLoss::new(c.into_core("options.costs")?, r)
+                    .map_err(rendered("options"))?,
             ),
         },
         (None, None) => EstimateOptions::default(),
@@ -733,13 +548,13 @@ impl GmBernoulliFilterJs {
         let c: BernoulliFilterConfig = read(config, "config")?;
         let c = convert(c)?;
         Ok(Self {
-            inner: core_filters::GmBernoulliFilter::new(c.config).or_throw_in("config")?,
+            inner: core_filters::GmBernoulliFilter::new(c.config).map_err(rendered("config"))?,
         })
     }
 
     /// One prediction (40)–(49); on failure the filter is unchanged.
     pub fn predict(&mut self) -> JsResult<()> {
-        self.inner.predict().or_throw_in("config")
+        self.inner.predict().map_err(rendered("config"))
     }
 
     /// The update with `Region[]` (imprecise reports; `[]`: the non-detection update) or
@@ -764,7 +579,7 @@ impl GmBernoulliFilterJs {
     ) -> JsResult<JsValue> {
         let o = estimate_options(options)?;
         write(&estimate_result(
-            self.inner.estimate(&o).or_throw_in("options")?,
+            self.inner.estimate(&o).map_err(rendered("options"))?,
         ))
     }
 
@@ -826,7 +641,7 @@ impl ParticleBernoulliFilterJs {
         };
         Ok(Self {
             inner: core_filters::ParticleBernoulliFilter::new(c.config, options)
-                .or_throw_in("config")?,
+                .map_err(rendered("config"))?,
             seed,
         })
     }
@@ -863,7 +678,7 @@ impl ParticleBernoulliFilterJs {
             } else {
                 "options"
             };
-            core_error(e.within(root))
+            core_error_rendered(e, root)
         })?;
         write(&estimate_result(e))
     }
@@ -900,10 +715,6 @@ impl ParticleBernoulliFilterJs {
     }
 }
 
-fn airport_steps() -> usize {
-    fisst::sim::airport::AIRPORT_PAPER_STEPS
-}
-
 /// Options of `airportScenario`.
 #[derive(Deserialize, Tsify)]
 pub struct AirportScenarioOptions {
@@ -911,7 +722,7 @@ pub struct AirportScenarioOptions {
     #[tsify(optional)]
     pub seed: Option<u64>,
     /// Report times (default 60, at most 2000).
-    #[serde(default = "airport_steps")]
+    #[serde(default = "fisst::sim::airport::default_steps")]
     pub steps: usize,
 }
 
@@ -1045,14 +856,13 @@ pub fn airport_scenario(
     let o: AirportScenarioOptions = if options.is_undefined() {
         AirportScenarioOptions {
             seed: None,
-            steps: airport_steps(),
+            steps: fisst::sim::airport::default_steps(),
         }
     } else {
         read(options, "options")?
     };
-    let steps = check_range("options.steps", o.steps, 0, 2000)?;
     let seed = seed_or_entropy(o.seed)?;
-    let sc = fisst::sim::airport::airport_scenario(seed, steps).or_throw_in("options")?;
+    let sc = fisst::sim::airport::airport_scenario(seed, o.steps).map_err(rendered("options"))?;
     let anchors: Vec<AnchorOut> = sc
         .anchors
         .iter()
@@ -1102,8 +912,8 @@ pub fn airport_scenario(
             density,
         },
         exclusions: exclusions.clone(),
-        particles: particles(),
-        mcmc_moves: mcmc_moves(),
+        particles: core_filters::default_particles(),
+        mcmc_moves: core_filters::default_mcmc_moves(),
         seed,
     };
     write(&AirportScenarioResult {

@@ -7,7 +7,7 @@
 //! the seconds per step and the last run's existence and mean per step, and the existence
 //! after one empty scan from r = 0.8 with p_D = 0.9 (`empty`).
 use fisst::filters::{
-    BernoulliFilterConfig, Birth, Clutter, ClutterDensity, Detection, EstimateOptions,
+    BernoulliFilterOptions, Birth, Clutter, ClutterDensity, Detection, EstimateOptions,
     GmBernoulliFilter, LinearGaussianLikelihood, LinearGaussianTransition, ParticleBernoulliFilter,
     ParticleOptions, Splitting, default_reduction,
 };
@@ -31,12 +31,12 @@ fn density(v: &Value, what: &str) -> GaussianMixture {
     GaussianMixture::new(vec![(1.0, g)], what).expect("mixture")
 }
 
-fn config(v: &Value) -> BernoulliFilterConfig {
+fn config(v: &Value) -> BernoulliFilterOptions {
     let (f, _) = rows(&v["F"]);
     let (q, _) = rows(&v["Q"]);
     let (h, m) = rows(&v["H"]);
     let (r, _) = rows(&v["R"]);
-    BernoulliFilterConfig {
+    BernoulliFilterOptions {
         existence: v["initial"]["existence"].as_f64().expect("existence"),
         mixture: density(&v["initial"], "mixture"),
         transition: LinearGaussianTransition::from_row_slices(&f, &q).expect("transition"),

@@ -20,9 +20,9 @@ impl fmt::Debug for ClutterFunction {
     }
 }
 
-/// c̃(ζ), the spatial density of false reports.
+/// c̃(ζ), the spatial density of false reports. With the `serde` feature it reads and writes
+/// as a number or an array of numbers (`serde_shapes::ScalarOr`).
 #[derive(Clone, Debug)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum ClutterDensity {
     /// One value for every report (`clutter.density: number`): e.g. 1/|𝔸| for reports
     /// uniform over the anchors, or 1/V for vector clutter uniform over a region of volume V.
@@ -31,8 +31,37 @@ pub enum ClutterDensity {
     PerReport(Vec<f64>),
     /// A function of the vector measurement (Rust only; vector measurements only). Not
     /// (de)serialisable: serialising it is an error.
-    #[cfg_attr(feature = "serde", serde(skip))]
     Function(ClutterFunction),
+}
+
+#[cfg(feature = "serde")]
+impl From<crate::serde_shapes::ScalarOr<f64>> for ClutterDensity {
+    fn from(v: crate::serde_shapes::ScalarOr<f64>) -> Self {
+        match v {
+            crate::serde_shapes::ScalarOr::Scalar(c) => Self::Constant(c),
+            crate::serde_shapes::ScalarOr::Array(v) => Self::PerReport(v),
+        }
+    }
+}
+
+#[cfg(feature = "serde")]
+impl serde::Serialize for ClutterDensity {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> core::result::Result<S::Ok, S::Error> {
+        match self {
+            Self::Constant(c) => s.serialize_f64(*c),
+            Self::PerReport(v) => serde::Serialize::serialize(v, s),
+            Self::Function(_) => Err(serde::ser::Error::custom(
+                "a clutter density function cannot be serialised",
+            )),
+        }
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<'de> serde::Deserialize<'de> for ClutterDensity {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> core::result::Result<Self, D::Error> {
+        crate::serde_shapes::ScalarOr::<f64>::deserialize(d).map(Self::from)
+    }
 }
 
 impl PartialEq for ClutterDensity {

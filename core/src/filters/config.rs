@@ -10,7 +10,7 @@ use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::math::fns;
 use crate::mixture::ReductionOptions;
 use crate::regions::Region;
-use crate::splitting::{SplitLibrary, SplitOptions};
+use crate::splitting::{Spacing, SplitLibrary, SplitOptions};
 
 /// Tolerance on Σ w = 1 for a mixture that must be a density.
 const DENSITY_TOL: f64 = 1e-6;
@@ -124,19 +124,36 @@ impl Birth {
     }
 }
 
-/// p_S when a binding's options omit it (`survival`): 0.99, the survival of the airport
+/// p_S when a user's options omit it (`survival`): 0.99, the survival of the airport
 /// example of `001_…` Section V-C.
-pub const DEFAULT_SURVIVAL: f64 = 0.99;
+pub const fn default_survival() -> f64 {
+    0.99
+}
 
-/// n_s when a binding's options omit it (`positionDims`): 2, a position in the plane, as in
+/// n_s when a user's options omit it (`position_dims`): 2, a position in the plane, as in
 /// every example of `001_…` (and [`SplitOptions::default`]).
-pub const DEFAULT_POSITION_DIMS: usize = 2;
+pub const fn default_position_dims() -> usize {
+    2
+}
+
+/// The largest n_s (`position_dims`): 8 position coordinates (the splitting's collocation
+/// grid has N_g^{n_s} points).
+pub const MAX_POSITION_DIMS: usize = 8;
+
+/// The most regions in one list (the reports of a scan, the exclusions).
+pub const MAX_REGIONS: usize = 1000;
+
+/// The most vector measurements in one scan.
+pub const MAX_MEASUREMENTS: usize = 10_000;
+
+/// The largest reduction cap L_max (`reduction.max_components`).
+pub const MAX_REDUCED_COMPONENTS: usize = 1_000_000;
 
 /// The prediction model of eqs. (40)–(49) of `001_…` (`gmBernoulliPredict`'s `transition`,
 /// `survival`, `birth`).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct PredictConfig {
+pub struct PredictOptions {
     /// π(x | x′) = N(x; F x′, Q) (`transition: { F, Q }`).
     pub transition: LinearGaussianTransition,
     /// p_S, the probability that an existing object survives one step (`survival`).
@@ -145,7 +162,7 @@ pub struct PredictConfig {
     pub birth: Birth,
 }
 
-impl PredictConfig {
+impl PredictOptions {
     /// Checks p_S and the dimensions of the birth density against F.
     ///
     /// # Errors
@@ -165,7 +182,7 @@ impl PredictConfig {
 
 /// The splitting step of Algorithm 3 (`splitting`): the split library and the options of
 /// Algorithms 1–2 ([`crate::splitting::split_for_regions`]). `position_dims` of the options
-/// is overridden by [`UpdateConfig::position_dims`].
+/// is overridden by [`UpdateOptions::position_dims`].
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(
     feature = "serde",
@@ -189,6 +206,105 @@ impl Default for Splitting {
             library: default_split_library(),
             options: SplitOptions::default(),
         }
+    }
+}
+
+/// The splitting step as a user gives it (`splitting`): the parameters of the split library
+/// and of Algorithms 1–2, every one optional, the defaults those of [`Splitting::default`].
+/// [`SplittingOptions::build`] checks them and makes the [`Splitting`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
+pub struct SplittingOptions {
+    /// Whether to split at all (default true; false: the plain zeroth-order update on the
+    /// predicted components).
+    pub enabled: bool,
+    /// w_min, the weight below which a component is not split (default 0.01).
+    pub min_weight: f64,
+    /// R, the components of the univariate split, an integer in [2, 16] (default 4: Table I).
+    pub components: usize,
+    /// λ, the weight of the split's spread in its cost (default 0.001).
+    pub lambda: f64,
+    /// true: the variance-preserving library of pyest (default false: Table I for R = 4,
+    /// λ = 0.001, the filters' default; see [`default_split_library`] for the measured
+    /// errors of both).
+    pub variance_preserving: bool,
+    /// ζ, the half-width of the collocation grid in standard deviations (default 2).
+    pub grid_bound: f64,
+    /// N_g, the collocation points per axis (default 15; N_g^{n_s} ≤ 20000).
+    pub grid_points: usize,
+    /// The depth cap of the recursion (default 16, at most 64).
+    pub max_depth: usize,
+    /// The component cap of the recursion (default 10000, at most 50000).
+    pub max_components: usize,
+}
+
+/// The defaults: those of [`Splitting::default`] (R and λ of its library).
+impl Default for SplittingOptions {
+    fn default() -> Self {
+        let s = Splitting::default();
+        Self {
+            enabled: s.enabled,
+            min_weight: s.options.min_weight,
+            components: s.library.components(),
+            lambda: s.library.lambda(),
+            variance_preserving: false,
+            grid_bound: s.options.grid_bound,
+            grid_points: s.options.grid_points,
+            max_depth: s.options.max_depth,
+            max_components: s.options.max_components,
+        }
+    }
+}
+
+/// The most collocation points of one grid, N_g^{n_s}.
+pub const MAX_GRID_POINTS: usize = 20_000;
+
+impl SplittingOptions {
+    /// The splitting step for positions of `position_dims` coordinates.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] naming `position_dims` (outside [1, [`MAX_POSITION_DIMS`]]),
+    /// `splitting.components` (outside [2, 16]),
+    /// `splitting.max_depth` (above 64) or `splitting.max_components` (outside [1, 50000]);
+    /// [`Error::InvalidParameter`] naming `splitting.grid_points` (below 2, or
+    /// N_g^{n_s} above [`MAX_GRID_POINTS`]); those of the library's constructor
+    /// ([`SplitLibrary::for_components`], [`SplitLibrary::variance_preserving`]) under
+    /// `splitting`.
+    pub fn build(&self, position_dims: usize) -> Result<Splitting> {
+        Error::check_range("position_dims", position_dims, 1, MAX_POSITION_DIMS)?;
+        let r = Error::check_range("splitting.components", self.components, 2, 16)?;
+        Error::check_range("splitting.max_depth", self.max_depth, 0, 64)?;
+        Error::check_range("splitting.max_components", self.max_components, 1, 50_000)?;
+        let grid = (0..position_dims).try_fold(1usize, |a, _| a.checked_mul(self.grid_points));
+        if self.grid_points < 2 || grid.is_none_or(|g| g > MAX_GRID_POINTS) {
+            return Err(Error::parameter(
+                "splitting.grid_points",
+                self.grid_points as f64,
+                "an integer >= 2 with gridPoints^positionDims <= 20000",
+            ));
+        }
+        let library = if self.variance_preserving {
+            SplitLibrary::variance_preserving(r, self.lambda)
+        } else {
+            SplitLibrary::for_components(r, self.lambda, Spacing::Equal)
+        }
+        .map_err(|e| e.within("splitting"))?;
+        Ok(Splitting {
+            enabled: self.enabled,
+            library,
+            options: SplitOptions {
+                position_dims,
+                min_weight: self.min_weight,
+                grid_bound: self.grid_bound,
+                grid_points: self.grid_points,
+                max_depth: self.max_depth,
+                max_components: self.max_components,
+            },
+        })
     }
 }
 
@@ -253,7 +369,7 @@ pub fn default_reduction() -> ReductionOptions {
 /// `exclusions`).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct UpdateConfig {
+pub struct UpdateOptions {
     /// n_s: the position is the first `position_dims` state components (`positionDims`,
     /// default 2). Every region (FoV, report, exclusion) has this dimension.
     pub position_dims: usize,
@@ -273,7 +389,7 @@ pub struct UpdateConfig {
     pub exclusions: Vec<Region>,
 }
 
-impl UpdateConfig {
+impl UpdateOptions {
     /// The configuration with the default splitting, reduction and no exclusions.
     pub fn new(position_dims: usize, detection: Detection, clutter: Clutter) -> Self {
         Self {
@@ -289,15 +405,28 @@ impl UpdateConfig {
     /// Checks every field against the state dimension `state_dim`.
     ///
     /// # Errors
-    /// [`Error::InvalidParameter`] naming `positionDims` (0 or above the state dimension),
-    /// `reduction.pruneBelow`, `reduction.mergeDistance` or `reduction.maxComponents`; those
+    /// [`Error::OutOfRange`] naming `position_dims` (outside [1, [`MAX_POSITION_DIMS`]]) or
+    /// `reduction.max_components` (outside [1, [`MAX_REDUCED_COMPONENTS`]]);
+    /// [`Error::Count`] naming `exclusions` (more than [`MAX_REGIONS`]);
+    /// [`Error::InvalidParameter`] naming `position_dims` (above the state dimension),
+    /// `reduction.prune_below`, `reduction.merge_distance` or `reduction.max_components`; those
     /// of [`Detection::validate`] and [`Clutter::validate`]; [`Error::DimensionMismatch`]
     /// naming `exclusions[i]`.
     pub fn validate(&self, state_dim: usize) -> Result<()> {
-        let ns = self.position_dims;
-        if ns == 0 || ns > state_dim {
+        let ns = Error::check_range("position_dims", self.position_dims, 1, MAX_POSITION_DIMS)?;
+        Error::check_count(
+            "exclusions",
+            "regions",
+            self.exclusions.len(),
+            0,
+            MAX_REGIONS,
+        )?;
+        if let Some(m) = self.reduction.max_components {
+            Error::check_range("reduction.max_components", m, 1, MAX_REDUCED_COMPONENTS)?;
+        }
+        if ns > state_dim {
             return Err(Error::parameter(
-                "positionDims",
+                "position_dims",
                 ns as f64,
                 "an integer in [1, state dimension]",
             ));
@@ -316,7 +445,7 @@ impl UpdateConfig {
         let r = &self.reduction;
         if !(r.prune_below.is_finite() && (0.0..1.0).contains(&r.prune_below)) {
             return Err(Error::parameter(
-                "reduction.pruneBelow",
+                "reduction.prune_below",
                 r.prune_below,
                 "in [0, 1)",
             ));
@@ -325,16 +454,9 @@ impl UpdateConfig {
             && !(d.is_finite() && d >= 0.0)
         {
             return Err(Error::parameter(
-                "reduction.mergeDistance",
+                "reduction.merge_distance",
                 d,
                 "finite and >= 0",
-            ));
-        }
-        if r.max_components == Some(0) {
-            return Err(Error::parameter(
-                "reduction.maxComponents",
-                0.0,
-                "an integer >= 1",
             ));
         }
         Ok(())
@@ -347,7 +469,7 @@ impl UpdateConfig {
 /// parentheses. The particle filter ignores `splitting` and `reduction`.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct BernoulliFilterConfig {
+pub struct BernoulliFilterOptions {
     /// r_{0|0} (`existence`).
     pub existence: f64,
     /// p_{0|0} (`mixture`), weights summing to 1.
@@ -379,10 +501,10 @@ pub struct BernoulliFilterConfig {
     pub exclusions: Vec<Region>,
 }
 
-impl BernoulliFilterConfig {
+impl BernoulliFilterOptions {
     /// The prediction part.
-    pub fn predict_config(&self) -> PredictConfig {
-        PredictConfig {
+    pub fn predict_options(&self) -> PredictOptions {
+        PredictOptions {
             transition: self.transition.clone(),
             survival: self.survival,
             birth: self.birth.clone(),
@@ -390,8 +512,8 @@ impl BernoulliFilterConfig {
     }
 
     /// The update part.
-    pub fn update_config(&self) -> UpdateConfig {
-        UpdateConfig {
+    pub fn update_options(&self) -> UpdateOptions {
+        UpdateOptions {
             position_dims: self.position_dims,
             detection: self.detection.clone(),
             clutter: self.clutter.clone(),
@@ -404,9 +526,9 @@ impl BernoulliFilterConfig {
     /// Checks the whole configuration.
     ///
     /// # Errors
-    /// Those of [`GmBernoulli::new`], [`PredictConfig::validate`],
-    /// [`UpdateConfig::validate`]; [`Error::DimensionMismatch`] naming `mixture` (its
-    /// dimension differs from F's) or `likelihood.H` (its column count differs).
+    /// Those of [`GmBernoulli::new`], [`PredictOptions::validate`],
+    /// [`UpdateOptions::validate`]; [`Error::DimensionMismatch`] naming `mixture` (its
+    /// dimension differs from F's) or `likelihood.h` (its column count differs).
     pub fn validate(&self) -> Result<()> {
         GmBernoulli::new(self.existence, self.mixture.clone())?;
         let n = self.transition.dim();
@@ -417,12 +539,12 @@ impl BernoulliFilterConfig {
                 self.mixture.dim().unwrap_or(0),
             ));
         }
-        self.predict_config().validate()?;
-        self.update_config().validate(n)?;
+        self.predict_options().validate()?;
+        self.update_options().validate(n)?;
         if let Some(l) = &self.likelihood
             && l.state_dim() != n
         {
-            return Err(Error::dimension("likelihood.H", n, l.state_dim()));
+            return Err(Error::dimension("likelihood.h", n, l.state_dim()));
         }
         Ok(())
     }

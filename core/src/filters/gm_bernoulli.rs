@@ -5,7 +5,9 @@ use alloc::vec::Vec;
 
 use nalgebra::{DMatrix, DVector};
 
-use super::config::{BernoulliFilterConfig, GmBernoulli, PredictConfig, UpdateConfig, check_state};
+use super::config::{
+    BernoulliFilterOptions, GmBernoulli, PredictOptions, UpdateOptions, check_state,
+};
 use super::estimate::{EstimateOptions, FilterEstimate, gm_estimate};
 use super::likelihood::{GeneralizedLikelihood, LinearGaussianLikelihood, RegionReports};
 use crate::error::{Error, Result};
@@ -30,18 +32,18 @@ use crate::splitting::split_for_regions;
 /// mixture) is returned with existence 0.
 ///
 /// # Errors
-/// As [`GmBernoulli::new`] for `state`; [`PredictConfig::validate`];
+/// As [`GmBernoulli::new`] for `state`; [`PredictOptions::validate`];
 /// [`Error::DimensionMismatch`] naming `mixture` if its dimension differs from F's;
 /// [`Error::NotPositiveDefinite`] naming `mixture[ℓ].cov` if a predicted covariance is not
 /// positive definite.
 ///
 /// # Examples
 /// ```
-/// use fisst::filters::{Birth, GmBernoulli, LinearGaussianTransition, PredictConfig, gm_bernoulli_predict};
+/// use fisst::filters::{Birth, GmBernoulli, LinearGaussianTransition, PredictOptions, gm_bernoulli_predict};
 /// use fisst::gaussian::{Gaussian, GaussianMixture};
 /// let g = |m: f64| Gaussian::from_slices(&[m, 1.0], &[1.0, 0.0, 0.0, 0.1], "mixture[0]").unwrap();
 /// let state = GmBernoulli::new(0.6, GaussianMixture::new(vec![(1.0, g(0.0))], "mixture")?)?;
-/// let config = PredictConfig {
+/// let config = PredictOptions {
 ///     transition: LinearGaussianTransition::nearly_constant_velocity(1, 1.0, 0.01)?,
 ///     survival: 0.99,
 ///     birth: Birth::new(0.1, GaussianMixture::new(vec![(1.0, g(5.0))], "birth.mixture")?)?,
@@ -51,7 +53,7 @@ use crate::splitting::split_for_regions;
 /// assert_eq!(p.mixture.len(), 2);
 /// # Ok::<(), fisst::Error>(())
 /// ```
-pub fn gm_bernoulli_predict(state: &GmBernoulli, config: &PredictConfig) -> Result<GmBernoulli> {
+pub fn gm_bernoulli_predict(state: &GmBernoulli, config: &PredictOptions) -> Result<GmBernoulli> {
     config.validate()?;
     let total = check_state(state)?;
     let f = config.transition.f();
@@ -128,11 +130,11 @@ pub struct GmBernoulliUpdate {
 /// The empty scan of the Stone Soup comparison: r = 0.8, p_D = 0.9, the whole density in
 /// the field of view: r ← 0.8 · 0.1 / (1 − 0.8 · 0.9) = 0.2857.
 /// ```
-/// use fisst::filters::{Clutter, ClutterDensity, Detection, GmBernoulli, UpdateConfig, gm_bernoulli_update};
+/// use fisst::filters::{Clutter, ClutterDensity, Detection, GmBernoulli, UpdateOptions, gm_bernoulli_update};
 /// use fisst::gaussian::{Gaussian, GaussianMixture};
 /// let g = Gaussian::from_slices(&[0.0, 0.0], &[1.0, 0.0, 0.0, 1.0], "mixture[0]")?;
 /// let state = GmBernoulli::new(0.8, GaussianMixture::new(vec![(1.0, g)], "mixture")?)?;
-/// let config = UpdateConfig::new(2, Detection::new(0.9, None)?, Clutter::new(0.25, ClutterDensity::Constant(0.1))?);
+/// let config = UpdateOptions::new(2, Detection::new(0.9, None)?, Clutter::new(0.25, ClutterDensity::Constant(0.1))?);
 /// let out = gm_bernoulli_update(&state, &[], &config)?;
 /// assert!((out.existence - 0.08 / 0.28).abs() < 1e-15);
 /// assert!((out.delta - 0.9).abs() < 1e-15);
@@ -141,17 +143,9 @@ pub struct GmBernoulliUpdate {
 pub fn gm_bernoulli_update(
     state: &GmBernoulli,
     reports: &[Region],
-    config: &UpdateConfig,
+    config: &UpdateOptions,
 ) -> Result<GmBernoulliUpdate> {
-    for (i, r) in reports.iter().enumerate() {
-        if r.dim() != config.position_dims {
-            return Err(Error::dimension(
-                alloc::format!("reports[{i}]"),
-                config.position_dims,
-                r.dim(),
-            ));
-        }
-    }
+    super::likelihood::check_reports(reports, config.position_dims)?;
     gm_bernoulli_update_with(state, &RegionReports(reports), config)
 }
 
@@ -188,7 +182,7 @@ pub fn gm_bernoulli_update(
 ///    Runnalls to L_max = 100).
 ///
 /// # Errors
-/// [`Error::InvalidProbability`] naming `existence`; those of [`UpdateConfig::validate`];
+/// [`Error::InvalidProbability`] naming `existence`; those of [`UpdateOptions::validate`];
 /// [`Error::DimensionMismatch`] naming `clutter.density` (one value per report needed);
 /// [`Error::InvalidParameter`] naming `likelihood[i]` when g̃ returns a negative or
 /// non-finite value, `exclusions` when the exclusions remove the whole density, `reports`
@@ -198,7 +192,7 @@ pub fn gm_bernoulli_update(
 pub fn gm_bernoulli_update_with<L: GeneralizedLikelihood + ?Sized>(
     state: &GmBernoulli,
     likelihood: &L,
-    config: &UpdateConfig,
+    config: &UpdateOptions,
 ) -> Result<GmBernoulliUpdate> {
     check_state(state)?;
     config.validate(state.dim())?;
@@ -304,6 +298,13 @@ pub(crate) fn count_zero_kappa(kappa: &[f64]) -> usize {
 /// [`Error::DimensionMismatch`] naming `measurements[j]`, [`Error::InvalidParameter`] naming
 /// `measurements[j][i]`.
 pub(crate) fn check_measurements<M: AsRef<[f64]>>(measurements: &[M], mdim: usize) -> Result<()> {
+    Error::check_count(
+        "measurements",
+        "measurements",
+        measurements.len(),
+        0,
+        super::config::MAX_MEASUREMENTS,
+    )?;
     for (j, z) in measurements.iter().enumerate() {
         let z = z.as_ref();
         if z.len() != mdim {
@@ -394,7 +395,7 @@ pub(crate) fn bernoulli_weights(
 fn refine<'a>(
     mixture: &'a GaussianMixture,
     mut regions: Vec<Region>,
-    config: &UpdateConfig,
+    config: &UpdateOptions,
 ) -> Result<(alloc::borrow::Cow<'a, GaussianMixture>, usize)> {
     if let Some(fov) = &config.detection.fov
         && config.detection.probability > 0.0
@@ -481,7 +482,7 @@ fn finish(
     components: Vec<(f64, Gaussian)>,
     delta: f64,
     split_components: usize,
-    config: &UpdateConfig,
+    config: &UpdateOptions,
 ) -> Result<GmBernoulliUpdate> {
     let total: f64 = components
         .iter()
@@ -536,7 +537,7 @@ fn finish(
 /// this is the Kalman filter.
 ///
 /// # Errors
-/// [`Error::DimensionMismatch`] naming `likelihood.H` (its column count is not the state
+/// [`Error::DimensionMismatch`] naming `likelihood.h` (its column count is not the state
 /// dimension) or `measurements[j]` (length not m); [`Error::InvalidParameter`] naming
 /// `measurements[j][i]` for a non-finite coordinate; [`Error::NotPositiveDefinite`] naming
 /// `mixture[ℓ].cov` if an innovation covariance fails Cholesky; as
@@ -545,13 +546,13 @@ pub fn gm_bernoulli_update_vector<M: AsRef<[f64]>>(
     state: &GmBernoulli,
     measurements: &[M],
     likelihood: &LinearGaussianLikelihood,
-    config: &UpdateConfig,
+    config: &UpdateOptions,
 ) -> Result<GmBernoulliUpdate> {
     check_state(state)?;
     let n = state.dim();
     config.validate(n)?;
     if likelihood.state_dim() != n {
-        return Err(Error::dimension("likelihood.H", n, likelihood.state_dim()));
+        return Err(Error::dimension("likelihood.h", n, likelihood.state_dim()));
     }
     check_measurements(measurements, likelihood.measurement_dim())?;
     let kappa = config
@@ -656,7 +657,7 @@ pub struct UpdateInfo {
 
 /// The GM Bernoulli filter of Algorithm 3 of `001_0f0df91eee9b30d5.txt` as an object
 /// (`GmBernoulliFilter`): it holds the Bernoulli (r, p(x)) and the models of a
-/// [`BernoulliFilterConfig`]; [`predict`](Self::predict) applies (40)–(49),
+/// [`BernoulliFilterOptions`]; [`predict`](Self::predict) applies (40)–(49),
 /// [`update`](Self::update) the imprecise update ([`gm_bernoulli_update`]) and
 /// [`update_measurements`](Self::update_measurements) the vector update
 /// ([`gm_bernoulli_update_vector`]). An empty scan is a real update (the non-detection
@@ -664,8 +665,8 @@ pub struct UpdateInfo {
 #[derive(Clone, Debug)]
 pub struct GmBernoulliFilter {
     state: GmBernoulli,
-    predict: PredictConfig,
-    update: UpdateConfig,
+    predict: PredictOptions,
+    update: UpdateOptions,
     likelihood: Option<LinearGaussianLikelihood>,
     last: Option<UpdateInfo>,
 }
@@ -674,13 +675,13 @@ impl GmBernoulliFilter {
     /// A filter at r_{0|0}, p_{0|0} of `config`.
     ///
     /// # Errors
-    /// As [`BernoulliFilterConfig::validate`].
-    pub fn new(config: BernoulliFilterConfig) -> Result<Self> {
+    /// As [`BernoulliFilterOptions::validate`].
+    pub fn new(config: BernoulliFilterOptions) -> Result<Self> {
         config.validate()?;
         Ok(Self {
             state: GmBernoulli::new(config.existence, config.mixture.clone())?,
-            predict: config.predict_config(),
-            update: config.update_config(),
+            predict: config.predict_options(),
+            update: config.update_options(),
             likelihood: config.likelihood,
             last: None,
         })

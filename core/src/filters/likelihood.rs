@@ -57,6 +57,29 @@ impl GeneralizedLikelihood for RegionReports<'_> {
     }
 }
 
+/// Checks the report regions of one scan: at most [`MAX_REGIONS`](super::config::MAX_REGIONS)
+/// of them, each of dimension n_s = `position_dims`.
+///
+/// # Errors
+/// [`Error::Count`] naming `reports`; [`Error::DimensionMismatch`] naming `reports[i]`.
+pub(crate) fn check_reports(reports: &[Region], position_dims: usize) -> Result<()> {
+    Error::check_count(
+        "reports",
+        "regions",
+        reports.len(),
+        0,
+        super::config::MAX_REGIONS,
+    )?;
+    match reports.iter().position(|r| r.dim() != position_dims) {
+        Some(i) => Err(Error::dimension(
+            alloc::format!("reports[{i}]"),
+            position_dims,
+            reports[i].dim(),
+        )),
+        None => Ok(()),
+    }
+}
+
 /// A caller-supplied generalized likelihood: `likelihood(i, x)` = g̃(ζ_i | x) for
 /// `reports` reports, with the regions to split about.
 ///
@@ -99,6 +122,9 @@ impl<F: Fn(usize, &[f64]) -> f64> GeneralizedLikelihood for FnLikelihood<F> {
     }
 }
 
+/// The most measurement components a [`LinearGaussianLikelihood`] may have (rows of H).
+pub const MAX_MEASUREMENT_DIM: usize = 64;
+
 /// The linear-Gaussian likelihood g(z | x) = N(z; H x, R) of a vector measurement z
 /// (`likelihood: { H, R }`).
 #[derive(Clone, Debug, PartialEq)]
@@ -109,39 +135,41 @@ pub struct LinearGaussianLikelihood {
 }
 
 impl LinearGaussianLikelihood {
-    /// H (`likelihood.H`, m × n) and R (`likelihood.R`, m × m symmetric positive definite).
+    /// H (`likelihood.h`, m × n) and R (`likelihood.r`, m × m symmetric positive definite).
     ///
     /// # Errors
-    /// [`Error::DimensionMismatch`] naming `likelihood.H` (empty) or `likelihood.R` (not
-    /// m × m); [`Error::InvalidParameter`] naming `likelihood.H[i][j]` for a non-finite entry;
-    /// [`Error::NotPositiveDefinite`] naming `likelihood.R`.
+    /// [`Error::Count`] naming `likelihood.h` for more than [`MAX_MEASUREMENT_DIM`] rows;
+    /// [`Error::DimensionMismatch`] naming `likelihood.h` (empty) or `likelihood.r` (not
+    /// m × m); [`Error::InvalidParameter`] naming `likelihood.h[i][j]` for a non-finite entry;
+    /// [`Error::NotPositiveDefinite`] naming `likelihood.r`.
     pub fn new(h: DMatrix<f64>, r: DMatrix<f64>) -> Result<Self> {
         let m = h.nrows();
+        Error::check_count("likelihood.h", "rows", m, 0, MAX_MEASUREMENT_DIM)?;
         if m == 0 || h.ncols() == 0 {
-            return Err(Error::dimension("likelihood.H", 1, 0));
+            return Err(Error::dimension("likelihood.h", 1, 0));
         }
         if let Some(k) = h.iter().position(|v| !v.is_finite()) {
             return Err(Error::parameter(
-                alloc::format!("likelihood.H[{}][{}]", k % m, k / m),
+                alloc::format!("likelihood.h[{}][{}]", k % m, k / m),
                 h[k],
                 "finite",
             ));
         }
         if r.nrows() != m || r.ncols() != m {
             let found = if r.nrows() != m { r.nrows() } else { r.ncols() };
-            return Err(Error::dimension("likelihood.R", m, found));
+            return Err(Error::dimension("likelihood.r", m, found));
         }
         let noise =
-            Gaussian::new(nalgebra::DVector::zeros(m), r, "likelihood.R").map_err(|e| match e {
+            Gaussian::new(nalgebra::DVector::zeros(m), r, "likelihood.r").map_err(|e| match e {
                 Error::NotPositiveDefinite { .. } => Error::NotPositiveDefinite {
-                    what: "likelihood.R".into(),
+                    what: "likelihood.r".into(),
                 },
                 Error::InvalidParameter {
                     what,
                     value,
                     expected,
                 } => Error::InvalidParameter {
-                    what: what.replace("likelihood.R.cov", "likelihood.R"),
+                    what: what.replace("likelihood.r.cov", "likelihood.r"),
                     value,
                     expected,
                 },
@@ -150,19 +178,47 @@ impl LinearGaussianLikelihood {
         Ok(Self { h, noise })
     }
 
+    /// [`LinearGaussianLikelihood::new`] from H (m rows of n numbers) and R (m rows of m
+    /// numbers), the shape a user writes (`likelihood: { h, r }`).
+    ///
+    /// # Errors
+    /// [`Error::Count`] naming `likelihood.h` unless it has 1 to [`MAX_MEASUREMENT_DIM`]
+    /// rows; [`Error::DimensionMismatch`] naming `likelihood.h[i]` (length not row 0's) or
+    /// `likelihood.r[i]` (length not R's row count); as
+    /// [`LinearGaussianLikelihood::from_row_slices`].
+    pub fn from_rows(h: &[Vec<f64>], r: &[Vec<f64>]) -> Result<Self> {
+        let m = h.len();
+        Error::check_count("likelihood.h", "rows", m, 1, MAX_MEASUREMENT_DIM)?;
+        let n = h[0].len();
+        let rows_of = |rows: &[Vec<f64>], len: usize, what: &str| match rows
+            .iter()
+            .position(|row| row.len() != len)
+        {
+            Some(i) => Err(Error::dimension(
+                alloc::format!("{what}[{i}]"),
+                len,
+                rows[i].len(),
+            )),
+            None => Ok(rows.concat()),
+        };
+        let h = rows_of(h, n, "likelihood.h")?;
+        let r = rows_of(r, r.len(), "likelihood.r")?;
+        Self::from_row_slices(&h, m, &r)
+    }
+
     /// [`LinearGaussianLikelihood::new`] from row-major slices: H with `measurement_dim`
     /// rows (`h.len() / measurement_dim` columns) and R (m² numbers).
     ///
     /// # Errors
-    /// [`Error::DimensionMismatch`] naming `likelihood.H` (empty, or its length not a
-    /// multiple of m) or `likelihood.R` (length not m²); as [`LinearGaussianLikelihood::new`].
+    /// [`Error::DimensionMismatch`] naming `likelihood.h` (empty, or its length not a
+    /// multiple of m) or `likelihood.r` (length not m²); as [`LinearGaussianLikelihood::new`].
     pub fn from_row_slices(h: &[f64], measurement_dim: usize, r: &[f64]) -> Result<Self> {
         let m = measurement_dim;
         if m == 0 || h.is_empty() || !h.len().is_multiple_of(m) {
-            return Err(Error::dimension("likelihood.H", m.max(1), h.len()));
+            return Err(Error::dimension("likelihood.h", m.max(1), h.len()));
         }
         if r.len() != m * m {
-            return Err(Error::dimension("likelihood.R", m * m, r.len()));
+            return Err(Error::dimension("likelihood.r", m * m, r.len()));
         }
         Self::new(
             DMatrix::from_row_slice(m, h.len() / m, h),

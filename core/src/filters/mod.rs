@@ -16,7 +16,7 @@
 //! with the models [`LinearGaussianTransition`] (and the nearly-constant-velocity model
 //! (70)–(71) in any number of position dimensions), [`Detection`] (p_D inside an optional
 //! field of view, (51)), [`Clutter`] (Poisson false reports, rate λ_c and density c̃),
-//! [`Birth`], and [`BernoulliFilterConfig`] for both filter objects
+//! [`Birth`], and [`BernoulliFilterOptions`] for both filter objects
 //! ([`GmBernoulliFilter`], [`ParticleBernoulliFilter`]).
 //!
 //! # The GM update (Algorithm 3)
@@ -86,8 +86,10 @@ mod transition;
 
 pub use clutter::{Clutter, ClutterDensity, ClutterFn, ClutterFunction};
 pub use config::{
-    BernoulliFilterConfig, Birth, DEFAULT_POSITION_DIMS, DEFAULT_SURVIVAL, GmBernoulli,
-    PredictConfig, Splitting, UpdateConfig, default_reduction, default_split_library,
+    BernoulliFilterOptions, Birth, GmBernoulli, MAX_GRID_POINTS, MAX_MEASUREMENTS,
+    MAX_POSITION_DIMS, MAX_REDUCED_COMPONENTS, MAX_REGIONS, PredictOptions, Splitting,
+    SplittingOptions, UpdateOptions, default_position_dims, default_reduction,
+    default_split_library, default_survival,
 };
 pub use detection::Detection;
 pub use estimate::{EstimateOptions, FilterEstimate, gm_estimate};
@@ -96,13 +98,17 @@ pub use gm_bernoulli::{
     gm_bernoulli_update_vector, gm_bernoulli_update_with,
 };
 pub use likelihood::{
-    FnLikelihood, GeneralizedLikelihood, LinearGaussianLikelihood, RegionReports,
+    FnLikelihood, GeneralizedLikelihood, LinearGaussianLikelihood, MAX_MEASUREMENT_DIM,
+    RegionReports,
 };
 pub use particle_bernoulli::{
-    MAX_MCMC_MOVES, MAX_PARTICLES, ParticleBernoulliFilter, ParticleOptions,
+    MAX_MCMC_MOVES, MAX_PARTICLES, ParticleBernoulliFilter, ParticleOptions, default_mcmc_moves,
+    default_particles,
 };
-pub use transition::LinearGaussianTransition;
+pub use transition::{LinearGaussianTransition, MAX_STATES};
 
+#[cfg(test)]
+mod limits_tests;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]

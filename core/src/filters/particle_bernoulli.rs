@@ -5,7 +5,7 @@ use alloc::vec::Vec;
 
 use rand::Rng;
 
-use super::config::{BernoulliFilterConfig, PredictConfig, UpdateConfig};
+use super::config::{BernoulliFilterOptions, PredictOptions, UpdateOptions};
 use super::estimate::{EstimateOptions, FilterEstimate, particle_estimate};
 use super::gm_bernoulli::{
     Term, UpdateInfo, add_report, bernoulli_weights, check_measurements, count_zero_kappa,
@@ -19,9 +19,9 @@ use crate::math::sum::NeumaierSum;
 use crate::regions::Region;
 
 /// Largest particle count (memory: 2 n f64 per particle).
-pub const MAX_PARTICLES: usize = 10_000_000;
+pub const MAX_PARTICLES: usize = 200_000;
 /// Largest number of MCMC moves per update.
-pub const MAX_MCMC_MOVES: usize = 100;
+pub const MAX_MCMC_MOVES: usize = 10;
 
 /// The particle filter's own settings (`particles`, `mcmcMoves`, `seed`, `birthParticles`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -43,12 +43,22 @@ pub struct ParticleOptions {
     pub seed: u64,
 }
 
+/// N when a user's options omit it (`particles`): 5000, the paper's count.
+pub const fn default_particles() -> usize {
+    5000
+}
+
+/// The MCMC moves per update when a user's options omit them (`mcmc_moves`): 1.
+pub const fn default_mcmc_moves() -> usize {
+    1
+}
+
 impl Default for ParticleOptions {
     fn default() -> Self {
         Self {
-            particles: 5000,
+            particles: default_particles(),
             birth_particles: None,
-            mcmc_moves: 1,
+            mcmc_moves: default_mcmc_moves(),
             seed: 0,
         }
     }
@@ -68,7 +78,7 @@ enum Origin {
 /// The Bernoulli particle filter of B. Ristic, B.-T. Vo, B.-N. Vo, A. Farina, "A tutorial on
 /// Bernoulli filters: theory, implementation and applications," IEEE Trans. Signal Process.
 /// 61(13):3406–3430, 2013, doi:10.1109/TSP.2013.2257765 (reference \[23\] of `001_…`), with the
-/// models of a [`BernoulliFilterConfig`] (`ParticleBernoulliFilter`):
+/// models of a [`BernoulliFilterOptions`] (`ParticleBernoulliFilter`):
 ///
 /// - **Prediction** (their eqs. (34)–(35), with a known birth density instead of the
 ///   measurement-driven one): r_{k|k−1} = p_b (1 − r) + p_S r; every particle moves by
@@ -100,8 +110,8 @@ pub struct ParticleBernoulliFilter {
     /// F x′ of each particle's parent (survivors) since the last prediction.
     parents: Vec<f64>,
     origins: Vec<Origin>,
-    predict: PredictConfig,
-    update: UpdateConfig,
+    predict: PredictOptions,
+    update: UpdateOptions,
     likelihood: Option<LinearGaussianLikelihood>,
     options: ParticleOptions,
     rng: SeededRng,
@@ -112,37 +122,21 @@ impl ParticleBernoulliFilter {
     /// A filter at r_{0|0} with N particles drawn from p_{0|0} (equal weights).
     ///
     /// # Errors
-    /// As [`BernoulliFilterConfig::validate`]; [`Error::InvalidParameter`] naming
-    /// `particles` (0 or above [`MAX_PARTICLES`]), `birthParticles` (above
-    /// [`MAX_PARTICLES`]) or `mcmcMoves` (above [`MAX_MCMC_MOVES`]);
-    /// [`Error::NotPositiveDefinite`] naming `transition.Q` when `mcmc_moves > 0` and Q is
+    /// As [`BernoulliFilterOptions::validate`]; [`Error::OutOfRange`] naming `particles`
+    /// (outside [1, [`MAX_PARTICLES`]]), `birth_particles` (above [`MAX_PARTICLES`]) or
+    /// `mcmc_moves` (above [`MAX_MCMC_MOVES`]);
+    /// [`Error::NotPositiveDefinite`] naming `transition.q` when `mcmc_moves > 0` and Q is
     /// singular.
-    pub fn new(config: BernoulliFilterConfig, options: ParticleOptions) -> Result<Self> {
+    pub fn new(config: BernoulliFilterOptions, options: ParticleOptions) -> Result<Self> {
         config.validate()?;
-        if options.particles == 0 || options.particles > MAX_PARTICLES {
-            return Err(Error::parameter(
-                "particles",
-                options.particles as f64,
-                "an integer in [1, 10000000]",
-            ));
+        Error::check_range("particles", options.particles, 1, MAX_PARTICLES)?;
+        if let Some(b) = options.birth_particles {
+            Error::check_range("birth_particles", b, 0, MAX_PARTICLES)?;
         }
-        if options.birth_particles.is_some_and(|b| b > MAX_PARTICLES) {
-            return Err(Error::parameter(
-                "birthParticles",
-                options.birth_particles.unwrap_or(0) as f64,
-                "an integer in [0, 10000000]",
-            ));
-        }
-        if options.mcmc_moves > MAX_MCMC_MOVES {
-            return Err(Error::parameter(
-                "mcmcMoves",
-                options.mcmc_moves as f64,
-                "an integer in [0, 100]",
-            ));
-        }
+        Error::check_range("mcmc_moves", options.mcmc_moves, 0, MAX_MCMC_MOVES)?;
         if options.mcmc_moves > 0 && !config.transition.has_density() {
             return Err(Error::NotPositiveDefinite {
-                what: "transition.Q".into(),
+                what: "transition.q".into(),
             });
         }
         let dim = config.transition.dim();
@@ -160,8 +154,8 @@ impl ParticleBernoulliFilter {
             weights: alloc::vec![1.0 / n as f64; n],
             parents: Vec::new(),
             origins: Vec::new(),
-            predict: config.predict_config(),
-            update: config.update_config(),
+            predict: config.predict_options(),
+            update: config.update_options(),
             likelihood: config.likelihood,
             options,
             rng,
@@ -269,15 +263,7 @@ impl ParticleBernoulliFilter {
     /// [`ParticleBernoulliFilter::update_with`]. On `Err`, the filter is unchanged (particles,
     /// weights, existence and random stream).
     pub fn update(&mut self, reports: &[Region]) -> Result<UpdateInfo> {
-        for (i, r) in reports.iter().enumerate() {
-            if r.dim() != self.update.position_dims {
-                return Err(Error::dimension(
-                    alloc::format!("reports[{i}]"),
-                    self.update.position_dims,
-                    r.dim(),
-                ));
-            }
-        }
+        super::likelihood::check_reports(reports, self.update.position_dims)?;
         self.update_with(&RegionReports(reports))
     }
 

@@ -74,7 +74,7 @@ fn nearly_constant_velocity_in_one_to_three_dimensions() {
     for (e, field) in [
         (
             LinearGaussianTransition::nearly_constant_velocity(0, 1.0, 0.1),
-            "positionDims",
+            "position_dims",
         ),
         (
             LinearGaussianTransition::nearly_constant_velocity(2, f64::NAN, 0.1),
@@ -86,21 +86,21 @@ fn nearly_constant_velocity_in_one_to_three_dimensions() {
         ),
         (
             LinearGaussianTransition::from_row_slices(&[1.0, 0.0, 0.0], &[1.0]),
-            "transition.F",
+            "transition.f",
         ),
         (
             LinearGaussianTransition::from_row_slices(
                 &[1.0, 0.0, 0.0, 1.0],
                 &[1.0, 0.5, 0.5, -1.0],
             ),
-            "transition.Q",
+            "transition.q",
         ),
         (
             LinearGaussianTransition::from_row_slices(
                 &[1.0, f64::INFINITY, 0.0, 1.0],
                 &[1.0, 0.0, 0.0, 1.0],
             ),
-            "transition.F[0][1]",
+            "transition.f[0][1]",
         ),
     ] {
         assert_eq!(e.unwrap_err().field(), field);
@@ -129,7 +129,7 @@ fn eq40_eq49_prediction_matches_its_closed_form() {
     );
     let state =
         GmBernoulli::new(0.7, mixture(vec![(0.25, c1.clone()), (0.75, c2.clone())])).unwrap();
-    let config = PredictConfig {
+    let config = PredictOptions {
         transition,
         survival: 0.95,
         birth: Birth::new(0.2, mixture(vec![(1.0, b.clone())])).unwrap(),
@@ -153,7 +153,7 @@ fn eq40_eq49_prediction_matches_its_closed_form() {
     assert!((out.mixture.total_weight() - 1.0).abs() < 1e-15);
     // r = 0 with p_b = 0: nothing exists after prediction either; the density is kept.
     let dead = GmBernoulli::new(0.0, state.mixture.clone()).unwrap();
-    let none = PredictConfig {
+    let none = PredictOptions {
         birth: Birth::none(),
         ..config.clone()
     };
@@ -161,7 +161,7 @@ fn eq40_eq49_prediction_matches_its_closed_form() {
     assert_eq!(out.existence, 0.0);
     assert_eq!(out.mixture.len(), 2);
     // Errors.
-    let bad = PredictConfig {
+    let bad = PredictOptions {
         survival: 1.5,
         ..config.clone()
     };
@@ -193,15 +193,15 @@ fn eq40_eq49_prediction_matches_its_closed_form() {
 
 // --------------------------------------------------------------------------- empty scans
 
-fn no_fov_config(pd: f64) -> UpdateConfig {
-    UpdateConfig::new(
+fn no_fov_config(pd: f64) -> UpdateOptions {
+    UpdateOptions::new(
         2,
         Detection::new(pd, None).unwrap(),
         Clutter::new(0.25, ClutterDensity::Constant(0.01)).unwrap(),
     )
 }
 
-pub(super) fn ncv_filter_config(existence: f64, pd: f64) -> BernoulliFilterConfig {
+pub(super) fn ncv_filter_config(existence: f64, pd: f64) -> BernoulliFilterOptions {
     let g = gauss(
         &[0.0, 0.0, 1.0, 0.0],
         &[
@@ -210,7 +210,7 @@ pub(super) fn ncv_filter_config(existence: f64, pd: f64) -> BernoulliFilterConfi
         "mixture[0]",
     );
     let h = DMatrix::from_row_slice(2, 4, &[1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0]);
-    BernoulliFilterConfig {
+    BernoulliFilterOptions {
         existence,
         mixture: mixture(vec![(1.0, g)]),
         transition: LinearGaussianTransition::nearly_constant_velocity(2, 1.0, 0.01).unwrap(),
@@ -271,7 +271,7 @@ fn an_empty_scan_is_a_real_update_in_every_filter() {
 fn fig5_no_report_reduces_to_the_negative_information_scenario() {
     let sc = NegativeInformationScenario::fig5().unwrap();
     let steps = sc.run().unwrap();
-    let config = UpdateConfig {
+    let config = UpdateOptions {
         position_dims: 2,
         detection: Detection::new(sc.detection_prob, Some(sc.fov.clone())).unwrap(),
         clutter: Clutter::new(0.5, ClutterDensity::Constant(0.1)).unwrap(),
@@ -478,7 +478,7 @@ fn gm_errors(
     options: SplitOptions,
 ) -> (Errors, usize) {
     let (pd, kappa, r) = (0.9, 0.1, 0.7);
-    let config = UpdateConfig {
+    let config = UpdateOptions {
         position_dims: 2,
         detection: Detection::new(pd, Some(fov.clone())).unwrap(),
         clutter: Clutter::new(0.5, ClutterDensity::Constant(kappa / 0.5)).unwrap(),
@@ -760,7 +760,7 @@ fn eq53_update_matches_the_exact_update_with_ten_million_draws() {
 fn eq53_particle_update_matches_the_exact_update() {
     let (prior, fov, reports) = case_4d();
     let exact = exact_update(0.7, &prior, 0.9, &fov, &reports, 0.1, 1_000_000, 14);
-    let config = BernoulliFilterConfig {
+    let config = BernoulliFilterOptions {
         existence: 0.7,
         mixture: prior.clone(),
         transition: LinearGaussianTransition::nearly_constant_velocity(2, 1.0, 0.01).unwrap(),
@@ -806,9 +806,9 @@ fn eq53_particle_update_matches_the_exact_update() {
 fn alg2_the_update_does_not_depend_on_the_order_of_the_reports() {
     let (prior, fov, mut reports) = case_4d();
     reports.push(Region::ball(&[-0.5, -0.5], 1.5, "r2").unwrap());
-    let config = UpdateConfig {
+    let config = UpdateOptions {
         exclusions: vec![Region::axis_box(&[2.0, 2.0], &[3.0, 3.0], "e").unwrap()],
-        ..UpdateConfig::new(
+        ..UpdateOptions::new(
             2,
             Detection::new(0.9, Some(fov)).unwrap(),
             Clutter::new(0.5, ClutterDensity::Constant(0.2)).unwrap(),
@@ -833,10 +833,10 @@ fn alg2_the_update_does_not_depend_on_the_order_of_the_reports() {
 fn exclusions_remove_their_mass_and_keep_the_existence() {
     let prior = mixture(vec![(1.0, gauss(&[0.0, 0.0], &[1.0, 0.0, 0.0, 1.0], "p0"))]);
     let exclusion = Region::axis_box(&[0.5, -10.0], &[10.0, 10.0], "e").unwrap();
-    let config = UpdateConfig {
+    let config = UpdateOptions {
         exclusions: vec![exclusion.clone()],
         reduction: identity_reduction(),
-        ..UpdateConfig::new(
+        ..UpdateOptions::new(
             2,
             Detection::new(0.0, None).unwrap(),
             Clutter::new(0.5, ClutterDensity::Constant(0.2)).unwrap(),
@@ -859,7 +859,7 @@ fn exclusions_remove_their_mass_and_keep_the_existence() {
     assert!(inside < 0.05, "{inside}");
     // An exclusion that covers everything is an error.
     let all = Region::axis_box(&[-100.0, -100.0], &[100.0, 100.0], "e").unwrap();
-    let config = UpdateConfig {
+    let config = UpdateOptions {
         exclusions: vec![all],
         ..config
     };
@@ -919,7 +919,7 @@ fn vector_filter_is_the_kalman_filter_with_certain_detection_and_no_clutter() {
 fn vector_update_matches_its_closed_form() {
     let config = ncv_filter_config(0.6, 0.8);
     let state = GmBernoulli::new(0.6, config.mixture.clone()).unwrap();
-    let mut uc = config.update_config();
+    let mut uc = config.update_options();
     uc.reduction = identity_reduction();
     uc.clutter = Clutter::new(2.0, ClutterDensity::PerReport(vec![0.01, 0.02])).unwrap();
     let lik = config.likelihood.clone().unwrap();
@@ -970,7 +970,7 @@ fn vector_update_matches_its_closed_form() {
         DMatrix::from_row_slice(1, 1, &[-1.0]),
     )
     .unwrap_err();
-    assert_eq!(e.field(), "likelihood.R");
+    assert_eq!(e.field(), "likelihood.r");
 }
 
 /// A clutter density given as a function of the measurement.
@@ -979,7 +979,7 @@ fn clutter_density_function() {
     let config = ncv_filter_config(0.6, 0.8);
     let state = GmBernoulli::new(0.6, config.mixture.clone()).unwrap();
     let lik = config.likelihood.clone().unwrap();
-    let mut uc = config.update_config();
+    let mut uc = config.update_options();
     uc.reduction = identity_reduction();
     let f = ClutterFunction(alloc::sync::Arc::new(
         |z: &[f64]| if z[0] > 0.0 { 0.01 } else { 0.02 },
@@ -1020,7 +1020,7 @@ fn clutter_density_function() {
 #[test]
 fn a_closure_likelihood_equal_to_the_indicator_gives_the_same_update() {
     let (prior, fov, reports) = case_2d();
-    let config = UpdateConfig::new(
+    let config = UpdateOptions::new(
         2,
         Detection::new(0.9, Some(fov)).unwrap(),
         Clutter::new(0.5, ClutterDensity::Constant(0.2)).unwrap(),
@@ -1048,7 +1048,7 @@ fn a_closure_likelihood_equal_to_the_indicator_gives_the_same_update() {
 fn update_errors_name_the_field() {
     let (prior, fov, reports) = case_2d();
     let state = GmBernoulli::new(0.7, prior.clone()).unwrap();
-    let good = UpdateConfig::new(
+    let good = UpdateOptions::new(
         2,
         Detection::new(0.9, Some(fov.clone())).unwrap(),
         Clutter::new(0.5, ClutterDensity::Constant(0.2)).unwrap(),
@@ -1065,7 +1065,7 @@ fn update_errors_name_the_field() {
     c.detection.fov = None;
     assert_eq!(
         gm_bernoulli_update(&state, &[], &c).unwrap_err().field(),
-        "positionDims"
+        "position_dims",
     );
     let mut c = good.clone();
     c.clutter.density = ClutterDensity::PerReport(vec![0.1]);
@@ -1097,7 +1097,7 @@ fn update_errors_name_the_field() {
         gm_bernoulli_update(&state, &reports, &c)
             .unwrap_err()
             .field(),
-        "reduction.maxComponents"
+        "reduction.max_components"
     );
     let bad_state = GmBernoulli {
         existence: f64::NAN,

@@ -144,7 +144,7 @@ fn transactional_failures_inside_the_update_leave_the_filters_unchanged() {
     per_report.clutter = Clutter::new(0.25, ClutterDensity::PerReport(vec![0.01])).unwrap();
     let mut no_likelihood = ncv_filter_config(0.8, 0.9);
     no_likelihood.likelihood = None;
-    let cases: [(BernoulliFilterConfig, &str, &[Region]); 3] = [
+    let cases: [(BernoulliFilterOptions, &str, &[Region]); 3] = [
         (no_clutter, "reports", &far),
         (per_report, "clutter.density", &two),
         (no_likelihood, "likelihood", &[]),

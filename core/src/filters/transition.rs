@@ -25,35 +25,41 @@ pub struct LinearGaussianTransition {
     ln_det: f64,
 }
 
+/// The most states a transition may have (n ≤ 64: the eigendecompositions and the
+/// splitting's collocation grids of larger states are beyond any interactive use).
+pub const MAX_STATES: usize = 64;
+
 /// Relative tolerance of the symmetry and semidefiniteness checks of Q.
 const TOL: f64 = 1e-9;
 
 impl LinearGaussianTransition {
-    /// F (`transition.F`, n × n) and Q (`transition.Q`, n × n, symmetric positive
+    /// F (`transition.f`, n × n) and Q (`transition.q`, n × n, symmetric positive
     /// semidefinite).
     ///
     /// # Errors
-    /// [`Error::DimensionMismatch`] naming `transition.F` (not square, or empty) or
-    /// `transition.Q` (not n × n); [`Error::InvalidParameter`] naming `transition.F[i][j]` or
-    /// `transition.Q[i][j]` for a non-finite entry; [`Error::NotPositiveDefinite`] naming
-    /// `transition.Q` if Q is not symmetric (to a relative 1e-9) or has a negative
+    /// [`Error::Unsupported`] naming `transition.f` for more than [`MAX_STATES`] states;
+    /// [`Error::DimensionMismatch`] naming `transition.f` (not square, or empty) or
+    /// `transition.q` (not n × n); [`Error::InvalidParameter`] naming `transition.f[i][j]` or
+    /// `transition.q[i][j]` for a non-finite entry; [`Error::NotPositiveDefinite`] naming
+    /// `transition.q` if Q is not symmetric (to a relative 1e-9) or has a negative
     /// eigenvalue (below −1e-9 of its largest).
     pub fn new(f: DMatrix<f64>, q: DMatrix<f64>) -> Result<Self> {
         let n = f.nrows();
+        check_states(n)?;
         if n == 0 {
-            return Err(Error::dimension("transition.F", 1, 0));
+            return Err(Error::dimension("transition.f", 1, 0));
         }
         if f.ncols() != n {
-            return Err(Error::dimension("transition.F", n, f.ncols()));
+            return Err(Error::dimension("transition.f", n, f.ncols()));
         }
         if q.nrows() != n || q.ncols() != n {
             let found = if q.nrows() != n { q.nrows() } else { q.ncols() };
-            return Err(Error::dimension("transition.Q", n, found));
+            return Err(Error::dimension("transition.q", n, found));
         }
-        check_finite(&f, "transition.F")?;
-        check_finite(&q, "transition.Q")?;
+        check_finite(&f, "transition.f")?;
+        check_finite(&q, "transition.q")?;
         let not_psd = || Error::NotPositiveDefinite {
-            what: "transition.Q".into(),
+            what: "transition.q".into(),
         };
         let scale = (0..n).fold(0.0f64, |a, i| a.max(fns::abs(q[(i, i)])));
         for i in 0..n {
@@ -96,18 +102,33 @@ impl LinearGaussianTransition {
         })
     }
 
+    /// [`LinearGaussianTransition::new`] from F and Q given as n rows of n numbers each (the
+    /// shape a user writes, `transition: { f, q }`).
+    ///
+    /// # Errors
+    /// [`Error::Unsupported`] naming `transition.f` for more than [`MAX_STATES`] rows;
+    /// [`Error::DimensionMismatch`] naming `transition.f[i]` or `transition.q[i]` for a row
+    /// whose length differs from its matrix's row count; as
+    /// [`LinearGaussianTransition::from_row_slices`].
+    pub fn from_rows(f: &[Vec<f64>], q: &[Vec<f64>]) -> Result<Self> {
+        check_states(f.len())?;
+        let f = square_rows(f, "transition.f")?;
+        let q = square_rows(q, "transition.q")?;
+        Self::from_row_slices(&f, &q)
+    }
+
     /// [`LinearGaussianTransition::new`] from row-major slices of n² numbers each.
     ///
     /// # Errors
-    /// [`Error::DimensionMismatch`] naming `transition.F` if `f.len()` is not a square
-    /// number, `transition.Q` if `q.len() != f.len()`; as [`LinearGaussianTransition::new`].
+    /// [`Error::DimensionMismatch`] naming `transition.f` if `f.len()` is not a square
+    /// number, `transition.q` if `q.len() != f.len()`; as [`LinearGaussianTransition::new`].
     pub fn from_row_slices(f: &[f64], q: &[f64]) -> Result<Self> {
         let n = isqrt(f.len());
         if n * n != f.len() || n == 0 {
-            return Err(Error::dimension("transition.F", (n + 1) * (n + 1), f.len()));
+            return Err(Error::dimension("transition.f", (n + 1) * (n + 1), f.len()));
         }
         if q.len() != f.len() {
-            return Err(Error::dimension("transition.Q", f.len(), q.len()));
+            return Err(Error::dimension("transition.q", f.len(), q.len()));
         }
         Self::new(
             DMatrix::from_row_slice(n, n, f),
@@ -128,7 +149,7 @@ impl LinearGaussianTransition {
     /// (d = 2 is the airport example's 4-state model; T = 15 s, ϖ = 0.004 there.)
     ///
     /// # Errors
-    /// [`Error::InvalidParameter`] naming `positionDims` (0 or above 64), `dt` (not finite
+    /// [`Error::InvalidParameter`] naming `position_dims` (0 or above 32, [`MAX_STATES`] / 2), `dt` (not finite
     /// and > 0) or `intensity` (not finite and ≥ 0).
     ///
     /// # Examples
@@ -140,11 +161,11 @@ impl LinearGaussianTransition {
     /// # Ok::<(), fisst::Error>(())
     /// ```
     pub fn nearly_constant_velocity(position_dims: usize, dt: f64, intensity: f64) -> Result<Self> {
-        if position_dims == 0 || position_dims > 64 {
+        if position_dims == 0 || 2 * position_dims > MAX_STATES {
             return Err(Error::parameter(
-                "positionDims",
+                "position_dims",
                 position_dims as f64,
-                "an integer in [1, 64]",
+                "an integer in [1, 32]",
             ));
         }
         if !(dt.is_finite() && dt > 0.0) {
@@ -216,6 +237,31 @@ impl LinearGaussianTransition {
         }
         -0.5 * (n as f64 * crate::math::special::LN_2PI + self.ln_det + m2)
     }
+}
+
+/// At most [`MAX_STATES`] states.
+fn check_states(n: usize) -> Result<()> {
+    if n > MAX_STATES {
+        return Err(Error::Unsupported {
+            what: "transition.f".into(),
+            reason: "at most 64 states are supported",
+        });
+    }
+    Ok(())
+}
+
+/// The rows of a square matrix, concatenated; a row whose length is not the row count is
+/// an error naming `what[i]`.
+fn square_rows(rows: &[Vec<f64>], what: &str) -> Result<Vec<f64>> {
+    let n = rows.len();
+    if let Some(i) = rows.iter().position(|r| r.len() != n) {
+        return Err(Error::dimension(
+            alloc::format!("{what}[{i}]"),
+            n,
+            rows[i].len(),
+        ));
+    }
+    Ok(rows.concat())
 }
 
 fn check_finite(m: &DMatrix<f64>, what: &str) -> Result<()> {

@@ -9,7 +9,7 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::error::{Error, Result};
 use crate::filters::{
-    BernoulliFilterConfig, Birth, Clutter, ClutterDensity, Detection, LinearGaussianTransition,
+    BernoulliFilterOptions, Birth, Clutter, ClutterDensity, Detection, LinearGaussianTransition,
     Splitting, default_reduction,
 };
 use crate::gaussian::{Gaussian, GaussianMixture, normal};
@@ -127,7 +127,7 @@ pub struct AirportScenario {
     /// T = 15 s (`dt`).
     pub dt: f64,
     /// The configuration of both filters (`config`).
-    pub config: BernoulliFilterConfig,
+    pub config: BernoulliFilterOptions,
     /// The truth at t = T, 2T, … (`truth`).
     pub truth: Vec<TruthPoint>,
     /// The anchor indices reported at each step (`reports`), ascending.
@@ -187,8 +187,13 @@ pub const AIRPORT_DT: f64 = 15.0;
 pub const AIRPORT_NOISE: f64 = 0.004;
 /// The paper's number of report times (15 minutes at T = 15 s).
 pub const AIRPORT_PAPER_STEPS: usize = 60;
+
+/// The steps of [`airport_scenario`] when a user's options omit them: [`AIRPORT_PAPER_STEPS`].
+pub const fn default_steps() -> usize {
+    AIRPORT_PAPER_STEPS
+}
 /// The largest number of steps [`airport_scenario`] simulates.
-pub const MAX_AIRPORT_STEPS: usize = 100_000;
+pub const MAX_AIRPORT_STEPS: usize = 2000;
 
 /// The anchors of the layout with their radii 2 d_a / 3.
 pub fn airport_anchors() -> Vec<Anchor> {
@@ -226,7 +231,7 @@ fn blocked(p: [f64; 2], boxes: &[AxisBox]) -> bool {
 /// run ([`AirportScenario`] documents the layout, the truth and the reports).
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] naming `steps` above [`MAX_AIRPORT_STEPS`].
+/// [`Error::OutOfRange`] naming `steps` above [`MAX_AIRPORT_STEPS`].
 ///
 /// # Examples
 /// ```
@@ -237,13 +242,7 @@ fn blocked(p: [f64; 2], boxes: &[AxisBox]) -> bool {
 /// # Ok::<(), fisst::Error>(())
 /// ```
 pub fn airport_scenario(seed: u64, steps: usize) -> Result<AirportScenario> {
-    if steps > MAX_AIRPORT_STEPS {
-        return Err(Error::parameter(
-            "steps",
-            steps as f64,
-            "an integer in [0, 100000]",
-        ));
-    }
+    Error::check_range("steps", steps, 0, MAX_AIRPORT_STEPS)?;
     let anchors = airport_anchors();
     let discs: Vec<Region> = anchors.iter().map(Anchor::disc).collect::<Result<_>>()?;
     let fov = Region::union(discs.clone(), "fov")?;
@@ -371,7 +370,7 @@ fn airport_config(
     fov: Region,
     exclusions: Vec<Region>,
     anchor_list: &[Anchor],
-) -> Result<BernoulliFilterConfig> {
+) -> Result<BernoulliFilterOptions> {
     let anchors = anchor_list.len();
     let entrance = Gaussian::new(
         DVector::from_column_slice(&[5.0, 15.0, 0.5, 0.0]),
@@ -395,7 +394,7 @@ fn airport_config(
         ));
     }
     let birth = GaussianMixture::new(birth, "birth.mixture")?;
-    Ok(BernoulliFilterConfig {
+    Ok(BernoulliFilterOptions {
         existence: 0.5,
         mixture: mixture.clone(),
         transition: LinearGaussianTransition::nearly_constant_velocity(

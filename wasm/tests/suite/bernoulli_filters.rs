@@ -2,7 +2,7 @@
 //! `GmBernoulliFilter`, `ParticleBernoulliFilter`, `airportScenario`): shapes, values against
 //! the core called directly, errors, and objects left as they were after a throw.
 use super::{assert_throws, get, js, json, num, nums};
-use fisst::filters::{self as core, EstimateOptions, GmBernoulli, ParticleOptions, UpdateConfig};
+use fisst::filters::{self as core, EstimateOptions, GmBernoulli, ParticleOptions, UpdateOptions};
 use fisst::gaussian::{Gaussian, GaussianMixture};
 use fisst::regions::Region;
 use fisst_wasm::{
@@ -42,8 +42,8 @@ fn core_prior(existence: f64) -> GmBernoulli {
     .unwrap()
 }
 
-fn core_update_config() -> UpdateConfig {
-    UpdateConfig::new(
+fn core_update_config() -> UpdateOptions {
+    UpdateOptions::new(
         2,
         core::Detection::new(0.9, None).unwrap(),
         core::Clutter::new(0.25, core::ClutterDensity::Constant(0.1)).unwrap(),

@@ -1,0 +1,202 @@
+//! Tests of the filters' size limits, checked by the constructors and validations (not by a
+//! binding): 64 states, 1 to 64 measurement rows, n_s in [1, 8], the splitting's caps, 1000
+//! regions per list, 10000 measurements per scan, the particle counts, the airport's steps.
+//! Each error names the Rust field path and says the limit.
+
+use std::string::ToString;
+use std::vec;
+use std::vec::Vec;
+
+use super::tests::ncv_filter_config;
+use super::*;
+use crate::regions::Region;
+
+/// The error message of `r`.
+fn message<T: core::fmt::Debug>(r: crate::Result<T>) -> std::string::String {
+    r.unwrap_err().to_string()
+}
+
+#[test]
+fn a_transition_has_at_most_64_states_and_square_rows() {
+    let eye = |n: usize| -> Vec<Vec<f64>> {
+        (0..n)
+            .map(|i| (0..n).map(|j| f64::from(u8::from(i == j))).collect())
+            .collect()
+    };
+    assert!(LinearGaussianTransition::from_rows(&eye(64), &eye(64)).is_ok());
+    assert_eq!(
+        message(LinearGaussianTransition::from_rows(&eye(65), &eye(65))),
+        "transition.f: at most 64 states are supported"
+    );
+    let mut ragged = eye(3);
+    ragged[1].push(0.0);
+    assert_eq!(
+        message(LinearGaussianTransition::from_rows(&ragged, &eye(3))),
+        "transition.f[1] has length 4, expected 3"
+    );
+    assert_eq!(
+        message(LinearGaussianTransition::from_rows(&eye(3), &ragged)),
+        "transition.q[1] has length 4, expected 3"
+    );
+    // the model built from the rows is the one built from the matrices
+    let t = LinearGaussianTransition::from_rows(&eye(2), &eye(2)).unwrap();
+    assert_eq!(t.f(), &nalgebra::DMatrix::<f64>::identity(2, 2));
+}
+
+#[test]
+fn a_likelihood_has_1_to_64_rows() {
+    let row = |n: usize| vec![0.0; n];
+    assert_eq!(
+        message(LinearGaussianLikelihood::from_rows(&[], &[])),
+        "likelihood.h must have 1 to 64 rows, got 0"
+    );
+    let h: Vec<Vec<f64>> = (0..65).map(|_| row(2)).collect();
+    assert_eq!(
+        message(LinearGaussianLikelihood::from_rows(&h, &[])),
+        "likelihood.h must have 1 to 64 rows, got 65"
+    );
+    assert_eq!(
+        message(LinearGaussianLikelihood::from_rows(
+            &[row(2), row(3)],
+            &[row(2), row(2)]
+        )),
+        "likelihood.h[1] has length 3, expected 2"
+    );
+    assert_eq!(
+        message(LinearGaussianLikelihood::from_rows(&[row(2)], &[row(2)])),
+        "likelihood.r[0] has length 2, expected 1"
+    );
+    let l = LinearGaussianLikelihood::from_rows(&[vec![1.0, 0.0]], &[vec![0.5]]).unwrap();
+    assert_eq!((l.measurement_dim(), l.state_dim()), (1, 2));
+}
+
+#[test]
+fn position_dims_exclusions_and_the_reduction_cap_are_checked() {
+    let mut c = ncv_filter_config(0.5, 0.9);
+    c.position_dims = 9;
+    assert_eq!(
+        message(c.validate()),
+        "position_dims must be an integer in [1, 8], got 9"
+    );
+    let mut c = ncv_filter_config(0.5, 0.9);
+    c.reduction.max_components = Some(1_000_001);
+    assert_eq!(
+        message(c.validate()),
+        "reduction.max_components must be an integer in [1, 1000000], got 1000001"
+    );
+    let mut c = ncv_filter_config(0.5, 0.9);
+    let far = Region::ball(&[1e6, 1e6], 1.0, "e").unwrap();
+    c.exclusions = vec![far; MAX_REGIONS + 1];
+    assert_eq!(
+        message(c.validate()),
+        "exclusions has 1001 regions, at most 1000 are supported"
+    );
+    c.exclusions.truncate(MAX_REGIONS);
+    assert!(c.validate().is_ok());
+}
+
+#[test]
+fn the_splitting_options_build_within_their_caps() {
+    let defaults = SplittingOptions::default();
+    // the defaults build the default splitting step
+    let built = defaults.build(2).unwrap();
+    assert_eq!(built, Splitting::default());
+    let with = |f: fn(&mut SplittingOptions)| {
+        let mut o = defaults;
+        f(&mut o);
+        o
+    };
+    for (options, dims, expected) in [
+        (
+            with(|o| o.components = 17),
+            2,
+            "splitting.components must be an integer in [2, 16], got 17",
+        ),
+        (
+            with(|o| o.max_depth = 65),
+            2,
+            "splitting.max_depth must be an integer in [0, 64], got 65",
+        ),
+        (
+            with(|o| o.max_components = 0),
+            2,
+            "splitting.max_components must be an integer in [1, 50000], got 0",
+        ),
+        (
+            defaults,
+            4,
+            "splitting.grid_points must be an integer >= 2 with gridPoints^positionDims <= 20000, got 15",
+        ),
+        (
+            defaults,
+            9,
+            "position_dims must be an integer in [1, 8], got 9",
+        ),
+    ] {
+        assert_eq!(message(options.build(dims)), expected);
+    }
+    // 7^4 = 2401 collocation points is within the cap
+    assert!(with(|o| o.grid_points = 7).build(4).is_ok());
+}
+
+#[test]
+fn a_scan_has_at_most_1000_regions_or_10000_measurements() {
+    let config = ncv_filter_config(0.5, 0.9);
+    let mut gm = GmBernoulliFilter::new(config.clone()).unwrap();
+    let mut pf = ParticleBernoulliFilter::new(config, ParticleOptions::default()).unwrap();
+    let report = Region::ball(&[0.0, 0.0], 1.0, "r").unwrap();
+    let too_many = vec![report; MAX_REGIONS + 1];
+    let expected = "reports has 1001 regions, at most 1000 are supported";
+    assert_eq!(message(gm.update(&too_many)), expected);
+    assert_eq!(message(pf.update(&too_many)), expected);
+    let z = vec![vec![0.0, 0.0]; MAX_MEASUREMENTS + 1];
+    let expected = "measurements has 10001 measurements, at most 10000 are supported";
+    assert_eq!(message(gm.update_measurements(&z)), expected);
+    assert_eq!(message(pf.update_measurements(&z)), expected);
+}
+
+#[test]
+fn the_particle_counts_are_capped() {
+    let new = |options: ParticleOptions| {
+        ParticleBernoulliFilter::new(ncv_filter_config(0.5, 0.9), options)
+    };
+    let base = ParticleOptions {
+        particles: 10,
+        ..ParticleOptions::default()
+    };
+    for (options, expected) in [
+        (
+            ParticleOptions {
+                particles: MAX_PARTICLES + 1,
+                ..base
+            },
+            "particles must be an integer in [1, 200000], got 200001",
+        ),
+        (
+            ParticleOptions {
+                birth_particles: Some(MAX_PARTICLES + 1),
+                ..base
+            },
+            "birth_particles must be an integer in [0, 200000], got 200001",
+        ),
+        (
+            ParticleOptions {
+                mcmc_moves: 11,
+                ..base
+            },
+            "mcmc_moves must be an integer in [0, 10], got 11",
+        ),
+    ] {
+        assert_eq!(message(new(options)), expected);
+    }
+}
+
+#[test]
+fn the_airport_scenario_has_at_most_2000_steps() {
+    use crate::sim::airport::{MAX_AIRPORT_STEPS, airport_scenario};
+    assert_eq!(MAX_AIRPORT_STEPS, 2000);
+    assert_eq!(
+        message(airport_scenario(1, 2001)),
+        "steps must be an integer in [0, 2000], got 2001"
+    );
+}
