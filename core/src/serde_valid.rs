@@ -20,6 +20,8 @@
 //! | [`Density1`] | `{"Gaussian": {mean, variance}}`, `{"Uniform": {low, high}}`, `{"Mixture": [[w, m, v], …]}`, `{"Table": {x, density}}` | [`Density1::gaussian`], … (a table's `cdf` is recomputed) |
 //! | [`bounds::Detection`](BoundsDetection) | `{"Constant": p}`, `{"Table": {x, probability}}` | [`BoundsDetection::constant`], [`BoundsDetection::table`] |
 //! | [`LinearGaussian`] | `{detection, gain, offset, noise_variance}` | [`LinearGaussian::new`] |
+//! | [`GaussianPrior`] | `{mean, cov}` (`cov` rows) | [`GaussianPrior::new`] |
+//! | [`LinearGaussianSensor`] | `{detection_probability, gain, offset, noise_cov}` (`gain`, `noise_cov` rows) | [`LinearGaussianSensor::new`] |
 //! | [`SpatialDensity`] | `{"Gaussian": gaussian}`, `{"Mixture": mixture}`, `{"Particles": particle set}` | [`SpatialDensity::gaussian`], [`SpatialDensity::mixture`], [`SpatialDensity::particles`] |
 //! | [`Region`] | `{"box": …}`, `{"polygon": …}`, `{"ball": …}`, `{"union": [regions]}`, `{"intersection": [regions]}`, `{"complement": region}` | [`Region::from`], [`Region::union`], … |
 //!
@@ -588,5 +590,87 @@ impl<'de> Deserialize<'de> for SpatialDensity {
             SpatialDensityRepr::Particles(p) => Ok(SpatialDensity::particles(p)),
         };
         built.map_err(|e| D::Error::custom(e.to_string()))
+    }
+}
+
+// --- bounds ---
+
+use crate::bounds::{GaussianPrior, LinearGaussianSensor};
+
+/// A matrix's entries row by row (the order the bounds' constructors take).
+fn row_major(m: &DMatrix<f64>) -> Vec<f64> {
+    m.transpose().as_slice().to_vec()
+}
+
+#[derive(Serialize, Deserialize)]
+struct GaussianPriorRepr {
+    mean: Vec<f64>,
+    #[serde(with = "matrix")]
+    cov: DMatrix<f64>,
+}
+
+through_constructor!(
+    GaussianPrior,
+    GaussianPriorRepr,
+    |g| GaussianPriorRepr {
+        mean: g.mean.clone(),
+        cov: g.cov.clone(),
+    },
+    |r| GaussianPrior::new(&r.mean, &row_major(&r.cov))
+);
+
+#[derive(Serialize, Deserialize)]
+struct LinearGaussianSensorRepr {
+    detection_probability: f64,
+    #[serde(with = "matrix")]
+    gain: DMatrix<f64>,
+    offset: Vec<f64>,
+    #[serde(with = "matrix")]
+    noise_cov: DMatrix<f64>,
+}
+
+through_constructor!(
+    LinearGaussianSensor,
+    LinearGaussianSensorRepr,
+    |l| LinearGaussianSensorRepr {
+        detection_probability: l.detection,
+        gain: l.gain.clone(),
+        offset: l.offset.clone(),
+        noise_cov: l.noise.clone(),
+    },
+    |r| LinearGaussianSensor::new(
+        r.detection_probability,
+        &row_major(&r.gain),
+        r.gain.ncols(),
+        &r.offset,
+        &row_major(&r.noise_cov)
+    )
+);
+
+#[cfg(test)]
+mod bounds_tests {
+    use super::*;
+
+    #[test]
+    fn eq63_prior_and_sensor_read_back_through_their_constructors() {
+        let prior = GaussianPrior::new(&[1.0, 2.0], &[2.0, 0.5, 0.5, 1.0]).unwrap();
+        let json = serde_json::to_string(&prior).unwrap();
+        assert_eq!(json, r#"{"mean":[1.0,2.0],"cov":[[2.0,0.5],[0.5,1.0]]}"#);
+        assert_eq!(serde_json::from_str::<GaussianPrior>(&json).unwrap(), prior);
+        let sensor = LinearGaussianSensor::new(
+            0.8,
+            &[1.0, 0.5, 0.0, 2.0],
+            2,
+            &[0.1, 0.2],
+            &[1.0, 0.0, 0.0, 3.0],
+        )
+        .unwrap();
+        let json = serde_json::to_string(&sensor).unwrap();
+        assert_eq!(
+            serde_json::from_str::<LinearGaussianSensor>(&json).unwrap(),
+            sensor
+        );
+        let bad = r#"{"mean":[0.0],"cov":[[-1.0]]}"#;
+        assert!(serde_json::from_str::<GaussianPrior>(bad).is_err());
     }
 }

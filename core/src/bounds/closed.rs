@@ -12,8 +12,10 @@ use crate::math::fns;
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Phase {
     /// High probability of existence: Z = ∅ ⇒ X̂ = {x*}.
+    #[cfg_attr(feature = "serde", serde(rename = "HPE"))]
     Hpe,
     /// Low probability of existence: Z = ∅ ⇒ X̂ = ∅.
+    #[cfg_attr(feature = "serde", serde(rename = "LPE"))]
     Lpe,
 }
 
@@ -214,8 +216,8 @@ pub fn map_threshold(false_alarm_probability: f64, mean_detection: f64) -> f64 {
 }
 
 /// Corollary 3 (29): the no-clutter model Θ_b0 with any r. `inverse_information` is J_1⁻¹,
-/// `undetected_variance` σ_e²; errors name the field (`existence`, `detectionProbability`,
-/// …, as the JavaScript options do).
+/// `undetected_variance` σ_e²; errors name the field (`existence`, `detection_probability`,
+/// …).
 pub fn corollary3(
     existence: f64,
     mean_detection: f64,
@@ -225,11 +227,11 @@ pub fn corollary3(
     miss_error: f64,
 ) -> Result<NoClutterBound> {
     let r = check_probability(|| "existence".into(), existence)?;
-    let p = check_probability(|| "detectionProbability".into(), mean_detection)?;
-    check_nonnegative("inverseInformation", inverse_information)?;
-    check_nonnegative("undetectedVariance", undetected_variance)?;
-    check_nonnegative("falseAlarmError", false_alarm_error)?;
-    check_nonnegative("missError", miss_error)?;
+    let p = check_probability(|| "detection_probability".into(), mean_detection)?;
+    check_nonnegative("inverse_information", inverse_information)?;
+    check_nonnegative("undetected_variance", undetected_variance)?;
+    check_nonnegative("false_alarm_error", false_alarm_error)?;
+    check_nonnegative("miss_error", miss_error)?;
     let a = assemble(&no_clutter_ingredients(
         r,
         p,
@@ -286,11 +288,11 @@ pub fn gaussian_no_clutter(
     false_alarm_error: f64,
     miss_error: f64,
 ) -> Result<NoClutterBound> {
-    check_positive("priorVariance", prior_variance)?;
-    check_positive("posteriorVariance", posterior_variance)?;
+    check_positive("prior_variance", prior_variance)?;
+    check_positive("posterior_variance", posterior_variance)?;
     if posterior_variance > prior_variance {
         return Err(Error::parameter(
-            "posteriorVariance",
+            "posterior_variance",
             posterior_variance,
             "≤ priorVariance (observing cannot add variance on average)",
         ));
@@ -304,8 +306,8 @@ pub fn gaussian_no_clutter(
         miss_error,
     )
     .map_err(|e| match e.field() {
-        "inverseInformation" => e.map_field(|_| "posteriorVariance".into()),
-        "undetectedVariance" => e.map_field(|_| "priorVariance".into()),
+        "inverse_information" => e.map_field(|_| "posterior_variance".into()),
+        "undetected_variance" => e.map_field(|_| "prior_variance".into()),
         _ => e,
     })
 }
@@ -324,7 +326,7 @@ pub fn corollary2(
     clutter_rate: f64,
     undetected_variance: f64,
 ) -> Result<f64> {
-    check_nonnegative("clutterRate", clutter_rate)?;
+    check_nonnegative("clutter_rate", clutter_rate)?;
     let mut s = 0.0;
     for (n, &j) in inverse_information.iter().enumerate() {
         s += poisson_pmf(clutter_rate, n) * j;
@@ -355,9 +357,9 @@ pub fn gaussian_fisher_information(
     gain: f64,
     noise_variance: f64,
 ) -> Result<GaussianInformation> {
-    check_positive("priorVariance", prior_variance)?;
+    check_positive("prior_variance", prior_variance)?;
     check_finite("gain", gain)?;
-    check_positive("noiseVariance", noise_variance)?;
+    check_positive("noise_variance", noise_variance)?;
     let t = gain * gain / noise_variance;
     let information = 1.0 / prior_variance + t;
     // σx² / (1 + σx² a²/σv²): no overflow for huge σx², exact σx² for a = 0
@@ -373,9 +375,73 @@ pub fn gaussian_fisher_information(
     })
 }
 
-/// The two sequential bounds of Section III-E.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The arguments of [`gaussian_no_clutter`]: Corollary 3 in the Gaussian form (31) (constant
+/// P_o, Gaussian prior and likelihood, no false alarms).
+#[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct NoClutterOptions {
+    /// r, the prior probability that the target exists, in [0, 1].
+    pub existence: f64,
+    /// P̄_o, the (constant) probability of observing the target, in [0, 1].
+    pub detection_probability: f64,
+    /// σ_f², the prior variance (> 0); also σ_e², the variance given Z = ∅.
+    pub prior_variance: f64,
+    /// σ_h², the mean posterior variance given an observation (> 0, ≤ `prior_variance`):
+    /// J_1⁻¹ (see [`gaussian_fisher_information`]).
+    pub posterior_variance: f64,
+    /// e_0², the squared error of declaring a target that does not exist (≥ 0).
+    pub false_alarm_error: f64,
+    /// e_1², the squared error of missing a target that exists (≥ 0).
+    pub miss_error: f64,
+}
+
+impl NoClutterOptions {
+    /// [`gaussian_no_clutter`] of these options.
+    ///
+    /// # Errors
+    /// As [`gaussian_no_clutter`].
+    pub fn bound(&self) -> Result<NoClutterBound> {
+        gaussian_no_clutter(
+            self.existence,
+            self.detection_probability,
+            self.prior_variance,
+            self.posterior_variance,
+            self.false_alarm_error,
+            self.miss_error,
+        )
+    }
+}
+
+/// The arguments of [`gaussian_fisher_information`]: z = a x + v, x ~ N(x0, σ_x²),
+/// v ~ N(0, σ_v²).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct GaussianInformationOptions {
+    /// σ_x², the prior variance (> 0).
+    pub prior_variance: f64,
+    /// a, the gain (finite).
+    pub gain: f64,
+    /// σ_v², the measurement-noise variance (> 0).
+    pub noise_variance: f64,
+}
+
+impl GaussianInformationOptions {
+    /// [`gaussian_fisher_information`] of these options.
+    ///
+    /// # Errors
+    /// As [`gaussian_fisher_information`].
+    pub fn information(&self) -> Result<GaussianInformation> {
+        gaussian_fisher_information(self.prior_variance, self.gain, self.noise_variance)
+    }
+}
+
+/// The two sequential bounds of Section III-E: `enumeration` (37) or `irf` (35).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "lowercase")
+)]
 pub enum Sequential {
     /// P_k(Enum) = Σ_m B_m (J_0 + m(J_1 − J_0))⁻¹ (37), B_m the Binomial(k, P̄_o) pmf.
     Enumeration,
@@ -385,6 +451,47 @@ pub enum Sequential {
 
 /// Most steps [`sequential_bound`] computes (the Enumeration sum is O(k²) in total).
 pub const MAX_STEPS: usize = 5_000;
+
+/// The arguments of [`sequential_bound`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SequentialOptions {
+    /// `'enumeration'` (37) or `'irf'` (35).
+    pub method: Sequential,
+    /// J_0 > 0, the information of the prior (of f_d').
+    pub prior_information: f64,
+    /// J_1 ≥ J_0, the information after one observation.
+    pub detected_information: f64,
+    /// P̄_o, the probability of an observation at each step, in [0, 1].
+    pub detection_probability: f64,
+    /// k_max, the number of steps (integer in [1, 5000]; the Enumeration sum is O(steps²)).
+    pub steps: usize,
+}
+
+/// The sequential bound P_1 … P_steps of (35) or (37).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SequentialBound {
+    /// `bound[k − 1]` = P_k for k = 1 … steps.
+    pub bound: Vec<f64>,
+}
+
+impl SequentialOptions {
+    /// [`sequential_bound`] of these options (Enum ≥ IRF; equal at P̄_o ∈ {0, 1}).
+    ///
+    /// # Errors
+    /// As [`sequential_bound`].
+    pub fn bound(&self) -> Result<SequentialBound> {
+        sequential_bound(
+            self.method,
+            self.prior_information,
+            self.detected_information,
+            self.detection_probability,
+            self.steps,
+        )
+        .map(|bound| SequentialBound { bound })
+    }
+}
 
 /// P_1 … P_steps of (35) or (37) for the static state observed k times with detection
 /// probability P̄_o: `prior_information` J_0 > 0 (of f_d'), `detected_information` J_1 ≥ J_0.
@@ -396,19 +503,18 @@ pub fn sequential_bound(
     detection_probability: f64,
     steps: usize,
 ) -> Result<Vec<f64>> {
-    let j0 = check_positive("priorInformation", prior_information)?;
-    let j1 = check_positive("detectedInformation", detected_information)?;
+    // the work first: a bad `steps` is named before the values
+    Error::check_range("steps", steps, 1, MAX_STEPS)?;
+    let j0 = check_positive("prior_information", prior_information)?;
+    let j1 = check_positive("detected_information", detected_information)?;
     if j1 < j0 {
         return Err(Error::parameter(
-            "detectedInformation",
+            "detected_information",
             j1,
             "≥ priorInformation (an observation cannot remove information)",
         ));
     }
-    let p = check_probability(|| "detectionProbability".into(), detection_probability)?;
-    if steps == 0 || steps > MAX_STEPS {
-        return Err(Error::parameter("steps", steps as f64, "in [1, 5000]"));
-    }
+    let p = check_probability(|| "detection_probability".into(), detection_probability)?;
     let gain = j1 - j0;
     // ln m! for m ≤ steps, once: the Enumeration sums are then O(steps²) in all.
     let mut ln_fact = Vec::with_capacity(steps + 1);
@@ -498,6 +604,47 @@ mod tests {
     }
 
     #[test]
+    fn eq35_steps_are_checked_first_and_named() {
+        // a bad `steps` is named even when the informations are bad too
+        let e = sequential_bound(Sequential::Irf, 0.0, 0.0, 0.5, 0).unwrap_err();
+        assert_eq!(e, Error::range("steps", 0, 1, MAX_STEPS));
+        let o = SequentialOptions {
+            method: Sequential::Enumeration,
+            prior_information: 0.01,
+            detected_information: 0.05,
+            detection_probability: 0.5,
+            steps: 3,
+        };
+        let b = o.bound().unwrap();
+        assert_eq!(
+            b.bound,
+            sequential_bound(Sequential::Enumeration, 0.01, 0.05, 0.5, 3).unwrap()
+        );
+    }
+
+    #[cfg(feature = "serde")]
+    #[test]
+    fn eq31_options_read_their_rust_names() {
+        let o: NoClutterOptions = serde_json::from_str(
+            r#"{"existence": 0.5, "detection_probability": 0.3, "prior_variance": 100,
+                "posterior_variance": 25, "false_alarm_error": 150, "miss_error": 200}"#,
+        )
+        .unwrap();
+        assert_eq!(
+            o.bound().unwrap(),
+            gaussian_no_clutter(0.5, 0.3, 100.0, 25.0, 150.0, 200.0).unwrap()
+        );
+        let s: SequentialOptions = serde_json::from_str(
+            r#"{"method": "irf", "prior_information": 1, "detected_information": 2,
+                "detection_probability": 0.5, "steps": 2}"#,
+        )
+        .unwrap();
+        assert_eq!(s.method, Sequential::Irf);
+        let phase = serde_json::to_string(&Phase::Hpe).unwrap();
+        assert_eq!(phase, r#""HPE""#);
+    }
+
+    #[test]
     fn cor2_with_no_clutter_is_cor1() {
         let c2 = corollary2(0.7, &[0.25, 0.5, 0.75], 0.0, 2.0).unwrap();
         assert!((c2 - corollary1(0.7, 0.25, 2.0)).abs() < 1e-15);
@@ -506,11 +653,11 @@ mod tests {
     #[test]
     fn errors_name_the_field() {
         let e = gaussian_no_clutter(0.5, 0.5, 1.0, 2.0, 1.0, 1.0).unwrap_err();
-        assert_eq!(e.field(), "posteriorVariance");
+        assert_eq!(e.field(), "posterior_variance");
         let e = gaussian_no_clutter(0.5, 0.5, -1.0, 0.5, 1.0, 1.0).unwrap_err();
-        assert_eq!(e.field(), "priorVariance");
+        assert_eq!(e.field(), "prior_variance");
         let e = corollary3(0.5, 1.5, 1.0, 1.0, 1.0, 1.0).unwrap_err();
-        assert_eq!(e.field(), "detectionProbability");
+        assert_eq!(e.field(), "detection_probability");
         let e = gaussian_fisher_information(1.0, f64::NAN, 1.0).unwrap_err();
         assert_eq!(e.field(), "gain");
     }

@@ -13,7 +13,7 @@
 
 use alloc::vec::Vec;
 
-use crate::bounds::closed::{Assembled, Ingredients, assemble};
+use crate::bounds::closed::{Ingredients, Phase, assemble};
 use crate::bounds::model::{Density, Detection, Observation};
 use crate::bounds::theorem::{ModelI, Settings, integrate, theorem1};
 use crate::error::Result;
@@ -126,10 +126,44 @@ pub struct Example2 {
     pub eta: f64,
     /// σ_e² (the prior variance: P_o is constant).
     pub undetected_variance: f64,
-    /// Z'_0 as intervals.
+    /// e_1² used (the option, or e_0² + σ_e²).
+    pub miss_error: f64,
+    /// Z'_0 as `[low, high]` intervals of [0, 1].
     pub region: Vec<(f64, f64)>,
-    /// Both assemblies: (20) and (32).
-    pub assembled: (Assembled, Assembled),
+    /// The phase of the (20) bound.
+    pub phase: Phase,
+}
+
+/// The arguments of [`example2`]: Example 2 of paper 002 at one (r, P_o, q) (Fig. 2 right).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Example2Options {
+    /// r in [0, 1] (the figure: 0.6).
+    pub existence: f64,
+    /// P_o (constant) in [0, 1].
+    pub detection_probability: f64,
+    /// q, the false-alarm probability, in [0, 1] (the figure's abscissa).
+    pub false_alarm_probability: f64,
+    /// e_0² ≥ 0 (the figure: 1.2).
+    pub false_alarm_error: f64,
+    /// e_1² ≥ 0 (default e_0² + σ_e², the figure's choice).
+    pub miss_error: Option<f64>,
+}
+
+impl Example2Options {
+    /// [`example2`] of these options.
+    ///
+    /// # Errors
+    /// As [`example2`].
+    pub fn example2(&self) -> Result<Example2> {
+        example2(
+            self.existence,
+            self.detection_probability,
+            self.false_alarm_probability,
+            self.false_alarm_error,
+            self.miss_error,
+        )
+    }
 }
 
 /// Fig. 2 right at (r, P_o, q) with e_0² and e_1² = e_0² + σ_e² (the paper's choice when
@@ -141,7 +175,7 @@ pub fn example2(
     false_alarm_error: f64,
     miss_error: Option<f64>,
 ) -> Result<Example2> {
-    crate::error::check_probability(|| "falseAlarmProbability".into(), false_alarm_probability)?;
+    crate::error::check_probability(|| "false_alarm_probability".into(), false_alarm_probability)?;
     let obs = Example2Observation {
         detection: Detection::constant(detection_probability)?,
     };
@@ -206,8 +240,9 @@ pub fn example2(
         w,
         eta: b.eta,
         undetected_variance: sigma_e2,
+        miss_error: e1,
         region: b.region.clone(),
-        assembled: (b.assembled, paper),
+        phase: b.assembled.phase,
     })
 }
 

@@ -53,9 +53,10 @@
 mod closed;
 
 pub use closed::{
-    Assembled, GaussianInformation, Ingredients, MAX_STEPS, NoClutterBound, Phase, Sequential,
-    Terms, assemble, corollary1, corollary2, corollary3, gaussian_fisher_information,
-    gaussian_no_clutter, map_threshold, poisson_pmf, sequential_bound,
+    Assembled, GaussianInformation, GaussianInformationOptions, Ingredients, MAX_STEPS,
+    NoClutterBound, NoClutterOptions, Phase, Sequential, SequentialBound, SequentialOptions, Terms,
+    assemble, corollary1, corollary2, corollary3, gaussian_fisher_information, gaussian_no_clutter,
+    map_threshold, poisson_pmf, sequential_bound,
 };
 mod model;
 mod theorem;
@@ -69,8 +70,8 @@ pub use theorem::{Cardinality, JdeBound, Method, ModelI, Settings, theorem1};
 pub use theorem2::{MAX_CLUTTER_RATE, ModelII, theorem2};
 mod example2;
 pub use example2::{
-    Example2, Example2Observation, Example2Prior, Example2Regularity, UnitUniform, example2,
-    example2_regularity,
+    Example2, Example2Observation, Example2Options, Example2Prior, Example2Regularity, UnitUniform,
+    example2, example2_regularity,
 };
 mod jde;
 pub use jde::{

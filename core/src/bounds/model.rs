@@ -415,9 +415,9 @@ pub enum Detection {
 }
 
 impl Detection {
-    /// Validated constant; the error names `detectionProbability`.
+    /// Validated constant; the error names `detection_probability`.
     pub fn constant(p: f64) -> Result<Self> {
-        check_probability(|| "detectionProbability".into(), p)?;
+        check_probability(|| "detection_probability".into(), p)?;
         Ok(Detection::Constant(p))
     }
 
@@ -468,11 +468,11 @@ pub struct LinearGaussian {
 }
 
 impl LinearGaussian {
-    /// Validated; errors name `gain`, `offset` or `noiseVariance`.
+    /// Validated; errors name `gain`, `offset` or `noise_variance`.
     pub fn new(detection: Detection, gain: f64, offset: f64, noise_variance: f64) -> Result<Self> {
         check_finite("gain", gain)?;
         check_finite("offset", offset)?;
-        check_variance("noiseVariance", noise_variance)?;
+        check_variance("noise_variance", noise_variance)?;
         Ok(LinearGaussian {
             detection,
             gain,

@@ -238,7 +238,7 @@ impl Gaussian {
         let mut post = Vec::new();
         if scans > 1 {
             let p_inv = spd_inverse(p, "prior.cov")?;
-            let ht_r_inv = h.transpose() * spd_inverse(r, "observation.noiseCov")?;
+            let ht_r_inv = h.transpose() * spd_inverse(r, "observation.noise_cov")?;
             let info = &ht_r_inv * h;
             for m in 0..=scans {
                 let pm = spd_inverse(&(&p_inv + &info * m as f64), "P_m")?;
@@ -248,7 +248,7 @@ impl Gaussian {
         Ok(Gaussian {
             x0: prior.mean.clone(),
             lp: lower(p, "prior.cov")?,
-            lr: lower(r, "observation.noiseCov")?,
+            lr: lower(r, "observation.noise_cov")?,
             h: h.clone(),
             b: sensor.offset.clone(),
             z_mean: hx0.iter().zip(&sensor.offset).map(|(a, b)| a + b).collect(),
@@ -434,7 +434,7 @@ fn system_of(
             detection_probability: p,
         } => {
             let detection = crate::bounds::Detection::constant(p)
-                .map_err(|e| e.within("detectionProbability"))?;
+                .map_err(|e| e.within("detection_probability"))?;
             // x* and σe² of f (P_o constant, so f_d' = f): smooth, one G10K21 panel
             let f = |x: f64| Example2Prior.pdf(x);
             let m = Rule::G10K21.apply_vec(&mut |x| [f(x), x * f(x), x * x * f(x)], 0.0, 1.0);
@@ -457,7 +457,7 @@ fn system_of(
 ///
 /// # Errors
 /// [`Error::InvalidProbability`] / [`Error::InvalidParameter`] naming `existence`,
-/// `falseAlarmError`, `missError`, `falseAlarm.probability`, `clutter.rate`, `samples` (< 2,
+/// `false_alarm_error`, `miss_error`, `false_alarm.probability`, `clutter.rate`, `samples` (< 2,
 /// or samples × scans × (1 + ⌈q or λ⌉) > [`MAX_MONTE_CARLO_WORK`]) or `scans`;
 /// [`Error::Unsupported`] for false observations with a measurement of more than one
 /// coordinate, a false-observation density that cannot draw, or k > 1 scans with false
@@ -498,7 +498,7 @@ pub fn jde_monte_carlo(
             false_alarm_probability: q,
             false_alarm_density: d,
         } => {
-            check_probability(|| "falseAlarm.probability".into(), q)?;
+            check_probability(|| "false_alarm.probability".into(), q)?;
             (q > 0.0).then_some(FalseObservations::I(q, d))
         }
         VectorMeasurement::II {
@@ -514,7 +514,7 @@ pub fn jde_monte_carlo(
     .unwrap_or(FalseObservations::None);
     let (extra, density) = match false_obs {
         FalseObservations::None => (0.0, None),
-        FalseObservations::I(q, d) => (q, Some(("falseAlarm.density", d))),
+        FalseObservations::I(q, d) => (q, Some(("false_alarm.density", d))),
         FalseObservations::II(lambda, d) => (lambda, Some(("clutter.density", d))),
     };
     let work = samples
@@ -856,7 +856,7 @@ mod tests {
                 },
                 o
             ),
-            "missError"
+            "miss_error"
         );
         let clutter = MonteCarloModel {
             measurement: VectorMeasurement::II {

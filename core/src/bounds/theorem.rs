@@ -368,8 +368,8 @@ pub(crate) fn check_result(b: JdeBound) -> Result<JdeBound> {
 
 pub(crate) fn check_common(r: f64, e0: f64, e1: f64, s: &Settings) -> Result<()> {
     check_probability(|| "existence".into(), r)?;
-    check_nonnegative("falseAlarmError", e0)?;
-    check_nonnegative("missError", e1)?;
+    check_nonnegative("false_alarm_error", e0)?;
+    check_nonnegative("miss_error", e1)?;
     if !(s.tolerance.is_finite() && s.tolerance >= 1e-14 && s.tolerance <= 0.1) {
         return Err(Error::parameter(
             "tolerance",
@@ -386,13 +386,13 @@ pub(crate) fn check_common(r: f64, e0: f64, e1: f64, s: &Settings) -> Result<()>
 pub fn theorem1(m: &ModelI<'_>, s: &Settings) -> Result<JdeBound> {
     let (r, q) = (m.existence, m.false_alarm_probability);
     check_common(r, m.false_alarm_error, m.miss_error, s)?;
-    check_probability(|| "falseAlarm.probability".into(), q)?;
+    check_probability(|| "false_alarm.probability".into(), q)?;
     let tol = s.tolerance;
     check_interval("prior", m.prior.support())?;
     let (xl, xh) = m.prior.support();
     check_interval("observation", m.observation.z_range(xl, xh))?;
     if q > 0.0 {
-        check_interval("falseAlarm.density", m.false_alarm_density.support())?;
+        check_interval("false_alarm.density", m.false_alarm_density.support())?;
     }
     let st = prior_stats(m.prior, m.observation, tol);
     let (zl, zh) = m.observation.z_range(xl, xh);

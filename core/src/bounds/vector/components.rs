@@ -42,11 +42,11 @@ pub fn component_bounds_no_clutter(
 ) -> Result<Vec<NoClutterBound>> {
     let l = inverse_information.len();
     if l == 0 {
-        return Err(Error::dimension("inverseInformation", 1, 0));
+        return Err(Error::dimension("inverse_information", 1, 0));
     }
     if undetected_variance.len() != l {
         return Err(Error::dimension(
-            "undetectedVariance",
+            "undetected_variance",
             l,
             undetected_variance.len(),
         ));
@@ -66,7 +66,7 @@ pub fn component_bounds_no_clutter(
                 miss_error / lf,
             )
             .map_err(|e| match e.field() {
-                "inverseInformation" | "undetectedVariance" => {
+                "inverse_information" | "undetected_variance" => {
                     e.map_field(|f| alloc::format!("{f}[{i}]"))
                 }
                 _ => e,
@@ -97,18 +97,18 @@ pub fn gaussian_information_matrix(
 ) -> Result<(DMatrix<f64>, DMatrix<f64>)> {
     let l = prior_cov.nrows();
     if prior_cov.ncols() != l {
-        return Err(Error::dimension("priorCovariance", l, prior_cov.ncols()));
+        return Err(Error::dimension("prior_covariance", l, prior_cov.ncols()));
     }
     if gain.ncols() != l {
         return Err(Error::dimension("gain", l, gain.ncols()));
     }
     let m = gain.nrows();
     if noise_cov.nrows() != m || noise_cov.ncols() != m {
-        return Err(Error::dimension("noiseCovariance", m, noise_cov.nrows()));
+        return Err(Error::dimension("noise_covariance", m, noise_cov.nrows()));
     }
     for (what, a) in [
-        ("priorCovariance", prior_cov),
-        ("noiseCovariance", noise_cov),
+        ("prior_covariance", prior_cov),
+        ("noise_covariance", noise_cov),
     ] {
         for v in a.iter() {
             if !v.is_finite() {
@@ -119,8 +119,8 @@ pub fn gaussian_information_matrix(
     for v in gain.iter() {
         check_finite_gain(*v)?;
     }
-    let p_inv = spd_inverse(prior_cov, "priorCovariance")?;
-    let r_inv = spd_inverse(noise_cov, "noiseCovariance")?;
+    let p_inv = spd_inverse(prior_cov, "prior_covariance")?;
+    let r_inv = spd_inverse(noise_cov, "noise_covariance")?;
     let j = &p_inv + gain.transpose() * r_inv * gain;
     let inv = spd_inverse(&j, "gain")?;
     Ok((j, inv))

@@ -118,7 +118,7 @@ fn check(m: &VectorModel<'_>, s: &Settings) -> Result<bool> {
             false_alarm_probability: q,
             ..
         } => {
-            crate::error::check_probability(|| "falseAlarm.probability".into(), q)?;
+            crate::error::check_probability(|| "false_alarm.probability".into(), q)?;
             q == 0.0
         }
         VectorMeasurement::II {

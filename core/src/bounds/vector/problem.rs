@@ -55,7 +55,7 @@ pub struct LinearGaussianSensor {
 impl LinearGaussianSensor {
     /// P_o = `detection`, H = `gain` (m × `dims`, row-major; m = `gain.len() / dims`),
     /// b = `offset` (length m), R = `noise_cov` (m × m, row-major, symmetric positive
-    /// definite). Errors name `detectionProbability`, `gain`, `offset` or `noiseCov`.
+    /// definite). Errors name `detection_probability`, `gain`, `offset` or `noise_cov`.
     pub fn new(
         detection: f64,
         gain: &[f64],
@@ -63,7 +63,7 @@ impl LinearGaussianSensor {
         offset: &[f64],
         noise_cov: &[f64],
     ) -> Result<Self> {
-        crate::error::check_probability(|| "detectionProbability".into(), detection)?;
+        crate::error::check_probability(|| "detection_probability".into(), detection)?;
         if dims == 0 || gain.is_empty() || !gain.len().is_multiple_of(dims) {
             return Err(Error::dimension("gain", dims.max(1), gain.len()));
         }
@@ -79,7 +79,7 @@ impl LinearGaussianSensor {
                 return Err(Error::parameter(alloc::format!("offset[{i}]"), v, "finite"));
             }
         }
-        let noise = spd("noiseCov", m, noise_cov)?;
+        let noise = spd("noise_cov", m, noise_cov)?;
         Ok(LinearGaussianSensor {
             detection,
             gain: DMatrix::from_row_slice(m, dims, gain),

@@ -329,7 +329,7 @@ fn eq63_vector_errors_name_the_field() {
         LinearGaussianSensor::new(0.7, &[1.0, 0.0], 2, &[0.0], &[-1.0])
             .unwrap_err()
             .field(),
-        "noiseCov"
+        "noise_cov"
     );
     let three = LinearGaussianSensor::new(0.7, &[1.0, 0.0, 0.0], 3, &[0.0], &[1.0]).unwrap();
     let e = vector_bound(
