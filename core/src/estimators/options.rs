@@ -6,9 +6,11 @@ use alloc::vec;
 use alloc::vec::Vec;
 
 use super::alternatives::{AlternativeMethod, alternative_estimate};
+#[cfg(any(test, feature = "serde"))]
 use super::figures::default_cutoff;
 use super::multi_bernoulli::{MbEstimate, SetMetric, mean_error, optimal_estimate};
 use crate::error::Result;
+#[cfg(any(test, feature = "serde"))]
 use crate::metrics::{default_alpha, default_order};
 
 /// A set metric of Section III, by name (GOSPA's α is given beside it).
