@@ -66,6 +66,7 @@ fn main() {
         // and the core types a binding's own type holds (`#[tsify(type = "SplittingOptions")]`)
         for key in [
             "unchecked_param_type = \"",
+            "unchecked_optional_param_type = \"",
             "unchecked_return_type = \"",
             "tsify(optional, type = \"",
         ] {

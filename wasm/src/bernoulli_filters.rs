@@ -851,15 +851,16 @@ fn box_region(b: &fisst::regions::AxisBox) -> Region {
 /// radius: anchors[a].radius } }`.
 #[wasm_bindgen(js_name = airportScenario, unchecked_return_type = "AirportScenarioResult")]
 pub fn airport_scenario(
-    #[wasm_bindgen(unchecked_param_type = "AirportScenarioOptions | undefined")] options: JsValue,
+    #[wasm_bindgen(unchecked_optional_param_type = "AirportScenarioOptions")] options: Option<
+        JsValue,
+    >,
 ) -> JsResult<JsValue> {
-    let o: AirportScenarioOptions = if options.is_undefined() {
-        AirportScenarioOptions {
+    let o: AirportScenarioOptions = match options {
+        None => AirportScenarioOptions {
             seed: None,
             steps: fisst::sim::airport::default_steps(),
-        }
-    } else {
-        read(options, "options")?
+        },
+        Some(options) => read(options, "options")?,
     };
     let seed = seed_or_entropy(o.seed)?;
     let sc = fisst::sim::airport::airport_scenario(seed, o.steps).map_err(rendered("options"))?;

@@ -572,7 +572,9 @@ pub struct JdeBoundOptions {
 /// One summand of (17) or (23).
 #[derive(Serialize, Tsify)]
 pub struct BoundTerm {
-    /// `'estimation'`, `'undetected'`, `'missed'` or `'falseTarget'`.
+    /// Which summand: the estimation error, the undetected target, the missed detection or the
+    /// false target.
+    #[tsify(type = "'estimation' | 'undetected' | 'missed' | 'falseTarget'")]
     pub name: &'static str,
     /// Its value.
     pub value: f64,

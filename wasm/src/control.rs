@@ -168,7 +168,7 @@ impl SensorControlRunJs {
     }
 
     /// The scheme's name.
-    #[wasm_bindgen(getter)]
+    #[wasm_bindgen(getter, unchecked_return_type = "Scheme")]
     pub fn scheme(&self) -> String {
         self.inner.options().scheme.name().into()
     }

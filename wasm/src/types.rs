@@ -303,23 +303,6 @@ pub enum MultiObjectDensity {
     Glmb(Vec<GlmbHypothesis>),
 }
 
-/// The pre-serde TypeScript names, kept so code written against them still compiles.
-#[wasm_bindgen::prelude::wasm_bindgen(typescript_custom_section)]
-const TS_ALIASES: &'static str = r#"
-/** @deprecated Use `Gaussian`. */
-export type FovGaussian = Gaussian;
-/** @deprecated Use `Bernoulli`. */
-export type FovBernoulli = Bernoulli;
-/** @deprecated Use `WeightedGaussian`. */
-export type FovWeightedGaussian = WeightedGaussian;
-/** @deprecated Use `MultiObjectDensity`. */
-export type FovRfs = MultiObjectDensity;
-/** @deprecated Use `Region`. */
-export type FovRegion = Region;
-/** @deprecated Use `Covariance`. */
-export type BernoulliCovariance = Covariance;
-"#;
-
 /// A grid axis `[min, max, count]`: `count` points from `min` to `max` (like linspace).
 #[derive(Clone, Copy, Debug, Deserialize, Tsify)]
 #[tsify(type = "[number, number, number]")]

@@ -182,3 +182,11 @@ const ex2: fisst.JdeExample2Result = fisst.jdeExample2({ existence: 0.6, detecti
 const ex2Curves: [number, number] = [ex2.bound, ex2.paperBound];
 const ex2Reg: fisst.JdeExample2RegularityResult = fisst.jdeExample2Regularity();
 const notABound: boolean = ex2Reg.inverseInformation > ex2Reg.posteriorMeanMse;
+
+// Issue 26, point 3: optional where JS takes none, string unions for enumerated strings.
+const defaultAirport: fisst.AirportScenarioResult = fisst.airportScenario();
+const schemeName: 'renyi' | 'fisher' | 'pent' | 'random' = new fisst.SensorControlRun({ scheme: 'random', futureScans: 1 }).scheme;
+const boundTermNames: ('estimation' | 'undetected' | 'missed' | 'falseTarget')[] = jbq.terms.map((t) => t.name);
+// @ts-expect-error: FovGaussian (a deprecated alias) was removed; use Gaussian
+const removedAlias: fisst.FovGaussian | undefined = undefined;
+export { defaultAirport, schemeName, boundTermNames, removedAlias };

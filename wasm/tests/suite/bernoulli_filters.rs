@@ -147,7 +147,7 @@ fn reports_of(s: &fisst::sim::airport::AirportScenario, k: usize) -> JsValue {
 
 #[wasm_bindgen_test]
 fn airport_scenario_and_both_classes_equal_the_core() {
-    let s = airport_scenario(js(r#"{"seed":11,"steps":8}"#)).unwrap();
+    let s = airport_scenario(Some(js(r#"{"seed":11,"steps":8}"#))).unwrap();
     assert_eq!(
         keys(&s),
         r#"["anchors","exclusions","concourse","fov","dt","config","truth","reports","trueReports","inFov","seed"]"#
@@ -166,7 +166,7 @@ fn airport_scenario_and_both_classes_equal_the_core() {
     }
     // The same seed gives the same scenario.
     assert_eq!(
-        json(&airport_scenario(js(r#"{"seed":11,"steps":8}"#)).unwrap()),
+        json(&airport_scenario(Some(js(r#"{"seed":11,"steps":8}"#))).unwrap()),
         json(&s)
     );
     // The JS config through both classes equals the core filters on the core's config.
@@ -277,12 +277,12 @@ fn errors_name_the_field() {
         "reports[0]",
     );
     assert_throws(
-        airport_scenario(js(r#"{"steps":2001}"#)),
+        airport_scenario(Some(js(r#"{"steps":2001}"#))),
         "RangeError",
         "options.steps",
     );
     assert_throws(
-        airport_scenario(js(r#"{"steps":-1}"#)),
+        airport_scenario(Some(js(r#"{"steps":-1}"#))),
         "RangeError",
         "options.steps",
     );
