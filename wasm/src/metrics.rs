@@ -8,7 +8,9 @@ use wasm_bindgen::prelude::*;
 use crate::boundary::{JsResult, OrThrow, read, write};
 use crate::names::Renamed;
 use crate::types::PointSet;
-use fisst::metrics::{GospaOptions, GospaSeriesOptions, OspaOptions, OspaSeriesOptions};
+use fisst::metrics::{
+    Gospa, GospaOptions, GospaSeriesOptions, Ospa, OspaOptions, OspaSeriesOptions,
+};
 
 /// Result of `uospa`.
 #[derive(Serialize, Tsify)]
@@ -119,7 +121,12 @@ pub fn gospa_series(
     #[wasm_bindgen(unchecked_param_type = "GospaSeriesOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: GospaSeriesOptions = read(options, "options")?;
-    write(&Renamed::new(&o.series().or_throw_in("options")?))
+    // the generic series, not `o.series()`: the assignment code is then instantiated once, in
+    // this crate, for every metric here (a core non-generic wrapper would add a second copy)
+    let g = Gospa::new(o.c, o.p, o.alpha).or_throw_in("options")?;
+    write(&Renamed::new(
+        &g.series(&o.truths, &o.estimates).or_throw_in("options")?,
+    ))
 }
 
 /// OSPA with its localisation and cardinality parts over a whole scenario in one call
@@ -129,7 +136,12 @@ pub fn ospa_series(
     #[wasm_bindgen(unchecked_param_type = "OspaSeriesOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: OspaSeriesOptions = read(options, "options")?;
-    write(&Renamed::new(&o.series().or_throw_in("options")?))
+    let metric = Ospa::new(o.c, o.p).or_throw_in("options")?;
+    write(&Renamed::new(
+        &metric
+            .series(&o.truths, &o.estimates)
+            .or_throw_in("options")?,
+    ))
 }
 
 /// Exact rectangular linear assignment: `cost` is an array of rows (equal lengths). Returns
