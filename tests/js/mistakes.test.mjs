@@ -220,6 +220,10 @@ test('mistake 5 (fov): the density given without its `rfs` wrapper names the key
   throwsNaming(() => fisst.fovCardinality({ multiBernoulli: mb, fov: disc }), TypeError, /^options has an unknown key "multiBernoulli"/, /\brfs\b/);
 });
 
+test('mistake 5b (fov): a bare multi-Bernoulli array as `rfs` names the keys and does not offer a string', { todo: 'says "(a string, or an object with one of these keys)" though a string is refused ("options.rfs must be an object { poisson: … }, not a string")' }, () => {
+  throwsNaming(() => fisst.fovCardinality({ rfs: mb, fov: disc }), TypeError, /^options\.rfs\b/, /multiBernoulli/, /^(?![\s\S]*\ba string\b)/);
+});
+
 test('mistake 6 (fov): a detection probability in percent names the field', () => {
   throwsNaming(() => fisst.fovCardinality({ rfs: { multiBernoulli: mb }, fov: disc, detectionProbability: 90 }), RangeError, /^options\.detectionProbability must be a probability in \[0, 1\], got 90/);
 });
