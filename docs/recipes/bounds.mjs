@@ -26,17 +26,22 @@ console.log(m.bound, m.mapThreshold.toFixed(4), m.mapBound); // 78.75 0.6667 88.
 
 // Theorem 1 computed in general (quadrature over z) for the same system gives the same number, with
 // its summands: estimation error, undetected-object error, missed-object and false-target costs.
+// `model: 'I'` is the paper's measurement model I (at most one measurement: the object's, or a false
+// alarm with probability q, Theorem 1); 'II' is Poisson clutter (Theorem 2).
 const t1 = fisst.jdeBound({ model: 'I', existence: 0.7, prior: { gaussian: { mean: 0, variance: 100 } },
   observation: { detectionProbability: 0.5, noiseVariance: 100 / 3 }, falseAlarmError: 150, missError: 200 });
 console.log(t1.bound.toFixed(6), t1.phase, t1.terms.map((x) => `${x.name}=${x.value.toFixed(2)}`).join(' ')); // 78.750000 LPE estimation=8.75 undetected=0.00 missed=70.00 falseTarget=0.00
 
 // Fig. 2 right, Example 2: f(x) = 2x(eˣ − 1) on [0, 1], r = 0.6, e_0² = 1.2, e_1² = e_0² + σ_e².
-// Its regularity check (r = P_o = 1; NOTES.md and tests/tests/paper_002_bounds.rs): J_1 = 5.2716,
-// 1/J_1 = 0.1897, yet the posterior mean attains 0.0340, so the curve is not a bound everywhere.
+// Its regularity check at r = P_o = 1 (the paper does not say it: p_1 does not vanish at x = 1, so the
+// information inequality's regularity condition fails): J_1 = 5.2716, 1/J_1 = 0.1897, yet the
+// posterior mean attains 0.0340, so the curve is not a bound everywhere.
 const reg = fisst.jdeExample2Regularity();
 console.log([reg.information, reg.inverseInformation, reg.posteriorMeanMse, reg.priorVariance].map((v) => v.toFixed(4)).join(' ')); // 5.2716 0.1897 0.0340 0.0341
 // The paper: at P_o = 0, q = 1 only r σ_e² = 0.6 × 0.0341 is left; at low P_o, more false alarms
-// (probability q) lower the bound. `paperBound` is the curve as the paper computes it, (32).
+// (probability q) lower the bound. `paperBound` is the curve as the paper computes it, (32); `bound`
+// uses (20), with 1/w_1². Where w_1 = 0 (Z'_0 = `region` empty: P_o = 0, or q high at a low P_o, as at
+// (P_o, q) = (0, 1) and (0.1, 1) below) `information` (A/w_1²) is Infinity (null in JSON).
 const ex2 = (P, q) => fisst.jdeExample2({ existence: 0.6, detectionProbability: P, falseAlarmProbability: q, falseAlarmError: 1.2 }).paperBound;
 console.log((0.6 * reg.priorVariance).toFixed(4), ex2(0, 1).toFixed(4)); // 0.0205 0.0205
 console.log(ex2(0.1, 0).toFixed(4), '>', ex2(0.1, 1).toFixed(4)); // 0.5098 > 0.0925

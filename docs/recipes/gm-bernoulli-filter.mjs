@@ -9,7 +9,7 @@ import * as fisst from 'fisst';
 // r_{0|0} (`existence`), p_{0|0} (`mixture`), the motion model x' = F x + w, w ~ N(0, Q)
 // (`transition`), p_S (`survival`), birth, p_D inside the field of view S (`detection`), the
 // clutter rate λ_c and density c̃ (`clutter`), and regions the person cannot occupy (`exclusions`).
-const s = fisst.airportScenario({ seed: 1, steps: 4 }); // without a seed: a fresh random walk
+const s = fisst.airportScenario({ seed: 1, steps: 4 }); // without a seed: a fresh random walk (s.seed replays it)
 console.log(s.anchors.length, s.dt, s.config.existence, s.config.detection.probability); // 10 15 0.5 0.9
 
 const filter = new fisst.GmBernoulliFilter(s.config);
@@ -17,7 +17,9 @@ try {
   for (let k = 0; k < s.reports.length; k++) {
     // s.reports[k] lists anchor indices; the filter takes each as the region it stands for: a disc.
     const reports = s.reports[k].map((a) => ({ disc: { center: s.anchors[a].position, radius: s.anchors[a].radius } }));
-    filter.predict(); // always predict (motion, survival, birth) before each scan's update
+    // Always predict (motion, survival, birth) before each scan's update: the filter does not check
+    // it, and an update without a predict silently treats the scan as taken at the previous time.
+    filter.predict();
     const { delta } = filter.update(reports); // [] = nothing reported: the non-detection update
     // estimate(): r (`existence`), the MMSE state (x, y, ẋ, ẏ) (`mean`) and its covariance;
     // with a loss { radius: r0, costs } also `report`, the optimal Bernoulli estimate (paper 000).

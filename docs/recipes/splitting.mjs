@@ -22,7 +22,8 @@ console.log(coarse.inside, coarse.outside, coarse.exactInside.toFixed(4)); // 0 
 
 // With splitting (R = 3 by default here), components straddling ∂S are split recursively;
 // `inside` (weights of the components whose mean is in S) now approximates ⟨1_S, p⟩.
-// insideMask[i] says which components of the split mixture are in S; depth and splits count work.
+// insideMask[i] says which components of the split mixture are in S; depth and splits count work;
+// stop is null when the recursion finished on its own, else the cap that stopped it.
 const s = fisst.splitForRegions({ mixture, regions: [S] });
 console.log(s.mixture.length, s.inside.toFixed(4), s.outside.toFixed(4)); // 61 0.3071 0.6929
 console.log(s.depth, s.splits, s.stop, s.insideMask.filter(Boolean).length); // 7 30 null 30

@@ -11,6 +11,7 @@ import { readFileSync, readdirSync, writeFileSync, rmSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { expectedOutput } from './expected_output.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const dir = path.join(here, '../../docs/recipes');
@@ -18,30 +19,6 @@ const recipes = readdirSync(dir).filter((f) => f.endsWith('.mjs')).sort();
 const LIMIT_MS = 10_000; // each recipe must run well under this, in CPU time (the machine may be loaded)
 // Preloaded into the child: on exit, write its CPU time (user + system, µs) to stderr.
 const CPU_PROBE = 'data:text/javascript,process.on("exit",()=>{const u=process.cpuUsage();process.stderr.write(`\\n@cpu ${u.user+u.system}\\n`)})';
-
-/** The expected output lines of a recipe, from the comments after its console.log lines. */
-function expectedOutput(code) {
-  const lines = code.split('\n');
-  const expected = [];
-  lines.forEach((line, i) => {
-    const t = line.trim();
-    if (!t.includes('console.log(') || t.startsWith('//')) return;
-    const cut = t.lastIndexOf(' // ');
-    if (cut > t.indexOf('console.log(')) {
-      expected.push(t.slice(cut + 4).trim());
-      return;
-    }
-    const below = [];
-    for (let j = i + 1; j < lines.length; j++) {
-      const m = lines[j].trim().match(/^\/\/ ?(.*)$/);
-      if (!m) break;
-      below.push(m[1].trim());
-    }
-    assert.ok(below.length > 0, `line ${i + 1} has a console.log without an expected-output comment: ${t}`);
-    expected.push(...below);
-  });
-  return expected;
-}
 
 test('docs/recipes holds the recipes', () => {
   assert.ok(recipes.length >= 7, `found ${recipes.join(', ')}`);
