@@ -10,7 +10,7 @@
 // shared functions are the same Rust code in each part.
 //
 // node scripts/pkg-facade.mjs <pkgDir> <version> <part>...
-import { readFileSync, writeFileSync } from 'node:fs';
+import { copyFileSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 
 const [dir, version, ...parts] = process.argv.slice(2);
@@ -190,6 +190,12 @@ for (const p of parts) {
 for (const p of parts) exportsMap[`./${p}_bg.wasm`] = `./${p}_bg.wasm`;
 exportsMap['./package.json'] = './package.json';
 pkg.exports = exportsMap;
+// The recipes of docs/recipes ship as `recipes/` so that an npm user can read and run them
+// (`node node_modules/fisst/recipes/metrics.mjs`): they import `fisst/<part>` like any consumer.
+const recipesSrc = path.join(path.dirname(new URL(import.meta.url).pathname), '..', 'docs', 'recipes');
+mkdirSync(path.join(dir, 'recipes'), { recursive: true });
+const recipeFiles = readdirSync(recipesSrc).filter((f) => f.endsWith('.mjs') || f === 'README.md').sort();
+for (const f of recipeFiles) copyFileSync(path.join(recipesSrc, f), path.join(dir, 'recipes', f));
 pkg.files = [
   'fisst_wasm.js',
   'fisst_wasm.d.ts',
@@ -198,6 +204,7 @@ pkg.files = [
   'LICENSE-MIT',
   'LICENSE-APACHE',
   'CHANGELOG.md',
+  ...recipeFiles.map((f) => `recipes/${f}`),
   ...parts.flatMap((p) => [`${p}.js`, `${p}.d.ts`, `${p}_bg.wasm`, `${p}_bg.wasm.d.ts`, `${p}.node.js`]),
 ];
 pkg.sideEffects = ['./node.js', ...parts.map((p) => `./${p}.node.js`)];

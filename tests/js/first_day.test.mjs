@@ -59,6 +59,15 @@ test('the tarball installs offline, alone: no dependencies, only the package in 
   for (const f of ['README.md', 'LICENSE-MIT', 'LICENSE-APACHE', 'CHANGELOG.md']) {
     assert.ok(readdirSync(path.join(app, 'node_modules/fisst')).includes(f), `the package ships ${f}`);
   }
+  // The recipes ship too (an npm user has no repository to read them in), the same files.
+  assert.deepEqual(readdirSync(path.join(app, 'node_modules/fisst/recipes')).sort(), [...recipes, 'README.md'].sort());
+  for (const name of recipes) {
+    assert.equal(
+      readFileSync(path.join(app, 'node_modules/fisst/recipes', name), 'utf8'),
+      readFileSync(path.join(recipesDir, name), 'utf8'),
+      `recipes/${name} is docs/recipes/${name}`,
+    );
+  }
 });
 
 test("the npm README's Node snippet runs as written and prints what it says", () => {
