@@ -234,3 +234,11 @@ const pfReport: fisst.BernoulliEstimateResult = pf2.estimate({ radius: 5, costs:
 pf2.estimate({ radius: 5 });
 pf2.free();
 export { gDecomposed, missedNow, pairsNow, gospaAny, missedAlpha1, meanMissedNow, seriesMissed, oneStep, wholeFig5, notWhole, perCoordinateNow, posteriorNow, scalarComponents, reportNow, noReport, noReportEmpty, pfReport };
+// @ts-expect-error: clutter is model II's (it throws a TypeError with model 'I')
+fisst.jdeBound({ model: 'I', existence: 0.6, prior: tablePrior, observation: { detectionProbability: 0.9, noiseVariance: 0.5 }, clutter: { rate: 1, density: { uniform: { low: -1, high: 1 } } }, falseAlarmError: 6, missError: 9 });
+// @ts-expect-error: falseAlarm is model I's
+fisst.jdeBound({ model: 'II', existence: 0.6, prior: tablePrior, observation: { detectionProbability: 0.9, noiseVariance: 0.5 }, falseAlarm: { probability: 0.1, density: { uniform: { low: -1, high: 1 } } }, falseAlarmError: 6, missError: 9 });
+const mc: fisst.JdeMonteCarloResult = fisst.jdeMonteCarlo({ model: 'II', existence: 0.6, prior: { gaussian: { mean: 0, variance: 4 } }, observation: { detectionProbability: 0.9, noiseVariance: 1 }, clutter: { rate: 1, density: { uniform: { low: -10, high: 10 } } }, falseAlarmError: 6, missError: 9, samples: 100, seed: 1 });
+// @ts-expect-error: falseAlarm is model I's
+fisst.jdeMonteCarlo({ model: 'II', existence: 0.6, prior: { gaussian: { mean: 0, variance: 4 } }, observation: { detectionProbability: 0.9, noiseVariance: 1 }, falseAlarm: { probability: 0.1, density: { uniform: { low: -1, high: 1 } } }, falseAlarmError: 6, missError: 9 });
+export { mc };
