@@ -71,3 +71,32 @@ test('each part declares only the names its exports reach', () => {
     assert.deepEqual(foreign, [], `${part}.d.ts declares names its exports do not reach`);
   }
 });
+
+// scripts/pkg-guards.mjs's `ownNames` on a small declaration file: the unreached types go, an
+// alias of a reached type stays, and an interface merged into a class (overloads) moves after it.
+test('ownNames keeps what the exports reach and places class overloads after the class', async () => {
+  const { ownNames } = await import('../../scripts/pkg-guards.mjs');
+  const source = `/* tslint:disable */
+/** Shown. */
+export type Used = { a: Inner };
+export interface Inner { b: string }
+/** Not used by any export. */
+export interface Foreign { c: 'x;y' | "}" }
+export type Alias = Used;
+export type Alias2 = Foreign;
+export interface K {
+    /** Overload. */
+    m(x: Used): 1;
+}
+export function f(u: Used): void;
+export class K {
+    m(x?: Used): number;
+}
+`;
+  const out = ownNames(source);
+  for (const kept of ['/* tslint:disable */', '/** Shown. */\nexport type Used', 'export interface Inner', 'export type Alias = Used;', 'export function f']) {
+    assert.ok(out.includes(kept), `missing ${kept} in\n${out}`);
+  }
+  for (const gone of ['Foreign', 'Not used', 'Alias2']) assert.ok(!out.includes(gone), `kept ${gone} in\n${out}`);
+  assert.ok(out.indexOf('export interface K') > out.indexOf('export class K'), out);
+});
