@@ -19,12 +19,21 @@ use syn::Item;
 mod names_rule;
 #[path = "tsgen.rs"]
 mod tsgen;
-use tsgen::{TokStr, collect};
+use tsgen::{TokStr, cfg_enabled, collect, item_attrs};
 
 /// The identifiers in a TypeScript type text that may name a declared type.
 fn type_names(ts: &str) -> impl Iterator<Item = &str> {
     ts.split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
         .filter(|w| w.starts_with(|c: char| c.is_ascii_uppercase()))
+}
+
+/// Whether a Cargo feature of the crate is enabled in this build.
+fn feature_on(f: &str) -> bool {
+    std::env::var_os(format!(
+        "CARGO_FEATURE_{}",
+        f.to_uppercase().replace('-', "_")
+    ))
+    .is_some()
 }
 
 fn main() {
@@ -35,44 +44,35 @@ fn main() {
     println!("cargo:rerun-if-changed={}", core_src.display());
     println!("cargo:rerun-if-changed=build.rs");
 
-    // the part's modules: `#[cfg(feature = "x")] mod y;` in lib.rs, for the enabled features
+    // the part's modules (`#[cfg(feature = "x")] mod y;` in lib.rs, for the enabled features),
+    // and in them the items compiled for the part: the names its functions take and return
+    // (`unchecked_param_type = "…"`, `#[tsify(type = "…")]`), and those the binding declares
     let lib = syn::parse_file(&fs::read_to_string(wasm_src.join("lib.rs")).unwrap()).unwrap();
-    let mut files = Vec::new();
-    for item in &lib.items {
-        let Item::Mod(m) = item else { continue };
-        let feature = m.attrs.iter().find_map(|a| {
-            let text = a.meta.to_token_stream_string();
-            text.strip_prefix("cfg (feature = \"")
-                .and_then(|t| t.strip_suffix("\")"))
-                .map(str::to_string)
-        });
-        let enabled = feature.is_none_or(|f| {
-            std::env::var_os(format!(
-                "CARGO_FEATURE_{}",
-                f.to_uppercase().replace('-', "_")
-            ))
-            .is_some()
-        });
-        if enabled {
-            files.push(wasm_src.join(format!("{}.rs", m.ident)));
-        }
-    }
-
-    // the names the part's functions take and return, and those the binding declares itself
     let mut roots = BTreeSet::new();
     let mut declared = BTreeSet::new();
-    for file in &files {
-        let text = fs::read_to_string(file).unwrap();
-        // and the core types a binding's own type holds (`#[tsify(type = "SplittingOptions")]`)
-        for key in [
-            "unchecked_param_type = \"",
-            "unchecked_optional_param_type = \"",
-            "unchecked_return_type = \"",
-            "tsify(optional, type = \"",
-        ] {
-            for piece in text.split(key).skip(1) {
+    for item in &lib.items {
+        let Item::Mod(m) = item else { continue };
+        if !cfg_enabled(&m.attrs, &feature_on) {
+            continue;
+        }
+        let path = wasm_src.join(format!("{}.rs", m.ident));
+        let file = syn::parse_file(&fs::read_to_string(&path).unwrap()).unwrap();
+        for item in &file.items {
+            if !cfg_enabled(item_attrs(item), &feature_on) {
+                continue;
+            }
+            let text = item.to_token_stream_string();
+            for piece in text.split("type = \"").skip(1) {
                 let ts = piece.split('"').next().unwrap_or("");
                 roots.extend(type_names(ts).map(str::to_string));
+            }
+            // an alias the part declares for a core type (`export type
+            // LinearAssignmentResult = Assignment;`) makes that core type a root
+            for piece in text.split("export type ").skip(1) {
+                let rhs = piece.split(';').next().unwrap_or("");
+                if let Some((_, rhs)) = rhs.split_once('=') {
+                    roots.extend(type_names(rhs).map(str::to_string));
+                }
             }
         }
     }
@@ -95,16 +95,6 @@ fn main() {
             for key in ["export type ", "export interface "] {
                 for piece in text.split(key).skip(1) {
                     declared.extend(type_names(piece).take(1).map(str::to_string));
-                }
-            }
-            // an alias the part declares for a core type (`export type
-            // LinearAssignmentResult = Assignment;`) makes that core type a root
-            if files.contains(&path) {
-                for piece in text.split("export type ").skip(1) {
-                    let rhs = piece.split(';').next().unwrap_or("");
-                    if let Some((_, rhs)) = rhs.split_once('=') {
-                        roots.extend(type_names(rhs).map(str::to_string));
-                    }
                 }
             }
         }

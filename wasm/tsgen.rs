@@ -523,3 +523,60 @@ pub fn declarations(defs: &BTreeMap<String, Def>, roots: &[&String]) -> (String,
     }
     (out, warnings)
 }
+
+/// Whether items with these attributes are compiled: their `#[cfg(…)]` (features, `any`,
+/// `all`, `not`; `test` is off in a build) holds. Other predicates count as true.
+pub fn cfg_enabled(attrs: &[syn::Attribute], feature: &dyn Fn(&str) -> bool) -> bool {
+    attrs.iter().filter(|a| a.path().is_ident("cfg")).all(|a| {
+        a.parse_args::<syn::Meta>()
+            .is_ok_and(|m| cfg_holds(&m, feature))
+    })
+}
+
+/// The value of one `cfg` predicate.
+fn cfg_holds(m: &syn::Meta, feature: &dyn Fn(&str) -> bool) -> bool {
+    match m {
+        syn::Meta::Path(p) => !p.is_ident("test"),
+        syn::Meta::NameValue(nv) if nv.path.is_ident("feature") => match &nv.value {
+            syn::Expr::Lit(syn::ExprLit {
+                lit: syn::Lit::Str(s),
+                ..
+            }) => feature(&s.value()),
+            _ => true,
+        },
+        syn::Meta::NameValue(_) => true,
+        syn::Meta::List(l) => {
+            let Ok(args) =
+                l.parse_args_with(Punctuated::<syn::Meta, syn::Token![,]>::parse_terminated)
+            else {
+                return true;
+            };
+            let mut it = args.iter().map(|a| cfg_holds(a, feature));
+            if l.path.is_ident("any") {
+                it.any(|b| b)
+            } else if l.path.is_ident("all") {
+                it.all(|b| b)
+            } else if l.path.is_ident("not") {
+                !it.next().unwrap_or(true)
+            } else {
+                true
+            }
+        }
+    }
+}
+
+/// The attributes of a top-level item (none for the kinds bindings do not use).
+pub fn item_attrs(item: &Item) -> &[syn::Attribute] {
+    match item {
+        Item::Const(i) => &i.attrs,
+        Item::Enum(i) => &i.attrs,
+        Item::Fn(i) => &i.attrs,
+        Item::Impl(i) => &i.attrs,
+        Item::Mod(i) => &i.attrs,
+        Item::Static(i) => &i.attrs,
+        Item::Struct(i) => &i.attrs,
+        Item::Type(i) => &i.attrs,
+        Item::Use(i) => &i.attrs,
+        _ => &[],
+    }
+}

@@ -404,7 +404,10 @@ pub fn mmuc_estimate(
 
 /// Theorem III.3 applied to each component of a multi-Bernoulli. Options
 /// `{ components: [{ existence, density }], radius, costs }`; returns
-/// `{ reported, estimates, components }`.
+/// `{ reported, estimates, components }`. Each component is decided alone, from its
+/// existence, its density and the loss (7) of paper 000 (Narykov, Üney & Ralph);
+/// `mbOptimalEstimate` instead decides far-apart Dirac components jointly, minimising a set
+/// metric's E[d^p] (the spooky-effect paper).
 #[cfg(feature = "bernoulli")]
 #[wasm_bindgen(
     js_name = multiBernoulliPointEstimate,

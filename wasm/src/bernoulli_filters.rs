@@ -479,9 +479,10 @@ fn scan_error(e: fisst::Error) -> JsValue {
     }
 }
 
-/// Options of `estimate`: the loss (7) of the optimal Bernoulli estimate; omitted: no
-/// `report`.
+/// Options of `estimate`: the loss (7) of the optimal Bernoulli estimate, `radius` and `costs`
+/// together (`FilterEstimateLoss`); omitted (or neither): no `report`.
 #[derive(Deserialize, Tsify, Default)]
+#[tsify(type = "FilterEstimateLoss | { radius?: undefined; costs?: undefined }")]
 pub struct FilterEstimateOptions {
     /// r0 > 0 (a position distance).
     #[tsify(optional)]
@@ -505,6 +506,48 @@ pub struct FilterEstimateResult {
     #[tsify(type = "BernoulliEstimateResult | null")]
     pub report: Option<BernoulliEstimateResult>,
 }
+
+// `radius` and `costs` go together (`FilterEstimateOptions`), and with them `report` is never
+// null: overloads of both filters' `estimate` (interfaces merged into the classes;
+// scripts/pkg-guards.mjs places them after the classes, so they are tried first).
+#[wasm_bindgen(typescript_custom_section)]
+const ESTIMATE_OVERLOADS: &str = r#"
+/**
+ * The loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with
+ * applications" (paper 000), for `estimate`'s `report`: r0 and the costs, always given
+ * together.
+ */
+export interface FilterEstimateLoss {
+    /**
+     * r0 > 0, the radius of the loss's tolerance ball (a position distance).
+     */
+    radius: number;
+    /**
+     * The costs of the loss (7).
+     */
+    costs: BernoulliCosts;
+}
+export interface GmBernoulliFilter {
+    /**
+     * With the loss (7): `report`, the optimal Bernoulli point estimate, is never null.
+     */
+    estimate(options: FilterEstimateLoss): FilterEstimateResult & { report: BernoulliEstimateResult };
+    /**
+     * Without a loss: `{ existence, mean, cov }` and `report: null`.
+     */
+    estimate(options?: { radius?: undefined; costs?: undefined }): FilterEstimateResult & { report: null };
+}
+export interface ParticleBernoulliFilter {
+    /**
+     * With the loss (7): `report`, the optimal Bernoulli point estimate, is never null.
+     */
+    estimate(options: FilterEstimateLoss): FilterEstimateResult & { report: BernoulliEstimateResult };
+    /**
+     * Without a loss: `{ existence, mean, cov }` and `report: null`.
+     */
+    estimate(options?: { radius?: undefined; costs?: undefined }): FilterEstimateResult & { report: null };
+}
+"#;
 
 fn estimate_options(options: JsValue) -> JsResult<EstimateOptions> {
     if options.is_undefined() || options.is_null() {

@@ -24,8 +24,9 @@ fn one() -> f64 {
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct FovCardinalityOptions {
-    /// The multi-object density (at most 10,000 Gaussians in all; the call is refused when
-    /// its masses would take more than about 2 s).
+    /// The multi-object density of the random finite set X (`rfs`: the papers' name for X,
+    /// a `MultiObjectDensity` value; at most 10,000 Gaussians in all; the call is refused
+    /// when its masses would take more than about 2 s).
     pub rfs: MultiObjectDensity,
     /// The field of view S, in the position subspace (the first state components).
     pub fov: Region,

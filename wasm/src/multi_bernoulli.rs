@@ -66,7 +66,9 @@ pub fn multi_bernoulli_leave_one_out(
 /// The estimate of a multi-Bernoulli with far-apart Dirac components that minimises the mean
 /// error E[d^p] (the mean square error for p = 2) under GOSPA, OSPA or UOSPA — exact for any
 /// number of components. Options `{ existence, metric, c = 1, p = 2, alpha = 2 }`; returns
-/// `{ report, meanSquareError }`.
+/// `{ report, meanSquareError }`. The components are decided jointly, from their existence
+/// probabilities alone (the spooky-effect paper); `multiBernoulliPointEstimate` instead
+/// decides each component alone from its density and the loss (7) of paper 000.
 #[wasm_bindgen(js_name = mbOptimalEstimate, unchecked_return_type = "MbOptimalEstimateResult")]
 pub fn mb_optimal_estimate(
     #[wasm_bindgen(unchecked_param_type = "MbOptimalEstimateOptions")] options: JsValue,

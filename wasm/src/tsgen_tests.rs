@@ -167,3 +167,28 @@ fn kebab_case_variants_and_the_number_shapes_of_serde_shapes() {
         assert!(ts.contains(expected), "{expected:?} not in\n{ts}");
     }
 }
+
+#[test]
+fn an_item_is_compiled_for_a_part_when_its_cfg_holds() {
+    let on = |f: &str| f == "metrics";
+    let holds = |src: &str| {
+        let item: syn::Item = syn::parse_str(src).unwrap();
+        tsgen::cfg_enabled(tsgen::item_attrs(&item), &on)
+    };
+    assert!(holds("mod a;"));
+    assert!(holds("#[cfg(feature = \"metrics\")] mod a;"));
+    assert!(!holds("#[cfg(feature = \"control\")] mod a;"));
+    // `any`/`all`/`not` (the old reading took `cfg(any(…))` for "always")
+    assert!(!holds(
+        "#[cfg(any(feature = \"bernoulli\", feature = \"splitting\"))] mod fov;"
+    ));
+    assert!(holds(
+        "#[cfg(any(feature = \"bernoulli\", feature = \"metrics\"))] fn f() {}"
+    ));
+    assert!(!holds(
+        "#[cfg(all(feature = \"bernoulli\", feature = \"metrics\"))] fn f() {}"
+    ));
+    assert!(holds("#[cfg(not(feature = \"control\"))] const C: u8 = 0;"));
+    // a build script is not a test build
+    assert!(!holds("#[cfg(test)] mod tsgen_tests;"));
+}

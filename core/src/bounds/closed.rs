@@ -389,9 +389,11 @@ pub struct NoClutterOptions {
     /// σ_h², the mean posterior variance given an observation (> 0, ≤ `prior_variance`):
     /// J_1⁻¹ (see [`gaussian_fisher_information`]).
     pub posterior_variance: f64,
-    /// e_0², the squared error of declaring a target that does not exist (≥ 0).
+    /// e_0² ≥ 0, the squared error charged for declaring a target that does not exist: the
+    /// square itself (for e_0 = 12, give 144), in squared state units like the variances.
     pub false_alarm_error: f64,
-    /// e_1², the squared error of missing a target that exists (≥ 0).
+    /// e_1² ≥ 0, the squared error charged for missing a target that exists: the square
+    /// itself (for e_1 = 12, give 144).
     pub miss_error: f64,
 }
 

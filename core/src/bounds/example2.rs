@@ -144,9 +144,10 @@ pub struct Example2Options {
     pub detection_probability: f64,
     /// q, the false-alarm probability, in [0, 1] (the figure's abscissa).
     pub false_alarm_probability: f64,
-    /// e_0² ≥ 0 (the figure: 1.2).
+    /// e_0² ≥ 0, the squared error of a false target: the square itself (the figure: 1.2).
     pub false_alarm_error: f64,
-    /// e_1² ≥ 0 (default e_0² + σ_e², the figure's choice).
+    /// e_1² ≥ 0, the squared error of a missed target: the square itself (default
+    /// e_0² + σ_e², the figure's choice).
     pub miss_error: Option<f64>,
 }
 

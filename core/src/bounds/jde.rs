@@ -95,9 +95,11 @@ pub struct JdeOptions {
     pub false_alarm: Option<FalseAlarm>,
     /// Model II: (λ, v/λ); `None`: λ = 0. An error with model I.
     pub clutter: Option<Clutter>,
-    /// e_0² ≥ 0 (of the whole state; coordinate i of a vector state uses e_0²/l).
+    /// e_0² ≥ 0, the squared error of a false target: the square itself (of the whole state;
+    /// coordinate i of a vector state uses e_0²/l).
     pub false_alarm_error: f64,
-    /// e_1² ≥ 0 (of the whole state; coordinate i of a vector state uses e_1²/l).
+    /// e_1² ≥ 0, the squared error of a missed target: the square itself (of the whole state;
+    /// coordinate i of a vector state uses e_1²/l).
     pub miss_error: f64,
     /// l, in [1, [`MAX_DIMS`]]; must be 1 for a scalar prior and the prior's dimension for a
     /// vector one (default: the prior's).

@@ -107,8 +107,9 @@ enum Kind {
 pub struct MbEstimate {
     /// u: `report[i]` is true when component i is reported.
     pub report: Vec<bool>,
-    /// E[d^p] of this estimate: the mean square error for p = 2, its usual order (the name
-    /// the JavaScript contract gives it, `meanSquareError`).
+    /// E[d^p] of this estimate, the mean of the metric's p-th power (not rooted) under the
+    /// posterior: the mean square error of the paper for p = 2, the default, and E[d^p] for
+    /// any other p (the name the JavaScript contract gives it, `meanSquareError`).
     pub mean_square_error: f64,
 }
 

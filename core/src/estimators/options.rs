@@ -37,7 +37,12 @@ impl SetMetricName {
     }
 }
 
-/// The optimal estimate of far-apart components, [`optimal_estimate`].
+/// The optimal estimate of far-apart components, [`optimal_estimate`]: which of n
+/// multi-Bernoulli components with Dirac densities to report, given their existence
+/// probabilities alone, minimising E[d^p] under a set metric (García-Fernández & Svensson,
+/// "Spooky effect in optimal OSPA estimation and how GOSPA solves it", Section III). Not
+/// `multiBernoulliPointEstimate` (Narykov, Üney & Ralph's Bernoulli estimate applied to each
+/// component with its Gaussian density and the loss (7)).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MbOptimalEstimateOptions {
@@ -69,7 +74,9 @@ impl MbOptimalEstimateOptions {
     }
 }
 
-/// The mean error of a given estimate, [`mean_error`] (Lemma 4).
+/// The mean error E[d^p] of a given estimate, [`mean_error`] (Lemma 4): the mean of the
+/// metric's p-th power, not rooted; the mean square error for p = 2, the default, and E[d^p]
+/// for any other p (the JavaScript name `mbMeanSquareError` says the usual case).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MbMeanSquareErrorOptions {

@@ -67,7 +67,9 @@ pub struct Gospa {
 pub struct GospaDecomposition {
     /// The GOSPA distance, `(localisation + c^p/2 · (missed + false_targets))^(1/p)`.
     pub distance: f64,
-    /// Σ d(x_i, y_j)^p over the assigned pairs (not rooted).
+    /// The localisation cost Σ d(x_i, y_j)^p over the assigned pairs: a sum of p-th powers,
+    /// not rooted, not normalised (so `distance^p = localisation + c^p/2 · (missed +
+    /// false_targets)`), unlike OSPA's rooted, normalised `OspaDecomposition::localisation`.
     pub localisation: f64,
     /// Truth points left unassigned.
     pub missed: usize,
@@ -86,7 +88,9 @@ pub struct GospaDecomposition {
 pub struct GospaReport {
     /// The GOSPA distance.
     pub distance: f64,
-    /// Σ d^p over the assigned pairs, not rooted (α = 2 only).
+    /// The localisation cost Σ d^p over the assigned pairs: a sum of p-th powers, not rooted,
+    /// not normalised, so `distance^p = localisation + c^p/2 · (missed + falseTargets)`
+    /// (unlike `ospa`'s `localisation`, a rooted, normalised part). α = 2 only.
     #[cfg_attr(
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")

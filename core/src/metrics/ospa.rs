@@ -51,7 +51,10 @@ pub struct Ospa {
 pub struct OspaDecomposition {
     /// d̄_{c,p}(X, Y), eq. (24).
     pub distance: f64,
-    /// e^loc_{c,p}, eq. (26) (rooted).
+    /// The localisation part e^loc_{c,p}, eq. (26): rooted and normalised,
+    /// `((1/n) Σ min(d, c)^p)^(1/p)` over the optimal pairs (n the larger set's size), so
+    /// `distance^p = localisation^p + cardinality^p`; not GOSPA's `localisation`, which is
+    /// the sum Σ d^p itself.
     pub localisation: f64,
     /// e^card_{c,p}, eq. (25) (rooted).
     pub cardinality: f64,

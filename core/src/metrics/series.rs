@@ -21,8 +21,9 @@ pub struct GospaSeries {
     pub distance: Vec<f64>,
     /// The mean of `distance` over the steps (0 for no steps).
     pub mean_distance: f64,
-    /// Σ d^p over the assigned pairs at each step (not rooted, as in
-    /// [`GospaDecomposition::localisation`]; α = 2 only, like [`Gospa::decompose`]).
+    /// The localisation cost Σ d^p over the assigned pairs at each step: a sum of p-th powers,
+    /// not rooted (as in [`GospaDecomposition::localisation`], unlike OSPA's rooted part);
+    /// α = 2 only, like [`Gospa::decompose`].
     #[cfg_attr(
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")
@@ -70,7 +71,8 @@ pub struct GospaSeries {
 pub struct OspaSeries {
     /// OSPA at each step, eq. (24) of `004_…`.
     pub distance: Vec<f64>,
-    /// The localisation part at each step, eq. (26).
+    /// The localisation part at each step, eq. (26): rooted and normalised (unlike GOSPA's
+    /// `localisation`, a sum of p-th powers).
     pub localisation: Vec<f64>,
     /// The cardinality part at each step, eq. (25).
     pub cardinality: Vec<f64>,

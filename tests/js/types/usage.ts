@@ -190,3 +190,55 @@ const boundTermNames: ('estimation' | 'undetected' | 'missed' | 'falseTarget')[]
 // @ts-expect-error: FovGaussian (a deprecated alias) was removed; use Gaussian
 const removedAlias: fisst.FovGaussian | undefined = undefined;
 export { defaultAirport, schemeName, boundTermNames, removedAlias };
+
+// Issue 26, point 3: a field present for the given options is typed present (no `!`), and
+// options that go together are typed together.
+const gDecomposed: fisst.GospaDecomposedResult = fisst.gospa(truth, [[0, 1]], { c: 2 });
+const missedNow: number = fisst.gospa(truth, [[0, 1]], { c: 2, alpha: 2 }).missed;
+const pairsNow: [number, number][] = fisst.gospa(truth, [[0, 1]], { c: 2, p: 1 }).assignment;
+const gospaAny: fisst.GospaResult = fisst.gospa(truth, [[0, 1]], { c: 2, alpha: 1 });
+// @ts-expect-error: with α ≠ 2 the decomposition is absent
+const missedAlpha1: number = fisst.gospa(truth, [[0, 1]], { c: 2, alpha: 1 }).missed;
+const seriesNow: fisst.GospaSeriesDecomposedResult = fisst.gospaSeries({ truths: [truth], estimates: [truth], c: 2 });
+const meanMissedNow: number = seriesNow.meanMissed + seriesNow.localisation[0] + seriesNow.falseTargets[0];
+// @ts-expect-error: with α ≠ 2 the series has no decomposition
+const seriesMissed: number[] = fisst.gospaSeries({ truths: [truth], estimates: [truth], c: 2, alpha: 0.5 }).missed;
+const oneStep: fisst.NegativeInformationStep = fisst.negativeInformationScenario({ step: 1 });
+const wholeFig5: fisst.NegativeInformationScenario = fisst.negativeInformationScenario();
+// @ts-expect-error: with `step` the result is one step, not the scenario
+const notWhole: fisst.NegativeInformationScenario = fisst.negativeInformationScenario({ step: 3 });
+const vectorBound: fisst.JdeVectorBoundResult = fisst.jdeBound({
+  model: 'I',
+  existence: 0.6,
+  prior: { multivariateGaussian: { mean: [0, 0], cov: [[1, 0], [0, 1]] } },
+  observation: twoRows,
+  falseAlarmError: 6,
+  missError: 8,
+});
+const perCoordinateNow: number[] = vectorBound.components.map((c) => c.bound);
+const posteriorNow: number[][] = vectorBound.inverseInformationMatrix;
+// @ts-expect-error: a scalar prior has no per-coordinate bounds
+const scalarComponents: fisst.JdeComponentBound[] = fisst.jdeBound({ model: 'I', existence: 0.6, prior: tablePrior, observation: { detectionProbability: 0.9, noiseVariance: 0.5 }, falseAlarmError: 6, missError: 9 }).components;
+const gm2 = new fisst.GmBernoulliFilter(airport.config);
+const reportNow: fisst.BernoulliEstimateResult = gm2.estimate({ radius: 5, costs: 'mpe' }).report;
+const noReport: null = gm2.estimate().report;
+const noReportEmpty: null = gm2.estimate({}).report;
+// @ts-expect-error: radius without costs (it throws "radius and costs go together")
+gm2.estimate({ radius: 5 });
+// @ts-expect-error: costs without radius
+gm2.estimate({ costs: 'mpe' });
+gm2.free();
+const pf2 = new fisst.ParticleBernoulliFilter({ ...airport.config, particles: 10 });
+const pfReport: fisst.BernoulliEstimateResult = pf2.estimate({ radius: 5, costs: { mmol: { asset: 10, countermeasure: 1 } } }).report;
+// @ts-expect-error: radius without costs
+pf2.estimate({ radius: 5 });
+pf2.free();
+export { gDecomposed, missedNow, pairsNow, gospaAny, missedAlpha1, meanMissedNow, seriesMissed, oneStep, wholeFig5, notWhole, perCoordinateNow, posteriorNow, scalarComponents, reportNow, noReport, noReportEmpty, pfReport };
+// @ts-expect-error: clutter is model II's (it throws a TypeError with model 'I')
+fisst.jdeBound({ model: 'I', existence: 0.6, prior: tablePrior, observation: { detectionProbability: 0.9, noiseVariance: 0.5 }, clutter: { rate: 1, density: { uniform: { low: -1, high: 1 } } }, falseAlarmError: 6, missError: 9 });
+// @ts-expect-error: falseAlarm is model I's
+fisst.jdeBound({ model: 'II', existence: 0.6, prior: tablePrior, observation: { detectionProbability: 0.9, noiseVariance: 0.5 }, falseAlarm: { probability: 0.1, density: { uniform: { low: -1, high: 1 } } }, falseAlarmError: 6, missError: 9 });
+const mc: fisst.JdeMonteCarloResult = fisst.jdeMonteCarlo({ model: 'II', existence: 0.6, prior: { gaussian: { mean: 0, variance: 4 } }, observation: { detectionProbability: 0.9, noiseVariance: 1 }, clutter: { rate: 1, density: { uniform: { low: -10, high: 10 } } }, falseAlarmError: 6, missError: 9, samples: 100, seed: 1 });
+// @ts-expect-error: falseAlarm is model I's
+fisst.jdeMonteCarlo({ model: 'II', existence: 0.6, prior: { gaussian: { mean: 0, variance: 4 } }, observation: { detectionProbability: 0.9, noiseVariance: 1 }, falseAlarm: { probability: 0.1, density: { uniform: { low: -1, high: 1 } } }, falseAlarmError: 6, missError: 9 });
+export { mc };
