@@ -12,7 +12,7 @@ use serde::de::DeserializeOwned;
 
 use crate::bernoulli::{ApplicationLoss, Costs, SpatialDensity};
 use crate::bounds::{
-    self, Cardinality, Density1, JdeBound, LinearGaussian, Method, Settings, assemble,
+    self, Cardinality, Density1, JdeBound, LinearGaussian, Method, TheoremOptions, assemble,
 };
 use crate::control::case_study::{ControlOptions, Scheme};
 use crate::estimators::multi_bernoulli::{SetMetric, optimal_estimate};
@@ -187,7 +187,7 @@ fn options_with_a_default_take_it_for_every_omitted_field() {
         round_trip(&T::default());
     }
     empty_is_default::<SplitOptions>();
-    empty_is_default::<Settings>();
+    empty_is_default::<TheoremOptions>();
     empty_is_default::<ParticleOptions>();
     empty_is_default::<Regularisation>();
     empty_is_default::<ReductionOptions>();

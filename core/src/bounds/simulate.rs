@@ -20,7 +20,7 @@ use nalgebra::DMatrix;
 
 use crate::bounds::closed::check_nonnegative;
 use crate::bounds::model::{Density, Observation, standard_normal};
-use crate::bounds::theorem::{Settings, check_common};
+use crate::bounds::theorem::{TheoremOptions, check_common};
 use crate::bounds::{Example2Observation, Example2Prior, GaussianPrior, LinearGaussianSensor};
 use crate::bounds::{MAX_CLUTTER_RATE, MAX_STEPS, VectorMeasurement, VectorModel};
 use crate::error::{Error, Result, check_probability};
@@ -485,7 +485,7 @@ pub fn jde_monte_carlo(
     options: &JdeMonteCarloOptions,
 ) -> Result<JdeMonteCarlo> {
     let (r, e0, e1) = (model.existence, model.false_alarm_error, model.miss_error);
-    check_common(r, e0, e1, &Settings::default())?;
+    check_common(r, e0, e1, &TheoremOptions::default())?;
     let (samples, scans) = (options.samples, options.scans);
     if samples < 2 {
         return Err(Error::parameter("samples", samples as f64, "≥ 2"));
