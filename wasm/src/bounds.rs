@@ -966,13 +966,7 @@ pub fn jde_monte_carlo(
     #[wasm_bindgen(unchecked_param_type = "JdeMonteCarloOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: JdeMonteCarloOptions = read(options, "options")?;
-    let samples = check_range(
-        "options.samples",
-        o.samples.unwrap_or(20_000),
-        2,
-        10_000_000,
-    )?;
-    let scans = check_range("options.scans", o.scans.unwrap_or(1), 1, bounds::MAX_STEPS)?;
+    let defaults = bounds::JdeMonteCarloOptions::default();
     let (flat, false_density, clutter_density);
     let measurement = match (o.model, o.false_alarm, o.clutter) {
         (MeasurementModel::One, _, Some(_)) => {
@@ -1062,10 +1056,10 @@ pub fn jde_monte_carlo(
             miss_error: o.miss_error,
         },
         &bounds::JdeMonteCarloOptions {
-            samples,
+            samples: o.samples.unwrap_or(defaults.samples),
             seed,
             empty_rule,
-            scans,
+            scans: o.scans.unwrap_or(defaults.scans),
         },
     )
     .or_throw_rendered("options")?;
