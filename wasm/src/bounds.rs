@@ -388,9 +388,8 @@ impl ObservationShape {
 pub struct FalseAlarmShape {
     /// q in [0, 1].
     pub probability: f64,
-    /// ψ (read as the core's `Density1`, through its constructors).
-    #[tsify(type = "DensityShape")]
-    pub density: bounds::Density1,
+    /// ψ.
+    pub density: DensityShape,
 }
 
 /// Model II's Poisson clutter: rate λ and the density of its points (v = λ · density).
@@ -398,9 +397,8 @@ pub struct FalseAlarmShape {
 pub struct ClutterShape {
     /// λ ≥ 0 (at most 1000).
     pub rate: f64,
-    /// v/λ (read as the core's `Density1`, through its constructors).
-    #[tsify(type = "DensityShape")]
-    pub density: bounds::Density1,
+    /// v/λ.
+    pub density: DensityShape,
 }
 
 /// `'I'` (Theorem 1: Bernoulli observation with false alarms) or `'II'` (Theorem 2: Poisson
@@ -646,14 +644,14 @@ pub fn jde_bound(
     let false_alarm = match o.false_alarm {
         Some(f) => Some(bounds::FalseAlarm {
             probability: f.probability,
-            density: f.density,
+            density: f.density.into_core("options.falseAlarm.density")?,
         }),
         None => None,
     };
     let clutter = match o.clutter {
         Some(c) => Some(bounds::Clutter {
             rate: c.rate,
-            density: c.density,
+            density: c.density.into_core("options.clutter.density")?,
         }),
         None => None,
     };
@@ -916,14 +914,14 @@ pub fn jde_monte_carlo(
             ));
         }
         (MeasurementModel::One, Some(f), None) => {
-            false_density = f.density;
+            false_density = f.density.into_core("options.falseAlarm.density")?;
             bounds::VectorMeasurement::I {
                 false_alarm_probability: f.probability,
                 false_alarm_density: &false_density,
             }
         }
         (MeasurementModel::Two, None, Some(c)) => {
-            clutter_density = c.density;
+            clutter_density = c.density.into_core("options.clutter.density")?;
             bounds::VectorMeasurement::II {
                 clutter_rate: c.rate,
                 clutter_density: &clutter_density,
