@@ -2,7 +2,7 @@
 //! (quadrature for n = 1, Monte Carlo beyond).
 use criterion::{Criterion, criterion_group, criterion_main};
 use fisst::bounds::{
-    Density1, Detection, LinearGaussian, ModelI, ModelII, Sequential, Settings,
+    Density1, Detection, LinearGaussian, ModelI, ModelII, Sequential, TheoremOptions,
     gaussian_no_clutter, sequential_bound, theorem1, theorem2,
 };
 use std::hint::black_box;
@@ -33,7 +33,7 @@ fn bounds(c: &mut Criterion) {
                     false_alarm_error: 6.0,
                     miss_error: 9.0,
                 },
-                &Settings::default(),
+                &TheoremOptions::default(),
             )
             .unwrap()
         })
@@ -54,9 +54,9 @@ fn bounds(c: &mut Criterion) {
                         false_alarm_error: 6.0,
                         miss_error: 9.0,
                     },
-                    &Settings {
+                    &TheoremOptions {
                         samples,
-                        ..Settings::default()
+                        ..TheoremOptions::default()
                     },
                 )
                 .unwrap()

@@ -45,7 +45,7 @@
 //!
 //! Required fields stay required (a missing one is an error). An omitted optional field takes
 //! its default from one place: the type's [`Default`] when every field has one (e.g.
-//! [`splitting::SplitOptions`], [`bounds::Settings`]), else the function the type's own
+//! [`splitting::SplitOptions`], [`bounds::TheoremOptions`]), else the function the type's own
 //! constructor uses (e.g. [`filters::default_reduction`] for a filter configuration's
 //! `reduction`). Types with invariants ([`gaussian::Gaussian`], [`regions::Region`],
 //! [`filters::GmBernoulli`], …) are written as the arguments of their constructor and read

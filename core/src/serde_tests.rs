@@ -12,7 +12,7 @@ use serde::de::DeserializeOwned;
 
 use crate::bernoulli::{ApplicationLoss, Costs, SpatialDensity};
 use crate::bounds::{
-    self, Cardinality, Density1, JdeBound, LinearGaussian, Method, Settings, assemble,
+    self, Cardinality, Density1, JdeBound, LinearGaussian, Method, TheoremOptions, assemble,
 };
 use crate::control::case_study::{ControlOptions, Scheme};
 use crate::estimators::multi_bernoulli::{SetMetric, optimal_estimate};
@@ -187,7 +187,7 @@ fn options_with_a_default_take_it_for_every_omitted_field() {
         round_trip(&T::default());
     }
     empty_is_default::<SplitOptions>();
-    empty_is_default::<Settings>();
+    empty_is_default::<TheoremOptions>();
     empty_is_default::<ParticleOptions>();
     empty_is_default::<Regularisation>();
     empty_is_default::<ReductionOptions>();
@@ -230,14 +230,57 @@ fn bounds_models_and_results_round_trip() {
     let table = Density1::table(&[0.0, 1.0, 2.0], &[0.0, 1.0, 0.0]).unwrap();
     assert!(!round_trip(&table).contains("cdf"));
     assert_eq!(
-        rejected::<Density1>(r#"{"Uniform":{"low":1.0,"high":0.0}}"#),
-        Density1::uniform(1.0, 0.0).unwrap_err().to_string()
+        rejected::<Density1>(r#"{"uniform":{"low":1.0,"high":0.0}}"#),
+        Density1::uniform(1.0, 0.0)
+            .unwrap_err()
+            .within(".uniform")
+            .to_string()
     );
     let detection = bounds::Detection::constant(0.9).unwrap();
     round_trip(&LinearGaussian::new(detection, 1.0, 0.0, 1.0).unwrap());
+    assert!(
+        rejected::<bounds::Detection>("1.5")
+            .starts_with("must be a probability in [0, 1], got 1.5")
+    );
+}
+
+/// The shapes of paper 002's f, ψ, c (13), (22) and P_o are the ones every binding shows:
+/// lower-case kinds, mixture components as objects, P_o a number or `{"table": …}`; a
+/// constructor's error names the part of the value at fault.
+#[test]
+fn eq13_densities_and_detection_read_in_the_bindings_shape() {
+    let g: Density1 = serde_json::from_str(r#"{"gaussian":{"mean":1,"variance":4}}"#).unwrap();
+    assert_eq!(g, Density1::gaussian(1.0, 4.0).unwrap());
+    let m = Density1::mixture(&[(1.0, 0.0, 1.0), (3.0, 2.0, 0.5)]).unwrap();
+    let json = serde_json::to_string(&m).unwrap();
     assert_eq!(
-        rejected::<bounds::Detection>(r#"{"Constant":1.5}"#),
-        bounds::Detection::constant(1.5).unwrap_err().to_string()
+        json,
+        r#"{"mixture":[{"weight":0.25,"mean":0.0,"variance":1.0},{"weight":0.75,"mean":2.0,"variance":0.5}]}"#
+    );
+    assert_eq!(
+        rejected::<Density1>(r#"{"mixture":[{"weight":1,"mean":0,"variance":-1}]}"#),
+        ".mixture[0].variance must be finite and >= 2.2250738585072014e-308 (a normal float), got -1"
+    );
+    assert!(
+        rejected::<Density1>(r#"{"gaussian":{"mean":0,"variance":0}}"#)
+            .starts_with(".gaussian.variance must be")
+    );
+    let t = bounds::Detection::table(&[0.0, 1.0], &[0.5, 0.9]).unwrap();
+    assert_eq!(
+        round_trip(&t),
+        r#"{"table":{"x":[0.0,1.0],"probability":[0.5,0.9]}}"#
+    );
+    assert_eq!(
+        round_trip(&bounds::Detection::constant(0.5).unwrap()),
+        "0.5"
+    );
+    assert_eq!(
+        serde_json::from_str::<bounds::Detection>("1").unwrap(),
+        bounds::Detection::Constant(1.0)
+    );
+    assert!(
+        rejected::<bounds::Detection>(r#"{"table":{"x":[0,1],"probability":[0.5,2]}}"#)
+            .starts_with(".table.probability[1] must be a probability in [0, 1], got 2")
     );
     let no_clutter = bounds::gaussian_no_clutter(0.5, 0.9, 4.0, 1.0, 1.0, 5.0).unwrap();
     round_trip(&no_clutter);

@@ -17,8 +17,8 @@
 //! | [`ParticleSet`] | `{points, weights}` | [`ParticleSet::new`] |
 //! | [`GmBernoulli`], [`Birth`] | `{existence, mixture}`, `{probability, mixture}` | their `new` |
 //! | [`Detection`] | `{probability, fov}` (`fov` optional) | [`Detection::new`] |
-//! | [`Density1`] | `{"Gaussian": {mean, variance}}`, `{"Uniform": {low, high}}`, `{"Mixture": [[w, m, v], …]}`, `{"Table": {x, density}}` | [`Density1::gaussian`], … (a table's `cdf` is recomputed) |
-//! | [`bounds::Detection`](BoundsDetection) | `{"Constant": p}`, `{"Table": {x, probability}}` | [`BoundsDetection::constant`], [`BoundsDetection::table`] |
+//! | [`Density1`] | `{"gaussian": {mean, variance}}`, `{"uniform": {low, high}}`, `{"mixture": [{weight, mean, variance}, …]}`, `{"table": {x, density}}` (errors name `.gaussian.variance`, `.mixture[2].weight`, …) | [`Density1::gaussian`], … (a table's `cdf` is recomputed) |
+//! | [`bounds::Detection`](BoundsDetection) | a number p (constant), `{"table": {x, probability}}` (errors name `.table.x[3]`, …) | [`BoundsDetection::constant`], [`BoundsDetection::table`] |
 //! | [`LinearGaussian`] | `{detection, gain, offset, noise_variance}` | [`LinearGaussian::new`] |
 //! | [`GaussianPrior`] | `{mean, cov}` (`cov` rows) | [`GaussianPrior::new`] |
 //! | [`LinearGaussianSensor`] | `{detection_probability, gain, offset, noise_cov}` (`gain`, `noise_cov` rows) | [`LinearGaussianSensor::new`] |
@@ -472,65 +472,146 @@ impl<'de> Deserialize<'de> for Region {
     }
 }
 
-/// [`Density1`] as the arguments of its constructors (Rust variant names).
+/// One component of a [`Density1::Mixture`] as read and written: `{weight, mean, variance}`.
 #[derive(Serialize, Deserialize)]
-#[serde(rename = "Density1")]
+struct MixtureComponentRepr {
+    weight: f64,
+    mean: f64,
+    variance: f64,
+}
+
+/// [`Density1`] as the arguments of its constructors, keyed by the lower-case kind (the
+/// shape every binding shows: `{"gaussian": {mean, variance}}`).
+#[derive(Serialize, Deserialize)]
+#[serde(rename = "Density1", rename_all = "camelCase")]
 enum Density1Repr {
     Gaussian { mean: f64, variance: f64 },
     Uniform { low: f64, high: f64 },
-    Mixture(Vec<(f64, f64, f64)>),
+    Mixture(Vec<MixtureComponentRepr>),
     Table { x: Vec<f64>, density: Vec<f64> },
 }
 
-through_constructor!(
-    Density1,
-    Density1Repr,
-    |d| match d {
-        Density1::Gaussian { mean, variance } => Density1Repr::Gaussian {
-            mean: *mean,
-            variance: *variance,
-        },
-        Density1::Uniform { low, high } => Density1Repr::Uniform {
-            low: *low,
-            high: *high,
-        },
-        Density1::Mixture(c) => Density1Repr::Mixture(c.clone()),
-        Density1::Table { x, density, .. } => Density1Repr::Table {
-            x: x.clone(),
-            density: density.clone(),
-        },
-    },
-    |r| match r {
-        Density1Repr::Gaussian { mean, variance } => Density1::gaussian(mean, variance),
-        Density1Repr::Uniform { low, high } => Density1::uniform(low, high),
-        Density1Repr::Mixture(c) => Density1::mixture(&c),
-        Density1Repr::Table { x, density } => Density1::table(&x, &density),
+impl Serialize for Density1 {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        match self {
+            Density1::Gaussian { mean, variance } => Density1Repr::Gaussian {
+                mean: *mean,
+                variance: *variance,
+            },
+            Density1::Uniform { low, high } => Density1Repr::Uniform {
+                low: *low,
+                high: *high,
+            },
+            Density1::Mixture(c) => Density1Repr::Mixture(
+                c.iter()
+                    .map(|&(weight, mean, variance)| MixtureComponentRepr {
+                        weight,
+                        mean,
+                        variance,
+                    })
+                    .collect(),
+            ),
+            Density1::Table { x, density, .. } => Density1Repr::Table {
+                x: x.clone(),
+                density: density.clone(),
+            },
+        }
+        .serialize(serializer)
     }
-);
-
-/// [`BoundsDetection`] as the arguments of its constructors (Rust variant names).
-#[derive(Serialize, Deserialize)]
-#[serde(rename = "Detection")]
-enum BoundsDetectionRepr {
-    Constant(f64),
-    Table { x: Vec<f64>, probability: Vec<f64> },
 }
 
-through_constructor!(
-    BoundsDetection,
-    BoundsDetectionRepr,
-    |d| match d {
-        BoundsDetection::Constant(p) => BoundsDetectionRepr::Constant(*p),
-        BoundsDetection::Table { x, probability } => BoundsDetectionRepr::Table {
-            x: x.clone(),
-            probability: probability.clone(),
-        },
-    },
-    |r| match r {
-        BoundsDetectionRepr::Constant(p) => BoundsDetection::constant(p),
-        BoundsDetectionRepr::Table { x, probability } => BoundsDetection::table(&x, &probability),
+/// A constructor's error about a part of the value being read, named relative to it
+/// (`.gaussian.variance`, `.mixture[2].weight`, `.table.x[3]`): a path-tracking deserializer
+/// (the JavaScript one) continues its own path with it.
+fn relative(e: Error, kind: &str) -> alloc::string::String {
+    e.within(&alloc::format!(".{kind}")).to_string()
+}
+
+impl<'de> Deserialize<'de> for Density1 {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let built = match Density1Repr::deserialize(deserializer)? {
+            Density1Repr::Gaussian { mean, variance } => {
+                Density1::gaussian(mean, variance).map_err(|e| relative(e, "gaussian"))
+            }
+            Density1Repr::Uniform { low, high } => {
+                Density1::uniform(low, high).map_err(|e| relative(e, "uniform"))
+            }
+            Density1Repr::Mixture(c) => {
+                let c: Vec<(f64, f64, f64)> =
+                    c.iter().map(|c| (c.weight, c.mean, c.variance)).collect();
+                Density1::mixture(&c).map_err(|e| relative(e, "mixture"))
+            }
+            Density1Repr::Table { x, density } => {
+                Density1::table(&x, &density).map_err(|e| relative(e, "table"))
+            }
+        };
+        built.map_err(D::Error::custom)
     }
-);
+}
+
+/// A tabulated [`BoundsDetection`] as read and written: `{x, probability}`.
+#[derive(Serialize, Deserialize)]
+struct DetectionTableRepr {
+    x: Vec<f64>,
+    probability: Vec<f64>,
+}
+
+/// `{"table": {x, probability}}`, the map form of a [`BoundsDetection`].
+#[derive(Serialize, Deserialize)]
+struct DetectionTableWrapper {
+    table: DetectionTableRepr,
+}
+
+impl Serialize for BoundsDetection {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        match self {
+            BoundsDetection::Constant(p) => serializer.serialize_f64(*p),
+            BoundsDetection::Table { x, probability } => DetectionTableWrapper {
+                table: DetectionTableRepr {
+                    x: x.clone(),
+                    probability: probability.clone(),
+                },
+            }
+            .serialize(serializer),
+        }
+    }
+}
+
+/// [`BoundsDetection`] is read as a number (a constant P_o, through
+/// [`BoundsDetection::constant`]; its error names the value itself) or as
+/// `{"table": {x, probability}}` (through [`BoundsDetection::table`]; errors name
+/// `.table.x[i]`, `.table.probability[i]`).
+impl<'de> Deserialize<'de> for BoundsDetection {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        use serde::de::{MapAccess, Visitor, value::MapAccessDeserializer};
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = BoundsDetection;
+            fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                f.write_str("a probability or { table: { x, probability } }")
+            }
+            fn visit_f64<E: serde::de::Error>(self, p: f64) -> Result<Self::Value, E> {
+                BoundsDetection::constant(p).map_err(|e| {
+                    let message = e.map_field(|_| "".into()).to_string();
+                    E::custom(message.trim_start())
+                })
+            }
+            // self-describing formats other than JavaScript's (JSON, Python) give integers
+            fn visit_i64<E: serde::de::Error>(self, p: i64) -> Result<Self::Value, E> {
+                self.visit_f64(p as f64)
+            }
+            fn visit_u64<E: serde::de::Error>(self, p: u64) -> Result<Self::Value, E> {
+                self.visit_f64(p as f64)
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Self::Value, A::Error> {
+                let w = DetectionTableWrapper::deserialize(MapAccessDeserializer::new(map))?;
+                BoundsDetection::table(&w.table.x, &w.table.probability)
+                    .map_err(|e| A::Error::custom(relative(e, "table")))
+            }
+        }
+        deserializer.deserialize_any(V)
+    }
+}
 
 #[derive(Serialize, Deserialize)]
 struct LinearGaussianRepr {

@@ -9,7 +9,7 @@
 //! differ from the hand-written simulation these tests had before, the tolerances are the same).
 
 use fisst::bounds::{
-    self, Density, Density1, Detection, LinearGaussian, ModelI, ModelII, Settings, theorem1,
+    self, Density, Density1, Detection, LinearGaussian, ModelI, ModelII, TheoremOptions, theorem1,
     theorem2,
 };
 use fisst::bounds::{
@@ -125,7 +125,7 @@ fn thm1_is_attained_by_map_detection_and_the_posterior_mean() {
                     false_alarm_error: e0,
                     miss_error: e1,
                 };
-                let b = theorem1(&m, &Settings::default()).unwrap();
+                let b = theorem1(&m, &TheoremOptions::default()).unwrap();
                 let (prior1, sensor) = s.vector();
                 let measurement = VectorMeasurement::I {
                     false_alarm_probability: q,
@@ -175,10 +175,10 @@ fn thm2_lies_below_the_optimal_mse() {
                     false_alarm_error: e0,
                     miss_error: e1,
                 };
-                let settings = Settings {
+                let settings = TheoremOptions {
                     samples: 4000,
                     seed,
-                    ..Settings::default()
+                    ..TheoremOptions::default()
                 };
                 let b = theorem2(&m, &settings).unwrap();
                 let (prior1, sensor) = s.vector();
@@ -230,7 +230,7 @@ fn cor3_is_what_the_theorems_reduce_to_without_clutter() {
                     false_alarm_error: e0,
                     miss_error: e1,
                 },
-                &Settings::default(),
+                &TheoremOptions::default(),
             )
             .unwrap();
             let t2 = theorem2(
@@ -243,7 +243,7 @@ fn cor3_is_what_the_theorems_reduce_to_without_clutter() {
                     false_alarm_error: e0,
                     miss_error: e1,
                 },
-                &Settings::default(),
+                &TheoremOptions::default(),
             )
             .unwrap();
             for (name, b) in [("I", &t1), ("II", &t2)] {
@@ -277,9 +277,9 @@ fn cor2_is_an_asserted_target_with_clutter() {
             false_alarm_error: 6.0,
             miss_error: 9.0,
         },
-        &Settings {
+        &TheoremOptions {
             samples: 2000,
-            ..Settings::default()
+            ..TheoremOptions::default()
         },
     )
     .unwrap();
@@ -374,7 +374,7 @@ fn thm1_a_non_gaussian_prior_and_variable_detection_stay_below_the_mse() {
             false_alarm_error: e0,
             miss_error: e1,
         },
-        &Settings::default(),
+        &TheoremOptions::default(),
     )
     .unwrap();
     use fisst::bounds::Observation;
@@ -565,10 +565,10 @@ fn eq64_vector_bounds_against_the_optimal_detector_estimator() {
                             false_alarm_density: &flat,
                         }
                     };
-                    let settings = Settings {
+                    let settings = TheoremOptions {
                         samples: 4000,
                         seed,
-                        ..Settings::default()
+                        ..TheoremOptions::default()
                     };
                     let v = bounds::vector_bound(
                         &bounds::VectorModel {

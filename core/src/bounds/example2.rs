@@ -15,7 +15,7 @@ use alloc::vec::Vec;
 
 use crate::bounds::closed::{Ingredients, Phase, assemble};
 use crate::bounds::model::{Density, Detection, Observation};
-use crate::bounds::theorem::{ModelI, Settings, integrate, theorem1};
+use crate::bounds::theorem::{ModelI, TheoremOptions, integrate, theorem1};
 use crate::error::Result;
 use crate::math::fns;
 
@@ -182,7 +182,7 @@ pub fn example2(
     };
     let prior = Example2Prior;
     // σ_e² first (e1² depends on it in the paper's setting).
-    let s = Settings::default();
+    let s = TheoremOptions::default();
     let sigma_e2 = {
         let (m1, _) = integrate(&mut |x| x * prior.pdf(x), 0.0, 1.0, 1e-12);
         integrate(&mut |x| (x - m1) * (x - m1) * prior.pdf(x), 0.0, 1.0, 1e-12).0

@@ -14,8 +14,8 @@ use alloc::vec::Vec;
 
 use crate::bounds::{
     ComponentBound, Density1, GaussianPrior, JdeBound, LinearGaussian, LinearGaussianSensor,
-    ModelI, ModelII, Settings, VectorMeasurement, VectorModel, poisson_pmf, theorem1, theorem2,
-    vector_bound,
+    ModelI, ModelII, TheoremOptions, VectorMeasurement, VectorModel, poisson_pmf, theorem1,
+    theorem2, vector_bound,
 };
 use crate::error::{Error, Result};
 
@@ -104,7 +104,7 @@ pub struct JdeOptions {
     /// l, in [1, [`MAX_DIMS`]]; must be 1 for a scalar prior and the prior's dimension for a
     /// vector one (default: the prior's).
     pub dims: Option<usize>,
-    /// Relative quadrature tolerance (default [`Settings::default`]'s 1e-10).
+    /// Relative quadrature tolerance (default [`TheoremOptions::default`]'s 1e-10).
     pub tolerance: Option<f64>,
     /// Monte Carlo samples per sampled cardinality (model II with clutter), in
     /// [[`MIN_SAMPLES`], [`MAX_SAMPLES`]] with samples × Σ n ≤ [`MAX_SAMPLE_POINTS`]
@@ -113,7 +113,7 @@ pub struct JdeOptions {
     /// Seed of the Monte Carlo (default: fresh entropy, see [`jde_bound`]).
     pub seed: Option<u64>,
     /// The largest |Z| = n integrated by deterministic quadrature, 1 or 2 (default 1; see
-    /// [`Settings::quadrature_cardinality`]).
+    /// [`TheoremOptions::quadrature_cardinality`]).
     pub quadrature_cardinality: Option<usize>,
 }
 
@@ -194,7 +194,7 @@ pub fn jde_bound(
             return Err(Error::dimension("dims", prior_dims, l));
         }
     }
-    let mut settings = Settings::default();
+    let mut settings = TheoremOptions::default();
     if let Some(t) = o.tolerance {
         settings.tolerance = t;
     }
@@ -314,7 +314,7 @@ fn wrong_model(what: &str) -> Error {
 /// the Poisson series keeps) at most [`MAX_SAMPLE_POINTS`]. Sets `settings.samples` and
 /// `settings.seed` and returns the seed used when clutter is sampled at all.
 fn monte_carlo_settings(
-    settings: &mut Settings,
+    settings: &mut TheoremOptions,
     lambda: f64,
     samples: Option<usize>,
     seed: Option<u64>,

@@ -78,7 +78,7 @@ fn thm1_model_i_dispatches_to_theorem1() {
             false_alarm_error: 6.0,
             miss_error: 9.0,
         },
-        &Settings::default(),
+        &TheoremOptions::default(),
     )
     .unwrap();
     assert_eq!(out.bound, want);
@@ -100,10 +100,10 @@ fn thm2_model_ii_dispatches_to_theorem2_with_the_seed_and_samples() {
         ..scalar(JdeModel::II)
     };
     let out = jde_bound(&o, no_entropy).unwrap();
-    let settings = Settings {
+    let settings = TheoremOptions {
         samples: 200,
         seed: 3,
-        ..Settings::default()
+        ..TheoremOptions::default()
     };
     let want = theorem2(
         &ModelII {
@@ -337,7 +337,7 @@ fn eq64_vector_outcome_is_the_vector_bound() {
             false_alarm_error: 6.0,
             miss_error: 9.0,
         },
-        &Settings::default(),
+        &TheoremOptions::default(),
     )
     .unwrap();
     assert_eq!(out.bound, want.total);

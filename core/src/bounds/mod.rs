@@ -15,7 +15,7 @@
 //! | [`sequential_bound`] | IRF (35), Enumeration (37) | `closed::tests::eq35_eq37_enumeration_dominates_irf`; P: `fig3_enumeration_dominates_irf_and_they_meet` |
 //! | [`Density`], [`Observation`] (closures with derivatives), [`Density1`], [`Detection`], [`LinearGaussian`] | f, P_o, g, ψ, v of models I (13) and II (22) | `model::tests::eq13_tables_name_the_knot_at_fault`, `model::tests::thm2_subnormal_variances_are_rejected_by_name`, `closed::tests::errors_name_the_field` |
 //! | [`theorem1`], [`ModelI`] | Theorem 1 (14)–(21) by quadrature: P̄o, f_d, f_d', σ_e², Z'_0 by root-finding, w_1, η_1, J'_1 (20) | P: `thm1_is_attained_by_map_detection_and_the_posterior_mean`, `thm1_a_non_gaussian_prior_and_variable_detection_stay_below_the_mse` |
-//! | [`theorem2`], [`ModelII`] | Theorem 2 (22)–(26): n = 1 by quadrature, n = 2 by Monte Carlo or (opt-in, [`Settings::quadrature_cardinality`]) 2D cubature over Z², n ≥ 3 by Monte Carlo; η2 exact (see [`theorem2`]'s module) | `theorem2::tests::thm2_n2_cubature_agrees_with_monte_carlo`, `thm2_n2_cubature_agrees_with_a_fine_grid_sum`, `thm2_each_cardinality_reports_its_method`, `thm2_series_is_cut_where_its_tail_is_below_the_tolerance`, `thm2_eta_bracket_takes_the_smaller_bound`; P: `thm2_lies_below_the_optimal_mse` |
+//! | [`theorem2`], [`ModelII`] | Theorem 2 (22)–(26): n = 1 by quadrature, n = 2 by Monte Carlo or (opt-in, [`TheoremOptions::quadrature_cardinality`]) 2D cubature over Z², n ≥ 3 by Monte Carlo; η2 exact (see [`theorem2`]'s module) | `theorem2::tests::thm2_n2_cubature_agrees_with_monte_carlo`, `thm2_n2_cubature_agrees_with_a_fine_grid_sum`, `thm2_each_cardinality_reports_its_method`, `thm2_series_is_cut_where_its_tail_is_below_the_tolerance`, `thm2_eta_bracket_takes_the_smaller_bound`; P: `thm2_lies_below_the_optimal_mse` |
 //! | [`component_bound`], [`component_bounds_no_clutter`], [`component_corollary1`], [`gaussian_information_matrix`] | the vector extensions (63)–(72) | `vector::tests::eq72_one_component_is_the_scalar_bound`, `eq72_independent_components_split_the_scalar_error`; P: `eq72_vector_bounds_reduce_to_the_scalar_ones` |
 //! | [`vector_bound`], [`VectorModel`], [`GaussianPrior`], [`LinearGaussianSensor`] | (63)–(65) for a Gaussian state in R^l and a linear-Gaussian sensor: per-component and whole-state bounds of Theorems 1 and 2 | `vector::tests::eq63_one_dimension_is_the_scalar_theorem`, `eq63_an_observed_component_with_false_alarms_is_the_scalar_theorem`, `eq65_the_rank_one_reduction_is_the_matrix_information_without_clutter`, `eq72_independent_components_are_corollary3_per_component`, `eq72_a_negligible_gain_is_no_gain`, `eq63_vector_errors_name_the_field`; P: `eq64_vector_bounds_against_the_optimal_detector_estimator` |
 //! | [`jde_monte_carlo`], [`MonteCarloModel`], [`JdeMonteCarloOptions`], [`EmptyRule`] | the risk E e² (11) of the optimal joint detector-estimator (MAP detection (39)/(40), the posterior mean, HPE/LPE (46) or MAP on ∅ (Section IV-A)) by a seeded Monte Carlo; k scans (Section III-E) | `simulate::tests::cor3_the_optimal_detector_estimator_attains_the_no_clutter_bound`, `eq37_the_posterior_mean_over_scans_attains_the_enumeration_bound`, `ex2_the_posterior_mean_mse_is_below_the_regularity_failing_curve`, `eq11_same_seed_same_bits_and_another_seed_other_draws`, `eq11_bad_options_are_errors_naming_the_field`; P: `thm1_is_attained_by_map_detection_and_the_posterior_mean`, `thm2_lies_below_the_optimal_mse`, `eq64_vector_bounds_against_the_optimal_detector_estimator` |
@@ -31,7 +31,7 @@
 //!   [`Example2`]); (23) is read as NOTES.md says; η2 is the exact clutter-rejection
 //!   probability, not the product-region formula e^{−λ0} − e^{−λ}.
 //! - Truncation: Σ C_n J'⁻¹ is cut where the Poisson tail is below
-//!   [`Settings::series_tolerance`] (a valid lower bound: the terms are ≥ 0); Σ C_n w_{n+1} gets
+//!   [`TheoremOptions::series_tolerance`] (a valid lower bound: the terms are ≥ 0); Σ C_n w_{n+1} gets
 //!   the tail added (w ≤ 1), and the η2 tail is bracketed, so the returned number stays a lower
 //!   bound. Monte Carlo and quadrature errors are in [`JdeBound::error`]; the bound is the point
 //!   estimate (subtract `error` for a conservative one).
@@ -66,7 +66,7 @@ pub use model::{
     Density, Density1, Detection, GAUSSIAN_SPAN, LinearGaussian, MAX_COMPONENTS, MAX_KNOTS,
     Observation,
 };
-pub use theorem::{Cardinality, JdeBound, Method, ModelI, Settings, theorem1};
+pub use theorem::{Cardinality, JdeBound, Method, ModelI, TheoremOptions, theorem1};
 pub use theorem2::{MAX_CLUTTER_RATE, ModelII, theorem2};
 mod example2;
 pub use example2::{

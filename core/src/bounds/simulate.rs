@@ -20,7 +20,7 @@ use nalgebra::DMatrix;
 
 use crate::bounds::closed::check_nonnegative;
 use crate::bounds::model::{Density, Observation, standard_normal};
-use crate::bounds::theorem::{Settings, check_common};
+use crate::bounds::theorem::{TheoremOptions, check_common};
 use crate::bounds::{Example2Observation, Example2Prior, GaussianPrior, LinearGaussianSensor};
 use crate::bounds::{MAX_CLUTTER_RATE, MAX_STEPS, VectorMeasurement, VectorModel};
 use crate::error::{Error, Result, check_probability};
@@ -98,7 +98,8 @@ impl<'a> From<&VectorModel<'a>> for MonteCarloModel<'a> {
 /// The options of [`jde_monte_carlo`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct JdeMonteCarloOptions {
-    /// Simulated scenes, ≥ 2 (default 20,000).
+    /// Simulated scenes, 2 to [`MAX_MONTE_CARLO_WORK`] (default 20,000; samples × scans ×
+    /// (1 + ⌈q or λ⌉) at most [`MAX_MONTE_CARLO_WORK`]).
     pub samples: usize,
     /// The seed of the [`SeededRng`] (default 0).
     pub seed: u64,
@@ -456,9 +457,11 @@ fn system_of(
 /// estimation parts, per coordinate, and per scan.
 ///
 /// # Errors
-/// [`Error::InvalidProbability`] / [`Error::InvalidParameter`] naming `existence`,
-/// `false_alarm_error`, `miss_error`, `false_alarm.probability`, `clutter.rate`, `samples` (< 2,
-/// or samples × scans × (1 + ⌈q or λ⌉) > [`MAX_MONTE_CARLO_WORK`]) or `scans`;
+/// [`Error::OutOfRange`] naming `samples` (outside [2, [`MAX_MONTE_CARLO_WORK`]]) or `scans`
+/// (outside [1, [`MAX_STEPS`]]), checked first; [`Error::InvalidProbability`] /
+/// [`Error::InvalidParameter`] naming `existence`, `false_alarm_error`, `miss_error`,
+/// `false_alarm.probability`, `clutter.rate` or `samples` (when samples × scans ×
+/// (1 + ⌈q or λ⌉) exceeds [`MAX_MONTE_CARLO_WORK`]);
 /// [`Error::Unsupported`] for false observations with a measurement of more than one
 /// coordinate, a false-observation density that cannot draw, or k > 1 scans with false
 /// observations or Example 2.
@@ -484,15 +487,10 @@ pub fn jde_monte_carlo(
     model: &MonteCarloModel<'_>,
     options: &JdeMonteCarloOptions,
 ) -> Result<JdeMonteCarlo> {
+    let samples = Error::check_range("samples", options.samples, 2, MAX_MONTE_CARLO_WORK)?;
+    let scans = Error::check_range("scans", options.scans, 1, MAX_STEPS)?;
     let (r, e0, e1) = (model.existence, model.false_alarm_error, model.miss_error);
-    check_common(r, e0, e1, &Settings::default())?;
-    let (samples, scans) = (options.samples, options.scans);
-    if samples < 2 {
-        return Err(Error::parameter("samples", samples as f64, "≥ 2"));
-    }
-    if scans == 0 || scans > MAX_STEPS {
-        return Err(Error::parameter("scans", scans as f64, "in [1, 5000]"));
-    }
+    check_common(r, e0, e1, &TheoremOptions::default())?;
     let false_obs = match model.measurement {
         VectorMeasurement::I {
             false_alarm_probability: q,
@@ -834,6 +832,21 @@ mod tests {
             "samples"
         );
         assert_eq!(field(&m, JdeMonteCarloOptions { scans: 0, ..o }), "scans");
+        // the integer ranges are checked first, in the words of every integer option
+        let bad = MonteCarloModel {
+            existence: 1.5,
+            ..m
+        };
+        let samples = JdeMonteCarloOptions { samples: 1, ..o };
+        assert_eq!(
+            alloc::string::ToString::to_string(&jde_monte_carlo(&bad, &samples).unwrap_err()),
+            "samples must be an integer in [2, 10000000], got 1"
+        );
+        let scans = JdeMonteCarloOptions { scans: 5_001, ..o };
+        assert_eq!(
+            alloc::string::ToString::to_string(&jde_monte_carlo(&m, &scans).unwrap_err()),
+            "scans must be an integer in [1, 5000], got 5001"
+        );
         assert_eq!(
             field(&m, JdeMonteCarloOptions { scans: 5_001, ..o }),
             "scans"

@@ -17,7 +17,7 @@ use crate::math::quadrature::{self, Control, Rule, Tolerance};
     derive(serde::Serialize, serde::Deserialize),
     serde(default)
 )]
-pub struct Settings {
+pub struct TheoremOptions {
     /// Relative tolerance of each quadrature (default 1e-10).
     pub tolerance: f64,
     /// Monte Carlo samples per cardinality n ≥ 2 (n ≥ 3 when `quadrature_cardinality` is 2)
@@ -37,9 +37,9 @@ pub struct Settings {
     pub quadrature_cardinality: usize,
 }
 
-impl Default for Settings {
+impl Default for TheoremOptions {
     fn default() -> Self {
-        Settings {
+        TheoremOptions {
             tolerance: 1e-10,
             samples: 20_000,
             seed: 0,
@@ -366,7 +366,7 @@ pub(crate) fn check_result(b: JdeBound) -> Result<JdeBound> {
     Ok(b)
 }
 
-pub(crate) fn check_common(r: f64, e0: f64, e1: f64, s: &Settings) -> Result<()> {
+pub(crate) fn check_common(r: f64, e0: f64, e1: f64, s: &TheoremOptions) -> Result<()> {
     check_probability(|| "existence".into(), r)?;
     check_nonnegative("false_alarm_error", e0)?;
     check_nonnegative("miss_error", e1)?;
@@ -383,7 +383,7 @@ pub(crate) fn check_common(r: f64, e0: f64, e1: f64, s: &Settings) -> Result<()>
 /// Theorem 1 (17)–(21): the bound on the MSE of MAP detection (on Z ≠ ∅) and unbiased
 /// estimation under measurement model I. J'_1 is (20), with the 1/w_1² (Example 2's (32)
 /// omits it, NOTES.md); the whole computation is quadrature, with `error` its estimate.
-pub fn theorem1(m: &ModelI<'_>, s: &Settings) -> Result<JdeBound> {
+pub fn theorem1(m: &ModelI<'_>, s: &TheoremOptions) -> Result<JdeBound> {
     let (r, q) = (m.existence, m.false_alarm_probability);
     check_common(r, m.false_alarm_error, m.miss_error, s)?;
     check_probability(|| "false_alarm.probability".into(), q)?;

@@ -112,7 +112,7 @@ fn native_model_i(q: f64) -> fisst::bounds::JdeBound {
             false_alarm_error: 6.0,
             miss_error: 9.0,
         },
-        &Settings::default(),
+        &TheoremOptions::default(),
     )
     .unwrap()
 }
@@ -258,7 +258,7 @@ fn native_vector(q: f64) -> fisst::bounds::VectorBound {
             false_alarm_error: 6.0,
             miss_error: 9.0,
         },
-        &Settings::default(),
+        &TheoremOptions::default(),
     )
     .unwrap()
 }

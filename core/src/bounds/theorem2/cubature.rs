@@ -1,8 +1,8 @@
 //! The n = 2 terms of Theorem 2 (25) of paper 002 and the 2-point clutter rejection of η2 by
-//! deterministic cubature over Z² (opt-in: [`Settings::quadrature_cardinality`] = 2), with
+//! deterministic cubature over Z² (opt-in: [`TheoremOptions::quadrature_cardinality`] = 2), with
 //! its own globally adaptive G10/K21 rule [`adaptive`] for the nested integrals.
 //!
-//! [`Settings::quadrature_cardinality`]: crate::bounds::Settings::quadrature_cardinality
+//! [`TheoremOptions::quadrature_cardinality`]: crate::bounds::TheoremOptions::quadrature_cardinality
 
 use alloc::vec::Vec;
 

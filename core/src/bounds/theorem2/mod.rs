@@ -1,11 +1,11 @@
 //! Theorem 2 (22)–(26) of paper 002: measurement model II, Z = Θ_b0(X) ∪ W with W Poisson of
 //! intensity v = λ c. The n = 1 terms by 1D quadrature; the n = 2 terms by Monte Carlo, or,
-//! with [`Settings::quadrature_cardinality`] = 2, by deterministic 2D cubature over Z² (nested
+//! with [`TheoremOptions::quadrature_cardinality`] = 2, by deterministic 2D cubature over Z² (nested
 //! adaptive G10/K21 split at the MAP region's boundary found by root-finding; ~3.5 s a call,
 //! hence not the default); n ≥ 3 by Monte Carlo over Z^n (error: one standard error). Each
 //! [`Cardinality::method`] says which.
-//! Truncation: the series stops at N clutter points as [`Settings::series_tolerance`] and
-//! [`Settings::max_clutter`] say; the bound returned is the truncated one below.
+//! Truncation: the series stops at N clutter points as [`TheoremOptions::series_tolerance`] and
+//! [`TheoremOptions::max_clutter`] say; the bound returned is the truncated one below.
 //!
 //! What is computed, exactly (NOTES.md's reading of (23), checked against (57)–(58)):
 //!
@@ -34,7 +34,7 @@ use alloc::vec::Vec;
 use crate::bounds::closed::{Ingredients, check_nonnegative, poisson_pmf};
 use crate::bounds::model::{Density, Observation};
 use crate::bounds::theorem::{
-    Cardinality, JdeBound, Method, Settings, check_common, check_interval, check_result,
+    Cardinality, JdeBound, Method, TheoremOptions, check_common, check_interval, check_result,
     detected_parts, inverse_information, marginal, prior_stats, region,
 };
 use crate::error::{Error, Result};
@@ -68,7 +68,7 @@ pub struct ModelII<'a> {
 pub const MAX_CLUTTER_RATE: f64 = 1000.0;
 
 /// Theorem 2 (23)–(26) with the series and η2 computed as the module docs say.
-pub fn theorem2(m: &ModelII<'_>, s: &Settings) -> Result<JdeBound> {
+pub fn theorem2(m: &ModelII<'_>, s: &TheoremOptions) -> Result<JdeBound> {
     let lambda = check(m, s)?;
     let tol = s.tolerance;
     let st = prior_stats(m.prior, m.observation, tol);
@@ -122,7 +122,7 @@ pub fn theorem2(m: &ModelII<'_>, s: &Settings) -> Result<JdeBound> {
 }
 
 /// The checks of Theorem 2's inputs; returns λ.
-fn check(m: &ModelII<'_>, s: &Settings) -> Result<f64> {
+fn check(m: &ModelII<'_>, s: &TheoremOptions) -> Result<f64> {
     check_common(m.existence, m.false_alarm_error, m.miss_error, s)?;
     let lambda = check_nonnegative("clutter.rate", m.clutter_rate)?;
     if lambda > MAX_CLUTTER_RATE {

@@ -6,19 +6,19 @@ use alloc::vec::Vec;
 
 use super::{MapTest, ModelII, Term, information_density};
 use crate::bounds::closed::poisson_pmf;
-use crate::bounds::theorem::{Cardinality, Method, Settings, marginal};
+use crate::bounds::theorem::{Cardinality, Method, TheoremOptions, marginal};
 use crate::error::{Error, Result};
 use crate::math::fns;
 use crate::math::rng::{SeededRng, seeded};
 
 /// The cardinalities n = k + 1 for k in `first..=last` by Monte Carlo, pushed onto `cards`;
-/// one generator seeded with [`Settings::seed`] runs through them in order.
+/// one generator seeded with [`TheoremOptions::seed`] runs through them in order.
 pub(super) fn terms(
     m: &ModelII<'_>,
     p: f64,
     first: usize,
     last: usize,
-    s: &Settings,
+    s: &TheoremOptions,
     cards: &mut Vec<Cardinality>,
 ) -> Result<()> {
     let samples = s.samples.max(2);

@@ -4,11 +4,11 @@
 //! why each cut keeps a lower bound).
 
 use crate::bounds::closed::{Assembled, Ingredients, assemble, poisson_pmf};
-use crate::bounds::theorem::{Cardinality, Settings};
+use crate::bounds::theorem::{Cardinality, TheoremOptions};
 
 /// N, the last clutter count k kept, and Σ_{k ≤ N} C_k: the series stops where its tail is
-/// below [`Settings::series_tolerance`] or at [`Settings::max_clutter`].
-pub(super) fn truncation(lambda: f64, s: &Settings) -> (usize, f64) {
+/// below [`TheoremOptions::series_tolerance`] or at [`TheoremOptions::max_clutter`].
+pub(super) fn truncation(lambda: f64, s: &TheoremOptions) -> (usize, f64) {
     let mut last = 0usize;
     let mut kept = poisson_pmf(lambda, 0);
     while 1.0 - kept > s.series_tolerance && last < s.max_clutter {

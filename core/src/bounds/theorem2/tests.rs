@@ -141,12 +141,12 @@ fn thm2_n2_cubature_agrees_with_a_fine_grid_sum() {
 fn thm2_each_cardinality_reports_its_method() {
     let c = case(0.8, Density1::uniform(-10.0, 10.0).unwrap());
     let m = model(&c, 0.6, 1.0);
-    let mc = theorem2(&m, &Settings::default()).unwrap();
+    let mc = theorem2(&m, &TheoremOptions::default()).unwrap();
     let quad = theorem2(
         &m,
-        &Settings {
+        &TheoremOptions {
             quadrature_cardinality: 2,
-            ..Settings::default()
+            ..TheoremOptions::default()
         },
     )
     .unwrap();
@@ -179,7 +179,7 @@ fn thm2_each_cardinality_reports_its_method() {
 /// at `max_clutter`.
 #[test]
 fn thm2_series_is_cut_where_its_tail_is_below_the_tolerance() {
-    let s = Settings::default();
+    let s = TheoremOptions::default();
     for lambda in [0.0, 0.5, 3.0, 10.0] {
         let (last, kept) = series::truncation(lambda, &s);
         assert!(
@@ -193,9 +193,9 @@ fn thm2_series_is_cut_where_its_tail_is_below_the_tolerance() {
         }
     }
     assert_eq!(series::truncation(0.0, &s), (0, 1.0));
-    let capped = Settings {
+    let capped = TheoremOptions {
         max_clutter: 3,
-        ..Settings::default()
+        ..TheoremOptions::default()
     };
     assert_eq!(series::truncation(20.0, &capped).0, 3);
 }
@@ -208,10 +208,10 @@ fn thm2_eta_bracket_takes_the_smaller_bound() {
     let m = model(&c, 0.6, 1.0);
     let b = theorem2(
         &m,
-        &Settings {
+        &TheoremOptions {
             samples: 2000,
             max_clutter: 2,
-            ..Settings::default()
+            ..TheoremOptions::default()
         },
     )
     .unwrap();

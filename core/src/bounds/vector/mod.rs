@@ -20,7 +20,7 @@ use alloc::vec::Vec;
 use nalgebra::DMatrix;
 
 use crate::bounds::closed::{Assembled, check_nonnegative};
-use crate::bounds::theorem::{JdeBound, Settings, check_common};
+use crate::bounds::theorem::{JdeBound, TheoremOptions, check_common};
 use crate::error::{Error, Result};
 
 mod closed_form;
@@ -90,7 +90,7 @@ pub struct VectorBound {
 /// false-observation densities would live on R^m: only q = 0 / λ = 0 is served, where the
 /// MAP region is all of R^m, w = 1 and J'_1 = J_1 = P⁻¹ + HᵀR⁻¹H ((72) and its matrix form);
 /// the same closed form is used for m = 1 with h = 0.
-pub fn vector_bound(m: &VectorModel<'_>, s: &Settings) -> Result<VectorBound> {
+pub fn vector_bound(m: &VectorModel<'_>, s: &TheoremOptions) -> Result<VectorBound> {
     let clutter_free = check(m, s)?;
     if let Some(proj) = rank_one::projection(m) {
         return rank_one::bound(m, s, &proj);
@@ -106,7 +106,7 @@ pub fn vector_bound(m: &VectorModel<'_>, s: &Settings) -> Result<VectorBound> {
 
 /// The checks of [`vector_bound`]'s inputs; returns whether there are no false observations
 /// (q = 0 or λ = 0).
-fn check(m: &VectorModel<'_>, s: &Settings) -> Result<bool> {
+fn check(m: &VectorModel<'_>, s: &TheoremOptions) -> Result<bool> {
     let (prior, sensor) = (m.prior, m.sensor);
     let l = prior.dims();
     if sensor.gain.ncols() != l {

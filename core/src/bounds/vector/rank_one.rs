@@ -8,7 +8,9 @@ use nalgebra::{DMatrix, DVector};
 use super::zone::Zone;
 use super::{VectorBound, VectorMeasurement, VectorModel, check_vector, components, row_major};
 use crate::bounds::model::{Density1, Detection, LinearGaussian};
-use crate::bounds::theorem::{Cardinality, JdeBound, ModelI, Settings, check_result, theorem1};
+use crate::bounds::theorem::{
+    Cardinality, JdeBound, ModelI, TheoremOptions, check_result, theorem1,
+};
 use crate::bounds::theorem2::{ModelII, theorem2};
 use crate::error::Result;
 
@@ -41,7 +43,11 @@ pub(super) fn projection(m: &VectorModel<'_>) -> Option<Projection> {
 }
 
 /// The vector bounds through the scalar theorem of the problem in s.
-pub(super) fn bound(m: &VectorModel<'_>, s: &Settings, proj: &Projection) -> Result<VectorBound> {
+pub(super) fn bound(
+    m: &VectorModel<'_>,
+    s: &TheoremOptions,
+    proj: &Projection,
+) -> Result<VectorBound> {
     let (sb, q, model_ii) = scalar_theorem(m, s, proj)?;
     let lifted = Lifted::new(m, proj, &sb);
     let zone = Zone::from_scalar(m, &sb, q, model_ii, lifted.kept, lifted.big_w);
@@ -78,7 +84,7 @@ pub(super) fn bound(m: &VectorModel<'_>, s: &Settings, proj: &Projection) -> Res
 /// (0 for model II) and model II's λ (None for model I).
 fn scalar_theorem(
     m: &VectorModel<'_>,
-    s: &Settings,
+    s: &TheoremOptions,
     proj: &Projection,
 ) -> Result<(JdeBound, f64, Option<f64>)> {
     let sensor = m.sensor;

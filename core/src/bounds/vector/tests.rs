@@ -7,10 +7,10 @@ use crate::bounds::model::{Density, Density1, Detection, LinearGaussian};
 use crate::bounds::theorem::{Method, ModelI, theorem1};
 use crate::bounds::theorem2::{ModelII, theorem2};
 
-fn tight() -> Settings {
-    Settings {
+fn tight() -> TheoremOptions {
+    TheoremOptions {
         tolerance: 1e-12,
-        ..Settings::default()
+        ..TheoremOptions::default()
     }
 }
 
@@ -131,7 +131,7 @@ fn eq63_one_dimension_is_the_scalar_theorem() {
     // model II, Monte Carlo for n ≥ 2: with gain 1 the draws are the scalar ones
     let sensor1 = LinearGaussianSensor::new(0.8, &[1.0], 1, &[0.0], &[noise]).unwrap();
     let sobs1 = LinearGaussian::new(Detection::constant(0.8).unwrap(), 1.0, 0.0, noise).unwrap();
-    let st = Settings {
+    let st = TheoremOptions {
         samples: 2000,
         seed: 7,
         ..tight()
@@ -187,7 +187,7 @@ fn eq72_independent_components_are_corollary3_per_component() {
                     miss_error: 45.0,
                     ..vector(r, &prior, &sensor, measurement)
                 },
-                &Settings::default(),
+                &TheoremOptions::default(),
             )
             .unwrap();
             let mut sum = 0.0;
@@ -275,7 +275,7 @@ fn eq72_a_negligible_gain_is_no_gain() {
         miss_error: 1.0,
         ..vector(0.5, &prior, &sensor, clutter(lambda, &psi))
     };
-    let v = vector_bound(&m(0.0), &Settings::default()).unwrap();
+    let v = vector_bound(&m(0.0), &TheoremOptions::default()).unwrap();
     assert_eq!(v.total.cardinalities[0].method, Method::ClosedForm);
     // J_1 ≈ P⁻¹: the bound is the prior's (Corollary 3 with J_1⁻¹ = σ_{e,i}²).
     for (i, c) in v.components.iter().enumerate() {
@@ -284,7 +284,7 @@ fn eq72_a_negligible_gain_is_no_gain() {
             (c.inverse_information - c.undetected_variance).abs() <= 1e-9 * c.undetected_variance
         );
     }
-    let e = vector_bound(&m(1e-113), &Settings::default()).unwrap_err();
+    let e = vector_bound(&m(1e-113), &TheoremOptions::default()).unwrap_err();
     assert_eq!(e.field(), "observation.gain");
 }
 
@@ -305,7 +305,7 @@ fn eq63_vector_errors_name_the_field() {
         miss_error: 1.0,
         ..vector(0.5, &prior, &two, clutter(1.0, &psi))
     };
-    let e = vector_bound(&m, &Settings::default()).unwrap_err();
+    let e = vector_bound(&m, &TheoremOptions::default()).unwrap_err();
     assert_eq!(e.field(), "observation.gain");
     assert_eq!(
         GaussianPrior::new(&[0.0, 0.0], &[1.0, 2.0, 2.0, 1.0])
@@ -337,7 +337,7 @@ fn eq63_vector_errors_name_the_field() {
             sensor: &three,
             ..m
         },
-        &Settings::default(),
+        &TheoremOptions::default(),
     )
     .unwrap_err();
     assert_eq!(e.field(), "observation.gain");
