@@ -64,7 +64,7 @@ test-wasm:
 
 test-js: web-pkg
 	scripts/npm-deps.sh
-	cd tests/js && node --test contract.test.mjs readme.test.mjs types.test.mjs lib.test.mjs bernoulli_filters.test.mjs metrics_series.test.mjs bounds.test.mjs control.test.mjs package.test.mjs recipes.test.mjs first_day.test.mjs mistakes.test.mjs
+	cd tests/js && node --test contract.test.mjs readme.test.mjs types.test.mjs lib.test.mjs bernoulli_filters.test.mjs mistakes_filters.test.mjs metrics_series.test.mjs bounds.test.mjs control.test.mjs package.test.mjs recipes.test.mjs first_day.test.mjs mistakes.test.mjs
 	cd tests/js && node --expose-gc --test fuzz/ soak/
 	cd tests/js && node --test --test-concurrency=1 pages/
 

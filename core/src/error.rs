@@ -88,6 +88,62 @@ pub enum Error {
         /// The most allowed.
         max: usize,
     },
+    /// Two fields whose dimensions must agree do not, said in matrix terms: `mixture[0].mean
+    /// has length 4 but transition.f is 2×2`.
+    ShapeMismatch {
+        /// The field that disagrees, e.g. `mixture[0].mean`.
+        what: String,
+        /// Its shape.
+        shape: Shape,
+        /// The field it disagrees with, e.g. `transition.f`.
+        other: String,
+        /// That field's shape.
+        other_shape: Shape,
+    },
+    /// A matrix that must be symmetric is not: entry `[row][col]` differs from `[col][row]`
+    /// (beyond a relative tolerance).
+    NotSymmetric {
+        /// The matrix, e.g. `transition.q`.
+        what: String,
+        /// The row of the first entry found (the upper triangle, row < col).
+        row: usize,
+        /// Its column.
+        col: usize,
+        /// The entry `[row][col]`.
+        upper: f64,
+        /// The entry `[col][row]`.
+        lower: f64,
+    },
+    /// A symmetric matrix that must be positive definite (or semidefinite) is not.
+    NotDefinite {
+        /// The matrix, e.g. `mixture[0].cov`.
+        what: String,
+        /// Its smallest eigenvalue.
+        smallest_eigenvalue: f64,
+        /// True when positive semidefinite was required (a noise covariance Q).
+        semidefinite: bool,
+    },
+}
+
+/// The shape of a field, as [`Error::ShapeMismatch`] says it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    /// A list of this many numbers ("has length 4").
+    Length(usize),
+    /// A matrix of rows × columns ("is 2×2").
+    Matrix(usize, usize),
+    /// A count ("is 2", e.g. `position_dims`).
+    Value(usize),
+}
+
+impl fmt::Display for Shape {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Shape::Length(n) => write!(f, "has length {n}"),
+            Shape::Matrix(r, c) => write!(f, "is {r}×{c}"),
+            Shape::Value(n) => write!(f, "is {n}"),
+        }
+    }
 }
 
 /// `Result` with [`Error`] as its default error type.
@@ -159,6 +215,49 @@ impl Error {
         Ok(value)
     }
 
+    /// An [`Error::ShapeMismatch`]: `what` (of `shape`) disagrees with `other` (of
+    /// `other_shape`).
+    pub fn shapes(
+        what: impl Into<String>,
+        shape: Shape,
+        other: impl Into<String>,
+        other_shape: Shape,
+    ) -> Self {
+        Error::ShapeMismatch {
+            what: what.into(),
+            shape,
+            other: other.into(),
+            other_shape,
+        }
+    }
+
+    /// The same error with every field path it names mapped by `rename` (the field and, for
+    /// [`Error::ShapeMismatch`], the field it disagrees with).
+    pub fn map_paths(mut self, mut rename: impl FnMut(&str) -> String) -> Self {
+        if let Error::ShapeMismatch { other, .. } = &mut self {
+            *other = rename(other);
+        }
+        self.map_field(rename)
+    }
+
+    /// The same error with the path of the field it disagrees with mapped by `rename` (only
+    /// [`Error::ShapeMismatch`] names one): for a binding whose two fields are in different
+    /// arguments.
+    pub fn map_other(mut self, rename: impl FnOnce(&str) -> String) -> Self {
+        if let Error::ShapeMismatch { other, .. } = &mut self {
+            *other = rename(other);
+        }
+        self
+    }
+
+    /// The field this error's field disagrees with ([`Error::ShapeMismatch`] only).
+    pub fn other_field(&self) -> Option<&str> {
+        match self {
+            Error::ShapeMismatch { other, .. } => Some(other),
+            _ => None,
+        }
+    }
+
     /// The same error about another field: `rename` maps the field's name (e.g. to say which
     /// time step of a series it is in, or to render a path in a binding's own names).
     pub fn map_field(mut self, rename: impl FnOnce(&str) -> String) -> Self {
@@ -170,6 +269,9 @@ impl Error {
             | Error::InvalidProbability { what, .. }
             | Error::DimensionMismatch { what, .. }
             | Error::NotPositiveDefinite { what }
+            | Error::ShapeMismatch { what, .. }
+            | Error::NotSymmetric { what, .. }
+            | Error::NotDefinite { what, .. }
             | Error::Unsupported { what, .. } => *what = rename(what),
         }
         self
@@ -182,7 +284,7 @@ impl Error {
         if prefix.is_empty() {
             return self;
         }
-        self.map_field(|what| {
+        self.map_paths(|what| {
             if what.is_empty() {
                 prefix.into()
             } else if what.starts_with('[') {
@@ -203,6 +305,9 @@ impl Error {
             | Error::Unsupported { what, .. }
             | Error::OutOfRange { what, .. }
             | Error::OverBudget { what, .. }
+            | Error::ShapeMismatch { what, .. }
+            | Error::NotSymmetric { what, .. }
+            | Error::NotDefinite { what, .. }
             | Error::Count { what, .. } => what,
         }
     }
@@ -262,6 +367,33 @@ impl fmt::Display for Error {
                 min,
                 max,
             } => write!(f, "{what} must have {min} to {max} {noun}, got {found}"),
+            Error::ShapeMismatch {
+                what,
+                shape,
+                other,
+                other_shape,
+            } => write!(f, "{what} {shape} but {other} {other_shape}"),
+            Error::NotSymmetric {
+                what,
+                row,
+                col,
+                upper,
+                lower,
+            } => write!(
+                f,
+                "{what} is not symmetric: [{row}][{col}] = {upper} but [{col}][{row}] = {lower}"
+            ),
+            Error::NotDefinite {
+                what,
+                smallest_eigenvalue,
+                semidefinite,
+            } => {
+                let semi = if *semidefinite { "semi" } else { "" };
+                write!(
+                    f,
+                    "{what} is not positive {semi}definite (smallest eigenvalue {smallest_eigenvalue})"
+                )
+            }
         }
     }
 }
@@ -329,6 +461,44 @@ mod tests {
         let e = Error::dimension("[2].mean", 2, 3).within("options.mixture");
         assert_eq!(e.field(), "options.mixture[2].mean");
         assert_eq!(Error::probability("r", 2.0).within("").field(), "r");
+    }
+
+    #[test]
+    fn shape_and_covariance_errors_say_what_disagrees() {
+        let e = Error::shapes(
+            "mixture[0].mean",
+            Shape::Length(4),
+            "transition.f",
+            Shape::Matrix(2, 2),
+        )
+        .within("config");
+        assert_eq!(
+            e.to_string(),
+            "config.mixture[0].mean has length 4 but config.transition.f is 2×2"
+        );
+        assert_eq!(e.other_field(), Some("config.transition.f"));
+        let e = e.map_other(|o| o.replace("config", "x"));
+        assert_eq!(e.other_field(), Some("x.transition.f"));
+        let e = Error::NotSymmetric {
+            what: "transition.q".into(),
+            row: 0,
+            col: 1,
+            upper: 0.5,
+            lower: 0.4,
+        };
+        assert_eq!(
+            e.to_string(),
+            "transition.q is not symmetric: [0][1] = 0.5 but [1][0] = 0.4"
+        );
+        let e = Error::NotDefinite {
+            what: "q".into(),
+            smallest_eigenvalue: -0.25,
+            semidefinite: true,
+        };
+        assert_eq!(
+            e.to_string(),
+            "q is not positive semidefinite (smallest eigenvalue -0.25)"
+        );
     }
 
     #[test]

@@ -120,3 +120,26 @@ test('errors name the field', () => {
   assert.throws(() => fisst.gmBernoulliUpdate({ existence: 0.5, mixture: [prior], detection: { probability: 0.9 }, clutter: { rate: 0.1, density: 0.1 }, measurements: [[0, 0]] }),
     (e) => e instanceof RangeError && e.message.startsWith('options.likelihood'));
 });
+
+// Fuzz edges of the filters' estimates (issue 26 point 7), found by tests/js/fuzz: states near
+// the largest double gave a NaN mean or covariance.
+test('fuzz edge ParticleBernoulliFilter-mean-overflow: a prior at Number.MAX_VALUE has a finite mean', () => {
+  const I = [[1, 0], [0, 1]];
+  const f = new fisst.ParticleBernoulliFilter({ existence: 0, mixture: [{ weight: 1, mean: [Number.MAX_VALUE, 0], cov: I }], transition: { F: I, Q: I }, detection: { probability: 0 }, clutter: { rate: 0, density: 0 }, particles: 123, seed: 0 });
+  f.predict();
+  const e = f.estimate();
+  assert.ok(e.mean.every(Number.isFinite), JSON.stringify(e.mean));
+  assert.ok(e.cov.flat().every((v) => !Number.isNaN(v)), JSON.stringify(e.cov));
+  f.free();
+});
+
+test('fuzz edge GmBernoulliFilter-estimate-cov-overflow: means 1e308 apart give ±Infinity, not NaN', () => {
+  const I4 = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]];
+  const f = new fisst.GmBernoulliFilter({ existence: 0, mixture: [{ weight: 1 / 3, mean: [0, -1e308, 0, 0], cov: I4 }, { weight: 2 / 3, mean: [0, 0, 0, Number.MAX_VALUE], cov: I4 }], transition: { F: [[1, 0, 1, 0], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]], Q: [[0.0013333333333333333, 0, 0.002, 0], [0, 0.0013333333333333333, 0, 0.002], [0.002, 0, 0.004, 0], [0, 0.002, 0, 0.004]] }, detection: { probability: 0 }, reduction: { maxComponents: 2 }, clutter: { rate: 0, density: 0.1 } });
+  f.predict();
+  f.update([]);
+  const e = f.estimate();
+  assert.ok(e.cov.flat().every((v) => !Number.isNaN(v)), JSON.stringify(e.cov));
+  assert.ok(e.mean.every((v) => !Number.isNaN(v)), JSON.stringify(e.mean));
+  f.free();
+});

@@ -11,16 +11,18 @@ use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::bernoulli::{BernoulliCosts, BernoulliEstimateResult, estimate_out};
-use crate::boundary::{JsResult, core_error_rendered, range_error, read, seed_or_entropy, write};
+use crate::boundary::{
+    JsResult, core_error, range_error, read, render_path, seed_or_entropy, write,
+};
 use crate::types::{
     self, BoxRegion, DiscRegion, MixtureComponent, Point, Region, WeightedGaussian,
 };
 use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
     self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, ClutterDensity,
-    Detection, EstimateOptions, FilterEstimate, GmBernoulli, LinearGaussianLikelihood,
-    LinearGaussianTransition, PredictOptions, Splitting, SplittingOptions, UpdateInfo,
-    UpdateOptions,
+    ConfigShapes, Detection, EstimateOptions, FilterEstimate, GmBernoulli,
+    LinearGaussianLikelihood, LinearGaussianTransition, PredictOptions, Splitting,
+    SplittingOptions, UpdateInfo, UpdateOptions,
 };
 use fisst::mixture::ReductionOptions;
 use fisst::regions::Region as CoreRegion;
@@ -29,7 +31,46 @@ use fisst::serde_shapes::ScalarOr;
 /// A core error whose field is a Rust path under the argument `root`, in JavaScript names
 /// (`transition.q` → `options.transition.Q`).
 fn rendered(root: &'static str) -> impl Fn(fisst::Error) -> JsValue {
-    move |e| core_error_rendered(e, root)
+    move |e| core_error(e.within(root).map_paths(js_path))
+}
+
+/// A Rust error path in this part's JavaScript names: [`render_path`], and a region's ball is
+/// the contract's `disc` (`reports[0].ball.center` → `reports[0].disc.center`).
+fn js_path(rust_path: &str) -> String {
+    render_path(rust_path).replace(".ball.", ".disc.")
+}
+
+/// The shape (rows, length of the first row) of a matrix given as rows.
+fn shape_of(rows: &[Vec<f64>]) -> (usize, usize) {
+    (rows.len(), rows.first().map_or(0, Vec::len))
+}
+
+/// The mean lengths of the components of a mixture as given.
+fn mean_lengths(items: &[WeightedGaussian]) -> Vec<usize> {
+    items.iter().map(|g| g.mean.0.len()).collect()
+}
+
+/// Checks the dimensions of the fields of the argument `root` against each other before any
+/// field is read alone ([`ConfigShapes::check`]).
+fn check_shapes(
+    transition: &Transition,
+    mixture: &[WeightedGaussian],
+    birth: Option<&BirthOptions>,
+    likelihood: Option<&LikelihoodOptions>,
+    position_dims: usize,
+    root: &'static str,
+) -> JsResult<()> {
+    let birth = birth.map(|b| mean_lengths(&b.mixture)).unwrap_or_default();
+    ConfigShapes {
+        f: shape_of(&transition.f),
+        q: shape_of(&transition.q),
+        mixture: &mean_lengths(mixture),
+        birth: &birth,
+        likelihood: likelihood.map(|l| (shape_of(&l.h), shape_of(&l.r))),
+        position_dims,
+    }
+    .check()
+    .map_err(rendered(root))
 }
 
 /// The linear-Gaussian transition N(x; F x′, Q) (eq. (44)): F and Q as n rows of n numbers
@@ -197,6 +238,14 @@ pub fn gm_bernoulli_predict(
     #[wasm_bindgen(unchecked_param_type = "GmBernoulliPredictOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: GmBernoulliPredictOptions = read(options, "options")?;
+    check_shapes(
+        &o.transition,
+        &o.mixture,
+        o.birth.as_ref(),
+        None,
+        0,
+        "options",
+    )?;
     let state = GmBernoulli {
         existence: o.existence,
         mixture: density(o.mixture, "options.mixture")?,
@@ -407,6 +456,14 @@ struct Converted {
 }
 
 fn convert(c: BernoulliFilterConfig) -> JsResult<Converted> {
+    check_shapes(
+        &c.transition,
+        &c.mixture,
+        c.birth.as_ref(),
+        c.likelihood.as_ref(),
+        c.position_dims,
+        "config",
+    )?;
     let update = update_config(
         c.position_dims,
         c.detection,
@@ -467,16 +524,26 @@ fn scan(value: JsValue) -> JsResult<Scan> {
 
 /// The error of a class's `update`: a field of the scan (`reports[i]`, `reports`,
 /// `measurements[i]`) under the argument `reports`, any other (the clutter, the exclusions, the
-/// likelihood, the filter's mixture) under `config`, where it was set.
+/// likelihood, the filter's mixture, and the field a scan's disagrees with, `positionDims` or
+/// `likelihood.H`) under `config`, where it was set.
 fn scan_error(e: fisst::Error) -> JsValue {
     let field = e.field();
-    if field.starts_with("reports") {
-        core_error_rendered(e, "")
+    let root = if field.starts_with("reports") {
+        ""
     } else if field.starts_with("measurements") {
-        core_error_rendered(e, "reports")
+        "reports"
     } else {
-        core_error_rendered(e, "config")
-    }
+        return rendered("config")(e);
+    };
+    // the scan's field under its argument, the one it disagrees with (`position_dims`,
+    // `likelihood.h`) in the config
+    let e = e
+        .map_other(|o| format!("config.{o}"))
+        .map_field(|f| match root {
+            "" => f.into(),
+            _ => format!("{root}.{f}"),
+        });
+    core_error(e.map_paths(js_path))
 }
 
 /// Options of `estimate`: the loss (7) of the optimal Bernoulli estimate, `radius` and `costs`
@@ -721,7 +788,7 @@ impl ParticleBernoulliFilterJs {
             } else {
                 "options"
             };
-            core_error_rendered(e, root)
+            rendered(root)(e)
         })?;
         write(&estimate_result(e))
     }

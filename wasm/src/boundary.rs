@@ -62,7 +62,7 @@ pub fn core_error(e: fisst::Error) -> JsValue {
 /// The JS exception for a `fisst` error whose field is a Rust path under `prefix`: a
 /// `RangeError` naming the path in this binding's names ([`crate::names::render_path`]).
 pub fn core_error_rendered(e: fisst::Error, prefix: &str) -> JsValue {
-    core_error(e.within(prefix).map_field(crate::names::render_path))
+    core_error(e.within(prefix).map_paths(crate::names::render_path))
 }
 
 /// `?`-friendly conversion of `fisst` results.

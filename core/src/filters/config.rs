@@ -5,7 +5,7 @@
 use alloc::vec::Vec;
 
 use super::{Clutter, Detection, LinearGaussianLikelihood, LinearGaussianTransition};
-use crate::error::{Error, Result, check_probability};
+use crate::error::{Error, Result, Shape, check_probability};
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::math::fns;
 use crate::mixture::ReductionOptions;
@@ -167,16 +167,18 @@ impl PredictOptions {
     ///
     /// # Errors
     /// [`Error::InvalidProbability`] naming `survival` or `birth.probability`;
-    /// [`Error::DimensionMismatch`] naming `birth.mixture`.
+    /// [`Error::ShapeMismatch`] naming `birth.mixture[i].mean` and `transition.f`.
     pub fn validate(&self) -> Result<()> {
         check_probability(|| "survival".into(), self.survival)?;
         check_probability(|| "birth.probability".into(), self.birth.probability)?;
-        if let Some(d) = self.birth.mixture.dim()
-            && d != self.transition.dim()
-        {
-            return Err(Error::dimension("birth.mixture", self.transition.dim(), d));
-        }
-        Ok(())
+        let n = self.transition.dim();
+        super::validate::check_means(
+            self.birth.mixture.components().iter().map(|(_, g)| g.dim()),
+            "birth.mixture",
+            n,
+            "transition.f",
+            Shape::Matrix(n, n),
+        )
     }
 }
 
@@ -410,8 +412,8 @@ impl UpdateOptions {
     /// [`Error::Count`] naming `exclusions` (more than [`MAX_REGIONS`]);
     /// [`Error::InvalidParameter`] naming `position_dims` (above the state dimension),
     /// `reduction.prune_below`, `reduction.merge_distance` or `reduction.max_components`; those
-    /// of [`Detection::validate`] and [`Clutter::validate`]; [`Error::DimensionMismatch`]
-    /// naming `exclusions[i]`.
+    /// of [`Detection::validate`] and [`Clutter::validate`]; [`Error::ShapeMismatch`]
+    /// naming the field of `exclusions[i]` that carries its dimension and `position_dims`.
     pub fn validate(&self, state_dim: usize) -> Result<()> {
         let ns = Error::check_range("position_dims", self.position_dims, 1, MAX_POSITION_DIMS)?;
         Error::check_count(
@@ -434,13 +436,7 @@ impl UpdateOptions {
         self.detection.validate(Some(ns))?;
         self.clutter.validate()?;
         for (i, e) in self.exclusions.iter().enumerate() {
-            if e.dim() != ns {
-                return Err(Error::dimension(
-                    alloc::format!("exclusions[{i}]"),
-                    ns,
-                    e.dim(),
-                ));
-            }
+            super::validate::check_region(e, &alloc::format!("exclusions[{i}]"), ns)?;
         }
         let r = &self.reduction;
         if !(r.prune_below.is_finite() && (0.0..1.0).contains(&r.prune_below)) {
@@ -523,29 +519,19 @@ impl BernoulliFilterOptions {
         }
     }
 
-    /// Checks the whole configuration.
+    /// Checks the whole configuration: first the dimensions of its fields against each
+    /// other ([`ConfigShapes::check`](super::ConfigShapes::check), then every region against
+    /// n_s), then each field alone.
     ///
     /// # Errors
-    /// Those of [`GmBernoulli::new`], [`PredictOptions::validate`],
-    /// [`UpdateOptions::validate`]; [`Error::DimensionMismatch`] naming `mixture` (its
-    /// dimension differs from F's) or `likelihood.h` (its column count differs).
+    /// [`Error::ShapeMismatch`] naming the field that disagrees and the one it disagrees
+    /// with (`mixture[0].mean has length 4 but transition.f is 2×2`,
+    /// `detection.fov.box.min has length 3 but position_dims is 2`); those of
+    /// [`GmBernoulli::new`], [`PredictOptions::validate`], [`UpdateOptions::validate`].
     pub fn validate(&self) -> Result<()> {
+        super::validate::check_config(self)?;
         GmBernoulli::new(self.existence, self.mixture.clone())?;
-        let n = self.transition.dim();
-        if self.mixture.dim() != Some(n) {
-            return Err(Error::dimension(
-                "mixture",
-                n,
-                self.mixture.dim().unwrap_or(0),
-            ));
-        }
         self.predict_options().validate()?;
-        self.update_options().validate(n)?;
-        if let Some(l) = &self.likelihood
-            && l.state_dim() != n
-        {
-            return Err(Error::dimension("likelihood.h", n, l.state_dim()));
-        }
-        Ok(())
+        self.update_options().validate(self.transition.dim())
     }
 }

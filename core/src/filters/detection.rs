@@ -1,6 +1,8 @@
 //! The detection model p_D(x; S) = 1_S(x) p_D, eq. (51) of `001_…`.
 
-use crate::error::{Error, Result, check_probability};
+#[cfg(doc)]
+use crate::error::Error;
+use crate::error::{Result, check_probability};
 use crate::regions::Region;
 
 /// p_D(x; S) = 1_S(x) p_D (eq. (51) of `001_0f0df91eee9b30d5.txt`): a constant detection
@@ -31,15 +33,14 @@ impl Detection {
     ///
     /// # Errors
     /// [`Error::InvalidProbability`] naming `detection.probability`;
-    /// [`Error::DimensionMismatch`] naming `detection.fov`.
+    /// [`Error::ShapeMismatch`] naming the field of `detection.fov` that carries its
+    /// dimension (`detection.fov.box.min`) and `position_dims`.
     pub fn validate(&self, position_dims: Option<usize>) -> Result<()> {
         check_probability(|| "detection.probability".into(), self.probability)?;
-        if let (Some(fov), Some(ns)) = (&self.fov, position_dims)
-            && fov.dim() != ns
-        {
-            return Err(Error::dimension("detection.fov", ns, fov.dim()));
+        match (&self.fov, position_dims) {
+            (Some(fov), Some(ns)) => super::validate::check_region(fov, "detection.fov", ns),
+            _ => Ok(()),
         }
-        Ok(())
     }
 
     /// p_D(x; S) of eq. (51) at state `x` (its first n_s components are the position).

@@ -48,13 +48,35 @@ impl FilterEstimate {
     }
 }
 
-/// The smallest power of two ≥ `t` (1 for 0 or a non-finite `t`): dividing by it is exact.
+/// The smallest power of two ≥ `t` (1 for 0 or a non-finite `t`), at most 2¹⁰²³ (the largest
+/// finite one: a `t` above it, up to `f64::MAX`, is then at most twice the scale): dividing
+/// by it is exact.
 fn pow2_above(t: f64) -> f64 {
     if !(t > 0.0 && t.is_finite()) {
         return 1.0;
     }
     let (_, e) = libm::frexp(t);
-    libm::ldexp(1.0, e)
+    libm::ldexp(1.0, e.min(1023))
+}
+
+/// Σ_k w_k x_k of the finite values `x` (weights summing to 1) when the plain sum `plain`
+/// overflowed: the values scaled by a power of two first (exact), the result clamped to the
+/// values' range (a convex combination lies in it; rounding could step past `f64::MAX`).
+fn scaled_mean(plain: f64, x: impl Iterator<Item = (f64, f64)> + Clone) -> f64 {
+    if plain.is_finite() {
+        return plain;
+    }
+    let (lo, hi) = x
+        .clone()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), (_, v)| {
+            (lo.min(v), hi.max(v))
+        });
+    let s = pow2_above(lo.abs().max(hi.abs()));
+    let mut acc = NeumaierSum::new();
+    for (w, v) in x {
+        acc.add(w * (v / s));
+    }
+    (acc.total() * s).clamp(lo, hi)
 }
 
 /// The covariance Σ_k a_k (P_k + d_k d_kᵀ), d_k = m_k − mean (shares a_k summing to 1; P_k
@@ -189,7 +211,18 @@ pub(crate) fn particle_estimate(
             acc.add(w * x);
         }
     }
-    let mean: Vec<f64> = mean.iter().map(NeumaierSum::total).collect();
+    // Particles near ±f64::MAX: the plain sum overflowed, the scaled one cannot.
+    let mean: Vec<f64> = mean
+        .iter()
+        .enumerate()
+        .map(|(i, acc)| {
+            let column = particles
+                .chunks_exact(dim)
+                .zip(weights)
+                .map(|(p, w)| (*w, p[i]));
+            scaled_mean(acc.total(), column)
+        })
+        .collect();
     let cov = spread_cov(
         particles
             .chunks_exact(dim)
@@ -289,5 +322,27 @@ mod tests {
         assert_eq!(p.cov[1][1], f64::INFINITY);
         // x: {0, 1e200, −1e200}, variance 2/3 · 1e400: +∞.
         assert_eq!(p.cov[0][0], f64::INFINITY);
+    }
+
+    #[test]
+    fn eq39_moments_of_states_near_the_largest_double_are_not_nan() {
+        // Fuzz edge ParticleBernoulliFilter-mean-overflow: 123 particles at f64::MAX, whose
+        // plain weighted sum rounds past it.
+        let n = 123;
+        let pts: Vec<f64> = (0..n).flat_map(|_| [f64::MAX, 0.0]).collect();
+        let w = std::vec![1.0 / n as f64; n];
+        let p = particle_estimate(0.5, &pts, &w, 2, 2, &EstimateOptions::default()).unwrap();
+        assert_eq!(p.mean, [f64::MAX, 0.0]);
+        assert!(p.cov.iter().flatten().all(|v| v.is_finite()), "{:?}", p.cov);
+        // Fuzz edge GmBernoulliFilter-estimate-cov-overflow: means −1e308 and f64::MAX apart
+        // on one axis; the scale of the spread was 2¹⁰²⁴ = ∞ (then 0 · ∞).
+        let s = gm(&[
+            (1.0 / 3.0, [0.0, -1e308], 1.0),
+            (2.0 / 3.0, [0.0, f64::MAX], 1.0),
+        ]);
+        let e = gm_estimate(&s, 2, &EstimateOptions::default()).unwrap();
+        assert!(e.cov.iter().flatten().all(|v| !v.is_nan()), "{:?}", e.cov);
+        assert_eq!(e.cov[1][1], f64::INFINITY);
+        assert_eq!(e.cov[0][0], 1.0);
     }
 }

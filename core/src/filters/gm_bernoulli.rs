@@ -10,7 +10,7 @@ use super::config::{
 };
 use super::estimate::{EstimateOptions, FilterEstimate, gm_estimate};
 use super::likelihood::{GeneralizedLikelihood, LinearGaussianLikelihood, RegionReports};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, Shape};
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::math::sum::NeumaierSum;
 use crate::mixture::reduce_owned;
@@ -58,9 +58,13 @@ pub fn gm_bernoulli_predict(state: &GmBernoulli, config: &PredictOptions) -> Res
     let total = check_state(state)?;
     let f = config.transition.f();
     let n = config.transition.dim();
-    if state.dim() != n {
-        return Err(Error::dimension("mixture", n, state.dim()));
-    }
+    super::validate::check_means(
+        state.mixture.components().iter().map(|(_, g)| g.dim()),
+        "mixture",
+        n,
+        "transition.f",
+        Shape::Matrix(n, n),
+    )?;
     let r = state.existence;
     let born = config.birth.probability * (1.0 - r);
     let survive = config.survival * r;
@@ -292,12 +296,16 @@ pub(crate) fn count_zero_kappa(kappa: &[f64]) -> usize {
     kappa.iter().filter(|k| **k <= 0.0).count()
 }
 
-/// Checks that every measurement has `mdim` components, all finite.
+/// Checks that every measurement has the m components of `likelihood`'s H, all finite.
 ///
 /// # Errors
 /// [`Error::DimensionMismatch`] naming `measurements[j]`, [`Error::InvalidParameter`] naming
 /// `measurements[j][i]`.
-pub(crate) fn check_measurements<M: AsRef<[f64]>>(measurements: &[M], mdim: usize) -> Result<()> {
+pub(crate) fn check_measurements<M: AsRef<[f64]>>(
+    measurements: &[M],
+    likelihood: &LinearGaussianLikelihood,
+) -> Result<()> {
+    let mdim = likelihood.measurement_dim();
     Error::check_count(
         "measurements",
         "measurements",
@@ -308,10 +316,11 @@ pub(crate) fn check_measurements<M: AsRef<[f64]>>(measurements: &[M], mdim: usiz
     for (j, z) in measurements.iter().enumerate() {
         let z = z.as_ref();
         if z.len() != mdim {
-            return Err(Error::dimension(
+            return Err(Error::shapes(
                 alloc::format!("measurements[{j}]"),
-                mdim,
-                z.len(),
+                Shape::Length(z.len()),
+                "likelihood.h",
+                Shape::Matrix(mdim, likelihood.state_dim()),
             ));
         }
         if let Some(i) = z.iter().position(|v| !v.is_finite()) {
@@ -552,9 +561,14 @@ pub fn gm_bernoulli_update_vector<M: AsRef<[f64]>>(
     let n = state.dim();
     config.validate(n)?;
     if likelihood.state_dim() != n {
-        return Err(Error::dimension("likelihood.h", n, likelihood.state_dim()));
+        return Err(Error::shapes(
+            "likelihood.h",
+            Shape::Matrix(likelihood.measurement_dim(), likelihood.state_dim()),
+            "mixture[0].mean",
+            Shape::Length(n),
+        ));
     }
-    check_measurements(measurements, likelihood.measurement_dim())?;
+    check_measurements(measurements, likelihood)?;
     let kappa = config
         .clutter
         .intensities(measurements.len(), |j| Some(measurements[j].as_ref()))?;

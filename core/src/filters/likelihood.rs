@@ -6,7 +6,7 @@ use alloc::vec::Vec;
 
 use nalgebra::DMatrix;
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, Shape};
 use crate::gaussian::Gaussian;
 use crate::regions::Region;
 
@@ -61,7 +61,8 @@ impl GeneralizedLikelihood for RegionReports<'_> {
 /// of them, each of dimension n_s = `position_dims`.
 ///
 /// # Errors
-/// [`Error::Count`] naming `reports`; [`Error::DimensionMismatch`] naming `reports[i]`.
+/// [`Error::Count`] naming `reports`; [`Error::ShapeMismatch`] naming the field of
+/// `reports[i]` that carries its dimension (`reports[0].box.min`) and `position_dims`.
 pub(crate) fn check_reports(reports: &[Region], position_dims: usize) -> Result<()> {
     Error::check_count(
         "reports",
@@ -70,14 +71,10 @@ pub(crate) fn check_reports(reports: &[Region], position_dims: usize) -> Result<
         0,
         super::config::MAX_REGIONS,
     )?;
-    match reports.iter().position(|r| r.dim() != position_dims) {
-        Some(i) => Err(Error::dimension(
-            alloc::format!("reports[{i}]"),
-            position_dims,
-            reports[i].dim(),
-        )),
-        None => Ok(()),
+    for (i, r) in reports.iter().enumerate() {
+        super::validate::check_region(r, &alloc::format!("reports[{i}]"), position_dims)?;
     }
+    Ok(())
 }
 
 /// A caller-supplied generalized likelihood: `likelihood(i, x)` = g̃(ζ_i | x) for
@@ -125,6 +122,16 @@ impl<F: Fn(usize, &[f64]) -> f64> GeneralizedLikelihood for FnLikelihood<F> {
 /// The most measurement components a [`LinearGaussianLikelihood`] may have (rows of H).
 pub const MAX_MEASUREMENT_DIM: usize = 64;
 
+/// The error for an R of `r` = (rows, columns) with an H of `h` = (m, n): R must be m × m.
+fn r_against_h(r: (usize, usize), h: (usize, usize)) -> Error {
+    Error::shapes(
+        "likelihood.r",
+        Shape::Matrix(r.0, r.1),
+        "likelihood.h",
+        Shape::Matrix(h.0, h.1),
+    )
+}
+
 /// The linear-Gaussian likelihood g(z | x) = N(z; H x, R) of a vector measurement z
 /// (`likelihood: { H, R }`).
 #[derive(Clone, Debug, PartialEq)]
@@ -139,9 +146,11 @@ impl LinearGaussianLikelihood {
     ///
     /// # Errors
     /// [`Error::Count`] naming `likelihood.h` for more than [`MAX_MEASUREMENT_DIM`] rows;
-    /// [`Error::DimensionMismatch`] naming `likelihood.h` (empty) or `likelihood.r` (not
-    /// m × m); [`Error::InvalidParameter`] naming `likelihood.h[i][j]` for a non-finite entry;
-    /// [`Error::NotPositiveDefinite`] naming `likelihood.r`.
+    /// [`Error::DimensionMismatch`] naming `likelihood.h` (empty); [`Error::ShapeMismatch`]
+    /// naming `likelihood.r` (not m × m) and `likelihood.h`; [`Error::InvalidParameter`]
+    /// naming `likelihood.h[i][j]` or `likelihood.r[i][j]` for a non-finite entry;
+    /// [`Error::NotSymmetric`] or [`Error::NotDefinite`] naming `likelihood.r` (the checks of
+    /// [`crate::gaussian::covariance`]).
     pub fn new(h: DMatrix<f64>, r: DMatrix<f64>) -> Result<Self> {
         let m = h.nrows();
         Error::check_count("likelihood.h", "rows", m, 0, MAX_MEASUREMENT_DIM)?;
@@ -156,25 +165,10 @@ impl LinearGaussianLikelihood {
             ));
         }
         if r.nrows() != m || r.ncols() != m {
-            let found = if r.nrows() != m { r.nrows() } else { r.ncols() };
-            return Err(Error::dimension("likelihood.r", m, found));
+            return Err(r_against_h((r.nrows(), r.ncols()), (m, h.ncols())));
         }
-        let noise =
-            Gaussian::new(nalgebra::DVector::zeros(m), r, "likelihood.r").map_err(|e| match e {
-                Error::NotPositiveDefinite { .. } => Error::NotPositiveDefinite {
-                    what: "likelihood.r".into(),
-                },
-                Error::InvalidParameter {
-                    what,
-                    value,
-                    expected,
-                } => Error::InvalidParameter {
-                    what: what.replace("likelihood.r.cov", "likelihood.r"),
-                    value,
-                    expected,
-                },
-                other => other,
-            })?;
+        let noise = Gaussian::new(nalgebra::DVector::zeros(m), r, "likelihood.r")
+            .map_err(|e| e.map_field(|what| what.replace("likelihood.r.cov", "likelihood.r")))?;
         Ok(Self { h, noise })
     }
 
@@ -184,7 +178,8 @@ impl LinearGaussianLikelihood {
     /// # Errors
     /// [`Error::Count`] naming `likelihood.h` unless it has 1 to [`MAX_MEASUREMENT_DIM`]
     /// rows; [`Error::DimensionMismatch`] naming `likelihood.h[i]` (length not row 0's) or
-    /// `likelihood.r[i]` (length not R's row count); as
+    /// `likelihood.r[i]` (length not m); [`Error::ShapeMismatch`] naming `likelihood.r` and
+    /// `likelihood.h` when R (its rows × the length of its first row) is not m × m; as
     /// [`LinearGaussianLikelihood::from_row_slices`].
     pub fn from_rows(h: &[Vec<f64>], r: &[Vec<f64>]) -> Result<Self> {
         let m = h.len();
@@ -202,7 +197,11 @@ impl LinearGaussianLikelihood {
             None => Ok(rows.concat()),
         };
         let h = rows_of(h, n, "likelihood.h")?;
-        let r = rows_of(r, r.len(), "likelihood.r")?;
+        let r_shape = super::transition::rows_shape(r);
+        if r_shape != (m, m) {
+            return Err(r_against_h(r_shape, (m, n)));
+        }
+        let r = rows_of(r, m, "likelihood.r")?;
         Self::from_row_slices(&h, m, &r)
     }
 
@@ -211,14 +210,20 @@ impl LinearGaussianLikelihood {
     ///
     /// # Errors
     /// [`Error::DimensionMismatch`] naming `likelihood.h` (empty, or its length not a
-    /// multiple of m) or `likelihood.r` (length not m²); as [`LinearGaussianLikelihood::new`].
+    /// multiple of m); [`Error::ShapeMismatch`] naming `likelihood.r` (length not m²) and
+    /// `likelihood.h`; as [`LinearGaussianLikelihood::new`].
     pub fn from_row_slices(h: &[f64], measurement_dim: usize, r: &[f64]) -> Result<Self> {
         let m = measurement_dim;
         if m == 0 || h.is_empty() || !h.len().is_multiple_of(m) {
             return Err(Error::dimension("likelihood.h", m.max(1), h.len()));
         }
         if r.len() != m * m {
-            return Err(Error::dimension("likelihood.r", m * m, r.len()));
+            return Err(Error::shapes(
+                "likelihood.r",
+                Shape::Length(r.len()),
+                "likelihood.h",
+                Shape::Matrix(m, h.len() / m),
+            ));
         }
         Self::new(
             DMatrix::from_row_slice(m, h.len() / m, h),

@@ -64,7 +64,7 @@ fn a_likelihood_has_1_to_64_rows() {
     );
     assert_eq!(
         message(LinearGaussianLikelihood::from_rows(&[row(2)], &[row(2)])),
-        "likelihood.r[0] has length 2, expected 1"
+        "likelihood.r is 1×2 but likelihood.h is 1×2"
     );
     let l = LinearGaussianLikelihood::from_rows(&[vec![1.0, 0.0]], &[vec![0.5]]).unwrap();
     assert_eq!((l.measurement_dim(), l.state_dim()), (1, 2));

@@ -83,6 +83,7 @@ mod gm_bernoulli;
 mod likelihood;
 mod particle_bernoulli;
 mod transition;
+mod validate;
 
 pub use clutter::{Clutter, ClutterDensity, ClutterFn, ClutterFunction};
 pub use config::{
@@ -106,6 +107,7 @@ pub use particle_bernoulli::{
     default_particles,
 };
 pub use transition::{LinearGaussianTransition, MAX_STATES};
+pub use validate::ConfigShapes;
 
 #[cfg(test)]
 mod limits_tests;
@@ -113,3 +115,5 @@ mod limits_tests;
 mod tests;
 #[cfg(test)]
 mod transactional_tests;
+#[cfg(test)]
+mod validate_tests;

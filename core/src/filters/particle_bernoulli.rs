@@ -124,9 +124,11 @@ impl ParticleBernoulliFilter {
     /// # Errors
     /// As [`BernoulliFilterOptions::validate`]; [`Error::OutOfRange`] naming `particles`
     /// (outside [1, [`MAX_PARTICLES`]]), `birth_particles` (above [`MAX_PARTICLES`]) or
-    /// `mcmc_moves` (above [`MAX_MCMC_MOVES`]);
-    /// [`Error::NotPositiveDefinite`] naming `transition.q` when `mcmc_moves > 0` and Q is
-    /// singular.
+    /// `mcmc_moves` (above [`MAX_MCMC_MOVES`]). A singular (positive semidefinite) Q is
+    /// accepted: the prediction samples its noise with a factor G Gᵀ = Q that allows it
+    /// ([`LinearGaussianTransition`](super::LinearGaussianTransition)), and the move step
+    /// leaves the survivors where the prediction put them (their transition density is
+    /// degenerate, so every Metropolis–Hastings proposal off Q's range would be rejected).
     pub fn new(config: BernoulliFilterOptions, options: ParticleOptions) -> Result<Self> {
         config.validate()?;
         Error::check_range("particles", options.particles, 1, MAX_PARTICLES)?;
@@ -134,11 +136,6 @@ impl ParticleBernoulliFilter {
             Error::check_range("birth_particles", b, 0, MAX_PARTICLES)?;
         }
         Error::check_range("mcmc_moves", options.mcmc_moves, 0, MAX_MCMC_MOVES)?;
-        if options.mcmc_moves > 0 && !config.transition.has_density() {
-            return Err(Error::NotPositiveDefinite {
-                what: "transition.q".into(),
-            });
-        }
         let dim = config.transition.dim();
         let mut rng = seeded(options.seed);
         let n = options.particles;
@@ -311,7 +308,7 @@ impl ParticleBernoulliFilter {
                 reason: "vector measurements need a likelihood { H, R } in the filter's config",
             });
         };
-        check_measurements(measurements, lik.measurement_dim())?;
+        check_measurements(measurements, &lik)?;
         let kappa = self
             .update
             .clutter
@@ -493,7 +490,9 @@ impl ParticleBernoulliFilter {
         let mut proposal = alloc::vec![0.0; dim];
         let mut eps = alloc::vec![0.0; dim];
         for i in 0..n {
-            if origins[i] == Origin::Fixed {
+            let degenerate =
+                origins[i] == Origin::Survived && !self.predict.transition.has_density();
+            if origins[i] == Origin::Fixed || degenerate {
                 continue;
             }
             let x = &particles[i * dim..(i + 1) * dim];

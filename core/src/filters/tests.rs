@@ -4,6 +4,7 @@
 
 extern crate std;
 
+use std::string::ToString;
 use std::vec;
 use std::vec::Vec;
 
@@ -176,8 +177,8 @@ fn eq40_eq49_prediction_matches_its_closed_form() {
     assert_eq!(
         gm_bernoulli_predict(&wrong_dim, &config)
             .unwrap_err()
-            .field(),
-        "mixture"
+            .to_string(),
+        "mixture[0].mean has length 2 but transition.f is 3×3"
     );
     let unnormalised = GmBernoulli {
         existence: 0.5,
@@ -1057,8 +1058,8 @@ fn update_errors_name_the_field() {
     assert_eq!(
         gm_bernoulli_update(&state, &three_d, &good)
             .unwrap_err()
-            .field(),
-        "reports[0]"
+            .to_string(),
+        "reports[0].ball.center has length 3 but position_dims is 2"
     );
     let mut c = good.clone();
     c.position_dims = 3;

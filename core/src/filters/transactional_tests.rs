@@ -97,7 +97,9 @@ fn check_every_bad_scan<F: Filter>(mut filter: F) {
         if after_update {
             filter.update(&near).unwrap();
         }
-        assert_unchanged(&mut filter, "reports[0]", |f| f.update(&three_d));
+        assert_unchanged(&mut filter, "reports[0].ball.center", |f| {
+            f.update(&three_d)
+        });
         assert_unchanged(&mut filter, "measurements[0]", |f| {
             f.update_measurements(&[vec![1.0, 2.0, 3.0]])
         });

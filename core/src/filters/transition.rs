@@ -3,15 +3,18 @@
 
 use alloc::vec::Vec;
 
-use nalgebra::{DMatrix, SymmetricEigen};
+use nalgebra::DMatrix;
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, Shape};
+use crate::gaussian::covariance;
 use crate::math::fns;
 
 /// π_{k|k−1}(x | x′) = N(x; F x′, Q), eq. (44) (and (69)) of `001_0f0df91eee9b30d5.txt`.
 ///
-/// Q may be singular (positive semidefinite, e.g. ϖ = 0); the particle filter's MCMC move
-/// step evaluates the transition density and then needs Q positive definite.
+/// Q may be singular (positive semidefinite, e.g. ϖ = 0, or noise on the velocity only):
+/// the prediction samples with a factor G Gᵀ = Q that allows it (Cholesky when Q is positive
+/// definite, V √Λ otherwise), and the particle filter's MCMC move step, which needs the
+/// transition density, leaves the survivors of a singular Q where the prediction put them.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LinearGaussianTransition {
     f: DMatrix<f64>,
@@ -29,20 +32,18 @@ pub struct LinearGaussianTransition {
 /// splitting's collocation grids of larger states are beyond any interactive use).
 pub const MAX_STATES: usize = 64;
 
-/// Relative tolerance of the symmetry and semidefiniteness checks of Q.
-const TOL: f64 = 1e-9;
-
 impl LinearGaussianTransition {
     /// F (`transition.f`, n × n) and Q (`transition.q`, n × n, symmetric positive
     /// semidefinite).
     ///
     /// # Errors
     /// [`Error::Unsupported`] naming `transition.f` for more than [`MAX_STATES`] states;
-    /// [`Error::DimensionMismatch`] naming `transition.f` (not square, or empty) or
-    /// `transition.q` (not n × n); [`Error::InvalidParameter`] naming `transition.f[i][j]` or
-    /// `transition.q[i][j]` for a non-finite entry; [`Error::NotPositiveDefinite`] naming
-    /// `transition.q` if Q is not symmetric (to a relative 1e-9) or has a negative
-    /// eigenvalue (below −1e-9 of its largest).
+    /// [`Error::DimensionMismatch`] naming `transition.f` (not square, or empty);
+    /// [`Error::ShapeMismatch`] naming `transition.q` (not n × n) and `transition.f`;
+    /// [`Error::InvalidParameter`] naming `transition.f[i][j]` or `transition.q[i][j]` for a
+    /// non-finite entry; [`Error::NotSymmetric`] naming `transition.q` if Q is not symmetric
+    /// (to a relative 1e-9), [`Error::NotDefinite`] (semidefinite) if it has a negative
+    /// eigenvalue (below −1e-9 of its largest): the checks of [`covariance`].
     pub fn new(f: DMatrix<f64>, q: DMatrix<f64>) -> Result<Self> {
         let n = f.nrows();
         check_states(n)?;
@@ -53,22 +54,17 @@ impl LinearGaussianTransition {
             return Err(Error::dimension("transition.f", n, f.ncols()));
         }
         if q.nrows() != n || q.ncols() != n {
-            let found = if q.nrows() != n { q.nrows() } else { q.ncols() };
-            return Err(Error::dimension("transition.q", n, found));
+            return Err(Error::shapes(
+                "transition.q",
+                Shape::Matrix(q.nrows(), q.ncols()),
+                "transition.f",
+                Shape::Matrix(n, n),
+            ));
         }
         check_finite(&f, "transition.f")?;
         check_finite(&q, "transition.q")?;
-        let not_psd = || Error::NotPositiveDefinite {
-            what: "transition.q".into(),
-        };
-        let scale = (0..n).fold(0.0f64, |a, i| a.max(fns::abs(q[(i, i)])));
-        for i in 0..n {
-            for j in 0..i {
-                if fns::abs(q[(i, j)] - q[(j, i)]) > TOL * scale.max(f64::MIN_POSITIVE) {
-                    return Err(not_psd());
-                }
-            }
-        }
+        let name = || "transition.q".into();
+        covariance::check_symmetric(&q, &name)?;
         let q = (&q + q.transpose()) * 0.5;
         let (factor, chol, ln_det) = match q.clone().cholesky() {
             Some(c) => {
@@ -77,12 +73,8 @@ impl LinearGaussianTransition {
                 (l.clone(), Some(l), ln_det)
             }
             None => {
-                let eig =
-                    SymmetricEigen::try_new(q.clone(), f64::EPSILON, 10_000).ok_or_else(not_psd)?;
-                let top = eig.eigenvalues.iter().fold(0.0f64, |a, v| a.max(*v));
-                if eig.eigenvalues.iter().any(|v| *v < -TOL * top.max(0.0)) {
-                    return Err(not_psd());
-                }
+                let eig = covariance::eigen(&q, &name, true)?;
+                covariance::check_semidefinite(eig.eigenvalues.as_slice(), &name)?;
                 let mut g = eig.eigenvectors.clone();
                 for (k, v) in eig.eigenvalues.iter().enumerate() {
                     let s = fns::sqrt(v.max(0.0));
@@ -108,11 +100,23 @@ impl LinearGaussianTransition {
     /// # Errors
     /// [`Error::Unsupported`] naming `transition.f` for more than [`MAX_STATES`] rows;
     /// [`Error::DimensionMismatch`] naming `transition.f[i]` or `transition.q[i]` for a row
-    /// whose length differs from its matrix's row count; as
+    /// whose length differs from its matrix's row count; [`Error::ShapeMismatch`] naming
+    /// `transition.q` and `transition.f` when Q (its rows × the length of its first row) is
+    /// not F's n × n; as
     /// [`LinearGaussianTransition::from_row_slices`].
     pub fn from_rows(f: &[Vec<f64>], q: &[Vec<f64>]) -> Result<Self> {
         check_states(f.len())?;
+        let n = f.len();
         let f = square_rows(f, "transition.f")?;
+        let q_shape = rows_shape(q);
+        if q_shape != (n, n) {
+            return Err(Error::shapes(
+                "transition.q",
+                Shape::Matrix(q_shape.0, q_shape.1),
+                "transition.f",
+                Shape::Matrix(n, n),
+            ));
+        }
         let q = square_rows(q, "transition.q")?;
         Self::from_row_slices(&f, &q)
     }
@@ -121,14 +125,26 @@ impl LinearGaussianTransition {
     ///
     /// # Errors
     /// [`Error::DimensionMismatch`] naming `transition.f` if `f.len()` is not a square
-    /// number, `transition.q` if `q.len() != f.len()`; as [`LinearGaussianTransition::new`].
+    /// number; [`Error::ShapeMismatch`] naming `transition.q` and `transition.f` if
+    /// `q.len() != f.len()`; as [`LinearGaussianTransition::new`].
     pub fn from_row_slices(f: &[f64], q: &[f64]) -> Result<Self> {
         let n = isqrt(f.len());
         if n * n != f.len() || n == 0 {
             return Err(Error::dimension("transition.f", (n + 1) * (n + 1), f.len()));
         }
         if q.len() != f.len() {
-            return Err(Error::dimension("transition.q", f.len(), q.len()));
+            let k = isqrt(q.len());
+            let shape = if k * k == q.len() {
+                Shape::Matrix(k, k)
+            } else {
+                Shape::Length(q.len())
+            };
+            return Err(Error::shapes(
+                "transition.q",
+                shape,
+                "transition.f",
+                Shape::Matrix(n, n),
+            ));
         }
         Self::new(
             DMatrix::from_row_slice(n, n, f),
@@ -262,6 +278,11 @@ fn square_rows(rows: &[Vec<f64>], what: &str) -> Result<Vec<f64>> {
         ));
     }
     Ok(rows.concat())
+}
+
+/// The shape of a matrix given as rows: (rows, length of the first row).
+pub(crate) fn rows_shape(rows: &[Vec<f64>]) -> (usize, usize) {
+    (rows.len(), rows.first().map_or(0, Vec::len))
 }
 
 fn check_finite(m: &DMatrix<f64>, what: &str) -> Result<()> {

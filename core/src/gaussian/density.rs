@@ -20,17 +20,15 @@ pub struct Gaussian {
     ln_det: f64,
 }
 
-/// Relative tolerance of the symmetry check.
-const SYMMETRY_TOL: f64 = 1e-9;
-
 impl Gaussian {
     /// N(mean, cov). `what` names the Gaussian in errors (e.g. `density` or
     /// `mixture[2]`); the mean is reported as `{what}.mean`, the covariance as `{what}.cov`.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for a non-finite entry, [`Error::DimensionMismatch`] if
-    /// `cov` is not `n × n` for `n = mean.len()`, [`Error::NotPositiveDefinite`] if `cov` is
-    /// not symmetric (to a relative 1e-9) positive definite.
+    /// `cov` is not `n × n` for `n = mean.len()`, [`Error::NotSymmetric`] if `cov` is not
+    /// symmetric (to a relative 1e-9), [`Error::NotDefinite`] if it is not positive definite
+    /// (the checks of [`super::covariance`]).
     pub fn new(mean: DVector<f64>, cov: DMatrix<f64>, what: &str) -> Result<Self> {
         Self::named(mean, cov, &|| String::from(what))
     }
@@ -70,25 +68,16 @@ impl Gaussian {
                 "finite",
             ));
         }
-        for i in 0..n {
-            for j in 0..i {
-                let (a, b) = (cov[(i, j)], cov[(j, i)]);
-                let scale = fns::sqrt(fns::abs(cov[(i, i)] * cov[(j, j)]));
-                if fns::abs(a - b) > SYMMETRY_TOL * scale.max(f64::MIN_POSITIVE) {
-                    return Err(Error::NotPositiveDefinite { what: cov_name() });
-                }
-            }
-        }
+        super::covariance::check_symmetric(&cov, &cov_name)?;
         // Symmetrise exactly so that downstream results do not depend on which triangle
         // carried the rounding: A/2 + Aᵀ/2, which is (A + Aᵀ)/2 bit for bit but cannot
         // overflow for entries near f64::MAX (1e308 + 1e308 = ∞ gave an infinite Cholesky
         // factor and infinite samples).
         let cov = &cov * 0.5 + cov.transpose() * 0.5;
-        let chol = cov
-            .clone()
-            .cholesky()
-            .ok_or_else(|| Error::NotPositiveDefinite { what: cov_name() })?
-            .unpack();
+        let chol = match cov.clone().cholesky() {
+            Some(c) => c.unpack(),
+            None => return Err(super::covariance::not_positive_definite(&cov, cov_name())),
+        };
         let ln_det = chol.diagonal().iter().map(|d| 2.0 * fns::ln(*d)).sum();
         Ok(Self {
             mean,

@@ -23,9 +23,7 @@ const SKIP = [
   'fovCardinality-huge-corner',
   'mixtureDensityGrid-weight-overflow',
   'mmucEstimate-huge-radius',
-  'ParticleBernoulliFilter-mean-overflow',
   'mbOptimalEstimate-subnormal-c-alpha',
-  'GmBernoulliFilter-estimate-cov-overflow',
   'multiBernoulliCardinality-1e6',
   'multiBernoulliLeaveOneOut-1e6',
 ];

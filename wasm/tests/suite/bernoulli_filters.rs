@@ -271,10 +271,28 @@ fn errors_name_the_field() {
         GmBernoulliFilterJs::new(config(r#","clutter":{"rate":0,"density":0.1}"#)).unwrap();
     let two = r#"[{"disc":{"center":[0,0],"radius":1}},{"disc":{"center":[1,0],"radius":1}}]"#;
     assert_throws(gm.update(js(two)), "RangeError", "config.clutter.rate");
+    // A 3-D report in a 2-D filter names the region's field and the config's (issue 26).
     assert_throws(
         gm.update(js(r#"[{"disc":{"center":[0,0,0],"radius":1}}]"#)),
         "RangeError",
-        "reports[0]",
+        "reports[0].disc.center has length 3 but config.positionDims is 2",
+    );
+    // A 2 × 2 F with a 4-D mixture, a 2 × 2 Q with a 4 × 4 F: both fields, in matrix terms.
+    assert_throws(
+        GmBernoulliFilterJs::new(config(
+            r#","transition":{"F":[[1,0],[0,1]],"Q":[[1,0],[0,1]]}"#,
+        ))
+        .map(|_| JsValue::NULL),
+        "RangeError",
+        "config.mixture[0].mean has length 4 but config.transition.F is 2×2",
+    );
+    assert_throws(
+        gm_bernoulli_predict(js(&format!(
+            r#"{{"existence":0.5,"mixture":{PRIOR},"transition":{{"F":{F4},"Q":[[1,0],[0,1]]}}}}"#,
+            F4 = "[[1,0,1,0],[0,1,0,1],[0,0,1,0],[0,0,0,1]]"
+        ))),
+        "RangeError",
+        "options.transition.Q is 2×2 but options.transition.F is 4×4",
     );
     assert_throws(
         airport_scenario(Some(js(r#"{"steps":2001}"#))),

@@ -1,0 +1,183 @@
+//! Tests of the whole-configuration checks ([`super::validate`]) on a user's first-day
+//! mistakes, each error naming the field that disagrees and the one it disagrees with, and
+//! of a positive semidefinite Q (eq. (44) of `001_0f0df91eee9b30d5.txt`: Q may be
+//! singular) in both filters.
+
+use std::string::ToString;
+use std::vec;
+use std::vec::Vec;
+
+use nalgebra::DMatrix;
+
+use super::tests::ncv_filter_config;
+use super::*;
+use crate::gaussian::{Gaussian, GaussianMixture};
+use crate::regions::Region;
+
+/// The error message of `r`.
+fn message<T: core::fmt::Debug>(r: crate::Result<T>) -> std::string::String {
+    r.unwrap_err().to_string()
+}
+
+fn rows(n: usize, m: usize, v: f64) -> Vec<Vec<f64>> {
+    (0..n)
+        .map(|i| (0..m).map(|j| if i == j { v } else { 0.0 }).collect())
+        .collect()
+}
+
+#[test]
+fn eq39_a_4d_mixture_with_a_2x2_f_names_both() {
+    let mut c = ncv_filter_config(0.5, 0.9);
+    c.transition = LinearGaussianTransition::from_rows(&rows(2, 2, 1.0), &rows(2, 2, 0.1)).unwrap();
+    c.likelihood = None;
+    assert_eq!(
+        message(c.validate()),
+        "mixture[0].mean has length 4 but transition.f is 2×2"
+    );
+    let mut c = ncv_filter_config(0.5, 0.9);
+    let g = Gaussian::from_slices(&[0.0; 2], &[1.0, 0.0, 0.0, 1.0], "b").unwrap();
+    c.birth = Birth::new(0.1, GaussianMixture::new(vec![(1.0, g)], "b").unwrap()).unwrap();
+    assert_eq!(
+        message(c.validate()),
+        "birth.mixture[0].mean has length 2 but transition.f is 4×4"
+    );
+}
+
+#[test]
+fn eq44_a_2x2_q_with_a_4x4_f_in_matrix_terms() {
+    assert_eq!(
+        message(LinearGaussianTransition::from_rows(
+            &rows(4, 4, 1.0),
+            &rows(2, 2, 0.1)
+        )),
+        "transition.q is 2×2 but transition.f is 4×4"
+    );
+    assert_eq!(
+        message(LinearGaussianTransition::from_row_slices(
+            &[1.0; 16], &[0.1; 4]
+        )),
+        "transition.q is 2×2 but transition.f is 4×4"
+    );
+    let q = DMatrix::from_row_slice(2, 2, &[1.0, 0.5, 0.4, 1.0]);
+    assert_eq!(
+        message(LinearGaussianTransition::new(DMatrix::identity(2, 2), q)),
+        "transition.q is not symmetric: [0][1] = 0.5 but [1][0] = 0.4"
+    );
+    let q = DMatrix::from_row_slice(2, 2, &[1.0, 0.0, 0.0, -0.25]);
+    assert_eq!(
+        message(LinearGaussianTransition::new(DMatrix::identity(2, 2), q)),
+        "transition.q is not positive semidefinite (smallest eigenvalue -0.25)"
+    );
+}
+
+#[test]
+fn eq44_h_needs_f_columns_and_r_needs_h_rows() {
+    let mut c = ncv_filter_config(0.5, 0.9);
+    c.likelihood =
+        Some(LinearGaussianLikelihood::from_rows(&rows(2, 3, 1.0), &rows(2, 2, 1.0)).unwrap());
+    assert_eq!(
+        message(c.validate()),
+        "likelihood.h is 2×3 but transition.f is 4×4"
+    );
+    assert_eq!(
+        message(LinearGaussianLikelihood::from_rows(
+            &rows(2, 4, 1.0),
+            &rows(3, 3, 1.0)
+        )),
+        "likelihood.r is 3×3 but likelihood.h is 2×4"
+    );
+    let r = DMatrix::from_row_slice(2, 2, &[1.0, 0.0, 0.0, -0.25]);
+    let h = DMatrix::from_row_slice(2, 4, &[1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0]);
+    assert_eq!(
+        message(LinearGaussianLikelihood::new(h, r)),
+        "likelihood.r is not positive definite (smallest eigenvalue -0.25)"
+    );
+}
+
+#[test]
+fn eq51_regions_name_the_field_that_carries_their_dimension() {
+    let mut c = ncv_filter_config(0.5, 0.9);
+    c.detection.fov = Some(Region::axis_box(&[0.0; 3], &[1.0; 3], "fov").unwrap());
+    assert_eq!(
+        message(c.validate()),
+        "detection.fov.box.min has length 3 but position_dims is 2"
+    );
+    let mut c = ncv_filter_config(0.5, 0.9);
+    c.exclusions = vec![Region::ball(&[0.0; 3], 1.0, "e").unwrap()];
+    assert_eq!(
+        message(c.validate()),
+        "exclusions[0].ball.center has length 3 but position_dims is 2"
+    );
+    let mut c = ncv_filter_config(0.5, 0.9);
+    c.position_dims = 6;
+    assert_eq!(
+        message(c.validate()),
+        "position_dims is 6 but transition.f is 4×4"
+    );
+    let three_d = [Region::axis_box(&[0.0; 3], &[1.0; 3], "r").unwrap()];
+    let mut gm = GmBernoulliFilter::new(ncv_filter_config(0.5, 0.9)).unwrap();
+    assert_eq!(
+        message(gm.update(&three_d)),
+        "reports[0].box.min has length 3 but position_dims is 2"
+    );
+    assert_eq!(
+        message(gm.update_measurements(&[vec![1.0, 2.0, 3.0]])),
+        "measurements[0] has length 3 but likelihood.h is 2×4"
+    );
+}
+
+#[test]
+fn eq63_a_mixture_covariance_says_which_property_fails() {
+    let e = Gaussian::from_slices(&[0.0; 2], &[1.0, 0.5, 0.4, 1.0], "mixture[0]").unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "mixture[0].cov is not symmetric: [0][1] = 0.5 but [1][0] = 0.4"
+    );
+    let e = Gaussian::from_slices(&[0.0; 2], &[1.0, 0.0, 0.0, -0.25], "mixture[0]").unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "mixture[0].cov is not positive definite (smallest eigenvalue -0.25)"
+    );
+}
+
+/// Nearly constant velocity with noise on the velocity only: Q = diag(0, 0, q, q), rank 2.
+fn velocity_noise_config() -> BernoulliFilterOptions {
+    let mut c = ncv_filter_config(0.8, 0.9);
+    let f = LinearGaussianTransition::nearly_constant_velocity(2, 1.0, 0.01)
+        .unwrap()
+        .f()
+        .clone();
+    let q = DMatrix::from_diagonal(&nalgebra::DVector::from_vec(vec![0.0, 0.0, 0.01, 0.01]));
+    c.transition = LinearGaussianTransition::new(f, q).unwrap();
+    assert!(!c.transition.has_density());
+    c
+}
+
+#[test]
+fn eq44_a_semidefinite_q_runs_in_both_filters() {
+    let disc = [Region::ball(&[1.0, 0.0], 3.0, "r").unwrap()];
+    let mut gm = GmBernoulliFilter::new(velocity_noise_config()).unwrap();
+    let options = ParticleOptions {
+        particles: 500,
+        birth_particles: None,
+        mcmc_moves: 1,
+        seed: 7,
+    };
+    let mut pf = ParticleBernoulliFilter::new(velocity_noise_config(), options).unwrap();
+    for _ in 0..5 {
+        gm.predict().unwrap();
+        gm.update(&disc).unwrap();
+        gm.update_measurements(&[vec![1.0, 0.5]]).unwrap();
+        pf.predict();
+        pf.update(&disc).unwrap();
+        pf.update_measurements(&[vec![1.0, 0.5]]).unwrap();
+    }
+    for e in [
+        gm.estimate(&EstimateOptions::default()).unwrap(),
+        pf.estimate(&EstimateOptions::default()).unwrap(),
+    ] {
+        assert!(e.existence > 0.0 && e.existence <= 1.0, "{e:?}");
+        assert!(e.mean.iter().all(|v| v.is_finite()), "{e:?}");
+        assert!(e.cov.iter().flatten().all(|v| v.is_finite()), "{e:?}");
+    }
+}
