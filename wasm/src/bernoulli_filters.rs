@@ -12,7 +12,7 @@ use wasm_bindgen::prelude::*;
 
 use crate::bernoulli::{BernoulliCosts, BernoulliEstimateResult, estimate_out};
 use crate::boundary::{
-    JsResult, core_error, range_error, read, render_path, seed_or_entropy, write,
+    JsResult, core_error, range_error, read, render_path, seed_or_entropy, type_error, write,
 };
 use crate::types::{
     self, BoxRegion, DiscRegion, MixtureComponent, Point, Region, WeightedGaussian,
@@ -629,7 +629,17 @@ fn estimate_options(options: JsValue) -> JsResult<EstimateOptions> {
             ),
         },
         (None, None) => EstimateOptions::default(),
-        _ => return Err(range_error("options: radius and costs go together")),
+        // A missing field is a TypeError naming it (the README's rule), as `read` reports one.
+        (Some(_), None) => {
+            return Err(type_error(
+                "options.costs is required with options.radius (the loss (7) takes both)",
+            ));
+        }
+        (None, Some(_)) => {
+            return Err(type_error(
+                "options.radius is required with options.costs (the loss (7) takes both)",
+            ));
+        }
     })
 }
 

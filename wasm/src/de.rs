@@ -514,8 +514,10 @@ impl<'a> De<'a> {
             });
         }
         let Ok(obj) = self.object() else {
+            // Serde does not say which variants carry data, so the hint covers both forms
+            // without offering a string where only objects are accepted.
             return Err(self.wrong_type(&std::format!(
-                "one of {} (a string, or an object with one of these keys)",
+                "an object with one of the keys {} (or, for a choice that takes no value, its name)",
                 listed()
             )));
         };

@@ -223,7 +223,7 @@ const gm2 = new fisst.GmBernoulliFilter(airport.config);
 const reportNow: fisst.BernoulliEstimateResult = gm2.estimate({ radius: 5, costs: 'mpe' }).report;
 const noReport: null = gm2.estimate().report;
 const noReportEmpty: null = gm2.estimate({}).report;
-// @ts-expect-error: radius without costs (it throws "radius and costs go together")
+// @ts-expect-error: radius without costs (it throws "options.costs is required with options.radius")
 gm2.estimate({ radius: 5 });
 // @ts-expect-error: costs without radius
 gm2.estimate({ costs: 'mpe' });
