@@ -226,7 +226,26 @@ const COVER_SLACK: f64 = 1e-9;
 /// Candidate checks (candidates × particles) allowed to the exhaustive search in d ≥ 3.
 const EXHAUSTIVE_BUDGET: usize = 20_000_000;
 
+/// Radii up to this (2^400 ≈ 2.6e120) are searched as given; beyond it the squared lengths of
+/// the search (4 r0², ‖x_i − x_j‖² of covered particles) overflow (∞ − ∞ = NaN in the centres),
+/// so the particles and r0 are first scaled by a power of two (exact) that brings r0 into
+/// [1/2, 1), and the centre is scaled back: the MMUC problem is equivariant under scaling.
+const HUGE_RADIUS: f64 = 2.582_249_878_086_908_6e120;
+
 fn particle_mmuc(p: &ParticleSet, radius: f64) -> Mmuc {
+    if radius > HUGE_RADIUS {
+        let (_, e) = libm::frexp(radius);
+        let scaled = p.scaled(-e);
+        let mut m = particle_mmuc_as_given(&scaled, libm::scalbn(radius, -e));
+        for c in &mut m.center {
+            *c = libm::scalbn(*c, e);
+        }
+        return m;
+    }
+    particle_mmuc_as_given(p, radius)
+}
+
+fn particle_mmuc_as_given(p: &ParticleSet, radius: f64) -> Mmuc {
     let (candidate, method) = match p.dim() {
         1 => (sweep_1d(p, radius), MmucMethod::ParticlesExact),
         2 => (sweep_2d(p, radius), MmucMethod::ParticlesExact),
