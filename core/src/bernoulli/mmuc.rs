@@ -47,7 +47,45 @@ pub struct Mmuc {
     pub method: MmucMethod,
 }
 
+/// The most mixture components the MMUC search of [`SpatialDensity::mmuc`] is offered
+/// through [`SpatialDensity::check_mmuc_size`]: the search runs a local optimisation from
+/// every component mean, each step costing a quadrature per component (O(L²) quadratures;
+/// 10,000 components took minutes).
+pub const MAX_MMUC_COMPONENTS: usize = 100;
+
+/// The most particles in 2 or more dimensions [`SpatialDensity::check_mmuc_size`] accepts:
+/// the 2D sweep visits every pair of particles within 2 r0 (O(n² log n) when all are close),
+/// and the 3D search every close subset. 1D particles (a sort and a sweep) have no cap.
+pub const MAX_MMUC_PARTICLES: usize = 5_000;
+
 impl SpatialDensity {
+    /// `Ok` if [`SpatialDensity::mmuc`] on this density stays within its size caps: at most
+    /// [`MAX_MMUC_COMPONENTS`] mixture components, and at most [`MAX_MMUC_PARTICLES`]
+    /// particles in 2 or more dimensions (a Gaussian and 1D particles always pass).
+    ///
+    /// # Errors
+    /// [`Error::Count`](crate::Error::Count) naming `density.mixture` or `density.particles`.
+    pub fn check_mmuc_size(&self) -> Result<()> {
+        match self.repr() {
+            Repr::Gaussian(_) => Ok(()),
+            Repr::Mixture { components, .. } => crate::Error::check_count(
+                "density.mixture",
+                "components",
+                components.len(),
+                1,
+                MAX_MMUC_COMPONENTS,
+            ),
+            Repr::Particles(p) if p.dim() >= 2 => crate::Error::check_count(
+                "density.particles",
+                "particles in 2 or more dimensions",
+                p.len(),
+                1,
+                MAX_MMUC_PARTICLES,
+            ),
+            Repr::Particles(_) => Ok(()),
+        }
+    }
+
     /// The MMUC estimate of eq. (12) of `000_…`, the a that minimises q(a) for this
     /// density and tolerance radius r0 (`radius`):
     ///

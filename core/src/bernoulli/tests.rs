@@ -1220,3 +1220,26 @@ fn eq12_particle_mmuc_with_a_huge_radius_is_finite() {
     let m = s.mmuc(1e308).unwrap();
     assert!(m.center.iter().all(|c| c.is_finite()), "{m:?}");
 }
+
+/// Issue 26 (point 7): the MMUC search's size caps, named by the array that passes them.
+#[test]
+fn eq12_mmuc_size_caps_name_the_array() {
+    let comps: Vec<(f64, &[f64], &[f64])> = (0..=MAX_MMUC_COMPONENTS)
+        .map(|_| (1.0, &[0.0, 0.0][..], &[1.0, 0.0, 0.0, 1.0][..]))
+        .collect();
+    let big = mixture(&comps);
+    let e = big.check_mmuc_size().unwrap_err();
+    assert_eq!(e.field(), "density.mixture");
+    assert!(mixture(&comps[1..]).check_mmuc_size().is_ok());
+    let pts: Vec<[f64; 2]> = (0..=MAX_MMUC_PARTICLES).map(|i| [i as f64, 0.0]).collect();
+    let s = SpatialDensity::particles(ParticleSet::new(&pts, None).unwrap());
+    assert_eq!(
+        s.check_mmuc_size().unwrap_err().field(),
+        "density.particles"
+    );
+    let s = SpatialDensity::particles(ParticleSet::new(&pts[1..], None).unwrap());
+    assert!(s.check_mmuc_size().is_ok());
+    let line: Vec<[f64; 1]> = (0..100_000).map(|i| [i as f64]).collect();
+    let s = SpatialDensity::particles(ParticleSet::new(&line, None).unwrap());
+    assert!(s.check_mmuc_size().is_ok());
+}
