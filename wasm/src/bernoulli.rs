@@ -166,7 +166,7 @@ pub struct BernoulliEstimateOptions {
     /// p, the existence probability, in [0, 1].
     pub existence: f64,
     /// The spatial density of the object when it exists. The MMUC search takes a mixture of at most 100 components and at most
-    /// 5000 particles in 2 or more dimensions (a RangeError naming the array beyond).
+    /// 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
     pub density: BernoulliDensity,
     /// r0 > 0, the radius of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
@@ -229,7 +229,7 @@ pub struct BernoulliThresholdCurveOptions {
 #[derive(Deserialize, Tsify)]
 pub struct MmucEstimateOptions {
     /// The density. The MMUC search takes a mixture of at most 100 components and at most
-    /// 5000 particles in 2 or more dimensions (a RangeError naming the array beyond).
+    /// 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
     pub density: BernoulliDensity,
     /// r0 > 0.
     pub radius: f64,
@@ -269,7 +269,7 @@ pub struct BernoulliComponent {
     /// Existence probability in [0, 1].
     pub existence: f64,
     /// Spatial density. The MMUC search takes a mixture of at most 100 components and at most
-    /// 5000 particles in 2 or more dimensions (a RangeError naming the array beyond).
+    /// 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
     pub density: BernoulliDensity,
 }
 

@@ -148,7 +148,7 @@ pub struct SplitForRegionsResult {
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct ReduceMixtureOptions {
-    /// The mixture to reduce: at most 10,000 components.
+    /// The mixture to reduce: at most 5000 components.
     pub mixture: Vec<WeightedGaussian>,
     /// Drop components lighter than this, renormalising the rest (default 0: keep all).
     #[serde(default)]
@@ -363,6 +363,12 @@ pub fn split_for_regions_js(
 pub fn reduce_mixture_js(
     #[wasm_bindgen(unchecked_param_type = "ReduceMixtureOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
+    // The length cap before the components are read: reading 10^6 of them alone takes
+    // seconds.
+    let given = js_sys::Reflect::get(&options, &JsValue::from_str("mixture")).ok();
+    if let Some(a) = given.as_ref().and_then(|m| m.dyn_ref::<js_sys::Array>()) {
+        check_reduce_input(a.length() as usize).or_throw_rendered("options")?;
+    }
     let o: ReduceMixtureOptions = read(options, "options")?;
     check_reduce_input(o.mixture.len()).or_throw_rendered("options")?;
     let mixture = types::mixture(o.mixture, "options.mixture")?;

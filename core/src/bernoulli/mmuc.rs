@@ -55,8 +55,9 @@ pub const MAX_MMUC_COMPONENTS: usize = 100;
 
 /// The most particles in 2 or more dimensions [`SpatialDensity::check_mmuc_size`] accepts:
 /// the 2D sweep visits every pair of particles within 2 r0 (O(n² log n) when all are close),
-/// and the 3D search every close subset. 1D particles (a sort and a sweep) have no cap.
-pub const MAX_MMUC_PARTICLES: usize = 5_000;
+/// and the 3D search every close subset (1500 particles all within 2 r0: about 1 s in Node).
+/// 1D particles (a sort and a sweep) have no cap.
+pub const MAX_MMUC_PARTICLES: usize = 1_500;
 
 impl SpatialDensity {
     /// `Ok` if [`SpatialDensity::mmuc`] on this density stays within its size caps: at most
