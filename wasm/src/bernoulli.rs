@@ -165,7 +165,8 @@ impl BernoulliCosts {
 pub struct BernoulliEstimateOptions {
     /// p, the existence probability, in [0, 1].
     pub existence: f64,
-    /// The spatial density of the object when it exists.
+    /// The spatial density of the object when it exists. The MMUC search takes a mixture of at most 100 components and at most
+    /// 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
     pub density: BernoulliDensity,
     /// r0 > 0, the radius of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
@@ -227,7 +228,8 @@ pub struct BernoulliThresholdCurveOptions {
 /// Options of `mmucEstimate`.
 #[derive(Deserialize, Tsify)]
 pub struct MmucEstimateOptions {
-    /// The density.
+    /// The density. The MMUC search takes a mixture of at most 100 components and at most
+    /// 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
     pub density: BernoulliDensity,
     /// r0 > 0.
     pub radius: f64,
@@ -266,7 +268,8 @@ pub struct MmucEstimateResult {
 pub struct BernoulliComponent {
     /// Existence probability in [0, 1].
     pub existence: f64,
-    /// Spatial density.
+    /// Spatial density. The MMUC search takes a mixture of at most 100 components and at most
+    /// 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
     pub density: BernoulliDensity,
 }
 
@@ -344,6 +347,7 @@ pub fn bernoulli_estimate(
 ) -> JsResult<JsValue> {
     let o: BernoulliEstimateOptions = read(options, "options")?;
     let s = o.density.into_core("options.density")?;
+    s.check_mmuc_size().or_throw_in("options")?;
     let costs = o.costs.into_core("options.costs")?;
     let loss = ApplicationLoss::new(costs, o.radius).or_throw_in("options")?;
     let e = bernoulli::estimate(o.existence, &s, &loss).or_throw_in("options")?;
@@ -388,6 +392,7 @@ pub fn mmuc_estimate(
 ) -> JsResult<JsValue> {
     let o: MmucEstimateOptions = read(options, "options")?;
     let s = o.density.into_core("options.density")?;
+    s.check_mmuc_size().or_throw_in("options")?;
     let m = s.mmuc(o.radius).or_throw_in("options")?;
     write(&MmucEstimateResult {
         center: m.center,
@@ -422,6 +427,7 @@ pub fn multi_bernoulli_point_estimate(
     for (i, c) in o.components.into_iter().enumerate() {
         let path = format!("options.components[{i}]");
         let s = c.density.into_core(&format!("{path}.density"))?;
+        s.check_mmuc_size().or_throw_in(&path)?;
         comps.push((c.existence, s));
     }
     let costs = o.costs.into_core("options.costs")?;

@@ -113,7 +113,8 @@ export type PlacementSceneOptions = SceneOptions;
 #[derive(Deserialize, Tsify)]
 pub struct MixtureDensityGridOptions {
     /// Σ weight · N(mean, cov); components of 3 or more dimensions use their first two
-    /// (position) components.
+    /// (position) components. Its peak, Σ weight / √det(2π cov), must stay below the largest
+    /// double (about 1.8e308; a RangeError naming the weight that passes it).
     pub mixture: Vec<WeightedGaussian>,
     /// Positions; components × cells at most 2.5e7.
     pub grid: Grid,

@@ -14,8 +14,8 @@ use fisst::splitting::{
     MAX_GRID_SIZE as MAX_GRID, MAX_REDUCED_COMPONENTS, MAX_REGIONS, MAX_RUNNALLS_INPUT,
     MAX_SPLIT_COMPONENTS, MIN_SPLIT_COMPONENTS, NegativeInformationScenario as Fig5Scenario,
     NegativeInformationStep as Fig5Step, SPLIT_WORK_BUDGET, Spacing, SplitLibrary, SplitOptions,
-    SplitStop, check_bounded_split, defaults, exact_mass_affordable, grid_size, partition,
-    split_for_regions, split_work,
+    SplitStop, check_bounded_split, check_reduce_input, defaults, exact_mass_affordable, grid_size,
+    partition, split_for_regions, split_work,
 };
 
 /// The family of a split library.
@@ -148,7 +148,7 @@ pub struct SplitForRegionsResult {
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct ReduceMixtureOptions {
-    /// The mixture to reduce.
+    /// The mixture to reduce: at most 5000 components.
     pub mixture: Vec<WeightedGaussian>,
     /// Drop components lighter than this, renormalising the rest (default 0: keep all).
     #[serde(default)]
@@ -157,7 +157,8 @@ pub struct ReduceMixtureOptions {
     #[tsify(optional)]
     pub merge_distance: Option<f64>,
     /// Runnalls' reduction to at most this many components, an integer in [1, 1e6];
-    /// omitted: no cap.
+    /// omitted: no cap. Runnalls' reduction takes at most 3000 components (those left after
+    /// pruning and merging; a RangeError naming options.maxComponents beyond).
     #[tsify(optional)]
     pub max_components: Option<usize>,
 }
@@ -362,7 +363,14 @@ pub fn split_for_regions_js(
 pub fn reduce_mixture_js(
     #[wasm_bindgen(unchecked_param_type = "ReduceMixtureOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
+    // The length cap before the components are read: reading 10^6 of them alone takes
+    // seconds.
+    let given = js_sys::Reflect::get(&options, &JsValue::from_str("mixture")).ok();
+    if let Some(a) = given.as_ref().and_then(|m| m.dyn_ref::<js_sys::Array>()) {
+        check_reduce_input(a.length() as usize).or_throw_rendered("options")?;
+    }
     let o: ReduceMixtureOptions = read(options, "options")?;
+    check_reduce_input(o.mixture.len()).or_throw_rendered("options")?;
     let mixture = types::mixture(o.mixture, "options.mixture")?;
     let max_components = o
         .max_components

@@ -115,6 +115,16 @@ impl ParticleSet {
         &self.weights
     }
 
+    /// The same particles with every coordinate multiplied by 2^`exp` (exact unless a
+    /// coordinate underflows), the same weights.
+    pub(crate) fn scaled(&self, exp: i32) -> Self {
+        Self {
+            dim: self.dim,
+            points: self.points.iter().map(|&x| libm::scalbn(x, exp)).collect(),
+            weights: self.weights.clone(),
+        }
+    }
+
     /// Σ_i w_i 1{‖x_i − a‖ > r0} (compensated sum).
     pub(crate) fn outside(&self, center: &[f64], radius: f64) -> f64 {
         let r2 = radius * radius;

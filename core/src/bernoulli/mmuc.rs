@@ -47,7 +47,46 @@ pub struct Mmuc {
     pub method: MmucMethod,
 }
 
+/// The most mixture components the MMUC search of [`SpatialDensity::mmuc`] is offered
+/// through [`SpatialDensity::check_mmuc_size`]: the search runs a local optimisation from
+/// every component mean, each step costing a quadrature per component (O(L²) quadratures;
+/// 10,000 components took minutes).
+pub const MAX_MMUC_COMPONENTS: usize = 100;
+
+/// The most particles in 2 or more dimensions [`SpatialDensity::check_mmuc_size`] accepts:
+/// the 2D sweep visits every pair of particles within 2 r0 (O(n² log n) when all are close),
+/// and the 3D search every close subset (1500 particles all within 2 r0: about 1 s in Node).
+/// 1D particles (a sort and a sweep) have no cap.
+pub const MAX_MMUC_PARTICLES: usize = 1_500;
+
 impl SpatialDensity {
+    /// `Ok` if [`SpatialDensity::mmuc`] on this density stays within its size caps: at most
+    /// [`MAX_MMUC_COMPONENTS`] mixture components, and at most [`MAX_MMUC_PARTICLES`]
+    /// particles in 2 or more dimensions (a Gaussian and 1D particles always pass).
+    ///
+    /// # Errors
+    /// [`Error::Count`](crate::Error::Count) naming `density.mixture` or `density.particles`.
+    pub fn check_mmuc_size(&self) -> Result<()> {
+        match self.repr() {
+            Repr::Gaussian(_) => Ok(()),
+            Repr::Mixture { components, .. } => crate::Error::check_count(
+                "density.mixture",
+                "components",
+                components.len(),
+                1,
+                MAX_MMUC_COMPONENTS,
+            ),
+            Repr::Particles(p) if p.dim() >= 2 => crate::Error::check_count(
+                "density.particles",
+                "particles in 2 or more dimensions",
+                p.len(),
+                1,
+                MAX_MMUC_PARTICLES,
+            ),
+            Repr::Particles(_) => Ok(()),
+        }
+    }
+
     /// The MMUC estimate of eq. (12) of `000_…`, the a that minimises q(a) for this
     /// density and tolerance radius r0 (`radius`):
     ///
@@ -226,7 +265,26 @@ const COVER_SLACK: f64 = 1e-9;
 /// Candidate checks (candidates × particles) allowed to the exhaustive search in d ≥ 3.
 const EXHAUSTIVE_BUDGET: usize = 20_000_000;
 
+/// Radii up to this (2^400 ≈ 2.6e120) are searched as given; beyond it the squared lengths of
+/// the search (4 r0², ‖x_i − x_j‖² of covered particles) overflow (∞ − ∞ = NaN in the centres),
+/// so the particles and r0 are first scaled by a power of two (exact) that brings r0 into
+/// [1/2, 1), and the centre is scaled back: the MMUC problem is equivariant under scaling.
+const HUGE_RADIUS: f64 = 2.582_249_878_086_908_6e120;
+
 fn particle_mmuc(p: &ParticleSet, radius: f64) -> Mmuc {
+    if radius > HUGE_RADIUS {
+        let (_, e) = libm::frexp(radius);
+        let scaled = p.scaled(-e);
+        let mut m = particle_mmuc_as_given(&scaled, libm::scalbn(radius, -e));
+        for c in &mut m.center {
+            *c = libm::scalbn(*c, e);
+        }
+        return m;
+    }
+    particle_mmuc_as_given(p, radius)
+}
+
+fn particle_mmuc_as_given(p: &ParticleSet, radius: f64) -> Mmuc {
     let (candidate, method) = match p.dim() {
         1 => (sweep_1d(p, radius), MmucMethod::ParticlesExact),
         2 => (sweep_2d(p, radius), MmucMethod::ParticlesExact),

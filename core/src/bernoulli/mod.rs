@@ -60,7 +60,7 @@ pub use density::{DensityKind, MIN_TOLERANCE, ParticleSet, SpatialDensity};
 pub use estimate::{BernoulliEstimate, MultiBernoulliEstimate, estimate, multi_bernoulli_estimate};
 pub use isotropic::{isotropic_miss_probability, isotropic_threshold_curve};
 pub use loss::{ApplicationLoss, Costs};
-pub use mmuc::{Mmuc, MmucMethod};
+pub use mmuc::{MAX_MMUC_COMPONENTS, MAX_MMUC_PARTICLES, Mmuc, MmucMethod};
 pub use threshold::{
     Direction, LossCurve, LossCurveOptions, Threshold, expected_loss_empty,
     expected_loss_singleton, loss_curve, threshold,

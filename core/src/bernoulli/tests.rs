@@ -1179,3 +1179,67 @@ fn eq12_mmuc_of_a_mixture_with_a_point_like_component() {
         .sum();
     assert!(off.sqrt() < 1e-3, "{:?}", best.center);
 }
+
+/// Issue 26 (point 7): a radius near the largest double made the particle search's squared
+/// lengths overflow and the centre NaN; the search now runs on an exactly scaled copy.
+#[test]
+fn eq12_particle_mmuc_with_a_huge_radius_is_finite() {
+    let pts = [[1e-53, 0.0], [1e308, 0.0], [0.0, 0.0]];
+    let s = SpatialDensity::particles(ParticleSet::new(&pts, None).unwrap());
+    for r in [1e308, f64::MAX, 1e200, 2.6e120] {
+        let m = s.mmuc(r).unwrap();
+        assert!(
+            m.center.iter().all(|c| c.is_finite()),
+            "r={r}: {:?}",
+            m.center
+        );
+        assert!((0.0..=1.0).contains(&m.miss_probability), "r={r}");
+        let e = estimate(0.9, &s, &loss(Costs::mpe(), r)).unwrap();
+        assert!(e.estimate.as_ref().unwrap().iter().all(|c| c.is_finite()));
+        assert!(!e.expected_loss().is_nan());
+    }
+    // The ball of radius 1e308 about the centre covers all three (their span is 1e308).
+    let m = s.mmuc(1e308).unwrap();
+    assert_eq!(m.miss_probability, 0.0);
+    assert!((m.center[0] - 5e307).abs() <= 1e292, "{:?}", m.center);
+    // 1D and 3D take the same path.
+    let line = [[0.0], [1e308], [-1e308], [3.0]];
+    let s = SpatialDensity::particles(ParticleSet::new(&line, None).unwrap());
+    let m = s.mmuc(1e308).unwrap();
+    assert!(
+        m.center[0].is_finite() && m.miss_probability <= 0.25,
+        "{m:?}"
+    );
+    let cube = [
+        [0.0, 0.0, 1e308],
+        [1e308, 0.0, 0.0],
+        [0.0, 1e-53, 0.0],
+        [0.0, 0.0, 0.0],
+    ];
+    let s = SpatialDensity::particles(ParticleSet::new(&cube, None).unwrap());
+    let m = s.mmuc(1e308).unwrap();
+    assert!(m.center.iter().all(|c| c.is_finite()), "{m:?}");
+}
+
+/// Issue 26 (point 7): the MMUC search's size caps, named by the array that passes them.
+#[test]
+fn eq12_mmuc_size_caps_name_the_array() {
+    let comps: Vec<(f64, &[f64], &[f64])> = (0..=MAX_MMUC_COMPONENTS)
+        .map(|_| (1.0, &[0.0, 0.0][..], &[1.0, 0.0, 0.0, 1.0][..]))
+        .collect();
+    let big = mixture(&comps);
+    let e = big.check_mmuc_size().unwrap_err();
+    assert_eq!(e.field(), "density.mixture");
+    assert!(mixture(&comps[1..]).check_mmuc_size().is_ok());
+    let pts: Vec<[f64; 2]> = (0..=MAX_MMUC_PARTICLES).map(|i| [i as f64, 0.0]).collect();
+    let s = SpatialDensity::particles(ParticleSet::new(&pts, None).unwrap());
+    assert_eq!(
+        s.check_mmuc_size().unwrap_err().field(),
+        "density.particles"
+    );
+    let s = SpatialDensity::particles(ParticleSet::new(&pts[1..], None).unwrap());
+    assert!(s.check_mmuc_size().is_ok());
+    let line: Vec<[f64; 1]> = (0..100_000).map(|i| [i as f64]).collect();
+    let s = SpatialDensity::particles(ParticleSet::new(&line, None).unwrap());
+    assert!(s.check_mmuc_size().is_ok());
+}

@@ -60,6 +60,33 @@ fn position_marginal(mixture: &GaussianMixture) -> Result<GaussianMixture> {
     GaussianMixture::new(out, "mixture")
 }
 
+/// `Ok` if the density's largest possible value, Σ_j w_j N(m_j; m_j, P_j) (every component at
+/// its peak), is a finite double: then no grid value and no partial sum overflows (a value
+/// past the largest double made the compensated sum ∞ − ∞ = NaN).
+fn check_peak(mixture: &GaussianMixture) -> Result<()> {
+    let mut total = 0.0;
+    for (j, (w, g)) in mixture.components().iter().enumerate() {
+        let peak = g.pdf(g.mean().as_slice());
+        if !peak.is_finite() {
+            return Err(Error::parameter(
+                alloc::format!("mixture[{j}].cov"),
+                peak,
+                "a covariance whose peak density 1/√det(2πP) is finite",
+            ));
+        }
+        total += w * peak;
+        if !total.is_finite() {
+            return Err(Error::parameter(
+                alloc::format!("mixture[{j}].weight"),
+                *w,
+                "such that the mixture's peak density Σ weight × 1/√det(2πP) is below 1.8e308 \
+                 (the largest double)",
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// Σ_j w_j N(s; m_j, P_j) at every grid position s = (x_i, y_j), row-major with y as the outer
 /// index (entry `j·nx + i`), by [`GaussianMixture::pdf`] at each point. For components of
 /// more than two dimensions the density is that of the position marginal (the first two
@@ -70,7 +97,11 @@ fn position_marginal(mixture: &GaussianMixture) -> Result<GaussianMixture> {
 /// Using the JavaScript field names: [`Error::DimensionMismatch`] naming `mixture[j].mean`
 /// for a component of fewer than 2 dimensions; [`Error::InvalidParameter`] naming
 /// `grid.x[0…2]` / `grid.y[0…2]` (min finite, max finite and ≥ min, count in [1, 4096]);
-/// [`Error::Unsupported`] naming `grid` for more than [`MAX_GRID_CELLS`] positions.
+/// [`Error::Unsupported`] naming `grid` for more than [`MAX_GRID_CELLS`] positions;
+/// [`Error::InvalidParameter`] naming `mixture[j].weight` when Σ_j w_j N(m_j; m_j, P_j), the
+/// largest value the density could take, exceeds the largest double (about 1.8e308; the
+/// values would overflow), or `mixture[j].cov` for a covariance whose peak density
+/// 1/√det(2πP) does.
 ///
 /// # Examples
 /// ```
@@ -89,6 +120,7 @@ pub fn mixture_density_grid(
     y: GridAxis,
 ) -> Result<Vec<f64>> {
     let mixture = position_marginal(mixture)?;
+    check_peak(&mixture)?;
     validate(&x, "grid.x")?;
     validate(&y, "grid.y")?;
     let cells = x.count * y.count;
@@ -149,6 +181,36 @@ mod tests {
                 assert!((d[j * 11 + i] - want).abs() <= 1e-15 * want.max(1e-300) + 1e-300);
             }
         }
+    }
+
+    /// Issue 26 (point 7): weight × peak density past the largest double gave NaN cells
+    /// (the compensated sum's ∞ − ∞); it is an error naming the weight, and a weight just
+    /// within the bound gives finite values.
+    #[test]
+    fn fig9_a_density_past_the_largest_double_is_an_error_not_nan() {
+        let ax = GridAxis {
+            min: 0.0,
+            max: 0.0,
+            count: 1,
+        };
+        let g = Gaussian::from_slices(&[0.0, 0.0], &[0.001, 0.0, 0.0, 0.001], "p").unwrap();
+        let mix = GaussianMixture::new(vec![(1e308, g.clone())], "mixture").unwrap();
+        let e = mixture_density_grid(&mix, ax, ax).unwrap_err();
+        assert_eq!(e.field(), "mixture[0].weight");
+        let two = GaussianMixture::new(vec![(1e305, g.clone()), (1e306, g.clone())], "m").unwrap();
+        let v = mixture_density_grid(&two, ax, ax).unwrap()[0];
+        assert!((v / (1.1e306 * g.pdf(&[0.0, 0.0])) - 1.0).abs() < 1e-15);
+        let many = GaussianMixture::new(vec![(1e305, g.clone()); 12], "m").unwrap();
+        assert_eq!(
+            mixture_density_grid(&many, ax, ax).unwrap_err().field(),
+            "mixture[11].weight"
+        );
+        let sharp = Gaussian::from_slices(&[0.0, 0.0], &[1e-320, 0.0, 0.0, 1e-320], "p").unwrap();
+        let mix = GaussianMixture::new(vec![(0.0, sharp)], "mixture").unwrap();
+        let e = mixture_density_grid(&mix, ax, ax).unwrap_err();
+        assert_eq!(e.field(), "mixture[0].cov");
+        let ok = GaussianMixture::new(vec![(1e300, g.clone())], "mixture").unwrap();
+        assert!(mixture_density_grid(&ok, ax, ax).unwrap()[0].is_finite());
     }
 
     #[test]

@@ -422,3 +422,23 @@ fn front_door_names_fields() {
     .unwrap_err();
     assert_eq!(e.field(), "rfs.iidCluster.cardinality[1]");
 }
+
+/// Issue 26 (point 7): a FoV box whose corner has both coordinates near the largest double
+/// under a correlated Gaussian gave a NaN mass, pmf and moments; they are finite now.
+#[test]
+fn eq8_fov_box_at_the_largest_doubles_gives_finite_pmfs() {
+    let fov = Region::axis_box(&[0.0, 0.0], &[1e308, 1e308], "fov").unwrap();
+    let g = g2([0.0, 0.0], 1.0, 1.0, 0.5);
+    let res = fov_cardinality(
+        &MultiObjectDensity::MultiBernoulli(vec![(0.5, g.clone())]),
+        &fov,
+        1.0,
+    )
+    .unwrap();
+    assert!((res.mass_in_fov[0] - 1.0 / 3.0).abs() < 1e-15);
+    assert!((res.cardinality.pmf[1] - 0.5 / 3.0).abs() < 1e-15);
+    assert!(res.cardinality.mean.is_finite() && res.cardinality.variance.is_finite());
+    let phd = GaussianMixture::new(vec![(1.0, g)], "rfs.poisson").unwrap();
+    let res = fov_cardinality(&MultiObjectDensity::Poisson(phd), &fov, 1.0).unwrap();
+    assert!((res.cardinality.mean - 1.0 / 3.0).abs() < 1e-15);
+}

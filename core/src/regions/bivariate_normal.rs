@@ -98,15 +98,35 @@ pub(crate) fn rule(r: f64) -> (&'static [f64], &'static [f64]) {
     }
 }
 
+/// Limits beyond this magnitude are taken as infinite: Φ(−1e37) = 0 in double precision (Φ
+/// underflows from about −38.5 on), so the probability is already its limit there, while the
+/// products of limits in Genz's formulas (h², hk, and up to h⁴k⁴ in the Taylor terms for
+/// |ρ| ≥ 0.925) overflow beyond it (∞ · 0 or ∞ − ∞ = NaN). Limits up to it are computed as
+/// before, bit for bit.
+const HUGE_LIMIT: f64 = 1e37;
+
+/// `t`, or ±∞ where |t| exceeds [`HUGE_LIMIT`].
+fn clamp_limit(t: f64) -> f64 {
+    if t > HUGE_LIMIT {
+        f64::INFINITY
+    } else if t < -HUGE_LIMIT {
+        f64::NEG_INFINITY
+    } else {
+        t
+    }
+}
+
 /// P(X > h, Y > k) for standard normals with correlation `r` (Genz's `bvnu`).
 ///
-/// Infinite limits are allowed; `r` must lie in [−1, 1] (it is clamped), and a NaN argument
-/// gives NaN.
+/// Infinite limits are allowed, and limits beyond ±1e37 are taken as infinite (the
+/// probability equals its limit there in double precision; their squares would overflow);
+/// `r` must lie in [−1, 1] (it is clamped), and a NaN argument gives NaN.
 pub fn upper(h: f64, k: f64, r: f64) -> f64 {
     if h.is_nan() || k.is_nan() || r.is_nan() {
         return f64::NAN;
     }
     let r = r.clamp(-1.0, 1.0);
+    let (h, k) = (clamp_limit(h), clamp_limit(k));
     if h == f64::INFINITY || k == f64::INFINITY {
         return 0.0;
     }
@@ -311,6 +331,49 @@ mod tests {
         assert_eq!(cdf(f64::INFINITY, 0.3, 0.5), phi(0.3));
         assert_eq!(cdf(f64::NEG_INFINITY, 0.3, 0.5), 0.0);
         assert!(cdf(f64::NAN, 0.0, 0.0).is_nan());
+    }
+
+    /// Issue 26 (point 7): limits whose squares overflow (a box corner at ±1e308 standardised)
+    /// gave NaN; every magnitude now gives the infinite limit's value, never NaN.
+    #[test]
+    fn eq8_huge_limits_give_the_infinite_limit_not_nan() {
+        use crate::gaussian::normal::cdf as phi;
+        let huge = [1.000_000_1e37, 1e100, 1.5e154, 1e200, 1e300, f64::MAX];
+        let ordinary = [-2.0, -0.3, 0.0, 0.7, 3.0];
+        for r in [
+            -0.999, -0.93, -0.8, -0.5, -0.1, 0.0, 0.2, 0.5, 0.8, 0.93, 0.999, 1.0, -1.0,
+        ] {
+            for &t in &huge {
+                for s in [1.0, -1.0] {
+                    let big = s * t;
+                    let inf = s * f64::INFINITY;
+                    for &k in ordinary.iter().chain(&huge).chain(&[-1e200, -f64::MAX]) {
+                        assert_eq!(cdf(big, k, r), cdf(inf, clamp_limit(k), r), "{big} {k} {r}");
+                        assert_eq!(cdf(k, big, r), cdf(clamp_limit(k), inf, r), "{k} {big} {r}");
+                    }
+                }
+            }
+            // The splitForRegions / fovCardinality reproducer: (−1e308, 0] × (−1e308, 0].
+            let p = rectangle(-1e308, 0.0, -1e308, 0.0, r);
+            assert!(p.is_finite(), "r={r}");
+            assert!((p - cdf(0.0, 0.0, r)).abs() < 1e-15, "r={r}: {p}");
+            let q = rectangle(0.0, 1e308, 0.0, 1e308, r);
+            assert!((q - cdf(0.0, 0.0, r)).abs() < 1e-15, "r={r}: {q}");
+        }
+        // At the threshold itself (not clamped) the formulas stay finite.
+        for r in [-0.9999, -0.95, -0.5, 0.5, 0.95, 0.9999] {
+            for (h, k) in [
+                (1e37, 1e37),
+                (1e37, -1e37),
+                (-1e37, -1e37),
+                (1e37, -2.0),
+                (-1e37, 0.5),
+            ] {
+                assert!(!cdf(h, k, r).is_nan(), "{h} {k} {r}");
+            }
+        }
+        assert_eq!(cdf(-1e154, -1e154, 0.5), 0.0);
+        assert_eq!(cdf(1e155, 0.3, 0.5), phi(0.3));
     }
 
     #[test]

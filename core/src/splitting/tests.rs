@@ -1028,3 +1028,12 @@ fn extreme_inputs_give_sane_results_or_typed_errors() {
         }
     }
 }
+
+/// Issue 26 (point 7): a bounded reduction request's mixture length cap.
+#[test]
+fn alg2_reduction_input_cap_names_the_mixture() {
+    assert!(check_reduce_input(MAX_REDUCE_INPUT).is_ok());
+    let e = check_reduce_input(MAX_REDUCE_INPUT + 1).unwrap_err();
+    assert_eq!(e.field(), "mixture");
+    assert_eq!(MAX_RUNNALLS_INPUT, 3000);
+}

@@ -445,3 +445,23 @@ fn eq8_inclusion_tests_and_boundaries() {
     assert_eq!(e.field(), "u[2]");
     assert!(Region::union(vec![], "u").is_err());
 }
+
+/// Issue 26 (point 7): a box corner with both coordinates beyond ~1.4e154 under a correlated
+/// Gaussian gave a NaN mass (the corner's square overflowed in the bivariate normal); it is
+/// the mass of the box with that corner at infinity.
+#[test]
+fn eq8_box_2d_with_a_corner_at_the_largest_doubles_is_finite() {
+    let g = gauss(&[0.0, 0.0], &[1.0, 0.5, 0.5, 1.0]);
+    let quarter = 1.0 / 3.0; // Φ₂(0, 0; 1/2) = 1/4 + asin(1/2)/2π
+    for (min, max) in [
+        ([-1e308, -1e308], [0.0, 0.0]),
+        ([0.0, 0.0], [1e308, 1e308]),
+        ([-f64::MAX, -1e155], [0.0, 0.0]),
+    ] {
+        let b = Region::axis_box(&min, &max, "b").unwrap();
+        let m = b.gaussian_mass(&g, "p").unwrap().value;
+        assert!((m - quarter).abs() < 1e-15, "{min:?} {max:?}: {m}");
+    }
+    let all = Region::axis_box(&[-1e308, -1e308], &[1e308, 1e308], "b").unwrap();
+    assert_eq!(all.gaussian_mass(&g, "p").unwrap().value, 1.0);
+}
