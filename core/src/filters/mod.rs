@@ -83,7 +83,7 @@ mod gm_bernoulli;
 mod likelihood;
 mod particle_bernoulli;
 mod transition;
-mod validate;
+pub(crate) mod validate;
 
 pub use clutter::{Clutter, ClutterDensity, ClutterFn, ClutterFunction};
 pub use config::{

@@ -5,7 +5,7 @@
 use alloc::string::String;
 use alloc::vec::Vec;
 
-use crate::error::{Error, Result, check_probability};
+use crate::error::{Error, Result, Shape, check_probability};
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::math::fns;
 use crate::math::sum::sum;
@@ -52,7 +52,23 @@ fn masses<'a>(
     fov: &Region,
     gaussians: impl Iterator<Item = (String, &'a Gaussian)>,
 ) -> Result<Vec<f64>> {
+    let gaussians: Vec<(String, &Gaussian)> = gaussians.collect();
+    // When no component has the FoV's dimension, the likelier mistake is the FoV (a 3-D box over
+    // 2-D objects): name its field first and the mean it disagrees with (in the JavaScript names
+    // these errors use). A single odd component is blamed itself, by the mass below.
+    if let Some((name, g)) = gaussians.first()
+        && gaussians.iter().all(|(_, g)| g.dim() < fov.dim())
+    {
+        let (field, dim) = crate::filters::validate::region_dim_field(fov);
+        return Err(Error::shapes(
+            alloc::format!("fov.{}", field.replace("ball.", "disc.")),
+            Shape::Length(dim),
+            alloc::format!("{name}.mean"),
+            Shape::Length(g.dim()),
+        ));
+    }
     gaussians
+        .into_iter()
         .map(|(name, g)| fov.gaussian_mass(g, &name).map(|m| m.value))
         .collect()
 }
@@ -127,8 +143,8 @@ fn renamed(e: Error, prefix: &str, from: &str) -> Error {
 /// # Errors
 /// [`Error::InvalidProbability`] for p_D or an existence outside [0, 1];
 /// [`Error::InvalidParameter`] for i.i.d.-cluster density weights or GLMB weights that do not
-/// sum to 1 within 1e-9, or a bad cardinality pmf; [`Error::DimensionMismatch`] for a
-/// Gaussian with fewer components than the region; [`Error::Unsupported`] for a Poisson pmf
+/// sum to 1 within 1e-9, or a bad cardinality pmf; [`Error::ShapeMismatch`] for a
+/// Gaussian with fewer components than the region (naming the region's field, `fov.box.min`); [`Error::Unsupported`] for a Poisson pmf
 /// longer than [`pmf::MAX_PMF_LEN`] or a region of more than 4 dimensions.
 ///
 /// # Examples

@@ -5,6 +5,7 @@ use super::*;
 use crate::Error;
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::regions::Region;
+use alloc::string::ToString;
 use alloc::vec;
 use alloc::vec::Vec;
 use rand::{RngExt, SeedableRng, rngs::SmallRng};
@@ -441,4 +442,23 @@ fn eq8_fov_box_at_the_largest_doubles_gives_finite_pmfs() {
     let phd = GaussianMixture::new(vec![(1.0, g)], "rfs.poisson").unwrap();
     let res = fov_cardinality(&MultiObjectDensity::Poisson(phd), &fov, 1.0).unwrap();
     assert!((res.cardinality.mean - 1.0 / 3.0).abs() < 1e-15);
+}
+
+/// A FoV of more dimensions than the density (a 3-D box over 2-D objects, the likelier
+/// mistake) names the FoV's field first and the mean it disagrees with, in matrix terms.
+#[test]
+fn eq75_a_fov_of_more_dimensions_names_its_own_field() {
+    let mb = MultiObjectDensity::MultiBernoulli(vec![(0.5, g2([0.0, 0.0], 1.0, 1.0, 0.0))]);
+    let fov = Region::axis_box(&[-1.0, -1.0, -1.0], &[1.0, 1.0, 1.0], "fov").unwrap();
+    let e = fov_cardinality(&mb, &fov, 1.0).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "fov.box.min has length 3 but rfs.multiBernoulli[0].mean has length 2"
+    );
+    let ball = Region::ball(&[0.0, 0.0, 0.0], 1.0, "fov").unwrap();
+    let e = fov_cardinality(&mb, &ball, 1.0).unwrap_err();
+    assert!(
+        e.to_string().starts_with("fov.disc.center has length 3"),
+        "{e}"
+    );
 }
