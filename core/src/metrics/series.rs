@@ -82,12 +82,25 @@ pub struct OspaSeries {
     pub mean_cardinality: f64,
 }
 
-fn mean(values: impl IntoIterator<Item = f64>, len: usize) -> f64 {
+/// The mean of `len` nonnegative values (0 for none). When their sum overflows (values near
+/// the largest double, from a cut-off c near it) the mean is taken of the values scaled by
+/// 2^-64, exactly the same rounding in other units, so that it is finite whenever every value
+/// is: +∞ only when a value is. Ordinary values never take that path (the same bits as a plain
+/// compensated mean).
+fn mean(values: impl IntoIterator<Item = f64> + Clone, len: usize) -> f64 {
     if len == 0 {
-        0.0
-    } else {
-        sum(values) / len as f64
+        return 0.0;
     }
+    let plain = sum(values.clone()) / len as f64;
+    if plain.is_finite() {
+        return plain;
+    }
+    const DOWN: f64 = 1.0 / 18_446_744_073_709_551_616.0; // 2^-64
+    const UP: f64 = 18_446_744_073_709_551_616.0; // 2^64
+    if values.clone().into_iter().any(f64::is_infinite) {
+        return f64::INFINITY;
+    }
+    sum(values.into_iter().map(|v| v * DOWN)) / len as f64 * UP
 }
 
 impl GospaSeries {
@@ -486,6 +499,50 @@ mod tests {
             .series_with(&[vec![0.0], vec![1.0, 2.0]], &[vec![5.0], vec![2.0]], &bad)
             .unwrap_err();
         assert_eq!(e.field(), "distance(truths[1][1], estimates[1][0])");
+    }
+
+    #[test]
+    fn def2_and_eq24_means_of_cutoffs_near_the_largest_double_are_finite() {
+        // Found by the boundary fuzzer: the sum over steps of c-sized distances overflowed and
+        // the means were NaN.
+        let truths = vec![vec![vec![0.0]], vec![vec![0.0]]];
+        let estimates: Vec<Vec<Vec<f64>>> = vec![vec![], vec![]];
+        let g = Gospa::new(f64::MAX, 2.0, 2.0).unwrap();
+        let s = g.series(&truths, &estimates).unwrap();
+        assert!(s.distance[0].is_finite() && s.distance[0] > 1e308);
+        assert_eq!(s.mean_distance, s.distance[0]);
+        let o = Ospa::new(1e308, 1.0)
+            .unwrap()
+            .series(&truths, &estimates)
+            .unwrap();
+        assert_eq!(o.distance, vec![1e308, 1e308]);
+        assert_eq!((o.mean_distance, o.mean_cardinality), (1e308, 1e308));
+        assert_eq!(o.mean_localisation, 0.0);
+        // Ordinary means are the plain compensated means, bit for bit.
+        assert_eq!(mean([0.1, 0.2, 0.4], 3), sum([0.1, 0.2, 0.4]) / 3.0);
+        assert_eq!(mean([f64::MAX, f64::INFINITY], 2), f64::INFINITY);
+    }
+
+    #[test]
+    fn def2_series_with_a_subnormal_alpha_is_finite() {
+        // Found by the boundary fuzzer: (c^p / α)^(1/p) overflowed to ∞ and the mean was NaN.
+        let g = Gospa::new(1.0, 2.0, 5e-324).unwrap();
+        let s = g.series(&[vec![vec![0.0]]], &[vec![]]).unwrap();
+        let expected = 1.0 / 5e-324f64.sqrt();
+        assert!(
+            (s.distance[0] - expected).abs() <= 1e-15 * expected,
+            "{:?}",
+            s.distance
+        );
+        assert_eq!(s.mean_distance, s.distance[0]);
+        // α Σ d^p next to c^p: one matched pair at 0.5 and one missed point.
+        let d = g.distance(&[[0.0], [9.0]], &[[0.5]]).unwrap();
+        assert!((d - expected).abs() <= 1e-15 * expected);
+        let one = Gospa::new(1.0, 1.0, 1e-320).unwrap();
+        assert_eq!(
+            one.distance(&[[0.0]], &[[0.5], [7.0]]).unwrap(),
+            f64::INFINITY
+        );
     }
 
     #[test]
