@@ -30,6 +30,55 @@ pub const MAX_CLOSE_PAIRS: usize = 1 << 25;
 /// The most points in one set: `2^31 − 1` (indices are stored in 32 bits).
 pub const MAX_POINTS: usize = (1 << 31) - 1;
 
+/// The most points, truth and estimate together, of one OSPA/GOSPA evaluation: `2^19 =
+/// 524,288` (a bound on its time: half a million points take about a second in Node, most of
+/// it reading them). Beyond it the call returns [`Error::OverBudget`] naming the larger set,
+/// `truth` or `estimate`.
+pub const MAX_TOTAL_POINTS: usize = 1 << 19;
+
+/// The most points, over all steps and both sides, of one series ([`super::Gospa::series`],
+/// [`super::Ospa::series`]): `2^18 = 262,144` (every step is a whole evaluation). Beyond it
+/// the call returns [`Error::OverBudget`] naming `truths`.
+pub const MAX_SERIES_POINTS: usize = 1 << 18;
+
+/// The most candidate pairs (pairs in neighbouring grid cells, or all `|X|·|Y|` pairs without
+/// a grid) that one evaluation examines: `2^28` on 64-bit targets, `2^26 = 67,108,864` on
+/// 32-bit targets (wasm32): twice [`MAX_CLOSE_PAIRS`], so that the scenes that reach that cap
+/// still say so, while denser ones fail at once instead of counting billions of pairs.
+/// Beyond it the call returns [`Error::OverBudget`] naming the pairs closer than c.
+#[cfg(target_pointer_width = "64")]
+pub const MAX_CANDIDATE_PAIRS: usize = 1 << 28;
+/// See the 64-bit documentation: `2^26` on 32-bit targets.
+#[cfg(not(target_pointer_width = "64"))]
+pub const MAX_CANDIDATE_PAIRS: usize = 1 << 26;
+
+/// The most work of the dense assignments of one evaluation, `Σ min(r, k)²·max(r, k)` over the
+/// `r × k` matrices solved densely (the components of the pairs closer than c that are at
+/// least half full, or the whole problem when it is small or no grid splits it): `2^30`
+/// (about 1,000 × 1,000 points all within c of each other; about a second in Node). Beyond it
+/// the call returns [`Error::OverBudget`] naming the pairs closer than c.
+pub const MAX_DENSE_WORK: u64 = 1 << 30;
+
+/// `min(r, k)² · max(r, k)`, the shortest-augmenting-path cost of an `r × k` assignment.
+pub(crate) fn dense_work(r: usize, k: usize) -> u64 {
+    let (a, b) = (r.min(k) as u64, r.max(k) as u64);
+    a.saturating_mul(a).saturating_mul(b)
+}
+
+/// `Ok` if `work` is within [`MAX_DENSE_WORK`], else the error naming the pairs closer than c.
+fn check_dense_work(work: u64) -> Result<()> {
+    if work > MAX_DENSE_WORK {
+        return Err(Error::OverBudget {
+            what: PAIRS_FIELD.into(),
+            measure: "the dense assignment work, sum of min(r, k)^2 max(r, k) over the r × k blocks",
+            work: usize::try_from(work).unwrap_or(usize::MAX),
+            limit: "MAX_DENSE_WORK = 2^30: lower c or split the sets",
+            at_most: MAX_DENSE_WORK as usize,
+        });
+    }
+    Ok(())
+}
+
 pub(crate) const PAIRS_FIELD: &str = "truth × estimate pairs closer than c";
 const PAIRS_EXPECTED: &str = "at most MAX_CLOSE_PAIRS (2^27 on 64-bit targets, 2^25 on 32-bit \
                               targets such as wasm32; up to 28 bytes of memory each): lower c \
@@ -496,6 +545,7 @@ pub(crate) fn build<T, M: Metric<T> + ?Sized>(
         Some(candidates)
     };
     drop(candidates);
+    check_dense_work(dense_work(n, m))?;
     let cp = fns::powp(c, p);
     let transposed = n > m;
     let mut costs: Vec<f64> = Vec::new();
@@ -544,6 +594,16 @@ fn close_graph<T, M: Metric<T> + ?Sized>(
         checked(metric, &x[i as usize], &y[j as usize], i, j)
     };
     let bound = candidates.upper_bound();
+    if bound > MAX_CANDIDATE_PAIRS as u64 {
+        return Err(Error::OverBudget {
+            what: PAIRS_FIELD.into(),
+            measure: "the candidate pairs (in neighbouring grid cells, or all pairs)",
+            work: usize::try_from(bound).unwrap_or(usize::MAX),
+            limit: "MAX_CANDIDATE_PAIRS (2^28 on 64-bit targets, 2^26 on 32-bit targets such \
+                    as wasm32): lower c or split the sets",
+            at_most: MAX_CANDIDATE_PAIRS,
+        });
+    }
     let two_pass =
         bound > cap as u64 || bound > CANDIDATES_PER_POINT_ONE_PASS.saturating_mul((n + m) as u64);
 
@@ -651,6 +711,13 @@ fn close_graph<T, M: Metric<T> + ?Sized>(
             dense_len += entries as usize;
         }
     }
+    check_dense_work(
+        stats
+            .iter()
+            .filter(|st| st.block != u32::MAX)
+            .map(|st| dense_work(st.rows as usize, st.cols as usize))
+            .fold(0u64, u64::saturating_add),
+    )?;
     let mut sparse_rows: Vec<u32> = Vec::new();
     for r in (0..n).filter(|&r| comp_row[r] != u32::MAX) {
         match stats[comp_row[r] as usize].block {

@@ -232,6 +232,20 @@ where
     if truths.len() != estimates.len() {
         return Err(Error::dimension("estimates", truths.len(), estimates.len()));
     }
+    let points = truths
+        .iter()
+        .map(|x| x.as_ref().len())
+        .chain(estimates.iter().map(|y| y.as_ref().len()))
+        .fold(0usize, usize::saturating_add);
+    if points > super::MAX_SERIES_POINTS {
+        return Err(Error::OverBudget {
+            what: "truths".into(),
+            measure: "points over all steps of truths and estimates",
+            work: points,
+            limit: "MAX_SERIES_POINTS = 2^18 per series",
+            at_most: super::MAX_SERIES_POINTS,
+        });
+    }
     each_step(truths.len(), |t| {
         step(truths[t].as_ref(), estimates[t].as_ref())
     })
@@ -247,7 +261,8 @@ impl Gospa {
     ///
     /// # Errors
     /// [`Error::DimensionMismatch`] naming `estimates` if the two have different numbers of
-    /// steps; a step's error with its fields named per step (`truths[t][i]`,
+    /// steps; [`Error::OverBudget`] naming `truths` beyond [`super::MAX_SERIES_POINTS`] points
+    /// over all steps of both; a step's error with its fields named per step (`truths[t][i]`,
     /// `estimates[t][j]`, `distance(truths[t][i], estimates[t][j])`), the first failing step
     /// in time order.
     ///
