@@ -106,8 +106,9 @@ pub(crate) fn check_cutoff_order(c: f64, p: f64) -> Result<()> {
 /// NaN or negative value, naming `truth × estimate pairs closer than c` (with their count)
 /// beyond [`MAX_CLOSE_PAIRS`], naming `truth`/`estimate` beyond [`MAX_POINTS`] points; the
 /// metric's own validation error (e.g. ragged points). [`Error::OverBudget`] naming the
-/// larger of `truth` and `estimate` beyond [`MAX_TOTAL_POINTS`] points together, and naming
-/// `truth × estimate pairs closer than c` beyond [`MAX_CANDIDATE_PAIRS`] candidate pairs or
+/// larger of `truth` and `estimate` beyond [`MAX_TOTAL_POINTS`] points together;
+/// [`Error::InvalidParameter`] naming `truth × estimate candidate pairs` beyond
+/// [`MAX_CANDIDATE_PAIRS`] and `truth × estimate dense assignment work` beyond
 /// [`MAX_DENSE_WORK`] (the caps that bound the time of one evaluation).
 pub(crate) fn cutoff_assignment<T, M: Metric<T> + ?Sized>(
     x: &[T],

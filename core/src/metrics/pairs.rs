@@ -45,7 +45,8 @@ pub const MAX_SERIES_POINTS: usize = 1 << 18;
 /// a grid) that one evaluation examines: `2^28` on 64-bit targets, `2^26 = 67,108,864` on
 /// 32-bit targets (wasm32): twice [`MAX_CLOSE_PAIRS`], so that the scenes that reach that cap
 /// still say so, while denser ones fail at once instead of counting billions of pairs.
-/// Beyond it the call returns [`Error::OverBudget`] naming the pairs closer than c.
+/// Beyond it the call returns [`Error::InvalidParameter`] naming
+/// `truth × estimate candidate pairs` with their count.
 #[cfg(target_pointer_width = "64")]
 pub const MAX_CANDIDATE_PAIRS: usize = 1 << 28;
 /// See the 64-bit documentation: `2^26` on 32-bit targets.
@@ -56,7 +57,8 @@ pub const MAX_CANDIDATE_PAIRS: usize = 1 << 26;
 /// `r × k` matrices solved densely (the components of the pairs closer than c that are at
 /// least half full, or the whole problem when it is small or no grid splits it): `2^30`
 /// (about 1,000 × 1,000 points all within c of each other; about a second in Node). Beyond it
-/// the call returns [`Error::OverBudget`] naming the pairs closer than c.
+/// the call returns [`Error::InvalidParameter`] naming `truth × estimate dense assignment
+/// work` with the work.
 pub const MAX_DENSE_WORK: u64 = 1 << 30;
 
 /// `min(r, k)² · max(r, k)`, the shortest-augmenting-path cost of an `r × k` assignment.
@@ -65,16 +67,22 @@ pub(crate) fn dense_work(r: usize, k: usize) -> u64 {
     a.saturating_mul(a).saturating_mul(b)
 }
 
-/// `Ok` if `work` is within [`MAX_DENSE_WORK`], else the error naming the pairs closer than c.
+/// The field of the error beyond [`MAX_DENSE_WORK`].
+pub(crate) const WORK_FIELD: &str = "truth × estimate dense assignment work";
+/// The field of the error beyond [`MAX_CANDIDATE_PAIRS`].
+pub(crate) const CANDIDATES_FIELD: &str = "truth × estimate candidate pairs";
+
+/// `Ok` if `work` is within [`MAX_DENSE_WORK`], else [`Error::InvalidParameter`] naming
+/// [`WORK_FIELD`] with the work (exact in an `f64`, whatever the target's `usize`).
 fn check_dense_work(work: u64) -> Result<()> {
     if work > MAX_DENSE_WORK {
-        return Err(Error::OverBudget {
-            what: PAIRS_FIELD.into(),
-            measure: "the dense assignment work, sum of min(r, k)^2 max(r, k) over the r × k blocks",
-            work: usize::try_from(work).unwrap_or(usize::MAX),
-            limit: "MAX_DENSE_WORK = 2^30: lower c or split the sets",
-            at_most: MAX_DENSE_WORK as usize,
-        });
+        return Err(Error::parameter(
+            WORK_FIELD,
+            work as f64,
+            "at most MAX_DENSE_WORK = 2^30 (the sum of min(r, k)^2 max(r, k) over the groups of \
+             r × k points mostly within c of each other, about 1,000 × 1,000): lower c or split \
+             the sets",
+        ));
     }
     Ok(())
 }
@@ -595,14 +603,13 @@ fn close_graph<T, M: Metric<T> + ?Sized>(
     };
     let bound = candidates.upper_bound();
     if bound > MAX_CANDIDATE_PAIRS as u64 {
-        return Err(Error::OverBudget {
-            what: PAIRS_FIELD.into(),
-            measure: "the candidate pairs (in neighbouring grid cells, or all pairs)",
-            work: usize::try_from(bound).unwrap_or(usize::MAX),
-            limit: "MAX_CANDIDATE_PAIRS (2^28 on 64-bit targets, 2^26 on 32-bit targets such \
-                    as wasm32): lower c or split the sets",
-            at_most: MAX_CANDIDATE_PAIRS,
-        });
+        return Err(Error::parameter(
+            CANDIDATES_FIELD,
+            bound as f64,
+            "at most MAX_CANDIDATE_PAIRS (2^28 on 64-bit targets, 2^26 on 32-bit targets such \
+             as wasm32; the pairs in neighbouring grid cells of width c, or all pairs without a \
+             grid): lower c or split the sets",
+        ));
     }
     let two_pass =
         bound > cap as u64 || bound > CANDIDATES_PER_POINT_ONE_PASS.saturating_mul((n + m) as u64);
