@@ -166,6 +166,9 @@ test('gospa-1e6-points, ospa-1e6-points, *-1e6-vs-1, *Series-1e6-steps: caps on 
   const steps = Array.from({ length: 131_073 }, () => [[0]]);
   assert.throws(() => fisst.gospaSeries({ truths: steps, estimates: steps, c: 1 }), rangeError('options.truths: points over all steps'));
   assert.throws(() => fisst.ospaSeries({ truths: steps, estimates: steps, c: 1 }), rangeError('options.truths: points over all steps'));
+  const million = Array.from({ length: 1e6 }, () => [[0]]);
+  const refused = timed(() => assert.throws(() => fisst.gospaSeries({ truths: million, estimates: million, c: 1 }), rangeError('options.truths has 1000000 steps, at most 262144 are supported')));
+  assert.ok(refused.ms < 100, `${refused.ms} ms to refuse 10^6 steps`);
   // 8,193 × 8,193 points within c: more candidate pairs than 2^26, refused before any distance.
   const dense = line(8193, 1e-6);
   assert.throws(() => fisst.gospa(dense, dense, { c: 1 }), rangeError('truth × estimate candidate pairs must be at most MAX_CANDIDATE_PAIRS'));

@@ -50,6 +50,17 @@ export type OspaSeriesResult = OspaSeries;
 export type LinearAssignmentResult = Assignment;
 "#;
 
+/// Refuses a series with more steps than [`fisst::metrics::MAX_SERIES_STEPS`] before reading
+/// them (reading 10⁶ steps alone takes seconds): the core's own error, under `options`.
+fn check_steps(options: &JsValue) -> JsResult<()> {
+    let truths = js_sys::Reflect::get(options, &JsValue::from_str("truths")).unwrap_or_default();
+    if js_sys::Array::is_array(&truths) {
+        let steps = js_sys::Array::from(&truths).length() as usize;
+        fisst::metrics::check_series_steps(steps).or_throw_in("options")?;
+    }
+    Ok(())
+}
+
 /// The coordinates of a point set, one `Vec` per point.
 type Rows = Vec<Vec<f64>>;
 
@@ -123,11 +134,12 @@ pub fn uospa(
 /// GOSPA over a whole scenario in one call: `options.truths[t]` and `options.estimates[t]`
 /// are the sets at step t. Returns per-step `distance` (and, for α = 2, `localisation`,
 /// `missed`, `falseTargets`) with their means. The same numbers as calling `gospa` per step.
-/// At most 262,144 points over all steps of `truths` and `estimates`.
+/// At most 262,144 steps and 262,144 points over all steps of `truths` and `estimates`.
 #[wasm_bindgen(js_name = gospaSeries, unchecked_return_type = "GospaSeriesResult")]
 pub fn gospa_series(
     #[wasm_bindgen(unchecked_param_type = "GospaSeriesOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
+    check_steps(&options)?;
     let o: GospaSeriesOptions = read(options, "options")?;
     // the generic series, not `o.series()`: the assignment code is then instantiated once, in
     // this crate, for every metric here (a core non-generic wrapper would add a second copy)
@@ -139,11 +151,12 @@ pub fn gospa_series(
 
 /// OSPA with its localisation and cardinality parts over a whole scenario in one call
 /// (eqs. 24–26 of Ristic & Vo 2010 at every step). Returns per-step arrays and their means.
-/// At most 262,144 points over all steps of `truths` and `estimates`.
+/// At most 262,144 steps and 262,144 points over all steps of `truths` and `estimates`.
 #[wasm_bindgen(js_name = ospaSeries, unchecked_return_type = "OspaSeriesResult")]
 pub fn ospa_series(
     #[wasm_bindgen(unchecked_param_type = "OspaSeriesOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
+    check_steps(&options)?;
     let o: OspaSeriesOptions = read(options, "options")?;
     let metric = Ospa::new(o.c, o.p).or_throw_in("options")?;
     write(&Renamed::new(

@@ -41,6 +41,20 @@ pub const MAX_TOTAL_POINTS: usize = 1 << 19;
 /// the call returns [`Error::OverBudget`] naming `truths`.
 pub const MAX_SERIES_POINTS: usize = 1 << 18;
 
+/// The most steps of one series: `2^18 = 262,144` (each step is an evaluation of its own, and
+/// each a set pair to read). Beyond it the call returns [`Error::Count`] naming `truths`
+/// ([`check_series_steps`]: the bindings call it before reading the steps).
+pub const MAX_SERIES_STEPS: usize = 1 << 18;
+
+/// `Ok` if a series of `steps` steps is within [`MAX_SERIES_STEPS`], else [`Error::Count`]
+/// naming `truths`.
+///
+/// # Errors
+/// As above.
+pub fn check_series_steps(steps: usize) -> Result<()> {
+    Error::check_count("truths", "steps", steps, 0, MAX_SERIES_STEPS)
+}
+
 /// The most candidate pairs (pairs in neighbouring grid cells, or all `|X|·|Y|` pairs without
 /// a grid) that one evaluation examines: `2^28` on 64-bit targets, `2^26 = 67,108,864` on
 /// 32-bit targets (wasm32): twice [`MAX_CLOSE_PAIRS`], so that the scenes that reach that cap

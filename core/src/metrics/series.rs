@@ -232,6 +232,7 @@ where
     if truths.len() != estimates.len() {
         return Err(Error::dimension("estimates", truths.len(), estimates.len()));
     }
+    super::check_series_steps(truths.len())?;
     let points = truths
         .iter()
         .map(|x| x.as_ref().len())
@@ -261,8 +262,9 @@ impl Gospa {
     ///
     /// # Errors
     /// [`Error::DimensionMismatch`] naming `estimates` if the two have different numbers of
-    /// steps; [`Error::OverBudget`] naming `truths` beyond [`super::MAX_SERIES_POINTS`] points
-    /// over all steps of both; a step's error with its fields named per step (`truths[t][i]`,
+    /// steps; [`Error::Count`] naming `truths` beyond [`super::MAX_SERIES_STEPS`] steps;
+    /// [`Error::OverBudget`] naming `truths` beyond [`super::MAX_SERIES_POINTS`] points over
+    /// all steps of both; a step's error with its fields named per step (`truths[t][i]`,
     /// `estimates[t][j]`, `distance(truths[t][i], estimates[t][j])`), the first failing step
     /// in time order.
     ///

@@ -495,4 +495,8 @@ fn the_caps_on_points_candidates_and_dense_work_are_errors_naming_the_field() {
     assert_eq!(e.field(), "truths");
     let s = g.series(&steps[1..], &steps[1..]).unwrap();
     assert_eq!(s.mean_distance, 0.0);
+    let empty: Vec<Vec<[f64; 1]>> = vec![vec![]; super::MAX_SERIES_STEPS + 1];
+    let e = g.series(&empty, &empty).unwrap_err();
+    assert!(matches!(e, Error::Count { .. }), "{e}");
+    assert_eq!(e.field(), "truths");
 }
