@@ -21,6 +21,7 @@
 //! | [`GospaOptions`], [`OspaOptions`], [`GospaSeriesOptions`], [`OspaSeriesOptions`], [`Gospa::report`], [`GospaReport`] | the parameters as data; GOSPA with its α = 2 decomposition | `options::tests::prop3_report_decomposes_for_alpha_2_only`, `options::tests::def2_and_eq24_series_options_are_the_series_of_their_metric` |
 
 mod base;
+mod caps;
 mod gospa;
 mod options;
 mod ospa;
@@ -30,15 +31,16 @@ mod series;
 mod tests;
 
 pub use base::{Euclidean, FnMetric, Metric};
+pub use caps::{
+    MAX_CANDIDATE_PAIRS, MAX_DENSE_WORK, MAX_SERIES_POINTS, MAX_SERIES_STEPS, MAX_TOTAL_POINTS,
+    check_series_steps,
+};
 pub use gospa::{Gospa, GospaDecomposition, GospaReport};
 pub use options::{
     GospaOptions, GospaSeriesOptions, OspaOptions, OspaSeriesOptions, default_alpha, default_order,
 };
 pub use ospa::{Ospa, OspaDecomposition};
-pub use pairs::{
-    MAX_CANDIDATE_PAIRS, MAX_CLOSE_PAIRS, MAX_DENSE_WORK, MAX_POINTS, MAX_SERIES_POINTS,
-    MAX_SERIES_STEPS, MAX_TOTAL_POINTS, check_series_steps,
-};
+pub use pairs::{MAX_CLOSE_PAIRS, MAX_POINTS};
 pub use series::{GospaSeries, OspaSeries};
 
 use alloc::vec;

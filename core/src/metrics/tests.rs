@@ -473,10 +473,10 @@ fn the_caps_on_points_candidates_and_dense_work_are_errors_naming_the_field() {
         matches!(e, Error::InvalidParameter { value, .. } if value == (side * side) as f64),
         "{e}"
     );
-    assert_eq!(e.field(), pairs::CANDIDATES_FIELD);
+    assert_eq!(e.field(), caps::CANDIDATES_FIELD);
     // Dense work: 1100 × 1100 points within c, directly dense and through the graph.
     let block = line(1100, 1e-6);
-    assert!(super::pairs::dense_work(1100, 1100) > MAX_DENSE_WORK);
+    assert!(super::caps::dense_work(1100, 1100) > MAX_DENSE_WORK);
     for graph in [false, true] {
         let e =
             cutoff_assignment_capped(&block, &block, &Euclidean, 1.0, 2.0, MAX_CLOSE_PAIRS, graph)
@@ -485,9 +485,9 @@ fn the_caps_on_points_candidates_and_dense_work_are_errors_naming_the_field() {
             matches!(e, Error::InvalidParameter { value, .. } if value == 1100.0f64.powi(3)),
             "{e}"
         );
-        assert_eq!(e.field(), pairs::WORK_FIELD);
+        assert_eq!(e.field(), caps::WORK_FIELD);
     }
-    assert_eq!(super::pairs::dense_work(1024, 1024), MAX_DENSE_WORK);
+    assert_eq!(super::caps::dense_work(1024, 1024), MAX_DENSE_WORK);
     // A series: the points over all steps.
     let steps = vec![vec![[0.0]]; MAX_SERIES_POINTS / 2 + 1];
     let e = g.series(&steps, &steps).unwrap_err();
