@@ -76,6 +76,17 @@ export function gospa(truth: PointSet, estimate: PointSet, options: GospaOptions
 export function gospaSeries(options: GospaSeriesOptions & { alpha?: 2 }): GospaSeriesDecomposedResult;
 "#;
 
+/// Refuses a series with more steps than [`fisst::metrics::MAX_SERIES_STEPS`] before reading
+/// them (reading 10⁶ steps alone takes seconds): the core's own error, under `options`.
+fn check_steps(options: &JsValue) -> JsResult<()> {
+    let truths = js_sys::Reflect::get(options, &JsValue::from_str("truths")).unwrap_or_default();
+    if js_sys::Array::is_array(&truths) {
+        let steps = js_sys::Array::from(&truths).length() as usize;
+        fisst::metrics::check_series_steps(steps).or_throw_in("options")?;
+    }
+    Ok(())
+}
+
 /// The coordinates of a point set, one `Vec` per point.
 type Rows = Vec<Vec<f64>>;
 
@@ -97,6 +108,13 @@ fn sets_and<T: serde::de::DeserializeOwned>(
 /// default 2) the order, `options.alpha` (in (0, 2], default 2) the cardinality-mismatch
 /// weight. Returns `{ distance, localisation, missed, falseTargets, assignment }`; for
 /// `alpha ≠ 2` only `distance` is defined (the decomposition exists for α = 2 only).
+///
+/// Caps (each a `RangeError` naming the field, so that every call stays within about a
+/// second): at most 524,288 points in `truth` and `estimate` together; at most 2^26 candidate
+/// pairs (pairs in neighbouring cells of a grid of width c) and 2^25 pairs closer than c; at
+/// most 2^30 of dense assignment work, `Σ min(r, k)² max(r, k)` over the groups of r × k
+/// points mostly within c of each other (about 1,000 × 1,000). The same caps hold for
+/// `ospa`, `uospa` and each step of the series.
 #[wasm_bindgen(unchecked_return_type = "GospaResult")]
 pub fn gospa(
     #[wasm_bindgen(unchecked_param_type = "PointSet")] truth: JsValue,
@@ -111,7 +129,7 @@ pub fn gospa(
 /// OSPA between two point sets with its rooted localisation and cardinality parts
 /// (Schuhmacher et al. 2008; eqs. 24–26 of Ristic & Vo 2010):
 /// `distance^p = localisation^p + cardinality^p`. Options `{ c, p = 2 }`. Also returns the
-/// optimal permutation's pairs as `assignment`.
+/// optimal permutation's pairs as `assignment`. Caps on the sizes as for `gospa`.
 #[wasm_bindgen(unchecked_return_type = "OspaResult")]
 pub fn ospa(
     #[wasm_bindgen(unchecked_param_type = "PointSet")] truth: JsValue,
@@ -126,7 +144,7 @@ pub fn ospa(
 }
 
 /// UOSPA (GOSPA with α = 1) between two point sets. Options `{ c, p = 2 }`; returns
-/// `{ distance }`.
+/// `{ distance }`. Caps on the sizes as for `gospa`.
 #[wasm_bindgen(unchecked_return_type = "UospaResult")]
 pub fn uospa(
     #[wasm_bindgen(unchecked_param_type = "PointSet")] truth: JsValue,
@@ -142,10 +160,12 @@ pub fn uospa(
 /// GOSPA over a whole scenario in one call: `options.truths[t]` and `options.estimates[t]`
 /// are the sets at step t. Returns per-step `distance` (and, for α = 2, `localisation`,
 /// `missed`, `falseTargets`) with their means. The same numbers as calling `gospa` per step.
+/// At most 262,144 steps and 262,144 points over all steps of `truths` and `estimates`.
 #[wasm_bindgen(js_name = gospaSeries, unchecked_return_type = "GospaSeriesResult")]
 pub fn gospa_series(
     #[wasm_bindgen(unchecked_param_type = "GospaSeriesOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
+    check_steps(&options)?;
     let o: GospaSeriesOptions = read(options, "options")?;
     // the generic series, not `o.series()`: the assignment code is then instantiated once, in
     // this crate, for every metric here (a core non-generic wrapper would add a second copy)
@@ -157,10 +177,12 @@ pub fn gospa_series(
 
 /// OSPA with its localisation and cardinality parts over a whole scenario in one call
 /// (eqs. 24–26 of Ristic & Vo 2010 at every step). Returns per-step arrays and their means.
+/// At most 262,144 steps and 262,144 points over all steps of `truths` and `estimates`.
 #[wasm_bindgen(js_name = ospaSeries, unchecked_return_type = "OspaSeriesResult")]
 pub fn ospa_series(
     #[wasm_bindgen(unchecked_param_type = "OspaSeriesOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
+    check_steps(&options)?;
     let o: OspaSeriesOptions = read(options, "options")?;
     let metric = Ospa::new(o.c, o.p).or_throw_in("options")?;
     write(&Renamed::new(

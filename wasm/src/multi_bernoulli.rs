@@ -45,7 +45,9 @@ export type MbIdenticalComponentCountsResult = IdenticalComponentCounts;
 "#;
 
 /// The cardinality pmf of a multi-Bernoulli (Poisson-binomial): `pmf[n] = P(N = n)`,
-/// n = 0 … existence.length. Exact, nonnegative, sums to 1.
+/// n = 0 … existence.length. Exact, nonnegative, sums to 1. At most 20,000 existence
+/// probabilities (the exact pmf costs n²/2 operations); more throw a `RangeError` naming
+/// `existence`.
 #[wasm_bindgen(js_name = multiBernoulliCardinality, unchecked_return_type = "number[]")]
 pub fn multi_bernoulli_cardinality_js(
     #[wasm_bindgen(unchecked_param_type = "Numbers")] existence: JsValue,
@@ -54,7 +56,9 @@ pub fn multi_bernoulli_cardinality_js(
     write(&multi_bernoulli_cardinality(&r).or_throw()?)
 }
 
-/// The leave-one-out cardinality pmfs ρ₋ᵢ: element i is the pmf without component i.
+/// The leave-one-out cardinality pmfs ρ₋ᵢ: element i is the pmf without component i. At
+/// most 1,000 existence probabilities (the result holds n² numbers); more throw a
+/// `RangeError` naming `existence`.
 #[wasm_bindgen(js_name = multiBernoulliLeaveOneOut, unchecked_return_type = "number[][]")]
 pub fn multi_bernoulli_leave_one_out(
     #[wasm_bindgen(unchecked_param_type = "Numbers")] existence: JsValue,

@@ -26,14 +26,30 @@
 use alloc::vec;
 use alloc::vec::Vec;
 
-use crate::error::{Result, check_probabilities};
+use crate::error::{Error, Result, check_probabilities};
 use crate::math::sum::NeumaierSum;
+
+/// The most components (existence probabilities) whose cardinality pmf is computed: 20,000.
+/// The exact recursion costs M²/2 multiply-adds, about 0.3 s at the cap in Node; beyond it
+/// [`multi_bernoulli_cardinality`] (and the estimators built on the pmf) return
+/// [`Error::Count`] naming `existence`.
+pub const MAX_COMPONENTS: usize = 20_000;
+
+/// The most components [`leave_one_out_cardinalities`] accepts: 1,000 (its result holds M²
+/// numbers; about 0.3 s at the cap in Node). [`for_each_leave_one_out`] streams them
+/// without a cap.
+pub const MAX_LEAVE_ONE_OUT_COMPONENTS: usize = 1_000;
+
+/// `Ok` if `existence` has at most `max` components, else [`Error::Count`] naming it.
+pub(crate) fn check_components(existence: &[f64], max: usize) -> Result<()> {
+    Error::check_count("existence", "components", existence.len(), 0, max)
+}
 
 /// The cardinality pmf `ρ(0) … ρ(M)` of a multi-Bernoulli with existence probabilities `r`.
 ///
 /// # Errors
 /// [`crate::Error::InvalidProbability`] naming `existence[i]` for a NaN or a value outside
-/// [0, 1].
+/// [0, 1]; [`Error::Count`] naming `existence` beyond [`MAX_COMPONENTS`] components.
 ///
 /// # Examples
 /// ```
@@ -41,6 +57,7 @@ use crate::math::sum::NeumaierSum;
 /// assert_eq!(rho, vec![0.25, 0.5, 0.25]);
 /// ```
 pub fn multi_bernoulli_cardinality(existence: &[f64]) -> Result<Vec<f64>> {
+    check_components(existence, MAX_COMPONENTS)?;
     check_probabilities("existence", existence)?;
     Ok(pmf_unchecked(existence))
 }
@@ -138,8 +155,10 @@ fn descend(r: &[f64], offset: usize, outside: &[f64], visit: &mut impl FnMut(usi
 /// [`for_each_leave_one_out`] to stream them instead.
 ///
 /// # Errors
-/// As [`multi_bernoulli_cardinality`].
+/// [`crate::Error::InvalidProbability`] naming `existence[i]`; [`Error::Count`] naming
+/// `existence` beyond [`MAX_LEAVE_ONE_OUT_COMPONENTS`] components.
 pub fn leave_one_out_cardinalities(existence: &[f64]) -> Result<Vec<Vec<f64>>> {
+    check_components(existence, MAX_LEAVE_ONE_OUT_COMPONENTS)?;
     let mut out = Vec::with_capacity(existence.len());
     for_each_leave_one_out(existence, |_, pmf| out.push(pmf.to_vec()))?;
     Ok(out)
@@ -249,5 +268,25 @@ mod tests {
         assert_eq!(e.field(), "existence[0]");
         assert!(!called, "the callback ran before the input was checked");
         assert_eq!(multi_bernoulli_cardinality(&[]).unwrap(), vec![1.0]);
+    }
+
+    #[test]
+    fn eq88_and_lemma4_pmfs_are_capped_by_the_component_count() {
+        // Found by the boundary fuzzer: 10^6 components ran for seconds (O(M²)).
+        let over = vec![0.5; MAX_COMPONENTS + 1];
+        let e = multi_bernoulli_cardinality(&over).unwrap_err();
+        assert!(matches!(e, Error::Count { .. }), "{e}");
+        assert_eq!(e.field(), "existence");
+        assert_eq!(
+            alloc::string::ToString::to_string(&e),
+            "existence has 20001 components, at most 20000 are supported"
+        );
+        let rho = multi_bernoulli_cardinality(&over[..MAX_COMPONENTS]).unwrap();
+        assert_eq!(rho.len(), MAX_COMPONENTS + 1);
+        let over = vec![0.5; MAX_LEAVE_ONE_OUT_COMPONENTS + 1];
+        let e = leave_one_out_cardinalities(&over).unwrap_err();
+        assert_eq!(e.field(), "existence");
+        let loo = leave_one_out_cardinalities(&over[..MAX_LEAVE_ONE_OUT_COMPONENTS]).unwrap();
+        assert_eq!(loo.len(), MAX_LEAVE_ONE_OUT_COMPONENTS);
     }
 }

@@ -42,7 +42,8 @@ use alloc::vec::Vec;
 
 use nalgebra::DMatrix;
 
-use crate::cardinality::multi_bernoulli::pmf_unchecked;
+use crate::cardinality::MAX_COMPONENTS;
+use crate::cardinality::multi_bernoulli::{check_components, pmf_unchecked};
 use crate::error::{Error, Result, check_probabilities};
 use crate::math::fns;
 use crate::math::special::LN_2PI;
@@ -132,9 +133,11 @@ fn scores(existence: &[f64], ln_peak: &[f64]) -> Vec<f64> {
 /// "Maximise the cardinality pmf, then report the most probable components".
 ///
 /// # Errors
-/// [`Error::InvalidProbability`] naming `existence[i]`.
+/// [`Error::InvalidProbability`] naming `existence[i]`; [`Error::Count`] naming `existence`
+/// beyond [`MAX_COMPONENTS`] (20,000) components (the pmf costs O(n²)).
 pub fn map_cardinality_estimate(existence: &[f64]) -> Result<Vec<bool>> {
     check_probabilities("existence", existence)?;
+    check_components(existence, MAX_COMPONENTS)?;
     let n_hat = map_cardinality(existence);
     Ok(report_top(existence.len(), &ranked(existence), n_hat))
 }
@@ -144,9 +147,11 @@ pub fn map_cardinality_estimate(existence: &[f64]) -> Result<Vec<bool>> {
 ///
 /// # Errors
 /// [`Error::InvalidProbability`] naming `existence[i]`; [`Error::DimensionMismatch`] or
-/// [`Error::InvalidParameter`] naming `lnPeak`.
+/// [`Error::InvalidParameter`] naming `lnPeak`; [`Error::Count`] naming `existence` beyond
+/// [`MAX_COMPONENTS`] (20,000) components (the pmf costs O(n²)).
 pub fn mam_estimate(existence: &[f64], ln_peak: &[f64]) -> Result<Vec<bool>> {
     check(existence, ln_peak)?;
+    check_components(existence, MAX_COMPONENTS)?;
     let n_hat = map_cardinality(existence);
     Ok(report_top(
         existence.len(),

@@ -57,7 +57,10 @@
 use alloc::vec;
 use alloc::vec::Vec;
 
-use crate::cardinality::multi_bernoulli::{for_each_leave_one_out, pmf_unchecked};
+use crate::cardinality::MAX_COMPONENTS;
+use crate::cardinality::multi_bernoulli::{
+    check_components, for_each_leave_one_out, pmf_unchecked,
+};
 use crate::error::{Error, Result, check_probabilities};
 use crate::math::fns;
 use crate::math::sum::{NeumaierSum, sum};
@@ -113,10 +116,20 @@ pub struct MbEstimate {
     pub mean_square_error: f64,
 }
 
+/// The most components [`optimal_estimate`] accepts under OSPA: 4,000 (its leave-one-out
+/// pmfs cost O(n² log n), about 0.4 s at the cap in Node). GOSPA with α = 2 has no cap (its
+/// cost is linear); other α, UOSPA, and [`mean_error`] under any metric but GOSPA with α = 2
+/// are capped at [`MAX_COMPONENTS`] (20,000: the cardinality pmf, O(n²)).
+pub const MAX_OSPA_ESTIMATE_COMPONENTS: usize = 4_000;
+
 fn check_inputs(existence: &[f64], metric: SetMetric, c: f64, p: f64) -> Result<Kind> {
     check_cutoff_order(c, p)?;
     check_probabilities("existence", existence)?;
-    metric.check()
+    let kind = metric.check()?;
+    if !matches!(kind, Kind::Gospa(alpha) if alpha == 2.0) {
+        check_components(existence, MAX_COMPONENTS)?;
+    }
+    Ok(kind)
 }
 
 /// `E[max(N, k)] = Σ_n ρ(n) max(n, k)`.
@@ -134,6 +147,39 @@ fn gospa_units(alpha: f64, e_miss_false: f64, e_max: f64, e_detected: f64) -> f6
     linear + (2.0 / alpha - 1.0) * (e_max - e_detected).max(0.0)
 }
 
+/// Whether α is so small (below 1e-289) that `1/α` times the expectations could overflow: [`gospa_units`] would then meet ∞ − ∞ or ∞ · 0 (NaN). Such α take
+/// [`tiny_alpha_error`] instead; every other α keeps the units form (the same bits as ever).
+fn tiny_alpha(alpha: f64) -> bool {
+    alpha < 1e-289
+}
+
+/// The GOSPA(α) error `c^p E[min(m, f)] + (c^p/α) E|m − f|` for a [`tiny_alpha`], from the
+/// same three expectations, with `c^p/α = (c / α^(1/p))^p` so that it is finite whenever the
+/// error is, and a zero expectation contributing 0 even where its factor overflows (never
+/// NaN).
+fn tiny_alpha_error(
+    c: f64,
+    p: f64,
+    alpha: f64,
+    e_miss_false: f64,
+    e_max: f64,
+    e_detected: f64,
+) -> f64 {
+    let (e_min, e_diff) = min_and_difference(e_miss_false, e_max, e_detected);
+    let times = |factor: f64, e: f64| if e == 0.0 { 0.0 } else { factor * e };
+    times(fns::powp(c, p), e_min) + times(fns::powp(c / fns::rootp(alpha, p), p), e_diff)
+}
+
+/// `(E[min(m, f)], E|m − f|)` from `E[m + f]`, `E[max(N, k)]` and `E[D]`
+/// (`max(m, f) = max(N, k) − D`), each clamped at 0 against rounding.
+fn min_and_difference(e_miss_false: f64, e_max: f64, e_detected: f64) -> (f64, f64) {
+    let e_larger = (e_max - e_detected).max(0.0);
+    (
+        (e_miss_false - e_larger).max(0.0),
+        (2.0 * e_larger - e_miss_false).max(0.0),
+    )
+}
+
 /// The mean error `E[d^p]` (the mean square error for p = 2) of the estimate `report` of a
 /// multi-Bernoulli with far-apart Dirac components: Lemma 4, eqs. (5)–(8) of `003_…`, for
 /// GOSPA with any α, UOSPA and OSPA.
@@ -141,7 +187,8 @@ fn gospa_units(alpha: f64, e_miss_false: f64, e_max: f64, e_detected: f64) -> f6
 /// # Errors
 /// [`Error::DimensionMismatch`] naming `report` if its length differs from `existence`'s;
 /// [`Error::InvalidProbability`] naming `existence[i]`; [`Error::InvalidParameter`] naming `c`,
-/// `p` or `alpha`.
+/// `p` or `alpha`; [`Error::Count`] naming `existence` beyond [`MAX_COMPONENTS`] components
+/// (any metric but GOSPA with α = 2).
 ///
 /// # Examples
 /// ```
@@ -180,6 +227,9 @@ pub fn mean_error(
             } else {
                 expected_max(&pmf_unchecked(existence), k)
             };
+            if tiny_alpha(alpha) {
+                return Ok(tiny_alpha_error(c, p, alpha, e_mf, e_max, e_d));
+            }
             gospa_units(alpha, e_mf, e_max, e_d)
         }
         Kind::Ospa => {
@@ -249,7 +299,8 @@ fn ospa_tail(b: &[f64], k: usize) -> f64 {
 ///   wins; components of equal existence are taken in index order.
 ///
 /// # Errors
-/// As [`mean_error`].
+/// As [`mean_error`], and [`Error::Count`] naming `existence` beyond
+/// [`MAX_OSPA_ESTIMATE_COMPONENTS`] components under OSPA.
 ///
 /// # Examples
 /// ```
@@ -268,6 +319,9 @@ pub fn optimal_estimate(
     p: f64,
 ) -> Result<MbEstimate> {
     let metric = check_inputs(existence, metric, c, p)?;
+    if let Kind::Ospa = metric {
+        check_components(existence, MAX_OSPA_ESTIMATE_COMPONENTS)?;
+    }
     let n = existence.len();
     if let Kind::Gospa(alpha) = metric
         && alpha == 2.0
@@ -286,19 +340,37 @@ pub fn optimal_estimate(
     });
     let sorted: Vec<f64> = order.iter().map(|&i| existence[i]).collect();
     let rho = pmf_unchecked(existence);
+    // Ties go to the smaller count, as in (9) (r = 1/2 is not reported).
+    let smallest = |(bk, bv): (usize, f64), (k, v): (usize, f64)| {
+        if v < bv { (k, v) } else { (bk, bv) }
+    };
     let (best_k, best) = match metric {
-        Kind::Gospa(alpha) => {
-            // Ties go to the smaller count, as in (9) (r = 1/2 is not reported).
-            top_k_gospa_units(&sorted, &rho, alpha)
-                .into_iter()
+        Kind::Gospa(alpha) if tiny_alpha(alpha) => {
+            // Compare α times the errors (finite), then evaluate the best count's.
+            let expectations = top_k_gospa_expectations(&sorted, &rho);
+            let (k, _) = expectations
+                .iter()
+                .map(|&(e_mf, e_max, e_d)| {
+                    let (e_min, e_diff) = min_and_difference(e_mf, e_max, e_d);
+                    alpha * e_min + e_diff
+                })
                 .enumerate()
-                .fold(
-                    (0, f64::INFINITY),
-                    |(bk, bv), (k, v)| {
-                        if v < bv { (k, v) } else { (bk, bv) }
-                    },
-                )
+                .fold((0, f64::INFINITY), smallest);
+            let (e_mf, e_max, e_d) = expectations[k];
+            let mut report = vec![false; n];
+            for &i in &order[..k] {
+                report[i] = true;
+            }
+            return Ok(MbEstimate {
+                report,
+                mean_square_error: tiny_alpha_error(c, p, alpha, e_mf, e_max, e_d),
+            });
         }
+        Kind::Gospa(alpha) => top_k_gospa_expectations(&sorted, &rho)
+            .into_iter()
+            .map(|(e_mf, e_max, e_d)| gospa_units(alpha, e_mf, e_max, e_d))
+            .enumerate()
+            .fold((0, f64::INFINITY), smallest),
         Kind::Ospa => best_ospa_count(&sorted, &rho),
     };
     let mut report = vec![false; n];
@@ -311,8 +383,9 @@ pub fn optimal_estimate(
     })
 }
 
-/// GOSPA(α) errors (units of c^p) of the top-k sets, k = 0 … n.
-fn top_k_gospa_units(sorted: &[f64], rho: &[f64], alpha: f64) -> Vec<f64> {
+/// `(E[m + f], E[max(N, k)], E[D])` of the top-k sets, k = 0 … n: the expectations of
+/// [`gospa_units`].
+fn top_k_gospa_expectations(sorted: &[f64], rho: &[f64]) -> Vec<(f64, f64, f64)> {
     let n = sorted.len();
     // E[max(N, k)] = k P(N ≤ k) + Σ_{m > k} m ρ(m), from prefix sums.
     let mut cdf = NeumaierSum::new();
@@ -332,7 +405,7 @@ fn top_k_gospa_units(sorted: &[f64], rho: &[f64], alpha: f64) -> Vec<f64> {
         let e_d = reported_r.total();
         // E[m + f] = Σ_{reported} (1 − r) + Σ_{unreported} r = k − 2 E[D] + Σ r
         let e_mf = k as f64 - 2.0 * e_d + total_r;
-        out.push(gospa_units(alpha, e_mf.max(0.0), e_max, e_d));
+        out.push((e_mf.max(0.0), e_max, e_d));
     }
     out
 }
@@ -387,6 +460,69 @@ mod overflow_tests {
         assert_eq!(m, f64::INFINITY);
         let m = mean_error(&[1.0], &[true], SetMetric::Uospa, 2.0, 1e308).unwrap();
         assert_eq!(m, 0.0);
+    }
+
+    #[test]
+    fn lemma4_subnormal_alpha_and_cutoff_give_numbers_never_nan() {
+        // Found by the boundary fuzzer: c^p / α = 0 / 0 and (1 − 1/α) · 0 = −∞ · 0.
+        let tiny = SetMetric::Gospa { alpha: 5e-324 };
+        let e = optimal_estimate(&[], tiny, 5e-324, 2.0).unwrap();
+        assert_eq!(e.mean_square_error, 0.0);
+        // One component at r = 0.3: reporting it costs (1 − r)·c^p/α + ..., so the estimate
+        // that minimises E|m − f| (nothing reported: 0.3 c^p/α) wins; c^p/α = 1e300 here.
+        let huge = SetMetric::Gospa { alpha: 1e-300 };
+        let e = optimal_estimate(&[0.3], huge, 1.0, 1.0).unwrap();
+        assert_eq!(e.report, vec![false]);
+        assert!((e.mean_square_error - 0.3e300).abs() <= 1e-12 * 0.3e300);
+        for (c, alpha) in [(1.0, 5e-324), (5e-324, 5e-324), (1e-200, 1e-300)] {
+            let metric = SetMetric::Gospa { alpha };
+            let e = optimal_estimate(&[0.3, 0.6, 0.6], metric, c, 2.0).unwrap();
+            assert!(!e.mean_square_error.is_nan(), "c={c} α={alpha}");
+            let m = mean_error(&[0.3, 0.6, 0.6], &e.report, metric, c, 2.0).unwrap();
+            let close =
+                m == e.mean_square_error || (m - e.mean_square_error).abs() <= 1e-12 * m.abs();
+            assert!(close, "c={c} α={alpha}: {m} vs {}", e.mean_square_error);
+            let m = mean_error(&[0.3, 0.6], &[true, false], metric, c, 2.0).unwrap();
+            assert!(m >= 0.0, "c={c} α={alpha}: {m}");
+        }
+        // c = 1, α = 5e-324: (c^p/α) E|m − f| overflows, the error is +∞ (not NaN).
+        let e = mean_error(
+            &[0.3],
+            &[true],
+            SetMetric::Gospa { alpha: 5e-324 },
+            1.0,
+            2.0,
+        );
+        assert_eq!(e.unwrap(), f64::INFINITY);
+    }
+
+    #[test]
+    fn lemma4_and_eq11_component_counts_are_capped_per_metric() {
+        // Found by the boundary fuzzer: 10^6 components ran for seconds.
+        let many = vec![0.5; MAX_COMPONENTS + 1];
+        for metric in [
+            SetMetric::Ospa,
+            SetMetric::Uospa,
+            SetMetric::Gospa { alpha: 1.5 },
+        ] {
+            let e = optimal_estimate(&many, metric, 1.0, 2.0).unwrap_err();
+            assert!(matches!(e, Error::Count { .. }), "{e}");
+            assert_eq!(e.field(), "existence");
+            let report = vec![true; many.len()];
+            let e = mean_error(&many, &report, metric, 1.0, 2.0).unwrap_err();
+            assert_eq!(e.field(), "existence");
+        }
+        let e = optimal_estimate(
+            &many[..MAX_OSPA_ESTIMATE_COMPONENTS + 1],
+            SetMetric::Ospa,
+            1.0,
+            2.0,
+        )
+        .unwrap_err();
+        assert_eq!(e.field(), "existence");
+        // GOSPA with α = 2 is linear: no cap.
+        let e = optimal_estimate(&many, SetMetric::GOSPA, 1.0, 2.0).unwrap();
+        assert_eq!(e.report.len(), many.len());
     }
 }
 

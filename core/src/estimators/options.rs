@@ -46,7 +46,9 @@ impl SetMetricName {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MbOptimalEstimateOptions {
-    /// Existence probability r_i in [0, 1] of each far-apart component.
+    /// Existence probability r_i in [0, 1] of each far-apart component. Any number for GOSPA
+    /// with α = 2; at most 4,000 for OSPA and 20,000 for UOSPA and other α (the cost is
+    /// O(n² log n) and O(n²)).
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::numbers"))]
     pub existence: Vec<f64>,
     /// The metric whose mean error is minimised.
@@ -82,7 +84,8 @@ impl MbOptimalEstimateOptions {
 pub struct MbMeanSquareErrorOptions {
     /// The estimate: `report[i]` says whether component i is reported (one per component).
     pub report: Vec<bool>,
-    /// Existence probability r_i in [0, 1] of each far-apart component.
+    /// Existence probability r_i in [0, 1] of each far-apart component. Any number for GOSPA
+    /// with α = 2; at most 20,000 for the other metrics (the cost is O(n²)).
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::numbers"))]
     pub existence: Vec<f64>,
     /// The metric.
@@ -113,7 +116,8 @@ impl MbMeanSquareErrorOptions {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MbAlternativeEstimateOptions {
-    /// Existence probability r_i in [0, 1] of each component.
+    /// Existence probability r_i in [0, 1] of each component. At most 20,000 for `mam` and
+    /// `map-cardinality` (the cardinality pmf costs O(n²)); any number for `jom`.
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::numbers"))]
     pub existence: Vec<f64>,
     /// The estimator.

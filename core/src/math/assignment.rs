@@ -68,14 +68,34 @@ pub fn linear_assignment(cost: &[f64], rows: usize, cols: usize) -> Result<Assig
     Ok(solve_unchecked(cost, rows, cols))
 }
 
+/// Costs above this magnitude (2^900 ≈ 8.5e270) are solved in units of [`HUGE_UNIT`]: the
+/// dual variables and path lengths, sums of many costs, then stay far from overflow.
+const HUGE_COST: f64 = 8.452712498170644e270;
+/// 2^124: costs up to the largest double become at most 2^900 in these units.
+const HUGE_UNIT: f64 = 2.1267647932558654e37;
+
 /// [`linear_assignment`] without validation: the caller guarantees
 /// `cost.len() == rows · cols` and finite entries.
+///
+/// Costs beyond ±2^900 (near the largest double, whose sums overflow) are solved on the
+/// matrix divided by 2^124 — exactly the same problem, a power of two only shifting the
+/// exponents — and the total is the compensated sum in those units times 2^124: finite
+/// whenever the optimal total is representable, ±∞ where it is not, never NaN (∞ − ∞).
+/// Ordinary costs take the direct path, unchanged.
 pub(crate) fn solve_unchecked(cost: &[f64], rows: usize, cols: usize) -> Assignment {
     debug_assert_eq!(cost.len(), rows * cols);
     if rows == 0 || cols == 0 {
         return Assignment {
             pairs: Vec::new(),
             cost: 0.0,
+        };
+    }
+    if cost.iter().any(|c| crate::math::fns::abs(*c) > HUGE_COST) {
+        let scaled: Vec<f64> = cost.iter().map(|c| c / HUGE_UNIT).collect();
+        let a = solve_unchecked(&scaled, rows, cols);
+        return Assignment {
+            pairs: a.pairs,
+            cost: a.cost * HUGE_UNIT,
         };
     }
     let pairs = if rows <= cols {
@@ -285,6 +305,30 @@ pub(crate) mod tests {
         // all equal
         let a = linear_assignment(&[1.0; 12], 3, 4).unwrap();
         assert_eq!(a.cost, 3.0);
+    }
+
+    #[test]
+    fn costs_near_the_largest_double_give_the_optimum_or_infinity_never_nan() {
+        // Found by the boundary fuzzer: the compensated total of 1e308 + 1e308 was NaN.
+        let a = linear_assignment(&[1e308; 4], 2, 2).unwrap();
+        assert_eq!((a.pairs.len(), a.cost), (2, f64::INFINITY));
+        let a = linear_assignment(&[-1e308; 4], 2, 2).unwrap();
+        assert_eq!(a.cost, f64::NEG_INFINITY);
+        let a = linear_assignment(&[-1e308, 1e308, 1e308, -1e308], 2, 2).unwrap();
+        assert_eq!(
+            (a.pairs.clone(), a.cost),
+            (vec![(0, 0), (1, 1)], f64::NEG_INFINITY)
+        );
+        // A representable optimum is found and summed in units where nothing overflows.
+        let a = linear_assignment(&[1e308, 0.0, 0.0, f64::MAX], 2, 2).unwrap();
+        assert_eq!((a.pairs.clone(), a.cost), (vec![(0, 1), (1, 0)], 0.0));
+        let cost = [1e308, 5e307, 5e307, 1e308, 1e307, 3e307];
+        let a = linear_assignment(&cost, 3, 2).unwrap();
+        assert_eq!(a.pairs, vec![(0, 1), (2, 0)]);
+        assert_eq!(a.cost, 5e307 + 1e307);
+        // The same matrix at ordinary scale: the direct path, the same pairs.
+        let small: Vec<f64> = cost.iter().map(|c| c / 1e300).collect();
+        assert_eq!(linear_assignment(&small, 3, 2).unwrap().pairs, a.pairs);
     }
 
     #[test]

@@ -208,7 +208,14 @@ impl Gospa {
         } else {
             a.total + fns::powp(self.c, self.p) / self.alpha * unmatched as f64
         };
-        Ok(fns::rootp(total, self.p))
+        if total.is_finite() {
+            return Ok(fns::rootp(total, self.p));
+        }
+        // c^p/α overflowed (α near the smallest double; c^p itself is representable here):
+        // the same sum times α, `(α Σ d^p + c^p |unmatched|)^(1/p) / α^(1/p)`, which is finite
+        // whenever the distance is (α Σ d^p is then far below c^p's rounding).
+        let times_alpha = a.total * self.alpha + fns::powp(self.c, self.p) * unmatched as f64;
+        Ok(fns::rootp(times_alpha, self.p) / fns::rootp(self.alpha, self.p))
     }
 
     /// The α = 2 decomposition under the Euclidean distance.

@@ -15,11 +15,13 @@
 //! |---|---|---|
 //! | [`Ospa`] | OSPA and its localisation and cardinality parts, (24)–(26) of `004_…`; UOSPA of `003_…` | `ospa::tests::matches_brute_force_and_parts_add_up`, `ospa::tests::is_a_metric_bounded_by_c`, `ospa::tests::one_empty_set_is_at_distance_c` |
 //! | [`Gospa`] | GOSPA and its decomposition, `003_…` | `gospa::tests::matches_brute_force_and_prop3`, `gospa::tests::is_a_metric`, `gospa::tests::empty_sets`, `gospa::tests::assignment_minimises_the_p_th_powers_not_the_distances`, `extreme_cut_offs_are_computed_in_units_of_c`, `a_tiny_alpha_with_every_point_matched_is_not_nan` |
+//! | the caps on the time of one evaluation: [`MAX_TOTAL_POINTS`], [`MAX_SERIES_POINTS`], [`MAX_SERIES_STEPS`], [`MAX_CANDIDATE_PAIRS`], [`MAX_DENSE_WORK`] | — | `tests::the_caps_on_points_candidates_and_dense_work_are_errors_naming_the_field` |
 //! | the cut-off assignment over close pairs, [`MAX_CLOSE_PAIRS`] | — | `small_instances_match_brute_force_in_1d_to_3d_with_ties`, `every_density_matches_the_dense_solver`, `coincident_points_exact_cutoff_and_cell_boundaries`, `gospa_and_ospa_agree_with_the_dense_oracle_on_a_percolating_scene`, `the_cap_on_pairs_closer_than_c_is_an_error_with_the_count`, `metrics_memory::twenty_thousand_percolating_points_take_megabytes_not_gigabytes`, `metrics_memory::over_the_cap_fails_before_storing_the_pairs` |
 //! | [`Gospa::series`], [`Ospa::series`] | per-step values and their means | `series::tests::gospa_series_is_the_per_step_values_and_their_means`, `series::tests::ospa_series_is_the_per_step_values_and_their_means` |
 //! | [`GospaOptions`], [`OspaOptions`], [`GospaSeriesOptions`], [`OspaSeriesOptions`], [`Gospa::report`], [`GospaReport`] | the parameters as data; GOSPA with its α = 2 decomposition | `options::tests::prop3_report_decomposes_for_alpha_2_only`, `options::tests::def2_and_eq24_series_options_are_the_series_of_their_metric` |
 
 mod base;
+mod caps;
 mod gospa;
 mod options;
 mod ospa;
@@ -29,6 +31,10 @@ mod series;
 mod tests;
 
 pub use base::{Euclidean, FnMetric, Metric};
+pub use caps::{
+    MAX_CANDIDATE_PAIRS, MAX_DENSE_WORK, MAX_SERIES_POINTS, MAX_SERIES_STEPS, MAX_TOTAL_POINTS,
+    check_series_steps,
+};
 pub use gospa::{Gospa, GospaDecomposition, GospaReport};
 pub use options::{
     GospaOptions, GospaSeriesOptions, OspaOptions, OspaSeriesOptions, default_alpha, default_order,
@@ -101,7 +107,11 @@ pub(crate) fn check_cutoff_order(c: f64, p: f64) -> Result<()> {
 /// [`Error::InvalidParameter`] naming `distance(truth[i], estimate[j])` if the metric returns a
 /// NaN or negative value, naming `truth × estimate pairs closer than c` (with their count)
 /// beyond [`MAX_CLOSE_PAIRS`], naming `truth`/`estimate` beyond [`MAX_POINTS`] points; the
-/// metric's own validation error (e.g. ragged points).
+/// metric's own validation error (e.g. ragged points). [`Error::OverBudget`] naming the
+/// larger of `truth` and `estimate` beyond [`MAX_TOTAL_POINTS`] points together;
+/// [`Error::InvalidParameter`] naming `truth × estimate candidate pairs` beyond
+/// [`MAX_CANDIDATE_PAIRS`] and `truth × estimate dense assignment work` beyond
+/// [`MAX_DENSE_WORK`] (the caps that bound the time of one evaluation).
 pub(crate) fn cutoff_assignment<T, M: Metric<T> + ?Sized>(
     x: &[T],
     y: &[T],
@@ -123,6 +133,21 @@ pub(crate) fn cutoff_assignment_capped<T, M: Metric<T> + ?Sized>(
     cap: usize,
     force_graph: bool,
 ) -> Result<CutoffAssignment> {
+    let total = x.len().saturating_add(y.len());
+    if total > MAX_TOTAL_POINTS {
+        let (what, other) = if x.len() >= y.len() {
+            ("truth", y.len())
+        } else {
+            ("estimate", x.len())
+        };
+        return Err(Error::OverBudget {
+            what: what.into(),
+            measure: "points in truth and estimate",
+            work: total,
+            limit: "MAX_TOTAL_POINTS = 2^19 per evaluation",
+            at_most: MAX_TOTAL_POINTS.saturating_sub(other),
+        });
+    }
     metric.validate(x, y)?;
     for (name, len) in [("truth", x.len()), ("estimate", y.len())] {
         if len > MAX_POINTS {

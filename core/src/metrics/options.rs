@@ -80,6 +80,10 @@ impl OspaOptions {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GospaSeriesOptions {
     /// The truth at each step (arrays of points of one common dimension; empty sets allowed).
+    /// At most 2^18 = 262,144 steps ([`crate::metrics::MAX_SERIES_STEPS`]) and 2^18 points
+    /// over all steps of `truths` and `estimates` together
+    /// ([`crate::metrics::MAX_SERIES_POINTS`]), and within each step the caps of one
+    /// evaluation.
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::point_sets"))]
     pub truths: Vec<Vec<Vec<f64>>>,
     /// The estimate at each step (as many steps as `truths`).
@@ -115,7 +119,9 @@ pub struct OspaSeriesOptions {
     /// The order p ≥ 1 (finite; default 2).
     #[cfg_attr(feature = "serde", serde(default = "default_order"))]
     pub p: f64,
-    /// The truth at each step.
+    /// The truth at each step. At most 2^18 = 262,144 steps
+    /// ([`crate::metrics::MAX_SERIES_STEPS`]) and 2^18 points over all steps of `truths` and
+    /// `estimates` together ([`crate::metrics::MAX_SERIES_POINTS`]).
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::point_sets"))]
     pub truths: Vec<Vec<Vec<f64>>>,
     /// The estimate at each step (as many steps as `truths`).

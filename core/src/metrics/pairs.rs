@@ -6,6 +6,7 @@ use alloc::vec;
 use alloc::vec::Vec;
 
 use super::Metric;
+use super::caps::{CANDIDATES_FIELD, MAX_CANDIDATE_PAIRS, check_dense_work, dense_work};
 use crate::error::{Error, Result};
 use crate::math::fns;
 
@@ -496,6 +497,7 @@ pub(crate) fn build<T, M: Metric<T> + ?Sized>(
         Some(candidates)
     };
     drop(candidates);
+    check_dense_work(dense_work(n, m))?;
     let cp = fns::powp(c, p);
     let transposed = n > m;
     let mut costs: Vec<f64> = Vec::new();
@@ -544,6 +546,15 @@ fn close_graph<T, M: Metric<T> + ?Sized>(
         checked(metric, &x[i as usize], &y[j as usize], i, j)
     };
     let bound = candidates.upper_bound();
+    if bound > MAX_CANDIDATE_PAIRS as u64 {
+        return Err(Error::parameter(
+            CANDIDATES_FIELD,
+            bound as f64,
+            "at most MAX_CANDIDATE_PAIRS (2^28 on 64-bit targets, 2^26 on 32-bit targets such \
+             as wasm32; the pairs in neighbouring grid cells of width c, or all pairs without a \
+             grid): lower c or split the sets",
+        ));
+    }
     let two_pass =
         bound > cap as u64 || bound > CANDIDATES_PER_POINT_ONE_PASS.saturating_mul((n + m) as u64);
 
@@ -651,6 +662,13 @@ fn close_graph<T, M: Metric<T> + ?Sized>(
             dense_len += entries as usize;
         }
     }
+    check_dense_work(
+        stats
+            .iter()
+            .filter(|st| st.block != u32::MAX)
+            .map(|st| dense_work(st.rows as usize, st.cols as usize))
+            .fold(0u64, u64::saturating_add),
+    )?;
     let mut sparse_rows: Vec<u32> = Vec::new();
     for r in (0..n).filter(|&r| comp_row[r] != u32::MAX) {
         match stats[comp_row[r] as usize].block {

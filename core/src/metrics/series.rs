@@ -84,12 +84,25 @@ pub struct OspaSeries {
     pub mean_cardinality: f64,
 }
 
-fn mean(values: impl IntoIterator<Item = f64>, len: usize) -> f64 {
+/// The mean of `len` nonnegative values (0 for none). When their sum overflows (values near
+/// the largest double, from a cut-off c near it) the mean is taken of the values scaled by
+/// 2^-64, exactly the same rounding in other units, so that it is finite whenever every value
+/// is: +∞ only when a value is. Ordinary values never take that path (the same bits as a plain
+/// compensated mean).
+fn mean(values: impl IntoIterator<Item = f64> + Clone, len: usize) -> f64 {
     if len == 0 {
-        0.0
-    } else {
-        sum(values) / len as f64
+        return 0.0;
     }
+    let plain = sum(values.clone()) / len as f64;
+    if plain.is_finite() {
+        return plain;
+    }
+    const DOWN: f64 = 1.0 / 18_446_744_073_709_551_616.0; // 2^-64
+    const UP: f64 = 18_446_744_073_709_551_616.0; // 2^64
+    if values.clone().into_iter().any(f64::is_infinite) {
+        return f64::INFINITY;
+    }
+    sum(values.into_iter().map(|v| v * DOWN)) / len as f64 * UP
 }
 
 impl GospaSeries {
@@ -221,6 +234,21 @@ where
     if truths.len() != estimates.len() {
         return Err(Error::dimension("estimates", truths.len(), estimates.len()));
     }
+    super::check_series_steps(truths.len())?;
+    let points = truths
+        .iter()
+        .map(|x| x.as_ref().len())
+        .chain(estimates.iter().map(|y| y.as_ref().len()))
+        .fold(0usize, usize::saturating_add);
+    if points > super::MAX_SERIES_POINTS {
+        return Err(Error::OverBudget {
+            what: "truths".into(),
+            measure: "points over all steps of truths and estimates",
+            work: points,
+            limit: "MAX_SERIES_POINTS = 2^18 per series",
+            at_most: super::MAX_SERIES_POINTS,
+        });
+    }
     each_step(truths.len(), |t| {
         step(truths[t].as_ref(), estimates[t].as_ref())
     })
@@ -236,7 +264,9 @@ impl Gospa {
     ///
     /// # Errors
     /// [`Error::DimensionMismatch`] naming `estimates` if the two have different numbers of
-    /// steps; a step's error with its fields named per step (`truths[t][i]`,
+    /// steps; [`Error::Count`] naming `truths` beyond [`super::MAX_SERIES_STEPS`] steps;
+    /// [`Error::OverBudget`] naming `truths` beyond [`super::MAX_SERIES_POINTS`] points over
+    /// all steps of both; a step's error with its fields named per step (`truths[t][i]`,
     /// `estimates[t][j]`, `distance(truths[t][i], estimates[t][j])`), the first failing step
     /// in time order.
     ///
@@ -488,6 +518,50 @@ mod tests {
             .series_with(&[vec![0.0], vec![1.0, 2.0]], &[vec![5.0], vec![2.0]], &bad)
             .unwrap_err();
         assert_eq!(e.field(), "distance(truths[1][1], estimates[1][0])");
+    }
+
+    #[test]
+    fn def2_and_eq24_means_of_cutoffs_near_the_largest_double_are_finite() {
+        // Found by the boundary fuzzer: the sum over steps of c-sized distances overflowed and
+        // the means were NaN.
+        let truths = vec![vec![vec![0.0]], vec![vec![0.0]]];
+        let estimates: Vec<Vec<Vec<f64>>> = vec![vec![], vec![]];
+        let g = Gospa::new(f64::MAX, 2.0, 2.0).unwrap();
+        let s = g.series(&truths, &estimates).unwrap();
+        assert!(s.distance[0].is_finite() && s.distance[0] > 1e308);
+        assert_eq!(s.mean_distance, s.distance[0]);
+        let o = Ospa::new(1e308, 1.0)
+            .unwrap()
+            .series(&truths, &estimates)
+            .unwrap();
+        assert_eq!(o.distance, vec![1e308, 1e308]);
+        assert_eq!((o.mean_distance, o.mean_cardinality), (1e308, 1e308));
+        assert_eq!(o.mean_localisation, 0.0);
+        // Ordinary means are the plain compensated means, bit for bit.
+        assert_eq!(mean([0.1, 0.2, 0.4], 3), sum([0.1, 0.2, 0.4]) / 3.0);
+        assert_eq!(mean([f64::MAX, f64::INFINITY], 2), f64::INFINITY);
+    }
+
+    #[test]
+    fn def2_series_with_a_subnormal_alpha_is_finite() {
+        // Found by the boundary fuzzer: (c^p / α)^(1/p) overflowed to ∞ and the mean was NaN.
+        let g = Gospa::new(1.0, 2.0, 5e-324).unwrap();
+        let s = g.series(&[vec![vec![0.0]]], &[vec![]]).unwrap();
+        let expected = 1.0 / 5e-324f64.sqrt();
+        assert!(
+            (s.distance[0] - expected).abs() <= 1e-15 * expected,
+            "{:?}",
+            s.distance
+        );
+        assert_eq!(s.mean_distance, s.distance[0]);
+        // α Σ d^p next to c^p: one matched pair at 0.5 and one missed point.
+        let d = g.distance(&[[0.0], [9.0]], &[[0.5]]).unwrap();
+        assert!((d - expected).abs() <= 1e-15 * expected);
+        let one = Gospa::new(1.0, 1.0, 1e-320).unwrap();
+        assert_eq!(
+            one.distance(&[[0.0]], &[[0.5], [7.0]]).unwrap(),
+            f64::INFINITY
+        );
     }
 
     #[test]

@@ -423,11 +423,80 @@ fn a_tiny_alpha_with_every_point_matched_is_not_nan() {
     for c in [1.0, 1e-300] {
         let g = Gospa::new(c, 2.0, 5e-324).unwrap();
         assert_eq!(g.distance(&[[0.0, 0.0]], &[[0.0, 0.0]]).unwrap(), 0.0);
-        // One unmatched point: c^p/α is beyond f64, the distance is +∞, not NaN.
-        assert_eq!(
-            g.distance(&[[0.0, 0.0]], &[[0.0, 0.0], [1.0, 1.0]])
-                .unwrap(),
-            f64::INFINITY
+        // One unmatched point: c^p/α is beyond f64 but the distance, c/α^(1/2), is not
+        // (computed times α; it was +∞ before the fuzzer's gospaSeries-alpha-subnormal).
+        let d = g
+            .distance(&[[0.0, 0.0]], &[[0.0, 0.0], [1.0, 1.0]])
+            .unwrap();
+        let expected = c / 5e-324f64.sqrt();
+        assert!(
+            (d - expected).abs() <= 1e-15 * expected,
+            "{d} vs {expected}"
         );
     }
+}
+
+#[test]
+fn the_caps_on_points_candidates_and_dense_work_are_errors_naming_the_field() {
+    // Found by the boundary fuzzer: 10^6 × 10^6 points (1D, every point within 3c of 10^5
+    // others) and 10^6 series steps ran for many seconds.
+    use crate::metrics::{
+        Gospa, MAX_CANDIDATE_PAIRS, MAX_DENSE_WORK, MAX_SERIES_POINTS, MAX_TOTAL_POINTS, Ospa,
+    };
+    let g = Gospa::new(1.0, 2.0, 2.0).unwrap();
+    let line =
+        |n: usize, step: f64| -> Vec<[f64; 1]> { (0..n).map(|i| [i as f64 * step]).collect() };
+    let many = line(MAX_TOTAL_POINTS, 10.0);
+    let e = g.distance(&many, &line(1, 10.0)).unwrap_err();
+    assert!(matches!(e, Error::OverBudget { .. }), "{e}");
+    assert_eq!(e.field(), "truth");
+    let e = Ospa::new(1.0, 2.0)
+        .unwrap()
+        .decompose(&line(1, 10.0), &many)
+        .unwrap_err();
+    assert_eq!(e.field(), "estimate");
+    assert_eq!(
+        alloc::format!("{e}"),
+        "estimate: points in truth and estimate = 524289 exceeds MAX_TOTAL_POINTS = 2^19 per \
+         evaluation (at most 524287)"
+    );
+    // At the cap: a sparse line, fine.
+    assert_eq!(
+        g.distance(&many, &[] as &[[f64; 1]]).unwrap(),
+        (many.len() as f64 / 2.0).sqrt()
+    );
+    // Candidate pairs: every pair within c and more of them than the cap, at once.
+    let side = ((MAX_CANDIDATE_PAIRS as f64).sqrt() as usize) + 1;
+    let dense = line(side, 1e-9);
+    let e = g.distance(&dense, &dense).unwrap_err();
+    assert!(
+        matches!(e, Error::InvalidParameter { value, .. } if value == (side * side) as f64),
+        "{e}"
+    );
+    assert_eq!(e.field(), caps::CANDIDATES_FIELD);
+    // Dense work: 1100 × 1100 points within c, directly dense and through the graph.
+    let block = line(1100, 1e-6);
+    assert!(super::caps::dense_work(1100, 1100) > MAX_DENSE_WORK);
+    for graph in [false, true] {
+        let e =
+            cutoff_assignment_capped(&block, &block, &Euclidean, 1.0, 2.0, MAX_CLOSE_PAIRS, graph)
+                .unwrap_err();
+        assert!(
+            matches!(e, Error::InvalidParameter { value, .. } if value == 1100.0f64.powi(3)),
+            "{e}"
+        );
+        assert_eq!(e.field(), caps::WORK_FIELD);
+    }
+    assert_eq!(super::caps::dense_work(1024, 1024), MAX_DENSE_WORK);
+    // A series: the points over all steps.
+    let steps = vec![vec![[0.0]]; MAX_SERIES_POINTS / 2 + 1];
+    let e = g.series(&steps, &steps).unwrap_err();
+    assert!(matches!(e, Error::OverBudget { .. }), "{e}");
+    assert_eq!(e.field(), "truths");
+    let s = g.series(&steps[1..], &steps[1..]).unwrap();
+    assert_eq!(s.mean_distance, 0.0);
+    let empty: Vec<Vec<[f64; 1]>> = vec![vec![]; super::MAX_SERIES_STEPS + 1];
+    let e = g.series(&empty, &empty).unwrap_err();
+    assert!(matches!(e, Error::Count { .. }), "{e}");
+    assert_eq!(e.field(), "truths");
 }
