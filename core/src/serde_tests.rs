@@ -85,11 +85,11 @@ fn gaussians_are_rows_and_reject_a_non_positive_definite_covariance() {
     round_trip(&m);
     assert_eq!(
         rejected::<Gaussian>(r#"{"mean":[0.0,0.0],"cov":[[1.0,2.0],[2.0,1.0]]}"#),
-        ".cov must be symmetric positive definite"
+        ".cov is not positive definite (smallest eigenvalue -1)"
     );
     assert_eq!(
         rejected::<GaussianMixture>(r#"[{"weight":1.0,"mean":[0.0],"cov":[[-1.0]]}]"#),
-        "[0].cov must be symmetric positive definite"
+        "[0].cov is not positive definite (smallest eigenvalue -1)"
     );
     assert_eq!(
         rejected::<GaussianMixture>(r#"[{"weight":-1.0,"mean":[0.0],"cov":1.0}]"#),
