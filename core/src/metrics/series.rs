@@ -5,7 +5,7 @@ use alloc::string::String;
 use alloc::vec::Vec;
 
 use super::{Euclidean, Gospa, GospaDecomposition, Metric, Ospa, OspaDecomposition};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, Shape};
 use crate::math::sum::sum;
 
 /// GOSPA over a scenario: the distance at every time step and its mean, with the α = 2
@@ -232,7 +232,12 @@ where
     R: Send,
 {
     if truths.len() != estimates.len() {
-        return Err(Error::dimension("estimates", truths.len(), estimates.len()));
+        return Err(Error::shapes(
+            "estimates",
+            Shape::Length(estimates.len()),
+            "truths",
+            Shape::Length(truths.len()),
+        ));
     }
     super::check_series_steps(truths.len())?;
     let points = truths
@@ -263,8 +268,8 @@ impl Gospa {
     /// `parallel` feature, with identical results without it.
     ///
     /// # Errors
-    /// [`Error::DimensionMismatch`] naming `estimates` if the two have different numbers of
-    /// steps; [`Error::Count`] naming `truths` beyond [`super::MAX_SERIES_STEPS`] steps;
+    /// [`Error::ShapeMismatch`] naming `estimates` and `truths` if the two have different
+    /// numbers of steps (`estimates has length 1 but truths has length 2`); [`Error::Count`] naming `truths` beyond [`super::MAX_SERIES_STEPS`] steps;
     /// [`Error::OverBudget`] naming `truths` beyond [`super::MAX_SERIES_POINTS`] points over
     /// all steps of both; a step's error with its fields named per step (`truths[t][i]`,
     /// `estimates[t][j]`, `distance(truths[t][i], estimates[t][j])`), the first failing step
@@ -501,6 +506,10 @@ mod tests {
         let (mut truths, mut estimates) = scenario(3, 10);
         let e = g.series(&truths, &estimates[..9]).unwrap_err();
         assert_eq!(e.field(), "estimates");
+        assert!(
+            alloc::format!("{e}").contains("but truths has length"),
+            "{e}"
+        );
         truths[7] = vec![vec![0.0, 0.0], vec![f64::NAN, 0.0]];
         estimates[4] = vec![vec![0.0, 0.0], vec![1.0]];
         let e = g.series(&truths, &estimates).unwrap_err();
