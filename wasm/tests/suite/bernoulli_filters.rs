@@ -339,7 +339,11 @@ fn a_method_that_throws_leaves_the_filter_as_it_was() {
         "RangeError",
         "options.radius",
     );
-    assert_throws(pf.estimate(js(r#"{"radius":1}"#)), "RangeError", "options");
+    assert_throws(
+        pf.estimate(js(r#"{"radius":1}"#)),
+        "TypeError",
+        "options.costs",
+    );
     assert_eq!(json(&gm.mixture().unwrap()), gm_mix);
     // Still usable after the throws.
     gm.update(js("[]")).unwrap();
