@@ -304,8 +304,18 @@ const onSetting = (key) => (v) => {
 };
 state.scheme = choice('scheme', SCHEMES, { value: state.scheme, onChange: onSetting('scheme') }).value;
 state.seed = slider('seed', { value: state.seed, onInput: onSetting('seed') }).value;
-state.particles = slider('particles', { value: state.particles, onInput: onSetting('particles') }).value;
-state.futureScans = slider('future-scans', { value: state.futureScans, onInput: onSetting('futureScans') }).value;
+// The package caps one step's work at N·M ≤ 300,000 (SensorControlRun, four objects): the
+// slider of M stops there for the N chosen, and an M above it is lowered to it.
+const WORK_CAP = 300_000;
+const fitScans = () => {
+  const max = Math.min(500, Math.floor(WORK_CAP / state.particles / 10) * 10);
+  scans.input.max = String(max);
+  if (state.futureScans > max) state.futureScans = scans.set(max);
+};
+state.particles = slider('particles', { value: state.particles, onInput: (v) => { state.particles = v; fitScans(); onSetting('particles')(v); } }).value;
+const scans = slider('future-scans', { value: state.futureScans, onInput: onSetting('futureScans') });
+state.futureScans = scans.value;
+fitScans();
 state.alpha = slider('alpha', { value: state.alpha, format: (v) => fmt(v, 2), onInput: onSetting('alpha') }).value;
 state.steps = slider('steps', { value: state.steps, onInput: onSetting('steps') }).value;
 state.runs = slider('runs', { value: state.runs, onInput: (v) => { state.runs = v; url.save(); } }).value;

@@ -360,7 +360,7 @@ test('SensorControlRun: bad options are typed errors naming the field; a finishe
   throwsAt(bad({ particles: 10.5 }), RangeError, 'options.particles');
   throwsAt(bad({ particles: 20_001 }), RangeError, 'options.particles');
   throwsAt(bad({ futureScans: 0 }), RangeError, 'options.futureScans');
-  assert.throws(bad({ particles: 2000, futureScans: 501 }), (e) => e instanceof RangeError && /^options\.(particles|futureScans)/.test(e.message));
+  assert.throws(bad({ particles: 2000, futureScans: 201 }), (e) => e instanceof RangeError && /^options\.(particles|futureScans)/.test(e.message));
   throwsAt(bad({ alpha: 0 }), RangeError, 'options.alpha');
   throwsAt(bad({ alpha: -0.5 }), RangeError, 'options.alpha');
   throwsAt(bad({ alpha: NaN }), RangeError, 'options.alpha');

@@ -279,7 +279,9 @@ pub struct GmBernoulliUpdateOptions {
     /// the non-detection update.
     #[tsify(optional)]
     pub reports: Option<Vec<Region>>,
-    /// Vector measurements (with `likelihood`): the vector-measurement update instead.
+    /// Vector measurements (with `likelihood`): the vector-measurement update instead. At most
+    /// 10,000, and components (after splitting) × measurements × ⌈n²/16⌉ ≤ 2^18 (a
+    /// RangeError naming `options.measurements` beyond).
     #[tsify(optional)]
     pub measurements: Option<Vec<Point>>,
     /// H, R of the vector measurements.
@@ -678,7 +680,9 @@ impl GmBernoulliFilterJs {
     }
 
     /// The update with `Region[]` (imprecise reports; `[]`: the non-detection update) or
-    /// `{ measurements }`. Returns `{ delta, splitComponents }`.
+    /// `{ measurements }`. Returns `{ delta, splitComponents }`. Work caps, a RangeError
+    /// naming `reports` beyond: GM vector update, components × measurements × ⌈n²/16⌉ ≤
+    /// 2^18; particle filter, particles × reports × (1 + MCMC moves) ≤ 2·10^7.
     #[wasm_bindgen(unchecked_return_type = "{ delta: number; splitComponents: number }")]
     pub fn update(
         &mut self,

@@ -181,9 +181,8 @@ pub fn fov_cardinality_js(
             work * 1e-6
         )));
     }
-    let res = fov_cardinality(&density, &fov, o.detection_probability)
-        .map_err(|e| e.map_other(|o| format!("options.{o}")))
-        .or_throw_in("options")?;
+    // `or_throw_in` puts both fields of a shape error under `options`.
+    let res = fov_cardinality(&density, &fov, o.detection_probability).or_throw_in("options")?;
     write(&FovCardinalityResult {
         pmf: res.cardinality.pmf,
         mean: res.cardinality.mean,

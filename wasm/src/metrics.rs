@@ -87,12 +87,6 @@ fn check_steps(options: &JsValue) -> JsResult<()> {
     Ok(())
 }
 
-/// A series error naming two fields (`estimates has length 1 but truths has length 2`): both
-/// are under `options`.
-fn other_in_options(e: fisst::Error) -> fisst::Error {
-    e.map_other(|o| std::format!("options.{o}"))
-}
-
 /// The coordinates of a point set, one `Vec` per point.
 type Rows = Vec<Vec<f64>>;
 
@@ -177,9 +171,7 @@ pub fn gospa_series(
     // this crate, for every metric here (a core non-generic wrapper would add a second copy)
     let g = Gospa::new(o.c, o.p, o.alpha).or_throw_in("options")?;
     write(&Renamed::new(
-        &g.series(&o.truths, &o.estimates)
-            .map_err(other_in_options)
-            .or_throw_in("options")?,
+        &g.series(&o.truths, &o.estimates).or_throw_in("options")?,
     ))
 }
 
@@ -196,7 +188,6 @@ pub fn ospa_series(
     write(&Renamed::new(
         &metric
             .series(&o.truths, &o.estimates)
-            .map_err(other_in_options)
             .or_throw_in("options")?,
     ))
 }

@@ -312,13 +312,13 @@ fn alg1_work_caps_name_the_field_and_the_range() {
     }
     // N·M: after the four ranges, naming M with the largest M within the cap.
     let mut c = base.clone();
-    (c.particles, c.future_scans) = (2000, 501);
+    (c.particles, c.future_scans) = (2000, 151);
     let over = Error::OverBudget {
         what: "future_scans".into(),
-        measure: "particles · future_scans",
-        work: 1_002_000,
-        limit: "1000000",
-        at_most: 500,
+        measure: "particles · future_scans · 2^max(max_objects − 4, 0)",
+        work: 302_000,
+        limit: "300000",
+        at_most: 150,
     };
     assert_eq!(c.check_limits(), Err(over.clone()));
     c.steps = 0;
@@ -329,4 +329,19 @@ fn alg1_work_caps_name_the_field_and_the_range() {
     (c.particles, c.future_scans) = (2000, MAX_WORK / 2000);
     assert!(c.check_limits().is_ok());
     assert_eq!(c.validate().unwrap_err().field(), "alpha");
+    // Past four objects each one doubles the work: n_max = 8 allows 1/16 of the scans.
+    c.max_objects = 8;
+    (c.particles, c.future_scans) = (1000, 19);
+    assert_eq!(
+        c.check_limits(),
+        Err(Error::OverBudget {
+            what: "future_scans".into(),
+            measure: "particles · future_scans · 2^max(max_objects − 4, 0)",
+            work: 304_000,
+            limit: "300000",
+            at_most: 18,
+        })
+    );
+    c.future_scans = 18;
+    assert!(c.check_limits().is_ok());
 }

@@ -572,7 +572,9 @@ pub fn gm_bernoulli_update_vector<M: AsRef<[f64]>>(
     let kappa = config
         .clutter
         .intensities(measurements.len(), |j| Some(measurements[j].as_ref()))?;
+    check_vector_work(state.mixture.len(), measurements.len(), n)?;
     let (split, split_components) = refine(&state.mixture, Vec::new(), config)?;
+    check_vector_work(split.len(), measurements.len(), n)?;
     let prior: Vec<(f64, &Gaussian)> = constrain(&split, &config.exclusions)?
         .into_iter()
         .filter_map(|(w, i)| split.components().get(i).map(|(_, g)| (w, g)))
@@ -657,6 +659,37 @@ pub fn gm_bernoulli_update_vector<M: AsRef<[f64]>>(
         }
     }
     finish(existence, out, delta, split_components, config)
+}
+
+/// The most work of one vector update ([`gm_bernoulli_update_vector`]), counted as
+/// components (after splitting) × measurements × ⌈n² / 16⌉ for an n-dimensional state (the
+/// pairs, each a posterior Gaussian; its n × n covariance counted in units of a 4-D one):
+/// `2^18 = 262,144`. At the cap an update took 0.2–0.3 s in Node (2-D states: 10,000
+/// components × 26 measurements, 2000 × 131; 4-D: 2000 × 131), while 10,000 × 104 2-D
+/// pairs took 6.2 s (the reduction of a million posterior components) and 10,000 × 10,000
+/// ran out of time and memory. Beyond it the update returns [`Error::OverBudget`] naming
+/// `measurements` before any pair is formed.
+pub const MAX_VECTOR_UPDATE_WORK: usize = 1 << 18;
+
+/// `Ok` if components × measurements × ⌈n² / 16⌉ is within [`MAX_VECTOR_UPDATE_WORK`].
+///
+/// # Errors
+/// [`Error::OverBudget`] naming `measurements`.
+fn check_vector_work(components: usize, measurements: usize, n: usize) -> Result<()> {
+    let per_measurement = components
+        .saturating_mul(n.saturating_mul(n).div_ceil(16))
+        .max(1);
+    let work = per_measurement.saturating_mul(measurements);
+    if work > MAX_VECTOR_UPDATE_WORK {
+        return Err(Error::OverBudget {
+            what: "measurements".into(),
+            measure: "mixture components (after splitting) × measurements × ⌈n²/16⌉",
+            work,
+            limit: "MAX_VECTOR_UPDATE_WORK = 2^18 (pass fewer measurements or reduce the mixture)",
+            at_most: MAX_VECTOR_UPDATE_WORK / per_measurement,
+        });
+    }
+    Ok(())
 }
 
 /// What an update reported besides the new state.

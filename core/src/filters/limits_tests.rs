@@ -200,3 +200,62 @@ fn the_airport_scenario_has_at_most_2000_steps() {
         "steps must be an integer in [0, 2000], got 2001"
     );
 }
+
+/// Issue 26 point 7: an update's work is bounded before it starts. The particle filter
+/// counts (N + B) · max(m, 1) · (1 + moves) likelihood evaluations against
+/// [`MAX_UPDATE_EVALUATIONS`]; the GM vector update counts components × measurements against
+/// [`MAX_VECTOR_UPDATE_WORK`] (with ⌈n²/16⌉). Beyond either the error names the list to shorten, with the
+/// most it may hold, and the filter is unchanged.
+#[test]
+fn an_update_past_its_work_cap_names_the_list_and_leaves_the_filter_unchanged() {
+    let config = ncv_filter_config(0.5, 0.9);
+    // 100,000 particles, one move: at most 100 reports.
+    let options = ParticleOptions {
+        particles: 100_000,
+        ..ParticleOptions::default()
+    };
+    let mut pf = ParticleBernoulliFilter::new(config.clone(), options).unwrap();
+    let before = (pf.existence(), pf.particles().to_vec());
+    let report = Region::ball(&[0.0, 0.0], 1.0, "r").unwrap();
+    assert_eq!(
+        message(pf.update(&vec![report.clone(); 101])),
+        "reports: particles × reports × (1 + MCMC moves) = 20200000 exceeds \
+         MAX_UPDATE_EVALUATIONS = 2·10^7 (pass fewer reports or particles) (at most 100)"
+    );
+    // 2-D measurements of a 4-D state cost one unit each (⌈2 · 6 / 12⌉ = 1).
+    let z = vec![vec![0.0, 0.0]; 101];
+    assert_eq!(
+        message(pf.update_measurements(&z)),
+        "measurements: particles × measurements × (1 + MCMC moves) × ⌈d (n + d) / 12⌉ = \
+         20200000 exceeds MAX_UPDATE_EVALUATIONS = 2·10^7 (pass fewer measurements or \
+         particles) (at most 100)"
+    );
+    assert_eq!((pf.existence(), pf.particles().to_vec()), before);
+    // At the cap exactly the update runs (10 particles, no move: 2·10^6 reports would be
+    // over the count cap, so the product is reached with the particles).
+    let small = ParticleOptions {
+        particles: 10,
+        mcmc_moves: 0,
+        ..ParticleOptions::default()
+    };
+    let mut pf = ParticleBernoulliFilter::new(config.clone(), small).unwrap();
+    assert!(pf.update(&vec![report; 1000]).is_ok());
+
+    // The GM vector update: 66 components × 4000 measurements (4-D states: one unit each)
+    // > 2^18.
+    let mut gm_config = config;
+    let (w, g) = gm_config.mixture.components()[0].clone();
+    let many: Vec<_> = (0..66).map(|_| (w / 66.0, g.clone())).collect();
+    gm_config.mixture = crate::gaussian::GaussianMixture::new(many, "mixture").unwrap();
+    let mut gm = GmBernoulliFilter::new(gm_config).unwrap();
+    let before = gm.state().clone();
+    let z = vec![vec![0.0, 0.0]; 4000];
+    assert_eq!(
+        message(gm.update_measurements(&z)),
+        "measurements: mixture components (after splitting) × measurements × ⌈n²/16⌉ = \
+         264000 exceeds MAX_VECTOR_UPDATE_WORK = 2^18 (pass fewer measurements or reduce \
+         the mixture) (at most 3971)"
+    );
+    assert_eq!(gm.state(), &before);
+    assert_eq!(MAX_VECTOR_UPDATE_WORK / 66, 3971);
+}

@@ -95,16 +95,16 @@ pub use config::{
 pub use detection::Detection;
 pub use estimate::{EstimateOptions, FilterEstimate, gm_estimate};
 pub use gm_bernoulli::{
-    GmBernoulliFilter, GmBernoulliUpdate, UpdateInfo, gm_bernoulli_predict, gm_bernoulli_update,
-    gm_bernoulli_update_vector, gm_bernoulli_update_with,
+    GmBernoulliFilter, GmBernoulliUpdate, MAX_VECTOR_UPDATE_WORK, UpdateInfo, gm_bernoulli_predict,
+    gm_bernoulli_update, gm_bernoulli_update_vector, gm_bernoulli_update_with,
 };
 pub use likelihood::{
     FnLikelihood, GeneralizedLikelihood, LinearGaussianLikelihood, MAX_MEASUREMENT_DIM,
     RegionReports,
 };
 pub use particle_bernoulli::{
-    MAX_MCMC_MOVES, MAX_PARTICLES, ParticleBernoulliFilter, ParticleOptions, default_mcmc_moves,
-    default_particles,
+    MAX_MCMC_MOVES, MAX_PARTICLES, MAX_UPDATE_EVALUATIONS, ParticleBernoulliFilter,
+    ParticleOptions, default_mcmc_moves, default_particles,
 };
 pub use transition::{LinearGaussianTransition, MAX_STATES};
 pub use validate::ConfigShapes;

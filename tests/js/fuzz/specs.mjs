@@ -721,7 +721,7 @@ const halves = (n) => new Float64Array(n).fill(0.5);
 // Deterministic spread values in [0, 1) (a Weyl sequence), so that nothing is degenerate.
 const spread = (i) => (i * 0.6180339887498949) % 1;
 const comps = (n, d = 2) => fill(n, (i) => ({ weight: 1 / n, mean: fill(d, (k) => 10 * spread(i + k * 7919)), cov: eye(d) }));
-const points = (n, d) => fill(n, (i) => fill(d, (k) => 100 * spread(i * d + k)));
+const points = (n, d, scale = 100) => fill(n, (i) => fill(d, (k) => scale * spread(i * d + k)));
 const filterBase = (n) => ({
   existence: 0.5, mixture: comps(n), transition: { F: eye(2), Q: [[0.1, 0], [0, 0.1]] },
   detection: { probability: 0.9 }, clutter: { rate: 0.25, density: 0.01 }, likelihood: { H: eye(2), R: eye(2) },
@@ -798,14 +798,19 @@ export const largeCases = [
   // filters
   { label: 'gmBernoulliPredict: 10,000 components (cap) + 10,000 birth', name: 'gmBernoulliPredict', args: () => [{ existence: 0.5, mixture: comps(10_000), transition: { F: eye(2), Q: [[0.1, 0], [0, 0.1]] }, survival: 0.99, birth: { probability: 0.1, mixture: comps(10_000) } }] },
   { label: 'gmBernoulliUpdate: 10,000 components × 1000 reports (caps)', name: 'gmBernoulliUpdate', slice: true, args: () => [{ existence: 0.5, mixture: comps(10_000), detection: { probability: 0.9 }, reports: discs(1000), clutter: { rate: 0.25, density: 0.01 } }] },
-  { label: 'gmBernoulliUpdate: 10,000 components × 10,000 measurements (caps)', name: 'gmBernoulliUpdate', args: () => [{ existence: 0.5, mixture: comps(10_000), detection: { probability: 0.9 }, measurements: points(10_000, 2), likelihood: { H: eye(2), R: eye(2) }, clutter: { rate: 0.25, density: 0.01 } }] },
+  { label: 'gmBernoulliUpdate: 10,000 components × 10,000 measurements (caps; over the 2^18 pairs cap)', name: 'gmBernoulliUpdate', args: () => [{ existence: 0.5, mixture: comps(10_000), detection: { probability: 0.9 }, measurements: points(10_000, 2), likelihood: { H: eye(2), R: eye(2) }, clutter: { rate: 0.25, density: 0.01 } }] },
+  { label: 'gmBernoulliUpdate: 10,000 components × 26 measurements (2^18 pairs cap)', name: 'gmBernoulliUpdate', args: () => [{ existence: 0.5, mixture: comps(10_000), detection: { probability: 0.9 }, measurements: points(26, 2, 10), likelihood: { H: eye(2), R: eye(2) }, clutter: { rate: 0.25, density: 0.01 } }] },
   { label: 'GmBernoulliFilter: 10,000 components, predict and 1000 reports', name: 'GmBernoulliFilter', args: () => [filterBase(10_000), discs(1000)] },
-  { label: 'GmBernoulliFilter: 10,000 components, 10,000 measurements', name: 'GmBernoulliFilter', args: () => [filterBase(10_000), { measurements: points(10_000, 2) }] },
+  { label: 'GmBernoulliFilter: 10,000 components, 10,000 measurements (over the 2^18 pairs cap)', name: 'GmBernoulliFilter', args: () => [filterBase(10_000), { measurements: points(10_000, 2) }] },
+  { label: 'GmBernoulliFilter: 2000 components, 131 measurements (2^18 pairs cap)', name: 'GmBernoulliFilter', args: () => [filterBase(2000), { measurements: points(131, 2, 10) }] },
   { label: 'ParticleBernoulliFilter: 200,000 particles and birth particles (caps), 10 MCMC moves', name: 'ParticleBernoulliFilter', slice: true, args: () => [{ ...filterBase(1), particles: 200_000, birthParticles: 200_000, mcmcMoves: 10, birth: { probability: 0.1, mixture: comps(1) }, seed: 1 }, discs(3)] },
-  { label: 'ParticleBernoulliFilter: 200,000 particles, 1000 reports', name: 'ParticleBernoulliFilter', args: () => [{ ...filterBase(1), particles: 200_000, seed: 1 }, discs(1000)] },
+  { label: 'ParticleBernoulliFilter: 200,000 particles, 1000 reports (over the 2·10^7 evaluations cap)', name: 'ParticleBernoulliFilter', args: () => [{ ...filterBase(1), particles: 200_000, seed: 1 }, discs(1000)] },
+  { label: 'ParticleBernoulliFilter: 200,000 particles, 50 reports (2·10^7 evaluations cap)', name: 'ParticleBernoulliFilter', args: () => [{ ...filterBase(1), particles: 200_000, seed: 1 }, discs(50)] },
+  { label: 'ParticleBernoulliFilter: 20,000 particles, no move, 1000 measurements (2·10^7 evaluations cap)', name: 'ParticleBernoulliFilter', args: () => [{ ...filterBase(1), particles: 20_000, mcmcMoves: 0, seed: 1 }, { measurements: points(1000, 2, 10) }] },
   { label: 'airportScenario: 2000 steps (cap)', name: 'airportScenario', args: () => [{ seed: 1, steps: 2000 }] },
   // sensor control (compareSchemes is a batch call: left out)
-  { label: 'SensorControlRun: 20,000 particles × 50 future scans (10^6 cap), renyi', name: 'SensorControlRun', args: () => [{ scheme: 'renyi', seed: 1, particles: 20_000, futureScans: 50 }] },
+  { label: 'SensorControlRun: 20,000 particles × 15 future scans (3·10^5 cap), renyi', name: 'SensorControlRun', args: () => [{ scheme: 'renyi', seed: 1, particles: 20_000, futureScans: 15 }] },
+  { label: 'SensorControlRun: 1500 particles × 100 future scans, 5 objects (3·10^5 cap), renyi', name: 'SensorControlRun', args: () => [{ scheme: 'renyi', seed: 1, particles: 1500, futureScans: 100, maxObjects: 5 }] },
   { label: 'SensorControlRun: paper size (defaults), pent', name: 'SensorControlRun', args: () => [{ scheme: 'pent', seed: 1 }] },
   { label: 'SensorControlRun: 1000 steps (cap), 8 objects (cap), random', name: 'SensorControlRun', args: () => [{ scheme: 'random', seed: 1, steps: 1000, maxObjects: 8, particles: 10, futureScans: 1 }] },
 ];
