@@ -241,6 +241,15 @@ test('why 7: a SensorControlRun past N·M·2^max(n_max − 4, 0) = 300,000 names
   throwsNaming(() => new fisst.SensorControlRun({ scheme: 'renyi', seed: 1, particles: 1000, futureScans: 19, maxObjects: 8 }), RangeError, /^options\.futureScans: .* must be at most 300000, got 304000/);
 });
 
+test('why 1: gmBernoulliUpdate with more position dimensions than the state names both fields', () => {
+  const e4 = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]];
+  throwsNaming(
+    () => fisst.gmBernoulliUpdate({ existence: 0.5, mixture: [{ weight: 1, mean: [0, 0, 0, 0], cov: e4 }], positionDims: 5, detection: { probability: 0.9 }, reports: [], clutter: { rate: 0.25, density: 0.01 } }),
+    RangeError,
+    /^options\.positionDims is 5 but options\.mixture\[0\]\.mean has length 4$/,
+  );
+});
+
 // --- Ten typical first-day mistakes, across the parts ---
 
 test('mistake 1 (metrics): points of different dimensions name the point that disagrees', () => {

@@ -410,8 +410,8 @@ impl UpdateOptions {
     /// [`Error::OutOfRange`] naming `position_dims` (outside [1, [`MAX_POSITION_DIMS`]]) or
     /// `reduction.max_components` (outside [1, [`MAX_REDUCED_COMPONENTS`]]);
     /// [`Error::Count`] naming `exclusions` (more than [`MAX_REGIONS`]);
-    /// [`Error::InvalidParameter`] naming `position_dims` (above the state dimension),
-    /// `reduction.prune_below`, `reduction.merge_distance` or `reduction.max_components`; those
+    /// [`Error::ShapeMismatch`] naming `position_dims` and `mixture[0].mean` (n_s above the
+    /// state dimension); [`Error::InvalidParameter`] naming `reduction.prune_below`, `reduction.merge_distance` or `reduction.max_components`; those
     /// of [`Detection::validate`] and [`Clutter::validate`]; [`Error::ShapeMismatch`]
     /// naming the field of `exclusions[i]` that carries its dimension and `position_dims`.
     pub fn validate(&self, state_dim: usize) -> Result<()> {
@@ -427,10 +427,12 @@ impl UpdateOptions {
             Error::check_range("reduction.max_components", m, 1, MAX_REDUCED_COMPONENTS)?;
         }
         if ns > state_dim {
-            return Err(Error::parameter(
+            // the state's dimension is the mixture's (a filter checks its transition first)
+            return Err(Error::shapes(
                 "position_dims",
-                ns as f64,
-                "an integer in [1, state dimension]",
+                crate::error::Shape::Value(ns),
+                "mixture[0].mean",
+                crate::error::Shape::Length(state_dim),
             ));
         }
         self.detection.validate(Some(ns))?;

@@ -93,6 +93,13 @@ fn position_dims_exclusions_and_the_reduction_cap_are_checked() {
     );
     c.exclusions.truncate(MAX_REGIONS);
     assert!(c.validate().is_ok());
+    // n_s above the state's dimension (a 4-D state) names both, in shape terms.
+    let mut u = ncv_filter_config(0.5, 0.9).update_options();
+    u.position_dims = 5;
+    assert_eq!(
+        message(u.validate(4)),
+        "position_dims is 5 but mixture[0].mean has length 4"
+    );
 }
 
 #[test]
