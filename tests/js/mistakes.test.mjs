@@ -112,6 +112,9 @@ test('why 4: an object freed twice throws a TypeError naming its class', () => {
   const gm = new fisst.GmBernoulliFilter(s.config);
   gm.free();
   throwsNaming(() => gm.free(), TypeError, /^GmBernoulliFilter was freed/);
+  const pf = new fisst.ParticleBernoulliFilter({ ...s.config, particles: 100, seed: 1 });
+  pf.free();
+  throwsNaming(() => pf.free(), TypeError, /^ParticleBernoulliFilter was freed/);
   const run = new fisst.SensorControlRun({ scheme: 'random', seed: 1, steps: 1, particles: 10, futureScans: 2 });
   run.free();
   throwsNaming(() => run.free(), TypeError, /^SensorControlRun was freed/);
