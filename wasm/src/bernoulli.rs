@@ -71,16 +71,17 @@ impl BernoulliDensity {
     }
 }
 
-/// Costs of the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with applications" (paper 000): the MPE preset `'mpe'` (0, 1, 1, 0, 1), the MMOL preset
-/// `{ mmol: { asset: c_A, countermeasure: c_M } }` (c00 = 0, c01 = c_A, c10 = c_M,
-/// c11 = c_M, c = c_A), or the five costs (finite, ≥ 0).
+/// Costs of the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with
+/// applications" (paper 000): the MPE preset `'mpe'` (0, 1, 1, 0, 1), the MMOL preset `{ mmol: {
+/// asset: c_A, countermeasure: c_M } }` (c00 = 0, c01 = c_A, c10 = c_M, c11 = c_M, c = c_A), or the
+/// five costs (finite, ≥ 0).
 #[derive(Clone, Copy, Debug, Tsify)]
 #[tsify(
     type = "'mpe' | { mmol: { asset: number; countermeasure: number } } | { c00: number; c01: number; c10: number; c11: number; c: number }"
 )]
 pub enum BernoulliCosts {
-    /// `'mpe'`: the MPE (minimum probability of error) preset, costs (c00, c01, c10, c11, c) = (0, 1, 1,
-    /// 0, 1).
+    /// `'mpe'`: the MPE (minimum probability of error) preset, costs (c00, c01, c10, c11, c) = (0,
+    /// 1, 1, 0, 1).
     Mpe,
     /// `{ mmol: { asset, countermeasure } }`: the MMOL (minimum mean operational loss) preset from
     /// the asset cost c_A and the countermeasure cost c_M.
@@ -169,8 +170,9 @@ impl BernoulliCosts {
 pub struct BernoulliEstimateOptions {
     /// p, the existence probability, in [0, 1].
     pub existence: f64,
-    /// The spatial density of the object when it exists. The MMUC search takes a mixture of at most 100 components and at most
-    /// 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
+    /// The spatial density of the object when it exists. The MMUC search takes a mixture of at most
+    /// 100 components and at most 1500 particles in 2 or more dimensions (a RangeError naming the
+    /// array beyond).
     pub density: BernoulliDensity,
     /// r0 > 0, the radius of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
@@ -190,8 +192,9 @@ pub struct BernoulliEstimateResult {
     pub estimate: Option<Vec<f64>>,
     /// The MMUC point a* (12): the centre of the radius-r0 ball most likely to hold the object.
     pub mmuc: Vec<f64>,
-    /// The existence threshold Γ of eq. (11) (p > Γ reports for every cost matrix with c11 + c·q < c01 + c10 − c00,
-    /// which includes MPE and MMOL; ±Infinity when the decision does not depend on p).
+    /// The existence threshold Γ of eq. (11) (p > Γ reports for every cost matrix with c11 + c·q <
+    /// c01 + c10 − c00, which includes MPE and MMOL; ±Infinity when the decision does not depend on
+    /// p).
     pub threshold: f64,
     /// The miss probability q(a*) ∈ [0, 1]: the probability that the object, if it exists, lies
     /// outside the radius-r0 ball about a*.
@@ -236,8 +239,9 @@ pub struct BernoulliThresholdCurveOptions {
 /// Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with applications" (paper 000).
 #[derive(Deserialize, Tsify)]
 pub struct MmucEstimateOptions {
-    /// The spatial density of the object's state. The MMUC search takes a mixture of at most 100 components and at most
-    /// 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
+    /// The spatial density of the object's state. The MMUC search takes a mixture of at most 100
+    /// components and at most 1500 particles in 2 or more dimensions (a RangeError naming the array
+    /// beyond).
     pub density: BernoulliDensity,
     /// The radius r0 > 0 of the ball whose miss probability q(a) is minimised, in state units.
     pub radius: f64,
@@ -277,8 +281,8 @@ pub struct MmucEstimateResult {
 pub struct BernoulliComponent {
     /// The existence probability r ∈ [0, 1] of this component.
     pub existence: f64,
-    /// The component's spatial density. The MMUC search takes a mixture of at most 100 components and at most
-    /// 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
+    /// The component's spatial density. The MMUC search takes a mixture of at most 100 components
+    /// and at most 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
     pub density: BernoulliDensity,
 }
 
@@ -369,8 +373,9 @@ pub fn bernoulli_estimate(
 
 /// q(center) = P(‖x − center‖ > radius) for x drawn from `density`: exact in 1D, to 1e-10
 /// (absolute) by error-controlled quadrature or characteristic-function inversion in higher
-/// dimensions, the weighted sum for mixtures and the weighted count for particles. This is the
-/// miss probability of the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with applications" (paper 000).
+/// dimensions, the weighted sum for mixtures and the weighted count for particles. This is the miss
+/// probability of the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with
+/// applications" (paper 000).
 #[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = probabilityOutsideBall)]
 pub fn probability_outside_ball(
@@ -421,14 +426,13 @@ pub fn mmuc_estimate(
     })
 }
 
-/// Theorem III.3 of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with applications" applied to each component of a
-/// multi-Bernoulli. Options
-/// `{ components: [{ existence, density }], radius, costs }`; returns
-/// `{ reported, estimates, components }`. Each component is decided alone, from its
-/// existence, its density and the loss (7) of paper 000 (Narykov, Üney & Ralph);
+/// Theorem III.3 of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with applications"
+/// applied to each component of a multi-Bernoulli. Options `{ components: [{ existence, density }],
+/// radius, costs }`; returns `{ reported, estimates, components }`. Each component is decided
+/// alone, from its existence, its density and the loss (7) of paper 000 (Narykov, Üney & Ralph);
 /// `mbOptimalEstimate` instead decides far-apart Dirac components jointly, minimising a set
-/// metric's E[d^p] (García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation and
-/// how GOSPA solves it", paper 003).
+/// metric's E[d^p] (García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation and how
+/// GOSPA solves it", paper 003).
 #[cfg(feature = "bernoulli")]
 #[wasm_bindgen(
     js_name = multiBernoulliPointEstimate,
@@ -457,9 +461,9 @@ pub fn multi_bernoulli_point_estimate(
 }
 
 /// The expected losses against p for Fig. 2: ρ_∅ (14), ρ_{a*} (13), and the loss of the rule
-/// "report when p > threshold" (default: the optimal rule), from Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with applications" (paper 000). Options
-/// `{ existences, missProbability, costs, threshold? }`; returns
-/// `{ empty, singleton, rule, threshold }`.
+/// "report when p > threshold" (default: the optimal rule), from Narykov, Üney & Ralph, "Optimal
+/// Bernoulli point estimation with applications" (paper 000). Options `{ existences,
+/// missProbability, costs, threshold? }`; returns `{ empty, singleton, rule, threshold }`.
 #[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = bernoulliLossCurve, unchecked_return_type = "BernoulliLossCurveResult")]
 pub fn bernoulli_loss_curve(

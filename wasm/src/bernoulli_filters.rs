@@ -126,7 +126,8 @@ pub struct ClutterDensityOption(ScalarOr<f64>);
 pub struct ClutterOptions {
     /// The clutter rate λ_c ≥ 0: the mean number of false reports per scan.
     pub rate: f64,
-    /// The clutter density c̃(ζ) ≥ 0 of a false report (e.g. 1 / number of anchors, or 1 / area for vector measurements).
+    /// The clutter density c̃(ζ) ≥ 0 of a false report (e.g. 1 / number of anchors, or 1 / area for
+    /// vector measurements).
     pub density: ClutterDensityOption,
 }
 
@@ -238,9 +239,10 @@ pub struct GmBernoulliResult {
     pub mixture: Vec<MixtureComponent>,
 }
 
-/// The GM Bernoulli prediction, eqs. (40)–(49) of LeGrand & Ferrari, "Split Happens! Imprecise and negative information in Gaussian mixture random finite set filtering" (paper 001). Options `{ existence, mixture,
-/// transition: { F, Q }, survival, birth: { probability, mixture } }`; returns `{ existence,
-/// mixture }`.
+/// The GM Bernoulli prediction, eqs. (40)–(49) of LeGrand & Ferrari, "Split Happens! Imprecise and
+/// negative information in Gaussian mixture random finite set filtering" (paper 001). Options `{
+/// existence, mixture, transition: { F, Q }, survival, birth: { probability, mixture } }`; returns
+/// `{ existence, mixture }`.
 #[wasm_bindgen(js_name = gmBernoulliPredict, unchecked_return_type = "GmBernoulliResult")]
 pub fn gm_bernoulli_predict(
     #[wasm_bindgen(unchecked_param_type = "GmBernoulliPredictOptions")] options: JsValue,
@@ -362,10 +364,11 @@ fn measurements(points: Vec<Point>) -> Vec<Vec<f64>> {
     points.into_iter().map(|p| p.0).collect()
 }
 
-/// The GM Bernoulli update (Algorithm 3 of LeGrand & Ferrari, "Split Happens! Imprecise and negative information in Gaussian mixture random finite set filtering" (paper 001): split about ∂S, every ∂ζ and every
-/// exclusion, zeroth-order weights (57)–(58), existence (54), two-pass reduction), or with
-/// `measurements` and `likelihood` the vector-measurement update. Returns `{ existence,
-/// mixture, delta, splitComponents }`.
+/// The GM Bernoulli update (Algorithm 3 of LeGrand & Ferrari, "Split Happens! Imprecise and
+/// negative information in Gaussian mixture random finite set filtering" (paper 001): split about
+/// ∂S, every ∂ζ and every exclusion, zeroth-order weights (57)–(58), existence (54), two-pass
+/// reduction), or with `measurements` and `likelihood` the vector-measurement update. Returns `{
+/// existence, mixture, delta, splitComponents }`.
 #[wasm_bindgen(js_name = gmBernoulliUpdate, unchecked_return_type = "GmBernoulliUpdateResult")]
 pub fn gm_bernoulli_update(
     #[wasm_bindgen(unchecked_param_type = "GmBernoulliUpdateOptions")] options: JsValue,
@@ -562,7 +565,8 @@ fn scan_error(e: fisst::Error) -> JsValue {
     core_error(e.map_paths(js_path))
 }
 
-/// Options of `estimate`: the loss (7) of the optimal Bernoulli estimate (Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with applications" (paper 000)), `radius` and `costs`
+/// Options of `estimate`: the loss (7) of the optimal Bernoulli estimate (Narykov, Üney & Ralph,
+/// "Optimal Bernoulli point estimation with applications" (paper 000)), `radius` and `costs`
 /// together (`FilterEstimateLoss`); omitted (or neither): no `report`.
 #[derive(Deserialize, Tsify, Default)]
 #[tsify(type = "FilterEstimateLoss | { radius?: undefined; costs?: undefined }")]
@@ -997,9 +1001,10 @@ fn box_region(b: &fisst::regions::AxisBox) -> Region {
     })
 }
 
-/// The airport example of LeGrand & Ferrari, "Split Happens! Imprecise and negative information in Gaussian mixture random finite set filtering" (paper 001), Section V-C (Figs. 6–8): a seeded walk through a
-/// concourse with ten anchors and four exclusion rectangles, and the reports. Options
-/// `{ seed, steps = 60 }`; report `a` at step k is `{ disc: { center: anchors[a].position,
+/// The airport example of LeGrand & Ferrari, "Split Happens! Imprecise and negative information in
+/// Gaussian mixture random finite set filtering" (paper 001), Section V-C (Figs. 6–8): a seeded
+/// walk through a concourse with ten anchors and four exclusion rectangles, and the reports.
+/// Options `{ seed, steps = 60 }`; report `a` at step k is `{ disc: { center: anchors[a].position,
 /// radius: anchors[a].radius } }`.
 #[wasm_bindgen(js_name = airportScenario, unchecked_return_type = "AirportScenarioResult")]
 pub fn airport_scenario(

@@ -32,8 +32,8 @@ pub struct FovCardinalityOptions {
     pub rfs: MultiObjectDensity,
     /// The field of view S, in the position subspace (the first state components).
     pub fov: Region,
-    /// The detection probability p_D ∈ [0, 1] (default 1): with p_D < 1 the pmf is that of object-originated
-    /// detections, eq. (75).
+    /// The detection probability p_D ∈ [0, 1] (default 1): with p_D < 1 the pmf is that of
+    /// object-originated detections, eq. (75).
     #[serde(default = "one")]
     pub detection_probability: f64,
 }
@@ -49,9 +49,9 @@ pub struct FovCardinalityResult {
     pub mean: f64,
     /// The variance of the number of objects (detections) in the FoV (closed form).
     pub variance: f64,
-    /// The mass in the FoV, ⟨1_S, p_i⟩ ∈ [0, 1], of each Gaussian in input order (each mixture component for Poisson and
-    /// i.i.d. cluster; for glmb, hypothesis 0's components, then hypothesis 1's, …), without
-    /// p_D.
+    /// The mass in the FoV, ⟨1_S, p_i⟩ ∈ [0, 1], of each Gaussian in input order (each mixture
+    /// component for Poisson and i.i.d. cluster; for glmb, hypothesis 0's components, then
+    /// hypothesis 1's, …), without p_D.
     pub mass_in_fov: Vec<f64>,
 }
 

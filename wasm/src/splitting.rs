@@ -140,8 +140,8 @@ pub struct SplitForRegionsResult {
     /// `insideMask[i]`: whether component i of `mixture` is in p_S, i.e. its mean (position
     /// part) lies in the first region (`inside` is the sum of the weights it selects).
     pub inside_mask: Vec<bool>,
-    /// The exact mass ⟨1_S, p⟩ of the first region S under the input mixture p (null when too costly: more than
-    /// ~0.5 s of masses, or positionDims > 4).
+    /// The exact mass ⟨1_S, p⟩ of the first region S under the input mixture p (null when too
+    /// costly: more than ~0.5 s of masses, or positionDims > 4).
     #[tsify(type = "number | null")]
     pub exact_inside: Option<f64>,
     /// The number of recursion levels used.
