@@ -74,16 +74,17 @@ pub struct MultiObjectParticles {
     pub max_objects: usize,
 }
 
-/// The point estimate of Sec. 5.2: the MAP cardinality (22) and the mean of the particles
+/// The point estimate of Sec. 5.2 of Ristic & Vo, "Sensor control for multi-object state-space estimation using random finite sets" (paper 004): the MAP cardinality (22) and the mean of the particles
 /// with that cardinality.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SetEstimate {
-    /// n̂ = argmax_n Σ_i w_i Δ[n, n_i] (22) (ties: the smaller n).
+    /// The estimated number of objects n̂ = argmax_n Σ_i w_i Δ[n, n_i] (22) (ties: the smaller
+    /// n).
     pub cardinality: usize,
-    /// n̂ states.
+    /// The n̂ estimated object states [x, y]: the mean of the particles with n̂ objects.
     pub states: Vec<State>,
-    /// The weight of each cardinality 0 … n_max.
+    /// The cardinality pmf: the total particle weight of each cardinality 0 … n_max.
     pub cardinality_pmf: Vec<f64>,
 }
 
