@@ -185,7 +185,7 @@ pub struct BernoulliEstimateOptions {
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct BernoulliEstimateResult {
-    /// Whether to report the object: true when p > Γ (ties p = Γ report nothing).
+    /// Whether to report the object: the optimal decision (ties p = Γ report nothing).
     pub declare: bool,
     /// The reported point estimate: `mmuc` when `declare` is true, else null.
     #[tsify(type = "number[] | null")]

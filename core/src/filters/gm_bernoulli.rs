@@ -108,7 +108,7 @@ pub fn gm_bernoulli_predict(state: &GmBernoulli, config: &PredictOptions) -> Res
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GmBernoulliUpdate {
-    /// r_{k|k} (`existence`).
+    /// The posterior existence probability r_{k|k} ∈ [0, 1] (`existence`).
     pub existence: f64,
     /// p_{k|k} after the reduction (`mixture`), weights summing to 1.
     pub mixture: GaussianMixture,

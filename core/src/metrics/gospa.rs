@@ -71,9 +71,9 @@ pub struct GospaDecomposition {
     /// not rooted, not normalised (so `distance^p = localisation + c^p/2 · (missed +
     /// false_targets)`), unlike OSPA's rooted, normalised `OspaDecomposition::localisation`.
     pub localisation: f64,
-    /// Truth points left unassigned.
+    /// The number of missed targets: truth points left unassigned.
     pub missed: usize,
-    /// Estimate points left unassigned.
+    /// The number of false targets: estimate points left unassigned.
     pub false_targets: usize,
     /// The assigned `(truth index, estimate index)` pairs, sorted by truth index; every pair
     /// has `d < c`.
@@ -86,7 +86,7 @@ pub struct GospaDecomposition {
 #[derive(Clone, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GospaReport {
-    /// The GOSPA distance.
+    /// The GOSPA distance, ≥ 0, in the units of the points.
     pub distance: f64,
     /// The localisation cost Σ d^p over the assigned pairs: a sum of p-th powers, not rooted,
     /// not normalised, so `distance^p = localisation + c^p/2 · (missed + falseTargets)`
@@ -96,13 +96,13 @@ pub struct GospaReport {
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub localisation: Option<f64>,
-    /// Unassigned truth points (α = 2 only).
+    /// The number of missed targets: unassigned truth points (α = 2 only).
     #[cfg_attr(
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub missed: Option<usize>,
-    /// Unassigned estimate points (α = 2 only).
+    /// The number of false targets: unassigned estimate points (α = 2 only).
     #[cfg_attr(
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")

@@ -17,7 +17,7 @@ use crate::math::sum::sum;
 #[derive(Clone, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GospaSeries {
-    /// GOSPA at each step.
+    /// The GOSPA distance at each step.
     pub distance: Vec<f64>,
     /// The mean of `distance` over the steps (0 for no steps).
     pub mean_distance: f64,
@@ -69,7 +69,8 @@ pub struct GospaSeries {
 #[derive(Clone, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OspaSeries {
-    /// OSPA at each step, eq. (24) of `004_…`.
+    /// The OSPA distance at each step, eq. (24) of Ristic & Vo, "Sensor control for multi-object
+    /// state-space estimation using random finite sets" (paper 004).
     pub distance: Vec<f64>,
     /// The localisation part at each step, eq. (26): rooted and normalised (unlike GOSPA's
     /// `localisation`, a sum of p-th powers).
@@ -78,9 +79,9 @@ pub struct OspaSeries {
     pub cardinality: Vec<f64>,
     /// The mean of `distance` (0 for no steps).
     pub mean_distance: f64,
-    /// The mean of `localisation`.
+    /// The mean of `localisation` over the steps.
     pub mean_localisation: f64,
-    /// The mean of `cardinality`.
+    /// The mean of `cardinality` over the steps.
     pub mean_cardinality: f64,
 }
 

@@ -19,9 +19,9 @@ pub type State = [f64; 2];
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Area {
-    /// Lower corner.
+    /// The lower corner [x, y] of the rectangular area.
     pub lo: State,
-    /// Upper corner.
+    /// The upper corner [x, y] of the rectangular area.
     pub hi: State,
 }
 
@@ -66,11 +66,11 @@ impl Area {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MultiObjectParticles {
-    /// X_i, each of at most `max_objects` states.
+    /// The particles' object sets X_i, each of at most `max_objects` states.
     pub sets: Vec<Vec<State>>,
-    /// w_i (normalised).
+    /// The particle weights w_i (normalised).
     pub weights: Vec<f64>,
-    /// n_max.
+    /// The largest number n_max of objects in a particle.
     pub max_objects: usize,
 }
 

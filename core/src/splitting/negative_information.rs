@@ -88,7 +88,7 @@ pub struct NegativeInformationStep {
     pub step: usize,
     /// p_{k|k−1}: the prediction of the previous posterior.
     pub predicted: GaussianMixture,
-    /// Algorithm 1 applied to the prediction.
+    /// The split: Algorithm 1 applied to the prediction.
     pub split: SplitOutcome,
     /// p_{k|k}: the non-detection posterior (after the optional reduction).
     pub posterior: GaussianMixture,
@@ -138,17 +138,17 @@ pub struct NegativeInformationStep {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct NegativeInformationScenario {
-    /// p_{0|0}.
+    /// The initial density p_{0|0}, a Gaussian mixture over (x, y, ẋ, ẏ).
     pub initial: GaussianMixture,
-    /// F of eq. (70).
+    /// The state transition matrix F of eq. (70).
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::matrix"))]
     pub transition: DMatrix<f64>,
-    /// Q of eq. (71).
+    /// The process noise covariance Q of eq. (71).
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::matrix"))]
     pub process_noise: DMatrix<f64>,
     /// The field of view S.
     pub fov: Region,
-    /// p_D inside S.
+    /// The detection probability p_D inside S.
     pub detection_prob: f64,
     /// The number of non-detection updates.
     pub steps: usize,

@@ -17,7 +17,7 @@ pub struct Partition {
     pub outside: GaussianMixture,
     /// Σ of the inside weights: the partition's estimate of ⟨1_S, p⟩.
     pub inside_weight: f64,
-    /// Σ of the outside weights.
+    /// The outside weight: Σ of the weights of the components whose mean lies outside.
     pub outside_weight: f64,
 }
 
@@ -73,7 +73,7 @@ pub struct PartitionAccuracy {
     pub exact: f64,
     /// The error estimate of `exact` (sum of the per-component estimates).
     pub exact_error: f64,
-    /// |partitioned − exact|.
+    /// The partition error |partitioned − exact|.
     pub error: f64,
 }
 
