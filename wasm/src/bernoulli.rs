@@ -168,7 +168,7 @@ impl BernoulliCosts {
 /// "Optimal Bernoulli point estimation with applications" (paper 000)).
 #[derive(Deserialize, Tsify)]
 pub struct BernoulliEstimateOptions {
-    /// p, the existence probability, in [0, 1].
+    /// The existence probability p ∈ [0, 1]: the probability that the object exists.
     pub existence: f64,
     /// The spatial density of the object when it exists. The MMUC search takes a mixture of at most
     /// 100 components and at most 1500 particles in 2 or more dimensions (a RangeError naming the
@@ -352,11 +352,11 @@ pub(crate) fn estimate_out(e: &BernoulliEstimate) -> BernoulliEstimateResult {
     }
 }
 
-/// The Bayes-optimal point estimate of a Bernoulli (Theorem III.3 of the optimal Bernoulli
-/// point estimation paper): report the MMUC point a* (12) when the existence probability
-/// exceeds Γ (11), else nothing. Options `{ existence, density, radius, costs }`; returns
-/// `{ declare, estimate, mmuc, threshold, missProbability, expectedLossEmpty,
-/// expectedLossSingleton }`.
+/// The Bayes-optimal point estimate of a Bernoulli (Theorem III.3 of Narykov, Üney & Ralph,
+/// "Optimal Bernoulli point estimation with applications", paper 000): report the MMUC point a*
+/// (12) when the existence probability exceeds Γ (11), else nothing. Options `{ existence, density,
+/// radius, costs }`; returns `{ declare, estimate, mmuc, threshold, missProbability,
+/// expectedLossEmpty, expectedLossSingleton }`.
 #[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = bernoulliEstimate, unchecked_return_type = "BernoulliEstimateResult")]
 pub fn bernoulli_estimate(
@@ -387,7 +387,8 @@ pub fn probability_outside_ball(
         .or_throw_in("options")
 }
 
-/// Γ (11) for each σ of an isotropic Gaussian N(a*, σ² I_dim) — Fig. 3 of the paper — from
+/// Γ (11) for each σ of an isotropic Gaussian N(a*, σ² I_dim) — Fig. 3 of Narykov, Üney & Ralph,
+/// "Optimal Bernoulli point estimation with applications" (paper 000) — from
 /// the closed form q = P(χ²_dim > (radius/σ)²). Options `{ sigmas, radius, costs, dim = 1 }`.
 #[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = bernoulliThresholdCurve, unchecked_return_type = "number[]")]

@@ -109,7 +109,7 @@ pub struct BirthOptions {
 /// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper 001).
 #[derive(Deserialize, Tsify)]
 pub struct DetectionOptions {
-    /// p_D inside the field of view, in [0, 1].
+    /// The detection probability p_D ∈ [0, 1] inside the field of view S.
     pub probability: f64,
     /// The field of view S; omitted: detection everywhere.
     #[tsify(optional)]

@@ -407,8 +407,9 @@ pub struct ClutterShape {
     pub density: DensityShape,
 }
 
-/// `'I'` (Theorem 1: Bernoulli observation with false alarms) or `'II'` (Theorem 2: Poisson
-/// clutter).
+/// The measurement model of Rezaeian & Vo, "Error bounds for joint detection and estimation of a
+/// single object with random finite set observation" (paper 002): `'I'` (Theorem 1: Bernoulli
+/// observation with false alarms) or `'II'` (Theorem 2: Poisson clutter).
 #[derive(Deserialize, Tsify, Clone, Copy)]
 pub enum MeasurementModel {
     /// `'I'`: model I (13), a Bernoulli observation with false alarms.
@@ -524,19 +525,20 @@ pub struct BoundTerm {
     pub value: f64,
 }
 
-/// The n-point part of Theorem 2 (model I: only n = 1).
+/// The n-point part of Theorem 2 of Rezaeian & Vo, "Error bounds for joint detection and estimation
+/// of a single object with random finite set observation" (paper 002) (model I: only n = 1).
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct CardinalityTerm {
     /// The number of observed points n = |Z|.
     pub n: usize,
-    /// C_{n−1}, the probability of n − 1 clutter points.
+    /// The probability C_{n−1} of n − 1 clutter points.
     pub probability: f64,
     /// The mass w_n (20)/(25) of p_n on the MAP region, in [0, 1].
     pub w: f64,
     /// J'_n⁻¹ (with the 1/w_n² of (20)/(25)); for a vector state its trace.
     pub inverse_information: f64,
-    /// Pr(the detector rejects n clutter-only points).
+    /// The probability that the detector rejects n clutter-only points.
     pub clutter_null: f64,
     /// `'quadrature'`, `'monte-carlo'` or (a vector state without false observations)
     /// `'closed-form'`.
@@ -567,7 +569,7 @@ pub struct JdeComponentBound {
     pub hpe: f64,
     /// The LPE bound of this coordinate: the estimator declares ∅ on Z = ∅.
     pub lpe: f64,
-    /// [J'_1⁻¹]_ii (63), or Σ_n C_n [J'_{1+n}⁻¹]_ii (64).
+    /// The estimation term of this coordinate: [J'_1⁻¹]_ii (63), or Σ_n C_n [J'_{1+n}⁻¹]_ii (64).
     pub inverse_information: f64,
     /// x*_i, the prior mean of this coordinate (P_o is constant, so f_d' = f).
     pub undetected_mean: f64,
@@ -897,7 +899,7 @@ pub enum MonteCarloPriorShape {
 pub struct JdeMonteCarloOptions {
     /// The measurement model, `'I'` or `'II'`.
     pub model: MeasurementModel,
-    /// r, the probability that the target exists, in [0, 1].
+    /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
     /// The prior density f of the target's state.
     pub prior: MonteCarloPriorShape,

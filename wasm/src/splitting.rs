@@ -44,7 +44,7 @@ impl From<SpacingName> for Spacing {
 /// (paper 001)).
 #[derive(Deserialize, Tsify)]
 pub struct SplitLibraryOptions {
-    /// R, the number of components: an integer in [2, 16].
+    /// The number R of components of the split: an integer in [2, 16].
     pub components: usize,
     /// The weight λ ∈ [1e-6, 10] of the σ̃² penalty in the split objective J of eq. (13).
     pub lambda: f64,
@@ -451,11 +451,15 @@ fn step_out(s: &Fig5Step) -> NegativeInformationStep {
 #[wasm_bindgen(typescript_custom_section)]
 const SCENARIO_OVERLOADS: &str = r#"
 /**
- * One step (1–3) of the Fig. 5 negative-information example.
+ * One step (1–3) of the Fig. 5 negative-information example of LeGrand & Ferrari, "Split
+ * Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
+ * (paper 001).
  */
 export function negativeInformationScenario(options: NegativeInformationOptions & { step: number }): NegativeInformationStep;
 /**
- * The whole Fig. 5 negative-information example: `{ fov, initial, steps }`.
+ * The whole Fig. 5 negative-information example of LeGrand & Ferrari, "Split Happens! Imprecise
+ * and negative information in Gaussian mixture random finite set filtering" (paper 001):
+ * `{ fov, initial, steps }`.
  */
 export function negativeInformationScenario(options?: NegativeInformationOptions & { step?: undefined }): NegativeInformationScenario;
 "#;

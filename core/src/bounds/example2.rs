@@ -136,7 +136,9 @@ pub struct Example2 {
     pub phase: Phase,
 }
 
-/// The arguments of [`example2`]: Example 2 of paper 002 at one (r, P_o, q) (Fig. 2 right).
+/// The arguments of [`example2`]: Example 2 of Rezaeian & Vo, "Error bounds for joint detection and
+/// estimation of a single object with random finite set observation" (paper 002) at one (r, P_o, q)
+/// (Fig. 2 right).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Example2Options {

@@ -112,7 +112,8 @@ impl MbMeanSquareErrorOptions {
     }
 }
 
-/// A classical estimator of Fig. 2, [`alternative_estimate`].
+/// A classical estimator of Fig. 2 of García-Fernández & Svensson, "Spooky effect in optimal OSPA
+/// estimation and how GOSPA solves it" (paper 003), [`alternative_estimate`].
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MbAlternativeEstimateOptions {

@@ -61,7 +61,8 @@ pub struct Gospa {
     alpha: f64,
 }
 
-/// GOSPA (α = 2) split into its parts (Prop. 3 of the spooky-effect paper).
+/// GOSPA (α = 2) split into its parts (Prop. 3 of García-Fernández & Svensson, "Spooky effect in
+/// optimal OSPA estimation and how GOSPA solves it", paper 003).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GospaDecomposition {
@@ -80,8 +81,9 @@ pub struct GospaDecomposition {
     pub assignment: Vec<(usize, usize)>,
 }
 
-/// GOSPA between two point sets with, for α = 2, its decomposition (Prop. 3 of the
-/// spooky-effect paper): what [`Gospa::report`] returns. For α ≠ 2 only `distance` is set
+/// GOSPA between two point sets with, for α = 2, its decomposition (Prop. 3 of
+/// García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation and how GOSPA solves it",
+/// paper 003): what [`Gospa::report`] returns. For α ≠ 2 only `distance` is set
 /// (the decomposition into localisation, missed and false targets exists for α = 2 only).
 #[derive(Clone, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]

@@ -45,7 +45,8 @@ pub struct Ospa {
     p: f64,
 }
 
-/// OSPA split into its localisation and cardinality parts, eqs. (24)–(26) of `004_…`.
+/// OSPA split into its localisation and cardinality parts, eqs. (24)–(26) of Ristic & Vo, "Sensor
+/// control for multi-object state-space estimation using random finite sets" (paper 004).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OspaDecomposition {

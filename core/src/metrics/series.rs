@@ -9,7 +9,8 @@ use crate::error::{Error, Result, Shape};
 use crate::math::sum::sum;
 
 /// GOSPA over a scenario: the distance at every time step and its mean, with the α = 2
-/// decomposition (Prop. 3 of `003_…`: localisation, missed and false targets) per step and
+/// decomposition (Prop. 3 of García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation
+/// and how GOSPA solves it", paper 003: localisation, missed and false targets) per step and
 /// averaged, when it exists.
 ///
 /// Built by [`Gospa::series`] / [`Gospa::series_with`], or collected from per-step
