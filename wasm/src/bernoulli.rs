@@ -93,9 +93,9 @@ pub enum BernoulliCosts {
 /// The MMOL (minimum mean operational loss) preset's two costs, each finite and ≥ 0.
 #[derive(Clone, Copy, Debug, Deserialize, Tsify)]
 pub struct Mmol {
-    /// c_A, the cost of missing the asset.
+    /// The asset cost c_A ≥ 0: the cost of missing the asset.
     pub asset: f64,
-    /// c_M, the cost of a countermeasure.
+    /// The countermeasure cost c_M ≥ 0: the cost of a countermeasure.
     pub countermeasure: f64,
 }
 
@@ -174,7 +174,7 @@ pub struct BernoulliEstimateOptions {
     /// 100 components and at most 1500 particles in 2 or more dimensions (a RangeError naming the
     /// array beyond).
     pub density: BernoulliDensity,
-    /// r0 > 0, the radius of the tolerance ball of the loss (7), in state units.
+    /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
     /// The costs of the loss (7).
     pub costs: BernoulliCosts,

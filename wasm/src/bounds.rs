@@ -470,7 +470,7 @@ pub struct JdeBoundOptions {
     pub model: MeasurementModel,
     /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
-    /// f, the prior density of the state: a 1D density, or `{ multivariateGaussian: { mean,
+    /// The prior density f of the state: a 1D density, or `{ multivariateGaussian: { mean,
     /// cov } }` for a state in R^l (then `result.components` holds the bound of each
     /// coordinate).
     pub prior: PriorShape,
@@ -482,13 +482,13 @@ pub struct JdeBoundOptions {
     /// Model II: `{ rate, density }` (λ, v/λ); omitted: λ = 0. Not allowed with model I.
     #[tsify(optional)]
     pub clutter: Option<ClutterShape>,
-    /// e_0² ≥ 0, the squared error of a false target: the square itself (of the whole state;
+    /// The squared error e_0² ≥ 0 of a false target: the square itself (of the whole state;
     /// coordinate i of a vector state uses e_0²/l).
     pub false_alarm_error: f64,
-    /// e_1² ≥ 0, the squared error of a missed target: the square itself (of the whole state;
+    /// The squared error e_1² ≥ 0 of a missed target: the square itself (of the whole state;
     /// coordinate i of a vector state uses e_1²/l).
     pub miss_error: f64,
-    /// l, the state dimension, an integer in [1, 64] (default: 1 for a 1D prior, the length
+    /// The state dimension l, an integer in [1, 64] (default: 1 for a 1D prior, the length
     /// of `prior.multivariateGaussian.mean` otherwise, which it must equal; l > 1 needs a
     /// `multivariateGaussian` prior).
     #[tsify(optional)]
@@ -536,7 +536,7 @@ pub struct CardinalityTerm {
     pub probability: f64,
     /// The mass w_n (20)/(25) of p_n on the MAP region, in [0, 1].
     pub w: f64,
-    /// J'_n⁻¹ (with the 1/w_n² of (20)/(25)); for a vector state its trace.
+    /// The inverse information J'_n⁻¹ (with the 1/w_n² of (20)/(25)); for a vector state its trace.
     pub inverse_information: f64,
     /// The probability that the detector rejects n clutter-only points.
     pub clutter_null: f64,
@@ -558,8 +558,8 @@ pub struct JdeComponentBound {
     /// This coordinate's rule on Z = ∅ (each coordinate may pick its own).
     #[tsify(type = "'HPE' | 'LPE'")]
     pub phase: &'static str,
-    /// r* of this coordinate (72): e_0²/(e_0² + (1 − P̄o)(e_1² − l σ_{e,i}²)) without false
-    /// observations (may exceed 1; `Infinity` when HPE never wins).
+    /// The existence threshold r* of this coordinate (72): e_0²/(e_0² + (1 − P̄o)(e_1² − l
+    /// σ_{e,i}²)) without false observations (may exceed 1; `Infinity` when HPE never wins).
     pub existence_threshold: f64,
     /// The summands of (63)/(64) for this coordinate, named as the top-level `terms`.
     pub terms: Vec<BoundTerm>,
@@ -571,9 +571,9 @@ pub struct JdeComponentBound {
     pub lpe: f64,
     /// The estimation term of this coordinate: [J'_1⁻¹]_ii (63), or Σ_n C_n [J'_{1+n}⁻¹]_ii (64).
     pub inverse_information: f64,
-    /// x*_i, the prior mean of this coordinate (P_o is constant, so f_d' = f).
+    /// The prior mean x*_i of this coordinate (P_o is constant, so f_d' = f).
     pub undetected_mean: f64,
-    /// σ_{e,i}² = P_ii, the prior variance of this coordinate.
+    /// The prior variance σ_{e,i}² = P_ii of this coordinate.
     pub undetected_variance: f64,
 }
 
@@ -603,8 +603,8 @@ pub struct JdeBoundResult {
     pub lpe: f64,
     /// The mean detection probability P̄_o (14) = ∫ P_o(x) f(x) dx, in [0, 1].
     pub mean_detection: f64,
-    /// x*, the mean of f_d' (a vector state: of its first coordinate; see
-    /// `components[i].undetectedMean`).
+    /// The mean x* of f_d', an undetected target's state (a vector state: of its first coordinate;
+    /// see `components[i].undetectedMean`).
     pub undetected_mean: f64,
     /// The variance σ_e² (16) of an undetected target's state, the variance of f_d' (a vector
     /// state: tr P).
@@ -618,9 +618,9 @@ pub struct JdeBoundResult {
     pub region: Vec<(f64, f64)>,
     /// The n-point parts of Theorem 2, one per cardinality n = |Z| (model I: only n = 1).
     pub cardinalities: Vec<CardinalityTerm>,
-    /// false when f·P_o does not vanish at the prior's support ends (uniform, tables ending
-    /// above 0): the information inequality's regularity fails, the estimation term may not
-    /// be a bound.
+    /// Whether the bound is regular: false when f·P_o does not vanish at the prior's support ends
+    /// (uniform, tables ending above 0): the information inequality's regularity fails, the
+    /// estimation term may not be a bound.
     pub regular: bool,
     /// The Monte Carlo seed used (model II with clutter only).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -913,19 +913,19 @@ pub struct JdeMonteCarloOptions {
     /// Model II: `{ rate, density }` (λ, v/λ); omitted: λ = 0.
     #[tsify(optional)]
     pub clutter: Option<ClutterShape>, // model II only
-    /// e_0² ≥ 0, the squared error (cost) of a false target: the square itself.
+    /// The squared error (cost) e_0² ≥ 0 of a false target: the square itself.
     pub false_alarm_error: f64,
-    /// e_1² ≥ 0, the squared error (cost) of a missed target: the square itself.
+    /// The squared error (cost) e_1² ≥ 0 of a missed target: the square itself.
     pub miss_error: f64,
     /// The rule on Z = ∅ (default `'optimal'`).
     #[tsify(optional)]
     pub empty_rule: Option<EmptyRuleShape>,
-    /// k scans of one target, 1 to 5,000 (default 1; k > 1 needs a Gaussian prior and no
-    /// false alarms or clutter): `result.scans[k − 1]` is the risk after scan k.
+    /// The number k of scans of one target, 1 to 5,000 (default 1; k > 1 needs a Gaussian prior and
+    /// no false alarms or clutter): `result.scans[k − 1]` is the risk after scan k.
     #[tsify(optional)]
     pub scans: Option<usize>,
-    /// Simulated scenes, 2 to 10^7 (default 20,000; samples × scans × (1 + ⌈q or λ⌉) at
-    /// most 10^7).
+    /// The number of simulated scenes, 2 to 10^7 (default 20,000; samples × scans × (1 + ⌈q or λ⌉)
+    /// at most 10^7).
     #[tsify(optional)]
     pub samples: Option<usize>,
     /// The seed of the Monte Carlo (integer; omitted: fresh entropy, returned as `seed`).

@@ -116,9 +116,9 @@ export type PlacementSceneOptions = SceneOptions;
 /// Options of `mixtureDensityGrid`: a Gaussian mixture and a grid of positions.
 #[derive(Deserialize, Tsify)]
 pub struct MixtureDensityGridOptions {
-    /// Σ weight · N(mean, cov); components of 3 or more dimensions use their first two
-    /// (position) components. Its peak, Σ weight / √det(2π cov), must stay below the largest
-    /// double (about 1.8e308; a RangeError naming the weight that passes it).
+    /// The Gaussian mixture Σ weight · N(mean, cov) to evaluate; components of 3 or more dimensions
+    /// use their first two (position) components. Its peak, Σ weight / √det(2π cov), must stay
+    /// below the largest double (about 1.8e308; a RangeError naming the weight that passes it).
     pub mixture: Vec<WeightedGaussian>,
     /// The grid of positions at which to evaluate the density; components × cells at most 2.5e7.
     pub grid: Grid,

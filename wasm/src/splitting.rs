@@ -195,7 +195,7 @@ pub struct NegativeInformationStep {
     pub split: Vec<MixtureComponent>,
     /// The posterior density p_{k|k}: the mean-based partition's outside part, normalised.
     pub posterior: Vec<MixtureComponent>,
-    /// 1 − Δ_k, the predicted probability of the non-detection.
+    /// The predicted probability 1 − Δ_k of the non-detection.
     pub non_detection_prob: f64,
     /// The exact predicted mass in the field of view, ⟨1_S, p_{k|k−1}⟩ ∈ [0, 1].
     pub predicted_inside: f64,

@@ -74,9 +74,9 @@ pub struct MonteCarloModel<'a> {
     /// Model I's (q, ψ) or model II's (λ, c); the densities must draw
     /// ([`Density::sample`]).
     pub measurement: VectorMeasurement<'a>,
-    /// e0² (of the whole state; coordinate i uses e0²/l).
+    /// The squared error e0² ≥ 0 of a false target (of the whole state; coordinate i uses e0²/l).
     pub false_alarm_error: f64,
-    /// e1² (of the whole state; coordinate i uses e1²/l).
+    /// The squared error e1² ≥ 0 of a missed target (of the whole state; coordinate i uses e1²/l).
     pub miss_error: f64,
 }
 

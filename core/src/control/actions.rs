@@ -12,7 +12,8 @@ use crate::smc::{Area, State};
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Action {
-    /// The action's index: 0 for stay, else 1 + (ring − 1)·N_θ + (heading − 1) (0 … 16 in the paper's grid).
+    /// The action's index: 0 for stay, else 1 + (ring − 1)·N_θ + (heading − 1) (0 … 16 in the
+    /// paper's grid).
     pub index: usize,
     /// The ring j of the move: 0 (stay) … N_ρ; the move is j·ρ₀ (ρ₀ = 50 m).
     pub ring: usize,
@@ -33,11 +34,11 @@ pub struct Action {
     serde(default)
 )]
 pub struct ActionGrid {
-    /// N_ρ (2).
+    /// The number N_ρ of rings of move lengths (2).
     pub rings: usize,
-    /// N_θ (8).
+    /// The number N_θ of headings (8).
     pub headings: usize,
-    /// ρ₀ (50 m).
+    /// The move length ρ₀ of one ring, in m (50 m).
     pub step: f64,
 }
 

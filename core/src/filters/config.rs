@@ -61,7 +61,7 @@ pub(crate) fn normalised_density(mixture: &GaussianMixture, what: &str) -> Resul
 /// with Σ_ℓ w_ℓ = 1 (eq. (42)).
 #[derive(Clone, Debug, PartialEq)]
 pub struct GmBernoulli {
-    /// r, the probability that the object exists (`existence`).
+    /// The existence probability r ∈ [0, 1]: the probability that the object exists (`existence`).
     pub existence: f64,
     /// The spatial density p(x) of the object's state (`mixture`), a Gaussian mixture with weights
     /// summing to 1.
@@ -156,9 +156,10 @@ pub const MAX_REDUCED_COMPONENTS: usize = 1_000_000;
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PredictOptions {
-    /// π(x | x′) = N(x; F x′, Q) (`transition: { F, Q }`).
+    /// The motion model π(x | x′) = N(x; F x′, Q) (`transition: { F, Q }`).
     pub transition: LinearGaussianTransition,
-    /// p_S, the probability that an existing object survives one step (`survival`).
+    /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives
+    /// one step (`survival`).
     pub survival: f64,
     /// Object birth: the birth probability p_b and birth density b(x) (`birth`).
     pub birth: Birth,

@@ -86,13 +86,13 @@ pub fn non_detection_update(
 pub struct NegativeInformationStep {
     /// The time index k (1, 2, 3 for Fig. 5).
     pub step: usize,
-    /// p_{k|k−1}: the prediction of the previous posterior.
+    /// The predicted density p_{k|k−1}: the prediction of the previous posterior.
     pub predicted: GaussianMixture,
     /// The split: Algorithm 1 applied to the prediction.
     pub split: SplitOutcome,
-    /// p_{k|k}: the non-detection posterior (after the optional reduction).
+    /// The posterior density p_{k|k}: the non-detection posterior (after the optional reduction).
     pub posterior: GaussianMixture,
-    /// 1 − Δ_k: the predicted probability of not detecting the object (mean-based).
+    /// The predicted probability 1 − Δ_k of not detecting the object (mean-based).
     pub non_detection_prob: f64,
     /// ⟨1_S, p_{k|k−1}⟩, the exact probability that the object is in the FoV before the
     /// update ([`Region::gaussian_mass`]).

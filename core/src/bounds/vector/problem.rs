@@ -151,9 +151,9 @@ pub struct VectorModel<'a> {
     pub sensor: &'a LinearGaussianSensor,
     /// Model I or II and its false observations.
     pub measurement: VectorMeasurement<'a>,
-    /// e0² (of the whole state; component i uses e0²/l).
+    /// The squared error e0² ≥ 0 of a false target (of the whole state; component i uses e0²/l).
     pub false_alarm_error: f64,
-    /// e1² (of the whole state; component i uses e1²/l).
+    /// The squared error e1² ≥ 0 of a missed target (of the whole state; component i uses e1²/l).
     pub miss_error: f64,
 }
 
