@@ -1,5 +1,6 @@
-//! Optimal Bernoulli point estimation (paper `000_…`): the estimate of Theorem III.3, q(a),
-//! the MMUC estimate and the threshold curves of Fig. 3.
+//! Optimal Bernoulli point estimation (Narykov, Üney & Ralph, "Optimal Bernoulli point
+//! estimation with applications", paper 000): the estimate of Theorem III.3, q(a), the MMUC
+//! estimate and the threshold curves of Fig. 3.
 
 use serde::de::{self, Deserializer, MapAccess, Visitor};
 use serde::{Deserialize, Serialize};
@@ -70,28 +71,31 @@ impl BernoulliDensity {
     }
 }
 
-/// Costs of the loss (7): the MPE preset `'mpe'` (0, 1, 1, 0, 1), the MMOL preset
-/// `{ mmol: { asset: c_A, countermeasure: c_M } }` (c00 = 0, c01 = c_A, c10 = c_M,
-/// c11 = c_M, c = c_A), or the five costs (finite, ≥ 0).
+/// Costs of the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with
+/// applications" (paper 000): the MPE preset `'mpe'` (0, 1, 1, 0, 1), the MMOL preset `{ mmol: {
+/// asset: c_A, countermeasure: c_M } }` (c00 = 0, c01 = c_A, c10 = c_M, c11 = c_M, c = c_A), or the
+/// five costs (finite, ≥ 0).
 #[derive(Clone, Copy, Debug, Tsify)]
 #[tsify(
     type = "'mpe' | { mmol: { asset: number; countermeasure: number } } | { c00: number; c01: number; c10: number; c11: number; c: number }"
 )]
 pub enum BernoulliCosts {
-    /// `'mpe'`.
+    /// `'mpe'`: the MPE (minimum probability of error) preset, costs (c00, c01, c10, c11, c) = (0,
+    /// 1, 1, 0, 1).
     Mpe,
-    /// `{ mmol: { asset, countermeasure } }`.
+    /// `{ mmol: { asset, countermeasure } }`: the MMOL (minimum mean operational loss) preset from
+    /// the asset cost c_A and the countermeasure cost c_M.
     Mmol(Mmol),
-    /// `{ c00, c01, c10, c11, c }`.
+    /// `{ c00, c01, c10, c11, c }`: the five costs of the loss (7), each finite and ≥ 0.
     Explicit([f64; 5]),
 }
 
-/// The MMOL preset's two costs.
+/// The MMOL (minimum mean operational loss) preset's two costs, each finite and ≥ 0.
 #[derive(Clone, Copy, Debug, Deserialize, Tsify)]
 pub struct Mmol {
-    /// c_A, the cost of missing the asset.
+    /// The asset cost c_A ≥ 0: the cost of missing the asset.
     pub asset: f64,
-    /// c_M, the cost of a countermeasure.
+    /// The countermeasure cost c_M ≥ 0: the cost of a countermeasure.
     pub countermeasure: f64,
 }
 
@@ -160,50 +164,55 @@ impl BernoulliCosts {
     }
 }
 
-/// Options of `bernoulliEstimate`.
+/// Options of `bernoulliEstimate` (the loss (7) and Theorem III.3 of Narykov, Üney & Ralph,
+/// "Optimal Bernoulli point estimation with applications" (paper 000)).
 #[derive(Deserialize, Tsify)]
 pub struct BernoulliEstimateOptions {
-    /// p, the existence probability, in [0, 1].
+    /// The existence probability p ∈ [0, 1]: the probability that the object exists.
     pub existence: f64,
-    /// The spatial density of the object when it exists. The MMUC search takes a mixture of at most 100 components and at most
-    /// 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
+    /// The spatial density of the object when it exists. The MMUC search takes a mixture of at most
+    /// 100 components and at most 1500 particles in 2 or more dimensions (a RangeError naming the
+    /// array beyond).
     pub density: BernoulliDensity,
-    /// r0 > 0, the radius of the tolerance ball of the loss (7), in state units.
+    /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
     /// The costs of the loss (7).
     pub costs: BernoulliCosts,
 }
 
-/// Theorem III.3.
+/// Result of `bernoulliEstimate`: the Bayes-optimal estimate of Theorem III.3 of Narykov, Üney &
+/// Ralph, "Optimal Bernoulli point estimation with applications" (paper 000).
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct BernoulliEstimateResult {
-    /// The optimal decision (ties p = Γ report nothing).
+    /// Whether to report the object: the optimal decision (ties p = Γ report nothing).
     pub declare: bool,
-    /// `mmuc` when declared, else null.
+    /// The reported point estimate: `mmuc` when `declare` is true, else null.
     #[tsify(type = "number[] | null")]
     pub estimate: Option<Vec<f64>>,
-    /// The MMUC point a* (12).
+    /// The MMUC point a* (12): the centre of the radius-r0 ball most likely to hold the object.
     pub mmuc: Vec<f64>,
-    /// Γ of eq. (11) (p > Γ reports for every cost matrix with c11 + c·q < c01 + c10 − c00,
-    /// which includes MPE and MMOL; ±Infinity when the decision does not depend on p).
+    /// The existence threshold Γ of eq. (11) (p > Γ reports for every cost matrix with c11 + c·q <
+    /// c01 + c10 − c00, which includes MPE and MMOL; ±Infinity when the decision does not depend on
+    /// p).
     pub threshold: f64,
-    /// q(a*).
+    /// The miss probability q(a*) ∈ [0, 1]: the probability that the object, if it exists, lies
+    /// outside the radius-r0 ball about a*.
     pub miss_probability: f64,
-    /// ρ_∅ (14).
+    /// The expected loss ρ_∅ (14) of reporting nothing.
     pub expected_loss_empty: f64,
-    /// ρ_{a*} (13).
+    /// The expected loss ρ_{a*} (13) of reporting the single point a*.
     pub expected_loss_singleton: f64,
 }
 
-/// Options of `probabilityOutsideBall`.
+/// Options of `probabilityOutsideBall`: a density and a ball.
 #[derive(Deserialize, Tsify)]
 pub struct ProbabilityOutsideBallOptions {
-    /// The density.
+    /// The spatial density of the object's state.
     pub density: BernoulliDensity,
     /// The ball's centre (the density's dimension).
     pub center: Point,
-    /// The ball's radius, > 0.
+    /// The ball's radius, > 0, in state units.
     pub radius: f64,
 }
 
@@ -211,12 +220,13 @@ fn dim_one() -> usize {
     1
 }
 
-/// Options of `bernoulliThresholdCurve`.
+/// Options of `bernoulliThresholdCurve` (Fig. 3 of Narykov, Üney & Ralph, "Optimal Bernoulli point
+/// estimation with applications" (paper 000)).
 #[derive(Deserialize, Tsify)]
 pub struct BernoulliThresholdCurveOptions {
     /// Standard deviations σ > 0 of the isotropic Gaussian N(a*, σ² I).
     pub sigmas: Numbers,
-    /// r0 > 0.
+    /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
     /// The costs of the loss (7).
     pub costs: BernoulliCosts,
@@ -225,13 +235,15 @@ pub struct BernoulliThresholdCurveOptions {
     pub dim: usize,
 }
 
-/// Options of `mmucEstimate`.
+/// Options of `mmucEstimate`: the MMUC (minimum mean uniform cost) point a* (12) of
+/// Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with applications" (paper 000).
 #[derive(Deserialize, Tsify)]
 pub struct MmucEstimateOptions {
-    /// The density. The MMUC search takes a mixture of at most 100 components and at most
-    /// 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
+    /// The spatial density of the object's state. The MMUC search takes a mixture of at most 100
+    /// components and at most 1500 particles in 2 or more dimensions (a RangeError naming the array
+    /// beyond).
     pub density: BernoulliDensity,
-    /// r0 > 0.
+    /// The radius r0 > 0 of the ball whose miss probability q(a) is minimised, in state units.
     pub radius: f64,
 }
 
@@ -239,69 +251,72 @@ pub struct MmucEstimateOptions {
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "kebab-case")]
 pub enum MmucMethodName {
-    /// A Gaussian's mean (exact).
+    /// `'gaussian-mean'`: a Gaussian's mean (exact).
     GaussianMean,
-    /// The common mean of a mixture (exact).
+    /// `'shared-mean'`: the common mean of a mixture (exact).
     SharedMean,
-    /// A multi-start local search over a mixture.
+    /// `'mixture-search'`: a multi-start local search over a mixture.
     MixtureSearch,
-    /// Exhaustive over particles.
+    /// `'particles-exact'`: an exhaustive search over the particles.
     ParticlesExact,
-    /// A heuristic over many particles.
+    /// `'particles-heuristic'`: a heuristic search over many particles.
     ParticlesHeuristic,
 }
 
-/// Result of `mmucEstimate`.
+/// Result of `mmucEstimate`: the MMUC point a* (12) and its miss probability.
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct MmucEstimateResult {
-    /// a*.
+    /// The MMUC point a*: the centre of the radius-r0 ball most likely to hold the object.
     pub center: Vec<f64>,
-    /// q(a*).
+    /// The miss probability q(a*) ∈ [0, 1]: the probability that the object lies outside the
+    /// radius-r0 ball about a*.
     pub miss_probability: f64,
-    /// How a* was found.
+    /// How a* was found (exact or heuristic).
     pub method: MmucMethodName,
 }
 
 /// One component of `multiBernoulliPointEstimate`.
 #[derive(Deserialize, Tsify)]
 pub struct BernoulliComponent {
-    /// Existence probability in [0, 1].
+    /// The existence probability r ∈ [0, 1] of this component.
     pub existence: f64,
-    /// Spatial density. The MMUC search takes a mixture of at most 100 components and at most
-    /// 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
+    /// The component's spatial density. The MMUC search takes a mixture of at most 100 components
+    /// and at most 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
     pub density: BernoulliDensity,
 }
 
-/// Options of `multiBernoulliPointEstimate`.
+/// Options of `multiBernoulliPointEstimate` (the loss (7) of Narykov, Üney & Ralph, "Optimal
+/// Bernoulli point estimation with applications" (paper 000)).
 #[derive(Deserialize, Tsify)]
 pub struct MultiBernoulliPointEstimateOptions {
-    /// The components (at most 10,000).
+    /// The Bernoulli components, each decided alone (at most 10,000).
     pub components: Vec<BernoulliComponent>,
-    /// r0 > 0.
+    /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
     /// The costs of the loss (7).
     pub costs: BernoulliCosts,
 }
 
-/// Result of `multiBernoulliPointEstimate`.
+/// Result of `multiBernoulliPointEstimate`: the reported components and their estimates.
 #[derive(Serialize, Tsify)]
 pub struct MultiBernoulliPointEstimateResult {
     /// Indices of the declared components, increasing.
     pub reported: Vec<usize>,
-    /// Their estimates, in the same order.
+    /// The point estimates a* of the reported components, in the order of `reported`.
     pub estimates: Vec<Vec<f64>>,
-    /// Theorem III.3 for each component.
+    /// The full Theorem III.3 result of each component, in the order of `components`.
     pub components: Vec<BernoulliEstimateResult>,
 }
 
-/// Options of `bernoulliLossCurve`.
+/// Options of `bernoulliLossCurve` (Fig. 2 of Narykov, Üney & Ralph, "Optimal Bernoulli point
+/// estimation with applications" (paper 000)).
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct BernoulliLossCurveOptions {
     /// The existence probabilities p at which to evaluate.
     pub existences: Numbers,
-    /// q(a*) in [0, 1].
+    /// The miss probability q(a*) ∈ [0, 1] of the point that would be reported.
     pub miss_probability: f64,
     /// The costs of the loss (7).
     pub costs: BernoulliCosts,
@@ -310,16 +325,18 @@ pub struct BernoulliLossCurveOptions {
     pub threshold: Option<f64>,
 }
 
-/// ρ_∅(p) (14), ρ_{a*}(p) (13), and the expected loss of the rule, for each p.
+/// Result of `bernoulliLossCurve`: ρ_∅(p) (14), ρ_{a*}(p) (13), and the expected loss of the rule,
+/// for each p (the expected losses of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation
+/// with applications" (paper 000)).
 #[derive(Serialize, Tsify)]
 pub struct BernoulliLossCurveResult {
-    /// ρ_∅(p).
+    /// The expected loss ρ_∅(p) (14) of reporting nothing, one per p.
     pub empty: Vec<f64>,
-    /// ρ_{a*}(p).
+    /// The expected loss ρ_{a*}(p) (13) of reporting a*, one per p.
     pub singleton: Vec<f64>,
-    /// The loss of the rule.
+    /// The expected loss of the rule "report when p > threshold", one per p.
     pub rule: Vec<f64>,
-    /// The rule's threshold.
+    /// The rule's existence threshold (the given one, or the optimal Γ (11)).
     pub threshold: f64,
 }
 
@@ -335,11 +352,11 @@ pub(crate) fn estimate_out(e: &BernoulliEstimate) -> BernoulliEstimateResult {
     }
 }
 
-/// The Bayes-optimal point estimate of a Bernoulli (Theorem III.3 of the optimal Bernoulli
-/// point estimation paper): report the MMUC point a* (12) when the existence probability
-/// exceeds Γ (11), else nothing. Options `{ existence, density, radius, costs }`; returns
-/// `{ declare, estimate, mmuc, threshold, missProbability, expectedLossEmpty,
-/// expectedLossSingleton }`.
+/// The Bayes-optimal point estimate of a Bernoulli (Theorem III.3 of Narykov, Üney & Ralph,
+/// "Optimal Bernoulli point estimation with applications", paper 000): report the MMUC point a*
+/// (12) when the existence probability exceeds Γ (11), else nothing. Options `{ existence, density,
+/// radius, costs }`; returns `{ declare, estimate, mmuc, threshold, missProbability,
+/// expectedLossEmpty, expectedLossSingleton }`.
 #[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = bernoulliEstimate, unchecked_return_type = "BernoulliEstimateResult")]
 pub fn bernoulli_estimate(
@@ -356,7 +373,9 @@ pub fn bernoulli_estimate(
 
 /// q(center) = P(‖x − center‖ > radius) for x drawn from `density`: exact in 1D, to 1e-10
 /// (absolute) by error-controlled quadrature or characteristic-function inversion in higher
-/// dimensions, the weighted sum for mixtures and the weighted count for particles.
+/// dimensions, the weighted sum for mixtures and the weighted count for particles. This is the miss
+/// probability of the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with
+/// applications" (paper 000).
 #[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = probabilityOutsideBall)]
 pub fn probability_outside_ball(
@@ -368,7 +387,8 @@ pub fn probability_outside_ball(
         .or_throw_in("options")
 }
 
-/// Γ (11) for each σ of an isotropic Gaussian N(a*, σ² I_dim) — Fig. 3 of the paper — from
+/// Γ (11) for each σ of an isotropic Gaussian N(a*, σ² I_dim) — Fig. 3 of Narykov, Üney & Ralph,
+/// "Optimal Bernoulli point estimation with applications" (paper 000) — from
 /// the closed form q = P(χ²_dim > (radius/σ)²). Options `{ sigmas, radius, costs, dim = 1 }`.
 #[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = bernoulliThresholdCurve, unchecked_return_type = "number[]")]
@@ -407,12 +427,13 @@ pub fn mmuc_estimate(
     })
 }
 
-/// Theorem III.3 applied to each component of a multi-Bernoulli. Options
-/// `{ components: [{ existence, density }], radius, costs }`; returns
-/// `{ reported, estimates, components }`. Each component is decided alone, from its
-/// existence, its density and the loss (7) of paper 000 (Narykov, Üney & Ralph);
+/// Theorem III.3 of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with applications"
+/// applied to each component of a multi-Bernoulli. Options `{ components: [{ existence, density }],
+/// radius, costs }`; returns `{ reported, estimates, components }`. Each component is decided
+/// alone, from its existence, its density and the loss (7) of paper 000 (Narykov, Üney & Ralph);
 /// `mbOptimalEstimate` instead decides far-apart Dirac components jointly, minimising a set
-/// metric's E[d^p] (the spooky-effect paper).
+/// metric's E[d^p] (García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation and how
+/// GOSPA solves it", paper 003).
 #[cfg(feature = "bernoulli")]
 #[wasm_bindgen(
     js_name = multiBernoulliPointEstimate,
@@ -441,9 +462,9 @@ pub fn multi_bernoulli_point_estimate(
 }
 
 /// The expected losses against p for Fig. 2: ρ_∅ (14), ρ_{a*} (13), and the loss of the rule
-/// "report when p > threshold" (default: the optimal rule). Options
-/// `{ existences, missProbability, costs, threshold? }`; returns
-/// `{ empty, singleton, rule, threshold }`.
+/// "report when p > threshold" (default: the optimal rule), from Narykov, Üney & Ralph, "Optimal
+/// Bernoulli point estimation with applications" (paper 000). Options `{ existences,
+/// missProbability, costs, threshold? }`; returns `{ empty, singleton, rule, threshold }`.
 #[cfg(feature = "bernoulli")]
 #[wasm_bindgen(js_name = bernoulliLossCurve, unchecked_return_type = "BernoulliLossCurveResult")]
 pub fn bernoulli_loss_curve(

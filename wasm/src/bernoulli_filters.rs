@@ -1,4 +1,4 @@
-//! Bernoulli filters (paper 001, Section V): `gmBernoulliPredict`, `gmBernoulliUpdate`, the
+//! Bernoulli filters (LeGrand & Ferrari, "Split Happens!", paper 001, Section V): `gmBernoulliPredict`, `gmBernoulliUpdate`, the
 //! classes `GmBernoulliFilter` and `ParticleBernoulliFilter`, and `airportScenario`.
 
 use std::boxed::Box;
@@ -73,14 +73,15 @@ fn check_shapes(
     .map_err(rendered(root))
 }
 
-/// The linear-Gaussian transition N(x; F x′, Q) (eq. (44)): F and Q as n rows of n numbers
-/// (Q symmetric positive semidefinite).
+/// The linear-Gaussian transition N(x; F x′, Q) (eq. (44) of LeGrand & Ferrari, "Split Happens!
+/// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper
+/// 001)): F and Q as n rows of n numbers (Q symmetric positive semidefinite).
 #[derive(Clone, Debug, Deserialize, Serialize, Tsify)]
 pub struct Transition {
-    /// F.
+    /// The state transition matrix F, n rows of n numbers (x = F x′ + noise).
     #[serde(rename = "F")]
     pub f: Vec<Vec<f64>>,
-    /// Q.
+    /// The process noise covariance Q, n rows of n numbers, symmetric positive semidefinite.
     #[serde(rename = "Q")]
     pub q: Vec<Vec<f64>>,
 }
@@ -96,17 +97,19 @@ impl Transition {
 /// p_b = 0).
 #[derive(Deserialize, Tsify)]
 pub struct BirthOptions {
-    /// p_b, in [0, 1].
+    /// The birth probability p_b ∈ [0, 1]: the probability that an object appears in one step when
+    /// none exists.
     pub probability: f64,
-    /// b(x).
+    /// The birth density b(x) of a new object's state, a Gaussian mixture (weights sum to 1).
     #[serde(default)]
     pub mixture: Vec<WeightedGaussian>,
 }
 
-/// p_D(x; S) = 1_S(x) p_D (51).
+/// Object detection: p_D(x; S) = 1_S(x) p_D, eq. (51) of LeGrand & Ferrari, "Split Happens!
+/// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper 001).
 #[derive(Deserialize, Tsify)]
 pub struct DetectionOptions {
-    /// p_D inside the field of view, in [0, 1].
+    /// The detection probability p_D ∈ [0, 1] inside the field of view S.
     pub probability: f64,
     /// The field of view S; omitted: detection everywhere.
     #[tsify(optional)]
@@ -121,9 +124,10 @@ pub struct ClutterDensityOption(ScalarOr<f64>);
 /// Poisson false reports: rate λ_c and density c̃(ζ).
 #[derive(Deserialize, Tsify)]
 pub struct ClutterOptions {
-    /// λ_c ≥ 0, the mean number of false reports per scan.
+    /// The clutter rate λ_c ≥ 0: the mean number of false reports per scan.
     pub rate: f64,
-    /// c̃(ζ) ≥ 0 (e.g. 1 / number of anchors, or 1 / area for vector measurements).
+    /// The clutter density c̃(ζ) ≥ 0 of a false report (e.g. 1 / number of anchors, or 1 / area for
+    /// vector measurements).
     pub density: ClutterDensityOption,
 }
 
@@ -139,10 +143,10 @@ impl ClutterOptions {
 /// The linear-Gaussian likelihood N(z; H x, R) of vector measurements.
 #[derive(Deserialize, Tsify)]
 pub struct LikelihoodOptions {
-    /// H, m rows of n numbers.
+    /// The measurement matrix H, m rows of n numbers (z = H x + noise).
     #[serde(rename = "H")]
     pub h: Vec<Vec<f64>>,
-    /// R, m rows of m numbers, symmetric positive definite.
+    /// The measurement noise covariance R, m rows of m numbers, symmetric positive definite.
     #[serde(rename = "R")]
     pub r: Vec<Vec<f64>>,
 }
@@ -159,13 +163,14 @@ impl LikelihoodOptions {
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct ReductionOptionsJs {
-    /// Drop lighter components (default 0).
+    /// Pruning threshold ≥ 0: components of smaller weight are dropped (default 0).
     #[serde(default)]
     pub prune_below: f64,
-    /// Vo & Ma merge distance; omitted: no merging.
+    /// Merge distance ≥ 0: components within this Mahalanobis distance are merged (Vo & Ma);
+    /// omitted: no merging.
     #[tsify(optional)]
     pub merge_distance: Option<f64>,
-    /// Runnalls cap, in [1, 1e6]; omitted: no cap.
+    /// The most components kept, in [1, 1e6], by Runnalls' merging; omitted: no cap.
     #[tsify(optional)]
     pub max_components: Option<usize>,
 }
@@ -204,35 +209,40 @@ fn density(items: Vec<WeightedGaussian>, path: &str) -> JsResult<fisst::gaussian
     types::mixture(items, path)
 }
 
-/// Options of `gmBernoulliPredict`.
+/// Options of `gmBernoulliPredict` (the GM Bernoulli prediction of LeGrand & Ferrari, "Split
+/// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
+/// (paper 001)).
 #[derive(Deserialize, Tsify)]
 pub struct GmBernoulliPredictOptions {
-    /// r, in [0, 1].
+    /// The existence probability r ∈ [0, 1] before the prediction.
     pub existence: f64,
-    /// p(x): weights sum to 1 (at most 10,000 components).
+    /// The spatial density p(x) before the prediction, a Gaussian mixture: weights sum to 1 (at
+    /// most 10,000 components).
     pub mixture: Vec<WeightedGaussian>,
-    /// F, Q.
+    /// The motion model: transition matrix F and process noise covariance Q.
     pub transition: Transition,
-    /// p_S in [0, 1] (default 0.99).
+    /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives one
+    /// step (default 0.99).
     #[serde(default = "core_filters::default_survival")]
     pub survival: f64,
-    /// p_b and b(x); omitted: no birth.
+    /// Object birth: the birth probability p_b and birth density b(x); omitted: no birth.
     #[tsify(optional)]
     pub birth: Option<BirthOptions>,
 }
 
-/// A Bernoulli with a GM density.
+/// Result of `gmBernoulliPredict`: a Bernoulli with a Gaussian-mixture (GM) density.
 #[derive(Serialize, Tsify)]
 pub struct GmBernoulliResult {
-    /// r.
+    /// The predicted existence probability r ∈ [0, 1].
     pub existence: f64,
-    /// p(x).
+    /// The predicted spatial density p(x), a Gaussian mixture (weights sum to 1).
     pub mixture: Vec<MixtureComponent>,
 }
 
-/// The GM Bernoulli prediction, eqs. (40)–(49) of paper 001. Options `{ existence, mixture,
-/// transition: { F, Q }, survival, birth: { probability, mixture } }`; returns `{ existence,
-/// mixture }`.
+/// The GM Bernoulli prediction, eqs. (40)–(49) of LeGrand & Ferrari, "Split Happens! Imprecise and
+/// negative information in Gaussian mixture random finite set filtering" (paper 001). Options `{
+/// existence, mixture, transition: { F, Q }, survival, birth: { probability, mixture } }`; returns
+/// `{ existence, mixture }`.
 #[wasm_bindgen(js_name = gmBernoulliPredict, unchecked_return_type = "GmBernoulliResult")]
 pub fn gm_bernoulli_predict(
     #[wasm_bindgen(unchecked_param_type = "GmBernoulliPredictOptions")] options: JsValue,
@@ -262,18 +272,21 @@ pub fn gm_bernoulli_predict(
     })
 }
 
-/// Options of `gmBernoulliUpdate`.
+/// Options of `gmBernoulliUpdate` (the GM Bernoulli update of LeGrand & Ferrari, "Split Happens!
+/// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper
+/// 001)).
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct GmBernoulliUpdateOptions {
-    /// r_{k|k−1}, in [0, 1].
+    /// The predicted existence probability r_{k|k−1} ∈ [0, 1].
     pub existence: f64,
-    /// p_{k|k−1}: weights sum to 1.
+    /// The predicted spatial density p_{k|k−1}, a Gaussian mixture: weights sum to 1.
     pub mixture: Vec<WeightedGaussian>,
-    /// n_s (default 2, in [1, 8]).
+    /// The number n_s of position components: the first n_s state components are the position that
+    /// regions refer to (default 2, in [1, 8]).
     #[serde(default = "core_filters::default_position_dims")]
     pub position_dims: usize,
-    /// p_D and the field of view.
+    /// Detection: the detection probability p_D inside the field of view S.
     pub detection: DetectionOptions,
     /// The imprecise reports ζ (regions, g̃ = 1_ζ); omitted or empty with no `measurements`:
     /// the non-detection update.
@@ -284,10 +297,10 @@ pub struct GmBernoulliUpdateOptions {
     /// RangeError naming `options.measurements` beyond).
     #[tsify(optional)]
     pub measurements: Option<Vec<Point>>,
-    /// H, R of the vector measurements.
+    /// The likelihood of the vector measurements: measurement matrix H and noise covariance R.
     #[tsify(optional)]
     pub likelihood: Option<LikelihoodOptions>,
-    /// λ_c, c̃.
+    /// Clutter (false reports): the rate λ_c and density c̃.
     pub clutter: ClutterOptions,
     /// The splitting step; omitted: the defaults.
     #[tsify(optional, type = "SplittingOptions")]
@@ -301,15 +314,15 @@ pub struct GmBernoulliUpdateOptions {
     pub exclusions: Option<Vec<Region>>,
 }
 
-/// Result of `gmBernoulliUpdate`.
+/// Result of `gmBernoulliUpdate`: the posterior Bernoulli.
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct GmBernoulliUpdateResult {
-    /// r_{k|k}.
+    /// The posterior existence probability r_{k|k} ∈ [0, 1].
     pub existence: f64,
-    /// p_{k|k} after the reduction.
+    /// The posterior spatial density p_{k|k}, a Gaussian mixture, after the reduction.
     pub mixture: Vec<MixtureComponent>,
-    /// Δ_k of eq. (58) (−Infinity when a report has zero clutter intensity).
+    /// The update's Δ_k of eq. (58) (−Infinity when a report has zero clutter intensity).
     pub delta: f64,
     /// Components after splitting, before the update and the reduction.
     pub split_components: usize,
@@ -351,10 +364,11 @@ fn measurements(points: Vec<Point>) -> Vec<Vec<f64>> {
     points.into_iter().map(|p| p.0).collect()
 }
 
-/// The GM Bernoulli update (Algorithm 3 of paper 001: split about ∂S, every ∂ζ and every
-/// exclusion, zeroth-order weights (57)–(58), existence (54), two-pass reduction), or with
-/// `measurements` and `likelihood` the vector-measurement update. Returns `{ existence,
-/// mixture, delta, splitComponents }`.
+/// The GM Bernoulli update (Algorithm 3 of LeGrand & Ferrari, "Split Happens! Imprecise and
+/// negative information in Gaussian mixture random finite set filtering" (paper 001): split about
+/// ∂S, every ∂ζ and every exclusion, zeroth-order weights (57)–(58), existence (54), two-pass
+/// reduction), or with `measurements` and `likelihood` the vector-measurement update. Returns `{
+/// existence, mixture, delta, splitComponents }`.
 #[wasm_bindgen(js_name = gmBernoulliUpdate, unchecked_return_type = "GmBernoulliUpdateResult")]
 pub fn gm_bernoulli_update(
     #[wasm_bindgen(unchecked_param_type = "GmBernoulliUpdateOptions")] options: JsValue,
@@ -404,38 +418,41 @@ pub fn gm_bernoulli_update(
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct BernoulliFilterConfig {
-    /// r_{0|0}.
+    /// The initial existence probability r_{0|0} ∈ [0, 1].
     pub existence: f64,
-    /// p_{0|0} (weights sum to 1).
+    /// The initial spatial density p_{0|0}, a Gaussian mixture (weights sum to 1).
     pub mixture: Vec<WeightedGaussian>,
-    /// F, Q.
+    /// The motion model: transition matrix F and process noise covariance Q.
     pub transition: Transition,
-    /// p_S (default 0.99).
+    /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives one
+    /// step (default 0.99).
     #[serde(default = "core_filters::default_survival")]
     pub survival: f64,
-    /// p_b, b(x); omitted: no birth.
+    /// Object birth: the birth probability p_b and birth density b(x); omitted: no birth.
     #[tsify(optional)]
     pub birth: Option<BirthOptions>,
-    /// n_s (default 2).
+    /// The number n_s of position components: the first n_s state components are the position that
+    /// regions refer to (default 2).
     #[serde(default = "core_filters::default_position_dims")]
     pub position_dims: usize,
-    /// p_D, fov.
+    /// Detection: the detection probability p_D inside the field of view S.
     pub detection: DetectionOptions,
-    /// λ_c, c̃.
+    /// Clutter (false reports): the rate λ_c and density c̃.
     pub clutter: ClutterOptions,
-    /// H, R for `update({ measurements })`.
+    /// The likelihood (measurement matrix H, noise covariance R) for `update({ measurements })`.
     #[tsify(optional)]
     pub likelihood: Option<LikelihoodOptions>,
-    /// GM filter only.
+    /// The splitting step (GM filter only); omitted: the defaults.
     #[tsify(optional, type = "SplittingOptions")]
     pub splitting: Option<SplittingOptions>,
-    /// GM filter only.
+    /// The reduction after each update (GM filter only); omitted: prune 1e-6, merge within 2,
+    /// Runnalls to 100.
     #[tsify(optional)]
     pub reduction: Option<ReductionOptionsJs>,
     /// Regions the object cannot occupy.
     #[tsify(optional)]
     pub exclusions: Option<Vec<Region>>,
-    /// Particle filter: N (default 5000, at most 200000).
+    /// Particle filter: the number of particles N (default 5000, at most 200000).
     #[serde(default = "core_filters::default_particles")]
     pub particles: usize,
     /// Particle filter: birth particles per prediction (default N/10).
@@ -548,29 +565,31 @@ fn scan_error(e: fisst::Error) -> JsValue {
     core_error(e.map_paths(js_path))
 }
 
-/// Options of `estimate`: the loss (7) of the optimal Bernoulli estimate, `radius` and `costs`
+/// Options of `estimate`: the loss (7) of the optimal Bernoulli estimate (Narykov, Üney & Ralph,
+/// "Optimal Bernoulli point estimation with applications" (paper 000)), `radius` and `costs`
 /// together (`FilterEstimateLoss`); omitted (or neither): no `report`.
 #[derive(Deserialize, Tsify, Default)]
 #[tsify(type = "FilterEstimateLoss | { radius?: undefined; costs?: undefined }")]
 pub struct FilterEstimateOptions {
-    /// r0 > 0 (a position distance).
+    /// The radius r0 > 0 of the loss's tolerance ball (a position distance).
     #[tsify(optional)]
     pub radius: Option<f64>,
-    /// The costs.
+    /// The costs of the loss (7).
     #[tsify(optional)]
     pub costs: Option<BernoulliCosts>,
 }
 
-/// `estimate()`'s result.
+/// The result of the filters' `estimate()`: the posterior existence, MMSE state and covariance.
 #[derive(Serialize, Tsify)]
 pub struct FilterEstimateResult {
-    /// r.
+    /// The posterior existence probability r ∈ [0, 1].
     pub existence: f64,
-    /// The MMSE state.
+    /// The MMSE (posterior mean) state, length n.
     pub mean: Vec<f64>,
-    /// The posterior covariance, rows.
+    /// The posterior covariance, n rows of n numbers.
     pub cov: Vec<Vec<f64>>,
-    /// The optimal Bernoulli point estimate (paper 000) on the position marginal; null
+    /// The optimal Bernoulli point estimate (Theorem III.3 of Narykov, Üney & Ralph, "Optimal
+    /// Bernoulli point estimation with applications" (paper 000)) on the position marginal; null
     /// without a loss.
     #[tsify(type = "BernoulliEstimateResult | null")]
     pub report: Option<BernoulliEstimateResult>,
@@ -654,7 +673,9 @@ fn estimate_result(e: FilterEstimate) -> FilterEstimateResult {
     }
 }
 
-/// The GM Bernoulli filter (paper 001, Algorithm 3). Call `free()` when done.
+/// The GM Bernoulli filter (Algorithm 3 of LeGrand & Ferrari, "Split Happens! Imprecise and
+/// negative information in Gaussian mixture random finite set filtering" (paper 001)). Call
+/// `free()` when done.
 #[wasm_bindgen(js_name = GmBernoulliFilter)]
 pub struct GmBernoulliFilterJs {
     inner: core_filters::GmBernoulliFilter,
@@ -662,7 +683,7 @@ pub struct GmBernoulliFilterJs {
 
 #[wasm_bindgen(js_class = GmBernoulliFilter)]
 impl GmBernoulliFilterJs {
-    /// Validates `config`.
+    /// A filter with the initial Bernoulli of `config`; validates `config`.
     #[wasm_bindgen(constructor)]
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "BernoulliFilterConfig")] config: JsValue,
@@ -707,13 +728,13 @@ impl GmBernoulliFilterJs {
         ))
     }
 
-    /// r.
+    /// The current existence probability r ∈ [0, 1].
     #[wasm_bindgen(getter)]
     pub fn existence(&self) -> f64 {
         self.inner.existence()
     }
 
-    /// p(x) (a copy).
+    /// The current spatial density p(x), a Gaussian mixture (a copy).
     #[wasm_bindgen(getter, unchecked_return_type = "MixtureComponent[]")]
     pub fn mixture(&self) -> JsResult<JsValue> {
         write(&types::mixture_out(self.inner.mixture()))
@@ -740,7 +761,10 @@ struct UpdateInfoJs {
     split_components: usize,
 }
 
-/// The Bernoulli particle filter (Ristic, Vo, Vo & Farina). Call `free()` when done.
+/// The Bernoulli particle filter (Ristic, Vo, Vo & Farina, "A tutorial on Bernoulli filters:
+/// theory, implementation and applications", reference 23 of LeGrand & Ferrari, "Split Happens!
+/// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper
+/// 001)), with the models of a `BernoulliFilterConfig`. Call `free()` when done.
 #[wasm_bindgen(js_name = ParticleBernoulliFilter)]
 pub struct ParticleBernoulliFilterJs {
     inner: core_filters::ParticleBernoulliFilter,
@@ -749,7 +773,8 @@ pub struct ParticleBernoulliFilterJs {
 
 #[wasm_bindgen(js_class = ParticleBernoulliFilter)]
 impl ParticleBernoulliFilterJs {
-    /// Validates `config` (with `particles`, `mcmcMoves`, `seed`).
+    /// A filter with N particles drawn from the initial Bernoulli of `config`; validates `config`
+    /// (with `particles`, `mcmcMoves`, `seed`).
     #[wasm_bindgen(constructor)]
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "BernoulliFilterConfig")] config: JsValue,
@@ -770,12 +795,13 @@ impl ParticleBernoulliFilterJs {
         })
     }
 
-    /// One prediction.
+    /// One prediction step (survival, birth and the motion model of `config`).
     pub fn predict(&mut self) {
         self.inner.predict();
     }
 
-    /// As `GmBernoulliFilter.update`.
+    /// The update with `Region[]` or `{ measurements }`, as `GmBernoulliFilter.update`. Returns
+    /// `{ delta, splitComponents }`.
     #[wasm_bindgen(unchecked_return_type = "{ delta: number; splitComponents: number }")]
     pub fn update(
         &mut self,
@@ -788,7 +814,8 @@ impl ParticleBernoulliFilterJs {
         })
     }
 
-    /// `{ existence, mean, cov, report }`.
+    /// The current estimate `{ existence, mean, cov, report }`; options `{ radius, costs }` for
+    /// `report`.
     #[wasm_bindgen(unchecked_return_type = "FilterEstimateResult")]
     pub fn estimate(
         &self,
@@ -807,7 +834,7 @@ impl ParticleBernoulliFilterJs {
         write(&estimate_result(e))
     }
 
-    /// r.
+    /// The current existence probability r ∈ [0, 1].
     #[wasm_bindgen(getter)]
     pub fn existence(&self) -> f64 {
         self.inner.existence()
@@ -826,20 +853,22 @@ impl ParticleBernoulliFilterJs {
         write(&rows)
     }
 
-    /// The particle weights.
+    /// The normalised particle weights, one per particle (equal after an update).
     #[wasm_bindgen(getter)]
     pub fn weights(&self) -> Vec<f64> {
         self.inner.weights().to_vec()
     }
 
-    /// The seed in use.
+    /// The seed of the filter's random numbers (the config's, or the fresh one drawn).
     #[wasm_bindgen(getter)]
     pub fn seed(&self) -> f64 {
         self.seed as f64
     }
 }
 
-/// Options of `airportScenario`.
+/// Options of `airportScenario` (the airport example of LeGrand & Ferrari, "Split Happens!
+/// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper 001),
+/// Section V-C).
 #[derive(Deserialize, Tsify)]
 pub struct AirportScenarioOptions {
     /// The seed (integer in [0, 2^53 − 1]); omitted: fresh entropy.
@@ -850,100 +879,103 @@ pub struct AirportScenarioOptions {
     pub steps: usize,
 }
 
-/// An anchor of the airport example.
+/// An anchor of the airport example: a named landmark whose association disc is a report.
 #[derive(Serialize, Tsify)]
 pub struct AnchorOut {
-    /// Its name.
+    /// The anchor's name ("taco stand").
     pub name: String,
-    /// r_a.
+    /// The anchor's position r_a = [x, y].
     pub position: [f64; 2],
-    /// 2 d_a / 3.
+    /// The radius 2 d_a / 3 of the anchor's association disc, d_a the distance to the nearest other
+    /// anchor.
     pub radius: f64,
 }
 
 /// The truth at one report time.
 #[derive(Serialize, Tsify)]
 pub struct TruthOut {
-    /// Seconds.
+    /// The report time t = k T, in seconds.
     pub t: f64,
-    /// (x, y, ẋ, ẏ).
+    /// The true state (x, y, ẋ, ẏ): position and velocity.
     pub state: [f64; 4],
 }
 
-/// The filter configuration of the example, ready for both classes.
+/// The filter configuration of the example, ready for both classes (a `BernoulliFilterConfig`).
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct AirportConfig {
-    /// r_{0|0}.
+    /// The initial existence probability r_{0|0} ∈ [0, 1].
     pub existence: f64,
-    /// p_{0|0}.
+    /// The initial spatial density p_{0|0}, a Gaussian mixture.
     pub mixture: Vec<MixtureComponent>,
-    /// F, Q.
+    /// The motion model: transition matrix F and process noise covariance Q.
     pub transition: Transition,
-    /// p_S.
+    /// The survival probability p_S ∈ [0, 1]: the probability that the person stays one more step.
     pub survival: f64,
-    /// p_b, b(x).
+    /// Object birth: the birth probability p_b and birth density b(x).
     pub birth: AirportBirth,
-    /// 2.
+    /// The number n_s of position components: 2 (x, y).
     pub position_dims: usize,
-    /// p_D = 0.9 on S.
+    /// Detection: detection probability p_D = 0.9 inside the field of view S.
     pub detection: AirportDetection,
-    /// λ_c = 0.25, c̃ = 1/10.
+    /// Clutter: rate λ_c = 0.25 false reports per scan, density c̃ = 1/10 (one of ten anchors).
     pub clutter: AirportClutter,
-    /// The exclusions.
+    /// The exclusion regions the person cannot occupy.
     pub exclusions: Vec<Region>,
-    /// 5000.
+    /// Particle filter: the number of particles N, 5000.
     pub particles: usize,
-    /// 1.
+    /// Particle filter: MCMC moves per update, 1.
     pub mcmc_moves: usize,
-    /// The scenario's seed.
+    /// The scenario's seed, for the particle filter.
     pub seed: u64,
 }
 
-/// Birth of the example.
+/// Object birth of the example.
 #[derive(Serialize, Tsify)]
 pub struct AirportBirth {
-    /// p_b.
+    /// The birth probability p_b ∈ [0, 1]: the probability that a person appears in one step.
     pub probability: f64,
-    /// b(x).
+    /// The birth density b(x) of a new person's state, a Gaussian mixture.
     pub mixture: Vec<MixtureComponent>,
 }
 
 /// Detection of the example.
 #[derive(Serialize, Tsify)]
 pub struct AirportDetection {
-    /// p_D.
+    /// The detection probability p_D ∈ [0, 1] inside the field of view.
     pub probability: f64,
-    /// S.
+    /// The field of view S: the union of the anchors' association discs.
     pub fov: Region,
 }
 
-/// Clutter of the example.
+/// Clutter (false reports) of the example.
 #[derive(Serialize, Tsify)]
 pub struct AirportClutter {
-    /// λ_c.
+    /// The clutter rate λ_c ≥ 0: the mean number of false reports per scan.
     pub rate: f64,
-    /// c̃.
+    /// The clutter density c̃ ≥ 0 of a false report (1 / number of anchors).
     pub density: f64,
 }
 
-/// Result of `airportScenario`.
+/// Result of `airportScenario`: the airport example of LeGrand & Ferrari, "Split Happens! Imprecise
+/// and negative information in Gaussian mixture random finite set filtering" (paper 001), Section
+/// V-C.
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct AirportScenarioResult {
-    /// The anchors.
+    /// The ten anchors, in report-index order.
     pub anchors: Vec<AnchorOut>,
     /// The exclusion regions (four rectangles, then the exterior of the concourse).
     pub exclusions: Vec<Region>,
-    /// The concourse box.
+    /// The concourse, a box [0, 300] × [0, 30].
     pub concourse: Region,
-    /// S, the union of the discs.
+    /// The field of view S: the union of the anchors' association discs.
     pub fov: Region,
-    /// T = 15 s.
+    /// The report interval T = 15 s.
     pub dt: f64,
     /// The configuration of both filters.
     pub config: AirportConfig,
-    /// The truth at each report time.
+    /// The person's true state at each report time.
     pub truth: Vec<TruthOut>,
     /// The reported anchor indices per step.
     pub reports: Vec<Vec<usize>>,
@@ -952,7 +984,7 @@ pub struct AirportScenarioResult {
     pub true_reports: Vec<Option<usize>>,
     /// Whether the person was in S per step.
     pub in_fov: Vec<bool>,
-    /// The seed used.
+    /// The seed used (the option's, or the fresh one drawn).
     pub seed: u64,
 }
 
@@ -969,9 +1001,10 @@ fn box_region(b: &fisst::regions::AxisBox) -> Region {
     })
 }
 
-/// The airport example of paper 001, Section V-C (Figs. 6–8): a seeded walk through a
-/// concourse with ten anchors and four exclusion rectangles, and the reports. Options
-/// `{ seed, steps = 60 }`; report `a` at step k is `{ disc: { center: anchors[a].position,
+/// The airport example of LeGrand & Ferrari, "Split Happens! Imprecise and negative information in
+/// Gaussian mixture random finite set filtering" (paper 001), Section V-C (Figs. 6–8): a seeded
+/// walk through a concourse with ten anchors and four exclusion rectangles, and the reports.
+/// Options `{ seed, steps = 60 }`; report `a` at step k is `{ disc: { center: anchors[a].position,
 /// radius: anchors[a].radius } }`.
 #[wasm_bindgen(js_name = airportScenario, unchecked_return_type = "AirportScenarioResult")]
 pub fn airport_scenario(

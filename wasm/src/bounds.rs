@@ -1,5 +1,6 @@
 //! `jdeBoundNoClutter`, `gaussianFisherInformation`, `jdeSequentialBound`, `jdeBound`: the
-//! error bounds for joint detection and estimation of paper 002 (Rezaeian & Vo).
+//! error bounds for joint detection and estimation of paper 002 (Rezaeian & Vo, "Error bounds
+//! for joint detection and estimation of a single object with random finite set observation").
 
 use serde::{Deserialize, Serialize};
 use tsify::Tsify;
@@ -54,9 +55,10 @@ export type JdeExample2Result = Example2;
 export type JdeExample2RegularityResult = Example2Regularity;
 "#;
 
-/// Corollary 3 of paper 002 in the Gaussian form (31). Options `{ existence,
-/// detectionProbability, priorVariance, posteriorVariance, falseAlarmError, missError }`;
-/// returns `{ bound, existenceThreshold, declareOnEmpty, hpe, lpe, mapThreshold, mapBound }`.
+/// Corollary 3 of Rezaeian & Vo, "Error bounds for joint detection and estimation of a single
+/// object with random finite set observation" (paper 002) in the Gaussian form (31). Options `{
+/// existence, detectionProbability, priorVariance, posteriorVariance, falseAlarmError, missError
+/// }`; returns `{ bound, existenceThreshold, declareOnEmpty, hpe, lpe, mapThreshold, mapBound }`.
 #[wasm_bindgen(js_name = jdeBoundNoClutter, unchecked_return_type = "JdeBoundNoClutterResult")]
 pub fn jde_bound_no_clutter(
     #[wasm_bindgen(unchecked_param_type = "JdeBoundNoClutterOptions")] options: JsValue,
@@ -65,8 +67,9 @@ pub fn jde_bound_no_clutter(
     write(&Renamed::new(&o.bound().or_throw_rendered("options")?))
 }
 
-/// The Fisher information J_1 of p(x, z) for z = a x + v and its inverse (paper 002,
-/// Example 1 corrected). Options `{ priorVariance, gain, noiseVariance }`; returns
+/// The Fisher information J_1 of p(x, z) for z = a x + v and its inverse (Example 1 of Rezaeian &
+/// Vo, "Error bounds for joint detection and estimation of a single object with random finite set
+/// observation" (paper 002), corrected). Options `{ priorVariance, gain, noiseVariance }`; returns
 /// `{ information, posteriorVariance }`.
 #[wasm_bindgen(
     js_name = gaussianFisherInformation,
@@ -81,9 +84,10 @@ pub fn gaussian_fisher_information(
     ))
 }
 
-/// The IRF (35) and Enumeration (37) bounds of paper 002 for k = 1 … steps observations.
-/// Options `{ method, priorInformation, detectedInformation, detectionProbability, steps }`;
-/// returns `{ bound }` (Enum ≥ IRF; equal at P̄o ∈ {0, 1}).
+/// The IRF (35) and Enumeration (37) bounds of Rezaeian & Vo, "Error bounds for joint detection and
+/// estimation of a single object with random finite set observation" (paper 002) for k = 1 … steps
+/// observations. Options `{ method, priorInformation, detectedInformation, detectionProbability,
+/// steps }`; returns `{ bound }` (Enum ≥ IRF; equal at P̄o ∈ {0, 1}).
 #[wasm_bindgen(js_name = jdeSequentialBound, unchecked_return_type = "JdeSequentialBoundResult")]
 pub fn jde_sequential_bound(
     #[wasm_bindgen(unchecked_param_type = "JdeSequentialBoundOptions")] options: JsValue,
@@ -92,39 +96,39 @@ pub fn jde_sequential_bound(
     write(&Renamed::new(&o.bound().or_throw_rendered("options")?))
 }
 
-/// N(mean, variance).
+/// A 1D Gaussian density N(mean, variance).
 #[derive(Deserialize, Tsify)]
 pub struct GaussianShape {
-    /// The mean (finite).
+    /// The mean, a finite number.
     pub mean: f64,
     /// The variance (> 0, a normal float: at least 2.2250738585072014e-308).
     pub variance: f64,
 }
 
-/// U[low, high].
+/// A 1D uniform density U[low, high].
 #[derive(Deserialize, Tsify)]
 pub struct UniformShape {
-    /// The lower end.
+    /// The lower end of the support, finite.
     pub low: f64,
-    /// The upper end (> low).
+    /// The upper end of the support, finite and > low.
     pub high: f64,
 }
 
-/// One component of a Gaussian mixture.
+/// One component of a 1D Gaussian mixture.
 #[derive(Deserialize, Tsify)]
 pub struct MixtureShape {
-    /// Weight > 0 (the weights are normalised).
+    /// The component's weight, > 0 (the weights are normalised).
     pub weight: f64,
-    /// Mean.
+    /// The component's mean, finite.
     pub mean: f64,
-    /// Variance > 0.
+    /// The component's variance, > 0.
     pub variance: f64,
 }
 
 /// A tabulated density: linear interpolation between knots, 0 outside, normalised.
 #[derive(Deserialize, Tsify)]
 pub struct TableShape {
-    /// Knots, strictly increasing (2 to 10,000).
+    /// The knots x, strictly increasing (2 to 10,000).
     pub x: Numbers,
     /// Density ≥ 0 at each knot (any positive scale: it is normalised).
     pub density: Numbers,
@@ -136,13 +140,13 @@ pub struct TableShape {
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub enum DensityShape {
-    /// Gaussian.
+    /// `{ gaussian: { mean, variance } }`: a Gaussian.
     Gaussian(GaussianShape),
-    /// Uniform.
+    /// `{ uniform: { low, high } }`: a uniform density.
     Uniform(UniformShape),
-    /// Gaussian mixture.
+    /// `{ mixture: [...] }`: a Gaussian mixture.
     Mixture(Vec<MixtureShape>),
-    /// Tabulated.
+    /// `{ table: { x, density } }`: a tabulated density.
     Table(TableShape),
 }
 
@@ -164,12 +168,13 @@ impl DensityShape {
     }
 }
 
-/// A tabulated P_o(x): linear interpolation, held constant beyond the end knots.
+/// A tabulated detection probability P_o(x): linear interpolation, held constant beyond the end
+/// knots.
 #[derive(Deserialize, Tsify)]
 pub struct DetectionTableShape {
-    /// Knots, strictly increasing (2 to 10,000).
+    /// The knots x, strictly increasing (2 to 10,000).
     pub x: Numbers,
-    /// P_o at each knot, in [0, 1].
+    /// The detection probability P_o ∈ [0, 1] at each knot.
     pub probability: Numbers,
 }
 
@@ -179,13 +184,14 @@ struct DetectionTableWrapper {
     table: DetectionTableShape,
 }
 
-/// P_o(x): a number in [0, 1] (constant) or `{ table: { x, probability } }`.
+/// The detection probability P_o(x): a number in [0, 1] (constant) or `{ table: { x,
+/// probability } }`.
 #[derive(Tsify)]
 #[tsify(type = "number | { table: DetectionTableShape }")]
 pub enum DetectionShape {
-    /// Constant.
+    /// A constant detection probability in [0, 1].
     Constant(f64),
-    /// Tabulated.
+    /// `{ table: { x, probability } }`: a tabulated detection probability.
     Table(DetectionTableShape),
 }
 
@@ -229,9 +235,9 @@ export type GainShape = number | (number[] | Float64Array)[];
 export type OffsetShape = number | number[] | Float64Array;
 "#;
 
-/// a, or H row by row.
+/// The gain a, or the measurement matrix H row by row.
 type GainShape = ScalarOr<Vec<f64>>;
-/// b, or one number per measurement coordinate.
+/// The offset b, or one number per measurement coordinate.
 type OffsetShape = ScalarOr<f64>;
 
 /// At most this many state coordinates l, and this many measurement coordinates m.
@@ -243,23 +249,23 @@ pub use bounds::MAX_DIMS;
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct ObservationShape {
-    /// P_o(x): a number in [0, 1] or `{ table: { x, probability } }` (a
+    /// The detection probability P_o(x): a number in [0, 1] or `{ table: { x, probability } }` (a
     /// `multivariateGaussian` prior takes a constant only).
     pub detection_probability: DetectionShape,
-    /// a, a finite number (default 1); with a `multivariateGaussian` prior H, m rows of l
+    /// The gain a, a finite number (default 1); with a `multivariateGaussian` prior H, m rows of l
     /// finite numbers (1 ≤ m ≤ 64; a number is H = [[a]] when l = 1). False alarms or
     /// clutter need m = 1: their densities are on the measurement line.
     #[tsify(optional, type = "GainShape")]
     pub gain: Option<GainShape>,
-    /// b (default 0): a number, or with a `multivariateGaussian` prior m numbers (a number
-    /// serves m = 1).
+    /// The offset b (default 0): a number, or with a `multivariateGaussian` prior m numbers (a
+    /// number serves m = 1).
     #[tsify(optional, type = "OffsetShape")]
     pub offset: Option<OffsetShape>,
-    /// σ_v² > 0, the noise variance of a one-coordinate measurement (required with a 1D
+    /// The measurement noise variance σ_v² > 0 of a one-coordinate measurement (required with a 1D
     /// prior; with a `multivariateGaussian` prior give it or `noiseCov`, and only for m = 1).
     #[tsify(optional)]
     pub noise_variance: Option<f64>,
-    /// R, the m × m noise covariance of a `multivariateGaussian` prior's measurement:
+    /// The measurement noise covariance R, m × m, of a `multivariateGaussian` prior's measurement:
     /// m rows of m numbers or m·m row-major numbers, symmetric positive definite.
     #[tsify(optional)]
     pub noise_cov: Option<Covariance>,
@@ -386,29 +392,30 @@ impl ObservationShape {
 /// Model I's false observations: probability q and density ψ.
 #[derive(Deserialize, Tsify)]
 pub struct FalseAlarmShape {
-    /// q in [0, 1].
+    /// The false alarm probability q ∈ [0, 1]: the probability of one false observation.
     pub probability: f64,
-    /// ψ.
+    /// The density ψ of a false observation on the measurement line.
     pub density: DensityShape,
 }
 
 /// Model II's Poisson clutter: rate λ and the density of its points (v = λ · density).
 #[derive(Deserialize, Tsify)]
 pub struct ClutterShape {
-    /// λ ≥ 0 (at most 1000).
+    /// The clutter rate λ ≥ 0: the mean number of clutter points (at most 1000).
     pub rate: f64,
-    /// v/λ.
+    /// The density v/λ of one clutter point on the measurement line (v the clutter intensity).
     pub density: DensityShape,
 }
 
-/// `'I'` (Theorem 1: Bernoulli observation with false alarms) or `'II'` (Theorem 2: Poisson
-/// clutter).
+/// The measurement model of Rezaeian & Vo, "Error bounds for joint detection and estimation of a
+/// single object with random finite set observation" (paper 002): `'I'` (Theorem 1: Bernoulli
+/// observation with false alarms) or `'II'` (Theorem 2: Poisson clutter).
 #[derive(Deserialize, Tsify, Clone, Copy)]
 pub enum MeasurementModel {
-    /// Model I (13).
+    /// `'I'`: model I (13), a Bernoulli observation with false alarms.
     #[serde(rename = "I")]
     One,
-    /// Model II (22).
+    /// `'II'`: model II (22), Poisson clutter.
     #[serde(rename = "II")]
     Two,
 }
@@ -419,17 +426,18 @@ pub enum MeasurementModel {
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub enum PriorShape {
-    /// Gaussian N(mean, variance).
+    /// `{ gaussian: { mean, variance } }`: a Gaussian N(mean, variance).
     Gaussian(GaussianShape),
-    /// Uniform.
+    /// `{ uniform: { low, high } }`: a uniform density.
     Uniform(UniformShape),
-    /// Gaussian mixture (1 to 1,000 components).
+    /// `{ mixture: [...] }`: a Gaussian mixture (1 to 1,000 components).
     Mixture(Vec<MixtureShape>),
-    /// Tabulated.
+    /// `{ table: { x, density } }`: a tabulated density.
     Table(TableShape),
-    /// N(mean, cov) in R^l: `mean` l finite numbers (1 ≤ l ≤ 64), `cov` l rows of l numbers
-    /// (or l·l row-major numbers; a bare number when l = 1), symmetric positive definite.
-    /// The observation then has a constant P_o, gain rows H and `noiseCov`.
+    /// `{ multivariateGaussian: { mean, cov } }`: N(mean, cov) in R^l: `mean` l finite numbers (1 ≤
+    /// l ≤ 64), `cov` l rows of l numbers (or l·l row-major numbers; a bare number when l = 1),
+    /// symmetric positive definite. The observation then has a constant P_o, gain rows H and
+    /// `noiseCov`.
     MultivariateGaussian(Gaussian),
 }
 
@@ -453,19 +461,20 @@ impl PriorShape {
     }
 }
 
-/// Options of `jdeBound`.
+/// Options of `jdeBound` (Theorems 1 and 2 of Rezaeian & Vo, "Error bounds for joint detection and
+/// estimation of a single object with random finite set observation" (paper 002)).
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct JdeBoundOptions {
-    /// `'I'` or `'II'`.
+    /// The measurement model: `'I'` (false alarms) or `'II'` (Poisson clutter).
     pub model: MeasurementModel,
-    /// r in [0, 1].
+    /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
-    /// f, the prior density of the state: a 1D density, or `{ multivariateGaussian: { mean,
+    /// The prior density f of the state: a 1D density, or `{ multivariateGaussian: { mean,
     /// cov } }` for a state in R^l (then `result.components` holds the bound of each
     /// coordinate).
     pub prior: PriorShape,
-    /// P_o and g.
+    /// The observation: the detection probability P_o and the likelihood g(z|x).
     pub observation: ObservationShape,
     /// Model I: `{ probability, density }` (q, ψ); omitted: q = 0. Not allowed with model II.
     #[tsify(optional)]
@@ -473,25 +482,25 @@ pub struct JdeBoundOptions {
     /// Model II: `{ rate, density }` (λ, v/λ); omitted: λ = 0. Not allowed with model I.
     #[tsify(optional)]
     pub clutter: Option<ClutterShape>,
-    /// e_0² ≥ 0, the squared error of a false target: the square itself (of the whole state;
+    /// The squared error e_0² ≥ 0 of a false target: the square itself (of the whole state;
     /// coordinate i of a vector state uses e_0²/l).
     pub false_alarm_error: f64,
-    /// e_1² ≥ 0, the squared error of a missed target: the square itself (of the whole state;
+    /// The squared error e_1² ≥ 0 of a missed target: the square itself (of the whole state;
     /// coordinate i of a vector state uses e_1²/l).
     pub miss_error: f64,
-    /// l, the state dimension, an integer in [1, 64] (default: 1 for a 1D prior, the length
+    /// The state dimension l, an integer in [1, 64] (default: 1 for a 1D prior, the length
     /// of `prior.multivariateGaussian.mean` otherwise, which it must equal; l > 1 needs a
     /// `multivariateGaussian` prior).
     #[tsify(optional)]
     pub dims: Option<usize>,
-    /// Relative quadrature tolerance in [1e-14, 0.1] (default 1e-10).
+    /// The relative quadrature tolerance, in [1e-14, 0.1] (default 1e-10).
     #[tsify(optional)]
     pub tolerance: Option<f64>,
     /// Monte Carlo samples per cardinality n ≥ 2 (n ≥ 3 with `quadratureCardinality: 2`)
     /// (model II with clutter; 100 to 1,000,000, default 20,000; samples × Σ n at most 10^7).
     #[tsify(optional)]
     pub samples: Option<usize>,
-    /// Seed of the Monte Carlo (integer; omitted: fresh entropy, returned as `seed`).
+    /// The seed of the Monte Carlo (integer; omitted: fresh entropy, returned as `seed`).
     #[tsify(optional)]
     pub seed: Option<u64>,
     /// Model II with clutter: the largest |Z| = n integrated by deterministic quadrature, 1
@@ -505,36 +514,37 @@ pub struct JdeBoundOptions {
     pub quadrature_cardinality: Option<usize>,
 }
 
-/// One summand of (17) or (23).
+/// One summand of the bound (17) or (23).
 #[derive(Serialize, Tsify)]
 pub struct BoundTerm {
     /// Which summand: the estimation error, the undetected target, the missed detection or the
     /// false target.
     #[tsify(type = "'estimation' | 'undetected' | 'missed' | 'falseTarget'")]
     pub name: &'static str,
-    /// Its value.
+    /// The summand's value (a squared error, ≥ 0).
     pub value: f64,
 }
 
-/// The n-point part of Theorem 2 (model I: only n = 1).
+/// The n-point part of Theorem 2 of Rezaeian & Vo, "Error bounds for joint detection and estimation
+/// of a single object with random finite set observation" (paper 002) (model I: only n = 1).
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct CardinalityTerm {
-    /// n = |Z|.
+    /// The number of observed points n = |Z|.
     pub n: usize,
-    /// C_{n−1}, the probability of n − 1 clutter points.
+    /// The probability C_{n−1} of n − 1 clutter points.
     pub probability: f64,
-    /// w_n (20)/(25).
+    /// The mass w_n (20)/(25) of p_n on the MAP region, in [0, 1].
     pub w: f64,
-    /// J'_n⁻¹ (with the 1/w_n² of (20)/(25)); for a vector state its trace.
+    /// The inverse information J'_n⁻¹ (with the 1/w_n² of (20)/(25)); for a vector state its trace.
     pub inverse_information: f64,
-    /// Pr(the detector rejects n clutter-only points).
+    /// The probability that the detector rejects n clutter-only points.
     pub clutter_null: f64,
     /// `'quadrature'`, `'monte-carlo'` or (a vector state without false observations)
     /// `'closed-form'`.
     #[tsify(type = "'quadrature' | 'monte-carlo' | 'closed-form'")]
     pub method: &'static str,
-    /// Error estimate of `inverseInformation` (Monte Carlo: one standard error).
+    /// The error estimate of `inverseInformation` (Monte Carlo: one standard error).
     pub error: f64,
 }
 
@@ -548,26 +558,28 @@ pub struct JdeComponentBound {
     /// This coordinate's rule on Z = ∅ (each coordinate may pick its own).
     #[tsify(type = "'HPE' | 'LPE'")]
     pub phase: &'static str,
-    /// r* of this coordinate (72): e_0²/(e_0² + (1 − P̄o)(e_1² − l σ_{e,i}²)) without false
-    /// observations (may exceed 1; `Infinity` when HPE never wins).
+    /// The existence threshold r* of this coordinate (72): e_0²/(e_0² + (1 − P̄o)(e_1² − l
+    /// σ_{e,i}²)) without false observations (may exceed 1; `Infinity` when HPE never wins).
     pub existence_threshold: f64,
     /// The summands of (63)/(64) for this coordinate, named as the top-level `terms`.
     pub terms: Vec<BoundTerm>,
-    /// Error estimate of `bound` (quadrature, one Monte Carlo standard error).
+    /// The error estimate of `bound` (quadrature, one Monte Carlo standard error).
     pub error: f64,
-    /// The HPE bound of this coordinate.
+    /// The HPE bound of this coordinate: the estimator declares {x*} on Z = ∅.
     pub hpe: f64,
-    /// The LPE bound of this coordinate.
+    /// The LPE bound of this coordinate: the estimator declares ∅ on Z = ∅.
     pub lpe: f64,
-    /// [J'_1⁻¹]_ii (63), or Σ_n C_n [J'_{1+n}⁻¹]_ii (64).
+    /// The estimation term of this coordinate: [J'_1⁻¹]_ii (63), or Σ_n C_n [J'_{1+n}⁻¹]_ii (64).
     pub inverse_information: f64,
-    /// x*_i, the prior mean of this coordinate (P_o is constant, so f_d' = f).
+    /// The prior mean x*_i of this coordinate (P_o is constant, so f_d' = f).
     pub undetected_mean: f64,
-    /// σ_{e,i}² = P_ii, the prior variance of this coordinate.
+    /// The prior variance σ_{e,i}² = P_ii of this coordinate.
     pub undetected_variance: f64,
 }
 
-/// Result of `jdeBound`.
+/// Result of `jdeBound`: the bound of Theorem 1 or 2 of Rezaeian & Vo, "Error bounds for joint
+/// detection and estimation of a single object with random finite set observation" (paper 002),
+/// with its parts.
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct JdeBoundResult {
@@ -575,37 +587,40 @@ pub struct JdeBoundResult {
     /// state with the Euclidean metric, one rule on Z = ∅ for the whole state (≥ the sum of
     /// `components[i].bound`, which may each pick their own rule).
     pub bound: f64,
-    /// The rule on Z = ∅ of the bound's estimator.
+    /// The rule on Z = ∅ of the bound's estimator: `'HPE'` declares {x*}, `'LPE'` declares ∅.
     #[tsify(type = "'HPE' | 'LPE'")]
     pub phase: &'static str,
-    /// r* (18)/(24) (may exceed 1; `Infinity` when HPE never wins).
+    /// The existence threshold r* (18)/(24) above which HPE wins (may exceed 1; `Infinity` when HPE
+    /// never wins).
     pub existence_threshold: f64,
     /// The summands of (17)/(23) in order: estimation, undetected, missed, falseTarget.
     pub terms: Vec<BoundTerm>,
-    /// Error estimate of `bound` (quadrature, one Monte Carlo standard error).
+    /// The error estimate of `bound` (quadrature, one Monte Carlo standard error).
     pub error: f64,
-    /// The HPE bound.
+    /// The HPE bound: the estimator declares {x*} on Z = ∅.
     pub hpe: f64,
-    /// The LPE bound.
+    /// The LPE bound: the estimator declares ∅ on Z = ∅.
     pub lpe: f64,
-    /// P̄_o (14).
+    /// The mean detection probability P̄_o (14) = ∫ P_o(x) f(x) dx, in [0, 1].
     pub mean_detection: f64,
-    /// x*, the mean of f_d' (a vector state: of its first coordinate; see
-    /// `components[i].undetectedMean`).
+    /// The mean x* of f_d', an undetected target's state (a vector state: of its first coordinate;
+    /// see `components[i].undetectedMean`).
     pub undetected_mean: f64,
-    /// σ_e² (16) (a vector state: tr P).
+    /// The variance σ_e² (16) of an undetected target's state, the variance of f_d' (a vector
+    /// state: tr P).
     pub undetected_variance: f64,
-    /// η1 or η2.
+    /// The probability that a target-free observation is declared empty, Pr(Z ≠ ∅, declared ∅ |
+    /// X = ∅): η1 (model I) or η2 (model II).
     pub eta: f64,
     /// The MAP region of one-point observations, `[low, high]` intervals (a vector state:
     /// of the measurement line; empty when the gain has more than one row, where there are
     /// no false observations and every measurement is kept).
     pub region: Vec<(f64, f64)>,
-    /// Per cardinality n.
+    /// The n-point parts of Theorem 2, one per cardinality n = |Z| (model I: only n = 1).
     pub cardinalities: Vec<CardinalityTerm>,
-    /// false when f·P_o does not vanish at the prior's support ends (uniform, tables ending
-    /// above 0): the information inequality's regularity fails, the estimation term may not
-    /// be a bound.
+    /// Whether the bound is regular: false when f·P_o does not vanish at the prior's support ends
+    /// (uniform, tables ending above 0): the information inequality's regularity fails, the
+    /// estimation term may not be a bound.
     pub regular: bool,
     /// The Monte Carlo seed used (model II with clutter only).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -646,17 +661,20 @@ export type JdeMonteCarloModelOptions = (JdeMonteCarloOptions & { model: 'I'; cl
  */
 export type JdeVectorBoundResult = JdeBoundResult & Required<Pick<JdeBoundResult, 'components' | 'inverseInformationMatrix'>>;
 /**
- * Theorems 1 and 2 of paper 002 for a state in R^l (a `multivariateGaussian` prior): the
+ * Theorems 1 and 2 of Rezaeian & Vo, "Error bounds for joint detection and estimation of a
+ * single object with random finite set observation" (paper 002) for a state in R^l (a
+ * `multivariateGaussian` prior): the
  * bound with each coordinate's (`components`) and the l × l `inverseInformationMatrix`.
  */
 export function jdeBound(options: JdeBoundModelOptions & { prior: { multivariateGaussian: Gaussian } }): JdeVectorBoundResult;
 "#;
 
-/// Theorems 1 and 2 of paper 002, and their vector extensions (63)–(72) for a
-/// `multivariateGaussian` prior. Options `{ model, existence, prior, observation,
+/// Theorems 1 and 2 of Rezaeian & Vo, "Error bounds for joint detection and estimation of a single
+/// object with random finite set observation" (paper 002), and their vector extensions (63)–(72)
+/// for a `multivariateGaussian` prior. Options `{ model, existence, prior, observation,
 /// falseAlarm?, clutter?, falseAlarmError, missError, dims?, tolerance?, samples?, seed?,
-/// quadratureCardinality? }`; returns `{ bound, phase, existenceThreshold, terms, error, … }`
-/// and, for a vector state, `components` and `inverseInformationMatrix`.
+/// quadratureCardinality? }`; returns `{ bound, phase, existenceThreshold, terms, error, … }` and,
+/// for a vector state, `components` and `inverseInformationMatrix`.
 #[wasm_bindgen(js_name = jdeBound, unchecked_return_type = "JdeBoundResult")]
 pub fn jde_bound(
     #[wasm_bindgen(unchecked_param_type = "JdeBoundModelOptions")] options: JsValue,
@@ -821,9 +839,11 @@ fn result(b: &bounds::JdeBound, seed: Option<u64>) -> JdeBoundResult {
     }
 }
 
-/// Example 2 of paper 002 at one (r, P_o, q): the bound with (20)'s J'_1 and with (32)'s.
-/// Options `{ existence, detectionProbability, falseAlarmProbability, falseAlarmError,
-/// missError? }`; returns `{ bound, paperBound, information, paperInformation, w, eta, … }`.
+/// Example 2 of Rezaeian & Vo, "Error bounds for joint detection and estimation of a single object
+/// with random finite set observation" (paper 002) at one (r, P_o, q): the bound with (20)'s J'_1
+/// and with (32)'s. Options `{ existence, detectionProbability, falseAlarmProbability,
+/// falseAlarmError, missError? }`; returns `{ bound, paperBound, information, paperInformation, w,
+/// eta, … }`.
 #[wasm_bindgen(js_name = jdeExample2, unchecked_return_type = "JdeExample2Result")]
 pub fn jde_example2(
     #[wasm_bindgen(unchecked_param_type = "JdeExample2Options")] options: JsValue,
@@ -832,7 +852,9 @@ pub fn jde_example2(
     write(&Renamed::new(&o.example2().or_throw_rendered("options")?))
 }
 
-/// Example 2's regularity failure (r = 1, P_o = 1): 1/J_1 against the posterior mean's MSE.
+/// The regularity failure of Example 2 of Rezaeian & Vo, "Error bounds for joint detection and
+/// estimation of a single object with random finite set observation" (paper 002) (r = 1, P_o = 1):
+/// 1/J_1 against the posterior mean's MSE.
 #[wasm_bindgen(
     js_name = jdeExample2Regularity,
     unchecked_return_type = "JdeExample2RegularityResult"
@@ -846,13 +868,13 @@ pub fn jde_example2_regularity() -> JsResult<JsValue> {
 #[derive(Deserialize, Tsify, Clone, Copy)]
 #[serde(rename_all = "kebab-case")]
 pub enum EmptyRuleShape {
-    /// The cheaper of HPE and LPE.
+    /// `'optimal'`: the cheaper of HPE (declare {x*}) and LPE (declare ∅).
     Optimal,
-    /// MAP detection.
+    /// `'map'`: MAP detection (Section IV-A).
     Map,
-    /// Always {x*}.
+    /// `'declare'`: always declare {x*} (HPE).
     Declare,
-    /// Always ∅.
+    /// `'reject'`: always declare ∅ (LPE).
     Reject,
 }
 
@@ -862,11 +884,11 @@ pub enum EmptyRuleShape {
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub enum MonteCarloPriorShape {
-    /// N(mean, variance).
+    /// `{ gaussian: { mean, variance } }`: a 1D Gaussian N(mean, variance).
     Gaussian(GaussianShape),
-    /// N(mean, cov) in R^l.
+    /// `{ multivariateGaussian: { mean, cov } }`: a Gaussian N(mean, cov) in R^l.
     MultivariateGaussian(Gaussian),
-    /// f(x) = 2x(eˣ − 1) on [0, 1] with g(z|x) = x e^{xz}/(eˣ − 1).
+    /// `'example2'`: f(x) = 2x(eˣ − 1) on [0, 1] with g(z|x) = x e^{xz}/(eˣ − 1).
     Example2,
 }
 
@@ -877,11 +899,12 @@ pub enum MonteCarloPriorShape {
 pub struct JdeMonteCarloOptions {
     /// The measurement model, `'I'` or `'II'`.
     pub model: MeasurementModel,
-    /// r, the probability that the target exists, in [0, 1].
+    /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
-    /// f.
+    /// The prior density f of the target's state.
     pub prior: MonteCarloPriorShape,
-    /// P_o (a constant) and g, as in `jdeBound`.
+    /// The observation: a constant detection probability P_o and the likelihood g, as in
+    /// `jdeBound`.
     pub observation: ObservationShape,
     /// Model I: `{ probability, density }` (q, ψ; the density must be one that draws: any of
     /// `jdeBound`'s); omitted: q = 0.
@@ -890,22 +913,22 @@ pub struct JdeMonteCarloOptions {
     /// Model II: `{ rate, density }` (λ, v/λ); omitted: λ = 0.
     #[tsify(optional)]
     pub clutter: Option<ClutterShape>, // model II only
-    /// e_0² ≥ 0, the squared error (cost) of a false target: the square itself.
+    /// The squared error (cost) e_0² ≥ 0 of a false target: the square itself.
     pub false_alarm_error: f64,
-    /// e_1² ≥ 0, the squared error (cost) of a missed target: the square itself.
+    /// The squared error (cost) e_1² ≥ 0 of a missed target: the square itself.
     pub miss_error: f64,
     /// The rule on Z = ∅ (default `'optimal'`).
     #[tsify(optional)]
     pub empty_rule: Option<EmptyRuleShape>,
-    /// k scans of one target, 1 to 5,000 (default 1; k > 1 needs a Gaussian prior and no
-    /// false alarms or clutter): `result.scans[k − 1]` is the risk after scan k.
+    /// The number k of scans of one target, 1 to 5,000 (default 1; k > 1 needs a Gaussian prior and
+    /// no false alarms or clutter): `result.scans[k − 1]` is the risk after scan k.
     #[tsify(optional)]
     pub scans: Option<usize>,
-    /// Simulated scenes, 2 to 10^7 (default 20,000; samples × scans × (1 + ⌈q or λ⌉) at
-    /// most 10^7).
+    /// The number of simulated scenes, 2 to 10^7 (default 20,000; samples × scans × (1 + ⌈q or λ⌉)
+    /// at most 10^7).
     #[tsify(optional)]
     pub samples: Option<usize>,
-    /// Seed (integer; omitted: fresh entropy, returned as `seed`).
+    /// The seed of the Monte Carlo (integer; omitted: fresh entropy, returned as `seed`).
     #[tsify(optional)]
     pub seed: Option<u64>,
 }
@@ -920,7 +943,9 @@ const JDE_MONTE_CARLO_RESULT: &str = r#"
 export type JdeMonteCarloResult = JdeMonteCarlo;
 "#;
 
-/// The seeded Monte Carlo of the optimal joint detector-estimator of paper 002 (MAP
+/// The seeded Monte Carlo of the optimal joint detector-estimator of Rezaeian & Vo, "Error
+/// bounds for joint detection and estimation of a single object with random finite set
+/// observation" (paper 002) (MAP
 /// detection, the posterior mean; the core's `bounds::jde_monte_carlo`): the risk that
 /// `jdeBound` bounds, with its parts and standard error. Options `{ model, existence, prior,
 /// observation, falseAlarm?, clutter?, falseAlarmError, missError, emptyRule?, scans?,

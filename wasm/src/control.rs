@@ -1,4 +1,5 @@
-//! Sensor control with the SMC multi-object filter (paper 004, Ristic & Vo):
+//! Sensor control with the SMC multi-object filter (paper 004, Ristic & Vo, "Sensor control for
+//! multi-object state-space estimation using random finite sets"):
 //! `multiObjectLikelihood` (eq. (20)), `SensorControlRun` (Algorithm 1) and `compareSchemes`
 //! (Fig. 3). They read and write the core's own types (`fisst::control`), renamed at the
 //! boundary; their TypeScript is generated from the core's source (`build.rs`), under the
@@ -74,10 +75,10 @@ fn options_error(e: fisst::Error) -> JsValue {
     }
 }
 
-/// The multi-object likelihood (20) of paper 004 for one particle, in log space, summing over
-/// the associations θ by dynamic programming over subsets (exact; no enumeration). Options
-/// `{ likelihoods, detectionProbability, clutterRate, clutterDensity }`; returns
-/// `{ logLikelihood }`.
+/// The multi-object likelihood (20) of Ristic & Vo, "Sensor control for multi-object state-space
+/// estimation using random finite sets" (paper 004) for one particle, in log space, summing over
+/// the associations θ by dynamic programming over subsets (exact; no enumeration). Options `{
+/// likelihoods, detectionProbability, clutterRate, clutterDensity }`; returns `{ logLikelihood }`.
 #[wasm_bindgen(
     js_name = multiObjectLikelihood,
     unchecked_return_type = "MultiObjectLikelihoodResult"
@@ -89,8 +90,8 @@ pub fn multi_object_likelihood(
     write(&Renamed::new(&o.evaluate().map_err(options_error)?))
 }
 
-/// One run of Algorithm 1 of paper 004 (sensor control for multi-object estimation). Call
-/// `free()` when done.
+/// One run of Algorithm 1 of Ristic & Vo, "Sensor control for multi-object state-space estimation
+/// using random finite sets" (paper 004) on its range-only case study. Call `free()` when done.
 #[wasm_bindgen(js_name = SensorControlRun)]
 pub struct SensorControlRunJs {
     inner: ControlRun,
@@ -99,7 +100,7 @@ pub struct SensorControlRunJs {
 
 #[wasm_bindgen(js_class = SensorControlRun)]
 impl SensorControlRunJs {
-    /// Validates `options` (see `SensorControlRunOptions`).
+    /// A run of the case study with `options` (see `SensorControlRunOptions`); validates them.
     #[wasm_bindgen(constructor)]
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "SensorControlRunOptions")] options: JsValue,
@@ -125,58 +126,60 @@ impl SensorControlRunJs {
         write(&Renamed::new(&s))
     }
 
-    /// The particles (a copy).
+    /// The multi-object particles of the filter (a copy; empty before the first step).
     #[wasm_bindgen(getter, unchecked_return_type = "ControlParticles")]
     pub fn particles(&self) -> JsResult<JsValue> {
         write(&ControlParticles::from(self.inner.particles()))
     }
 
-    /// The start and every location moved to (length k + 1).
+    /// The sensor's path: the start and every location moved to, [x, y] in m (length k + 1).
     #[wasm_bindgen(getter, js_name = sensorPath, unchecked_return_type = "[number, number][]")]
     pub fn sensor_path(&self) -> JsResult<JsValue> {
         write(self.inner.sensor_path())
     }
 
-    /// The true sources, [[300, 600], [750, 250]].
+    /// The true objects' positions [x, y] in m, [[300, 600], [750, 250]].
     #[wasm_bindgen(getter, unchecked_return_type = "[number, number][]")]
     pub fn truth(&self) -> JsResult<JsValue> {
         write(&self.inner.options().truth)
     }
 
-    /// Z_1 … Z_k (measurements[k − 1] was taken at sensorPath[k − 1]).
+    /// The scans Z_1 … Z_k, ranges in m (measurements[k − 1] was taken at sensorPath[k − 1]).
     #[wasm_bindgen(getter, unchecked_return_type = "number[][]")]
     pub fn measurements(&self) -> JsResult<JsValue> {
         write(self.inner.measurements())
     }
 
-    /// Steps done.
+    /// The number k of steps done, 0 … K.
     #[wasm_bindgen(getter)]
     pub fn k(&self) -> usize {
         self.inner.k()
     }
 
-    /// K.
+    /// The number K of steps of the run.
     #[wasm_bindgen(getter)]
     pub fn steps(&self) -> usize {
         self.inner.options().steps
     }
 
-    /// The seed used (53-bit integer).
+    /// The seed of the run's random numbers (a 53-bit integer: the option's, or the fresh one
+    /// drawn).
     #[wasm_bindgen(getter)]
     pub fn seed(&self) -> f64 {
         self.seed as f64
     }
 
-    /// The scheme's name.
+    /// The name of the run's control scheme: `'renyi'`, `'fisher'`, `'pent'` or `'random'`.
     #[wasm_bindgen(getter, unchecked_return_type = "Scheme")]
     pub fn scheme(&self) -> String {
         self.inner.options().scheme.name().into()
     }
 }
 
-/// Fig. 3 of paper 004: `runs` seeded runs of each scheme, averaged. Options
-/// `{ runs, steps, seed, schemes, onProgress, … }`; returns `{ seed, runs, steps, schemes:
-/// [{ scheme, distance, localisation, cardinality }] }`, each part `{ mean, standardError }`.
+/// Fig. 3 of Ristic & Vo, "Sensor control for multi-object state-space estimation using random
+/// finite sets" (paper 004): `runs` seeded runs of each scheme, averaged. Options `{ runs, steps,
+/// seed, schemes, onProgress, … }`; returns `{ seed, runs, steps, schemes: [{ scheme, distance,
+/// localisation, cardinality }] }`, each part `{ mean, standardError }`.
 #[wasm_bindgen(js_name = compareSchemes, unchecked_return_type = "CompareSchemesResult")]
 pub fn compare_schemes(
     #[wasm_bindgen(unchecked_param_type = "CompareSchemesOptions")] options: JsValue,

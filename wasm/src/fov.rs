@@ -1,5 +1,6 @@
 //! Field-of-view cardinality pmfs and the sensor-placement map (Sections VI–VII of
-//! `001_0f0df91eee9b30d5.txt`).
+//! LeGrand & Ferrari, "Split Happens! Imprecise and negative information in Gaussian mixture
+//! random finite set filtering", paper 001).
 
 use js_sys::Float64Array;
 use serde::{Deserialize, Serialize};
@@ -20,7 +21,8 @@ fn one() -> f64 {
     1.0
 }
 
-/// Options of `fovCardinality`.
+/// Options of `fovCardinality` (Propositions 1–4 of LeGrand & Ferrari, "Split Happens! Imprecise
+/// and negative information in Gaussian mixture random finite set filtering" (paper 001)).
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct FovCardinalityOptions {
@@ -30,30 +32,32 @@ pub struct FovCardinalityOptions {
     pub rfs: MultiObjectDensity,
     /// The field of view S, in the position subspace (the first state components).
     pub fov: Region,
-    /// p_D in [0, 1] (default 1): with p_D < 1 the pmf is that of object-originated
-    /// detections, eq. (75).
+    /// The detection probability p_D ∈ [0, 1] (default 1): with p_D < 1 the pmf is that of
+    /// object-originated detections, eq. (75).
     #[serde(default = "one")]
     pub detection_probability: f64,
 }
 
-/// Result of `fovCardinality`.
+/// Result of `fovCardinality`: the pmf of the number of objects in the field of view.
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct FovCardinalityResult {
     /// `pmf[n]`: probability of n objects (detections) in the FoV, n = 0 … (Poisson and
     /// i.i.d. cluster: up to where the tail is below 1e-15).
     pub pmf: Vec<f64>,
-    /// The mean count (closed form).
+    /// The mean number of objects (detections) in the FoV (closed form).
     pub mean: f64,
-    /// The variance of the count (closed form).
+    /// The variance of the number of objects (detections) in the FoV (closed form).
     pub variance: f64,
-    /// ⟨1_S, p_i⟩ for each Gaussian in input order (each mixture component for Poisson and
-    /// i.i.d. cluster; for glmb, hypothesis 0's components, then hypothesis 1's, …), without
-    /// p_D.
+    /// The mass in the FoV, ⟨1_S, p_i⟩ ∈ [0, 1], of each Gaussian in input order (each mixture
+    /// component for Poisson and i.i.d. cluster; for glmb, hypothesis 0's components, then
+    /// hypothesis 1's, …), without p_D.
     pub mass_in_fov: Vec<f64>,
 }
 
-/// Options of `fovVarianceMap`.
+/// Options of `fovVarianceMap` (the sensor placement of Section VII of LeGrand & Ferrari, "Split
+/// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
+/// (paper 001)).
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct FovVarianceMapOptions {
@@ -61,11 +65,11 @@ pub struct FovVarianceMapOptions {
     pub multi_bernoulli: Vec<Bernoulli>,
     /// FoV width and height, > 0 (an axis-aligned box centred on each grid point).
     pub fov_size: (f64, f64),
-    /// The FoV centres; components × cells at most 2e8.
+    /// The grid of FoV centres; components × cells at most 2e8.
     pub grid: Grid,
 }
 
-/// Result of `fovVarianceMap`.
+/// Result of `fovVarianceMap`: the FoV-count variance at every FoV centre of the grid.
 #[derive(Serialize, Tsify)]
 pub struct FovVarianceMapResult {
     /// `variance[j * nx + i]` is the FoV-count variance with the FoV centred at (x_i, y_j):
@@ -73,20 +77,20 @@ pub struct FovVarianceMapResult {
     #[serde(with = "serde_wasm_bindgen::preserve")]
     #[tsify(type = "Float64Array")]
     pub variance: Float64Array,
-    /// The centre `[x, y]` of the largest variance.
+    /// The FoV centre `[x, y]` of the largest variance (the best placement).
     pub argmax: (f64, f64),
-    /// The largest variance.
+    /// The largest FoV-count variance over the grid.
     pub max: f64,
 }
 
-/// One component of a placement scene.
+/// One Bernoulli component of a placement scene.
 #[derive(Serialize, Tsify)]
 pub struct SceneComponent {
-    /// Existence probability.
+    /// The existence probability r ∈ [0, 1].
     pub existence: f64,
-    /// Mean `[x, y]`.
+    /// The mean position `[x, y]`.
     pub mean: (f64, f64),
-    /// Covariance `[[a, b], [b, c]]`.
+    /// The 2 × 2 position covariance `[[a, b], [b, c]]`, symmetric positive definite.
     pub cov: ((f64, f64), (f64, f64)),
 }
 
@@ -95,7 +99,7 @@ pub struct SceneComponent {
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct PlacementSceneResult {
-    /// The components.
+    /// The multi-Bernoulli's components, one per potential object.
     pub multi_bernoulli: Vec<SceneComponent>,
 }
 
@@ -109,19 +113,20 @@ const PLACEMENT_SCENE_OPTIONS: &str = r#"
 export type PlacementSceneOptions = SceneOptions;
 "#;
 
-/// Options of `mixtureDensityGrid`.
+/// Options of `mixtureDensityGrid`: a Gaussian mixture and a grid of positions.
 #[derive(Deserialize, Tsify)]
 pub struct MixtureDensityGridOptions {
-    /// Σ weight · N(mean, cov); components of 3 or more dimensions use their first two
-    /// (position) components. Its peak, Σ weight / √det(2π cov), must stay below the largest
-    /// double (about 1.8e308; a RangeError naming the weight that passes it).
+    /// The Gaussian mixture Σ weight · N(mean, cov) to evaluate; components of 3 or more dimensions
+    /// use their first two (position) components. Its peak, Σ weight / √det(2π cov), must stay
+    /// below the largest double (about 1.8e308; a RangeError naming the weight that passes it).
     pub mixture: Vec<WeightedGaussian>,
-    /// Positions; components × cells at most 2.5e7.
+    /// The grid of positions at which to evaluate the density; components × cells at most 2.5e7.
     pub grid: Grid,
 }
 
-/// The pmf of the number of objects inside a field of view (Propositions 1–4 of the "Split
-/// happens!" paper): options `{ rfs, fov, detectionProbability = 1 }` (see the
+/// The pmf of the number of objects inside a field of view (Propositions 1–4 of LeGrand &
+/// Ferrari, "Split Happens! Imprecise and negative information in Gaussian mixture random finite
+/// set filtering", paper 001): options `{ rfs, fov, detectionProbability = 1 }` (see the
 /// `FovCardinalityOptions` type); returns `{ pmf, mean, variance, massInFov }`.
 #[cfg(feature = "splitting")]
 #[wasm_bindgen(js_name = fovCardinality, unchecked_return_type = "FovCardinalityResult")]
@@ -192,7 +197,8 @@ pub fn fov_cardinality_js(
 }
 
 /// The FoV-count variance of a multi-Bernoulli over a grid of FoV centres, and its maximiser
-/// (Section VII of the "Split happens!" paper): options
+/// (Section VII of LeGrand & Ferrari, "Split Happens! Imprecise and negative information in
+/// Gaussian mixture random finite set filtering", paper 001): options
 /// `{ multiBernoulli, fovSize: [width, height], grid: { x: [min, max, count], y: [min, max,
 /// count] } }`; returns `{ variance: Float64Array (row-major, y outer), argmax: [x, y], max }`.
 #[cfg(feature = "splitting")]
@@ -218,8 +224,9 @@ pub fn fov_variance_map(
     })
 }
 
-/// A seeded random multi-Bernoulli scene like the sensor-placement example of the "Split
-/// happens!" paper (Section VII, Figs 9–10): options `{ count = 100, seed = 1, extent = 3,
+/// A seeded random multi-Bernoulli scene like the sensor-placement example of LeGrand & Ferrari,
+/// "Split Happens! Imprecise and negative information in Gaussian mixture random finite set
+/// filtering" (paper 001, Section VII, Figs 9–10): options `{ count = 100, seed = 1, extent = 3,
 /// sigma = [0.1, 0.5] }` (see `PlacementSceneOptions`); returns `{ multiBernoulli: [{
 /// existence, mean: [x, y], cov: [[a, b], [b, c]] }, …] }`. The same seed gives the same
 /// scene on every platform, and a smaller `count` is a prefix of a larger one.
@@ -247,7 +254,9 @@ pub fn placement_scene_js(
 }
 
 /// A Gaussian mixture's density Σ w N(s; m, P) at every position of a grid, e.g. a
-/// multi-Bernoulli's PHD Σ r N(s; m, P) as a heat map (Fig. 9 of the "Split happens!" paper):
+/// multi-Bernoulli's PHD Σ r N(s; m, P) as a heat map (Fig. 9 of LeGrand & Ferrari, "Split
+/// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering",
+/// paper 001):
 /// options `{ mixture: [{ weight, mean, cov }, …], grid: { x: [min, max, count], y: [min, max,
 /// count] } }`; returns a `Float64Array`, row-major with y as the outer index (entry
 /// `j * nx + i`). Components of 3 or more dimensions contribute their position marginal (first

@@ -65,8 +65,9 @@ export type GospaDecomposedResult = GospaResult & Required<Pick<GospaResult, 'lo
 export type GospaSeriesDecomposedResult = GospaSeriesResult & Required<Pick<GospaSeriesResult, 'localisation' | 'missed' | 'falseTargets' | 'meanLocalisation' | 'meanMissed' | 'meanFalseTargets'>>;
 /**
  * GOSPA with α = 2 (`alpha` omitted or 2): the distance and its decomposition (Prop. 3 of
- * García-Fernández & Svensson 2019), `{ distance, localisation, missed, falseTargets,
- * assignment }`, every field present.
+ * García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation and how GOSPA solves
+ * it", paper 003), `{ distance, localisation, missed, falseTargets, assignment }`, every field
+ * present.
  */
 export function gospa(truth: PointSet, estimate: PointSet, options: GospaOptions & { alpha?: 2 }): GospaDecomposedResult;
 /**
@@ -101,7 +102,8 @@ fn sets_and<T: serde::de::DeserializeOwned>(
     Ok((truth, estimate, read(options, "options")?))
 }
 
-/// GOSPA between two point sets (García-Fernández & Svensson 2019, Def. 2 and Prop. 3).
+/// GOSPA between two point sets (García-Fernández & Svensson, "Spooky effect in optimal OSPA
+/// estimation and how GOSPA solves it", paper 003, Def. 2 and Prop. 3).
 ///
 /// `truth` and `estimate` are arrays of points, each an array of numbers of one common
 /// dimension (empty arrays allowed). `options.c` (> 0) is the cut-off, `options.p` (≥ 1,
@@ -126,10 +128,11 @@ pub fn gospa(
     write(&Renamed::new(&g.report(&truth, &estimate).or_throw()?))
 }
 
-/// OSPA between two point sets with its rooted localisation and cardinality parts
-/// (Schuhmacher et al. 2008; eqs. 24–26 of Ristic & Vo 2010):
-/// `distance^p = localisation^p + cardinality^p`. Options `{ c, p = 2 }`. Also returns the
-/// optimal permutation's pairs as `assignment`. Caps on the sizes as for `gospa`.
+/// OSPA between two point sets with its rooted localisation and cardinality parts (Schuhmacher, Vo
+/// & Vo, "A consistent metric for performance evaluation of multi-object filters", 2008; eqs. 24–26
+/// of Ristic & Vo, "Sensor control for multi-object state-space estimation using random finite
+/// sets", paper 004): `distance^p = localisation^p + cardinality^p`. Options `{ c, p = 2 }`. Also
+/// returns the optimal permutation's pairs as `assignment`. Caps on the sizes as for `gospa`.
 #[wasm_bindgen(unchecked_return_type = "OspaResult")]
 pub fn ospa(
     #[wasm_bindgen(unchecked_param_type = "PointSet")] truth: JsValue,
@@ -175,9 +178,10 @@ pub fn gospa_series(
     ))
 }
 
-/// OSPA with its localisation and cardinality parts over a whole scenario in one call
-/// (eqs. 24–26 of Ristic & Vo 2010 at every step). Returns per-step arrays and their means.
-/// At most 262,144 steps and 262,144 points over all steps of `truths` and `estimates`.
+/// OSPA with its localisation and cardinality parts over a whole scenario in one call (eqs. 24–26
+/// of Ristic & Vo, "Sensor control for multi-object state-space estimation using random finite
+/// sets", paper 004, at every step). Returns per-step arrays and their means. At most 262,144 steps
+/// and 262,144 points over all steps of `truths` and `estimates`.
 #[wasm_bindgen(js_name = ospaSeries, unchecked_return_type = "OspaSeriesResult")]
 pub fn ospa_series(
     #[wasm_bindgen(unchecked_param_type = "OspaSeriesOptions")] options: JsValue,

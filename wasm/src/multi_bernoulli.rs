@@ -67,12 +67,14 @@ pub fn multi_bernoulli_leave_one_out(
     write(&leave_one_out_cardinalities(&r).or_throw()?)
 }
 
-/// The estimate of a multi-Bernoulli with far-apart Dirac components that minimises the mean
-/// error E[d^p] (the mean square error for p = 2) under GOSPA, OSPA or UOSPA — exact for any
-/// number of components. Options `{ existence, metric, c = 1, p = 2, alpha = 2 }`; returns
-/// `{ report, meanSquareError }`. The components are decided jointly, from their existence
-/// probabilities alone (the spooky-effect paper); `multiBernoulliPointEstimate` instead
-/// decides each component alone from its density and the loss (7) of paper 000.
+/// The estimate of a multi-Bernoulli with far-apart Dirac components that minimises the mean error
+/// E[d^p] (the mean square error for p = 2) under GOSPA, OSPA or UOSPA — exact for any number of
+/// components. Options `{ existence, metric, c = 1, p = 2, alpha = 2 }`; returns `{ report,
+/// meanSquareError }`. The components are decided jointly, from their existence probabilities alone
+/// (García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation and how GOSPA solves
+/// it", paper 003); `multiBernoulliPointEstimate` instead decides each component alone from its
+/// density and the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with
+/// applications" (paper 000).
 #[wasm_bindgen(js_name = mbOptimalEstimate, unchecked_return_type = "MbOptimalEstimateResult")]
 pub fn mb_optimal_estimate(
     #[wasm_bindgen(unchecked_param_type = "MbOptimalEstimateOptions")] options: JsValue,
@@ -82,8 +84,9 @@ pub fn mb_optimal_estimate(
 }
 
 /// The mean error E[d^p] (mean square for p = 2) of the estimate `report` (a boolean per
-/// component): Lemma 4 of the spooky-effect paper. Options
-/// `{ existence, report, metric, c = 1, p = 2, alpha = 2 }`.
+/// component): Lemma 4 of García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation
+/// and how GOSPA solves it" (paper 003). Options `{ existence, report, metric, c = 1, p = 2, alpha
+/// = 2 }`.
 #[wasm_bindgen(js_name = mbMeanSquareError)]
 pub fn mb_mean_square_error(
     #[wasm_bindgen(unchecked_param_type = "MbMeanSquareErrorOptions")] options: JsValue,
@@ -92,11 +95,12 @@ pub fn mb_mean_square_error(
     o.mean_error().or_throw_in("options")
 }
 
-/// The classical estimators of Fig. 2: `method` is `'mam'` (marginal multi-target),
-/// `'jom'` (joint multi-target) or `'map-cardinality'` (maximise the cardinality pmf, then
-/// report the most probable components). `lnPeak[i]` is `−½ ln det(2π P_i)` for component i's
-/// Gaussian (default 0: equal covariances), `lnC` the log of JoM's constant (default 0, i.e.
-/// c = (2πε)^(d/2) for P = εI). Returns `{ report }`.
+/// The classical estimators of Fig. 2 of García-Fernández & Svensson, "Spooky effect in optimal
+/// OSPA estimation and how GOSPA solves it" (paper 003): `method` is `'mam'` (marginal
+/// multi-target), `'jom'` (joint multi-target) or `'map-cardinality'` (maximise the cardinality
+/// pmf, then report the most probable components). `lnPeak[i]` is `−½ ln det(2π P_i)` for component
+/// i's Gaussian (default 0: equal covariances), `lnC` the log of JoM's constant (default 0, i.e. c
+/// = (2πε)^(d/2) for P = εI). Returns `{ report }`.
 #[wasm_bindgen(js_name = mbAlternativeEstimate, unchecked_return_type = "MbAlternativeEstimateResult")]
 pub fn mb_alternative_estimate(
     #[wasm_bindgen(unchecked_param_type = "MbAlternativeEstimateOptions")] options: JsValue,
@@ -105,11 +109,12 @@ pub fn mb_alternative_estimate(
     write(&Renamed::new(&o.estimate().or_throw_in("options")?))
 }
 
-/// Fig. 1 / Fig. 2 decision maps for two far-apart components: for every cell of a
-/// `resolution × resolution` grid of (r1, r2) (cell centres, r = (i + ½)/resolution), the
-/// optimal decision coded as `u1 + 2·u2`. Row-major with r2 as the outer (row) index and r1
-/// the inner. `estimator` is `'gospa'`, `'ospa'`, `'uospa'`, `'mam'`, `'jom'` or
-/// `'map-cardinality'`. Returns `{ resolution, decisions: Uint8Array }`.
+/// Fig. 1 / Fig. 2 decision maps of García-Fernández & Svensson, "Spooky effect in optimal OSPA
+/// estimation and how GOSPA solves it" (paper 003), for two far-apart components: for every cell of
+/// a `resolution × resolution` grid of (r1, r2) (cell centres, r = (i + ½)/resolution), the optimal
+/// decision coded as `u1 + 2·u2`. Row-major with r2 as the outer (row) index and r1 the inner.
+/// `estimator` is `'gospa'`, `'ospa'`, `'uospa'`, `'mam'`, `'jom'` or `'map-cardinality'`. Returns
+/// `{ resolution, decisions: Uint8Array }`.
 #[wasm_bindgen(js_name = mbDecisionMap, unchecked_return_type = "MbDecisionMapResult")]
 pub fn mb_decision_map(
     #[wasm_bindgen(unchecked_param_type = "MbDecisionMapOptions")] options: JsValue,
@@ -120,8 +125,9 @@ pub fn mb_decision_map(
     ))
 }
 
-/// Fig. 3: the optimal number of reported targets for n = 1 … maxComponents identical
-/// far-apart components of existence `existence`, under GOSPA, OSPA, UOSPA and the
+/// Fig. 3 of García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation and how GOSPA
+/// solves it" (paper 003): the optimal number of reported targets for n = 1 … maxComponents
+/// identical far-apart components of existence `existence`, under GOSPA, OSPA, UOSPA and the
 /// MAP-cardinality rule. Returns `{ n, gospa, ospa, uospa, mapCardinality }` (arrays).
 #[wasm_bindgen(js_name = mbIdenticalComponentCounts, unchecked_return_type = "MbIdenticalComponentCountsResult")]
 pub fn mb_identical_component_counts(

@@ -1,5 +1,6 @@
 //! Recursive Gaussian splitting along region boundaries and mixture reduction (Section IV of
-//! `001_0f0df91eee9b30d5.txt`, "Split happens!").
+//! LeGrand & Ferrari, "Split Happens! Imprecise and negative information in Gaussian mixture
+//! random finite set filtering", paper 001).
 
 use serde::{Deserialize, Serialize};
 use tsify::Tsify;
@@ -18,14 +19,14 @@ use fisst::splitting::{
     partition, split_for_regions, split_work,
 };
 
-/// The family of a split library.
+/// The family of a split library: how its means are spaced.
 #[derive(Clone, Copy, Debug, Default, Deserialize, Tsify)]
 #[serde(rename_all = "lowercase")]
 pub enum SpacingName {
     /// Symmetric, equally spaced means (Table I's family).
     #[default]
     Equal,
-    /// Symmetric free means (lower J).
+    /// Symmetric free means (a lower objective J of eq. (13)).
     Free,
 }
 
@@ -38,36 +39,40 @@ impl From<SpacingName> for Spacing {
     }
 }
 
-/// Options of `splitLibrary`.
+/// Options of `splitLibrary` (the split library of eqs. (13)–(14) of LeGrand & Ferrari, "Split
+/// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
+/// (paper 001)).
 #[derive(Deserialize, Tsify)]
 pub struct SplitLibraryOptions {
-    /// R, the number of components: an integer in [2, 16].
+    /// The number R of components of the split: an integer in [2, 16].
     pub components: usize,
-    /// λ of eq. (13), in [1e-6, 10].
+    /// The weight λ ∈ [1e-6, 10] of the σ̃² penalty in the split objective J of eq. (13).
     pub lambda: f64,
     /// `'equal'` (default): symmetric, equally spaced means (Table I's family); `'free'`:
-    /// symmetric free means (lower J).
+    /// symmetric free means (a lower objective J).
     #[serde(default)]
     pub spacing: SpacingName,
 }
 
 /// An R-component split of N(0, 1). `components: 4, lambda: 0.001, spacing: 'equal'`
-/// returns Table I verbatim.
+/// returns Table I of LeGrand & Ferrari, "Split Happens! Imprecise and negative information in
+/// Gaussian mixture random finite set filtering" (paper 001) verbatim.
 #[derive(Serialize, Tsify)]
 pub struct SplitLibraryResult {
-    /// The weights (sum 1).
+    /// The component weights w̃_j, one per component (they sum to 1).
     pub weights: Vec<f64>,
-    /// Ascending symmetric means.
+    /// The component means m̃_j, ascending and symmetric about 0.
     pub means: Vec<f64>,
-    /// The common σ̃.
+    /// The components' common standard deviation σ̃ > 0.
     pub sigma: f64,
-    /// J of eq. (13).
+    /// The split objective J of eq. (13) at the optimum (L2 error plus λ σ̃²).
     pub objective: f64,
     /// The mixture variance σ̃² + Σ w m² (Table I: 0.9503).
     pub variance: f64,
 }
 
-/// Options of `splitForRegions`.
+/// Options of `splitForRegions` (Algorithms 1–2 of LeGrand & Ferrari, "Split Happens! Imprecise and
+/// negative information in Gaussian mixture random finite set filtering" (paper 001)).
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct SplitForRegionsOptions {
@@ -75,35 +80,38 @@ pub struct SplitForRegionsOptions {
     pub mixture: Vec<WeightedGaussian>,
     /// One or more regions (at most 32) of dimension `positionDims`.
     pub regions: Vec<Region>,
-    /// n_s: the first `positionDims` state components are positions (default 2; in [1, 8]).
+    /// The number n_s of position components: the first n_s state components are the position
+    /// that regions refer to (default 2; in [1, 8]).
     #[serde(default = "defaults::position_dims")]
     pub position_dims: usize,
-    /// w_min: lighter components are not split (default 0.01; absolute weight).
+    /// The minimum weight w_min ≥ 0 to split: lighter components are not split (default 0.01;
+    /// absolute weight).
     #[serde(default = "defaults::min_weight")]
     pub min_weight: f64,
-    /// R (default 3), an integer in [2, 16].
+    /// The number R of components each split makes (default 3), an integer in [2, 16].
     #[serde(default = "defaults::components")]
     pub components: usize,
-    /// λ of the split library (default 0.001).
+    /// The split library's penalty weight λ of eq. (13) (default 0.001), in [1e-6, 10].
     #[serde(default = "defaults::lambda")]
     pub lambda: f64,
-    /// Split library family (default `'equal'`).
+    /// The split library's family: how its means are spaced (default `'equal'`).
     #[serde(default)]
     pub spacing: SpacingName,
-    /// ζ, the collocation grid's Mahalanobis radius (default 2, as the authors' pyest).
+    /// The collocation grid's Mahalanobis radius ζ > 0 (default 2, as the authors' pyest).
     /// Components whose boundary lies beyond ζ are not split, which floors the partition
     /// error at a few 1e-3 to 1e-2 of mass; 3 lowers that part to about 1e-4, with more
     /// components.
     #[serde(default = "defaults::grid_bound")]
     pub grid_bound: f64,
-    /// N_g, grid points per axis (default 15; N_g^positionDims ≤ 20000).
+    /// The number N_g of collocation grid points per axis (default 15; N_g^positionDims ≤
+    /// 20000).
     #[serde(default = "defaults::grid_points")]
     pub grid_points: usize,
-    /// Recursion depth cap (default 16, at most 64); 0 splits nothing: the result is the
+    /// The most recursion levels (default 16, at most 64); 0 splits nothing: the result is the
     /// mean-based partition of `mixture` itself.
     #[serde(default = "defaults::max_depth")]
     pub max_depth: usize,
-    /// Component count cap (default 10000, at most 50000).
+    /// The most components the split may make (default 10000, at most 50000).
     #[serde(default = "defaults::max_components")]
     pub max_components: usize,
 }
@@ -118,7 +126,7 @@ pub enum StopName {
     MaxComponents,
 }
 
-/// Result of `splitForRegions`.
+/// Result of `splitForRegions`: the split mixture and its mean-based partition.
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct SplitForRegionsResult {
@@ -126,18 +134,19 @@ pub struct SplitForRegionsResult {
     pub mixture: Vec<MixtureComponent>,
     /// The mean-based partition (11)–(12) for the first region: the inside weight.
     pub inside: f64,
-    /// The outside weight.
+    /// The mean-based partition for the first region: the outside weight (of the components
+    /// whose mean lies outside it).
     pub outside: f64,
     /// `insideMask[i]`: whether component i of `mixture` is in p_S, i.e. its mean (position
     /// part) lies in the first region (`inside` is the sum of the weights it selects).
     pub inside_mask: Vec<bool>,
-    /// ⟨1_S, p⟩ of the first region under the input mixture (null when too costly: more than
-    /// ~0.5 s of masses, or positionDims > 4).
+    /// The exact mass ⟨1_S, p⟩ of the first region S under the input mixture p (null when too
+    /// costly: more than ~0.5 s of masses, or positionDims > 4).
     #[tsify(type = "number | null")]
     pub exact_inside: Option<f64>,
-    /// Recursion levels used.
+    /// The number of recursion levels used.
     pub depth: usize,
-    /// Split operations.
+    /// The number of split operations (components replaced by R children).
     pub splits: usize,
     /// null, or the cap that stopped the recursion.
     #[tsify(type = "null | 'maxDepth' | 'maxComponents'")]
@@ -163,7 +172,8 @@ pub struct ReduceMixtureOptions {
     pub max_components: Option<usize>,
 }
 
-/// Options of `negativeInformationScenario`.
+/// Options of `negativeInformationScenario` (Fig. 5 of LeGrand & Ferrari, "Split Happens!",
+/// paper 001).
 #[derive(Deserialize, Tsify)]
 pub struct NegativeInformationOptions {
     /// One step, 1–3; omitted: the whole scenario.
@@ -171,38 +181,42 @@ pub struct NegativeInformationOptions {
     pub step: Option<usize>,
 }
 
-/// One predict → split → non-detection update cycle of the Fig. 5 scenario.
+/// One predict → split → non-detection update cycle of the Fig. 5 scenario of LeGrand & Ferrari,
+/// "Split Happens! Imprecise and negative information in Gaussian mixture random finite set
+/// filtering" (paper 001).
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct NegativeInformationStep {
-    /// 1, 2 or 3.
+    /// The step number k: 1, 2 or 3.
     pub step: usize,
-    /// p_{k|k−1}.
+    /// The predicted density p_{k|k−1}, a Gaussian mixture.
     pub predicted: Vec<MixtureComponent>,
     /// Algorithm 1 applied to it (R = 3, λ = 0.001, w_min = 0.01).
     pub split: Vec<MixtureComponent>,
-    /// p_{k|k}: the mean-based partition's outside part, normalised.
+    /// The posterior density p_{k|k}: the mean-based partition's outside part, normalised.
     pub posterior: Vec<MixtureComponent>,
-    /// 1 − Δ_k, the predicted probability of the non-detection.
+    /// The predicted probability 1 − Δ_k of the non-detection.
     pub non_detection_prob: f64,
-    /// ⟨1_S, p_{k|k−1}⟩, exact.
+    /// The exact predicted mass in the field of view, ⟨1_S, p_{k|k−1}⟩ ∈ [0, 1].
     pub predicted_inside: f64,
-    /// ⟨1_S, p_{k|k}⟩, exact.
+    /// The exact posterior mass in the field of view, ⟨1_S, p_{k|k}⟩ ∈ [0, 1].
     pub posterior_inside: f64,
-    /// Recursion levels used by the split.
+    /// The number of recursion levels used by the split.
     pub depth: usize,
-    /// Split operations.
+    /// The number of split operations (components replaced by R children).
     pub splits: usize,
 }
 
-/// The Fig. 5 scenario: FoV, initial mixture (state x, y, ẋ, ẏ) and the three steps.
+/// Result of `negativeInformationScenario`: the Fig. 5 scenario of LeGrand & Ferrari, "Split
+/// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
+/// (paper 001): FoV, initial mixture (state x, y, ẋ, ẏ) and the three steps.
 #[derive(Serialize, Tsify)]
 pub struct NegativeInformationScenario {
-    /// The field of view.
+    /// The field of view S, a box in (x, y).
     pub fov: FovBox,
-    /// The initial mixture.
+    /// The initial density p_{0|0}, a Gaussian mixture over (x, y, ẋ, ẏ).
     pub initial: Vec<MixtureComponent>,
-    /// The three steps.
+    /// The three predict → split → update steps, k = 1, 2, 3.
     pub steps: Vec<NegativeInformationStep>,
 }
 
@@ -210,7 +224,7 @@ pub struct NegativeInformationScenario {
 #[derive(Serialize, Tsify)]
 #[tsify(type = "Region")]
 pub struct FovBox {
-    /// The box.
+    /// The box `{ min, max }`.
     #[serde(rename = "box")]
     pub region: BoxRegion,
 }
@@ -242,7 +256,9 @@ fn library(r: usize, lambda: f64, spacing: Spacing, prefix: &str) -> JsResult<Sp
     Ok(lib)
 }
 
-/// The optimal R-component split of N(0, 1) of eqs. (13)–(14): options
+/// The optimal R-component split of N(0, 1) of eqs. (13)–(14) of LeGrand & Ferrari, "Split
+/// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
+/// (paper 001): options
 /// `{ components, lambda, spacing = 'equal' }`; returns `{ weights, means, sigma, objective,
 /// variance }`. `components: 4, lambda: 0.001` with equal spacing is Table I verbatim.
 #[wasm_bindgen(js_name = splitLibrary, unchecked_return_type = "SplitLibraryResult")]
@@ -267,7 +283,8 @@ pub fn split_library_js(
     })
 }
 
-/// Algorithm 2 (Algorithm 1 for one region) of the "Split happens!" paper: recursively
+/// Algorithm 2 (Algorithm 1 for one region) of LeGrand & Ferrari, "Split Happens! Imprecise and
+/// negative information in Gaussian mixture random finite set filtering" (paper 001): recursively
 /// splits the components of `mixture` that straddle a boundary of any of `regions`, then the
 /// mean-based partition for the first region. Options `{ mixture, regions, positionDims = 2,
 /// minWeight = 0.01, components = 3, lambda = 0.001, spacing = 'equal', gridBound = 2,
@@ -434,16 +451,22 @@ fn step_out(s: &Fig5Step) -> NegativeInformationStep {
 #[wasm_bindgen(typescript_custom_section)]
 const SCENARIO_OVERLOADS: &str = r#"
 /**
- * One step (1–3) of the Fig. 5 negative-information example.
+ * One step (1–3) of the Fig. 5 negative-information example of LeGrand & Ferrari, "Split
+ * Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
+ * (paper 001).
  */
 export function negativeInformationScenario(options: NegativeInformationOptions & { step: number }): NegativeInformationStep;
 /**
- * The whole Fig. 5 negative-information example: `{ fov, initial, steps }`.
+ * The whole Fig. 5 negative-information example of LeGrand & Ferrari, "Split Happens! Imprecise
+ * and negative information in Gaussian mixture random finite set filtering" (paper 001):
+ * `{ fov, initial, steps }`.
  */
 export function negativeInformationScenario(options?: NegativeInformationOptions & { step?: undefined }): NegativeInformationScenario;
 "#;
 
-/// The negative-information example of Fig. 5 (Section IV-G): a constant-velocity object
+/// The negative-information example of Fig. 5 (Section IV-G) of LeGrand & Ferrari, "Split
+/// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
+/// (paper 001): a constant-velocity object
 /// crossing a square FoV with three non-detections (p_D = 1), split by Algorithm 1 with
 /// w_min = 0.01, R = 3, λ = 0.001 (the scenario's numbers are in the Rust docs of
 /// `NegativeInformationScenario::fig5`). Options `{ step }` (optional, 1–3): without it returns

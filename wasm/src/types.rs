@@ -67,9 +67,9 @@ impl Covariance {
 /// A Gaussian density N(mean, cov).
 #[derive(Clone, Debug, Deserialize, Tsify)]
 pub struct Gaussian {
-    /// The mean, length n.
+    /// The mean vector, length n (the state dimension).
     pub mean: Point,
-    /// The n × n covariance.
+    /// The n × n covariance matrix, symmetric positive definite.
     pub cov: Covariance,
 }
 
@@ -93,9 +93,9 @@ pub struct WeightedGaussian {
     /// The weight, finite and ≥ 0 (a mixture's weights sum to 1, a PHD's to the expected
     /// number of objects).
     pub weight: f64,
-    /// The mean, length n.
+    /// The component's mean vector, length n.
     pub mean: Point,
-    /// The n × n covariance.
+    /// The component's n × n covariance matrix, symmetric positive definite.
     pub cov: Covariance,
 }
 
@@ -103,11 +103,11 @@ pub struct WeightedGaussian {
 /// `existence` and then has density N(mean, cov).
 #[derive(Clone, Debug, Deserialize, Tsify)]
 pub struct Bernoulli {
-    /// The existence probability r, in [0, 1].
+    /// The existence probability r ∈ [0, 1]: the probability that the object exists.
     pub existence: f64,
-    /// The mean, length n.
+    /// The mean of the object's state when it exists, length n.
     pub mean: Point,
-    /// The n × n covariance.
+    /// The n × n covariance of the object's state, symmetric positive definite.
     pub cov: Covariance,
 }
 
@@ -156,11 +156,11 @@ pub fn bernoullis(items: Vec<Bernoulli>, path: &str) -> JsResult<Vec<(f64, CoreG
 /// wherever a [`WeightedGaussian`] is taken.
 #[derive(Clone, Debug, Serialize, Tsify)]
 pub struct MixtureComponent {
-    /// The weight.
+    /// The component's weight, ≥ 0.
     pub weight: f64,
-    /// The mean.
+    /// The component's mean vector, length n.
     pub mean: Vec<f64>,
-    /// The covariance, as n rows of n numbers.
+    /// The component's covariance matrix, as n rows of n numbers.
     pub cov: Vec<Vec<f64>>,
 }
 
@@ -187,10 +187,10 @@ pub fn mixture_out(m: &GaussianMixture) -> Vec<MixtureComponent> {
 /// An axis-aligned box `{ min, max }` (closed; any dimension).
 #[derive(Clone, Debug, Deserialize, Serialize, Tsify)]
 pub struct BoxRegion {
-    /// Lower corner.
+    /// The lower corner: the smallest coordinate along each axis.
     #[tsify(type = "number[] | Float64Array")]
     pub min: Vec<f64>,
-    /// Upper corner (each entry ≥ the lower one).
+    /// The upper corner: the largest coordinate along each axis (each entry ≥ the lower one).
     #[tsify(type = "number[] | Float64Array")]
     pub max: Vec<f64>,
 }
@@ -198,10 +198,10 @@ pub struct BoxRegion {
 /// A disc `{ center, radius }` (a closed ball in more than two dimensions).
 #[derive(Clone, Debug, Deserialize, Serialize, Tsify)]
 pub struct DiscRegion {
-    /// The centre.
+    /// The disc's centre, one number per position coordinate.
     #[tsify(type = "number[] | Float64Array")]
     pub center: Vec<f64>,
-    /// The radius, > 0.
+    /// The disc's radius, > 0.
     pub radius: f64,
 }
 
@@ -211,11 +211,11 @@ pub struct DiscRegion {
 #[derive(Clone, Debug, Deserialize, Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub enum Region {
-    /// `{ box: { min, max } }`.
+    /// `{ box: { min, max } }`: an axis-aligned box.
     Box(BoxRegion),
-    /// `{ polygon: [[x, y], …] }`: at least three vertices, at most 1,000.
+    /// `{ polygon: [[x, y], …] }`: a 2D polygon of at least three vertices, at most 1,000.
     Polygon(Vec<[f64; 2]>),
-    /// `{ disc: { center, radius } }`.
+    /// `{ disc: { center, radius } }`: a disc (a ball in more than two dimensions).
     Disc(DiscRegion),
     /// `{ union: [region, …] }`: inside any member (at least one, all of one dimension).
     Union(Vec<Region>),
@@ -270,14 +270,15 @@ impl Region {
 pub struct GlmbHypothesis {
     /// The hypothesis weight (all weights sum to 1).
     pub weight: f64,
-    /// The single-object densities of its labels.
+    /// The single-object densities of its labels, one Gaussian per object.
     pub components: Vec<Gaussian>,
 }
 
 /// An i.i.d. cluster density: a cardinality pmf and one single-object density.
 #[derive(Clone, Debug, Deserialize, Tsify)]
 pub struct IidCluster {
-    /// ρ(0), ρ(1), … (sums to 1; at most 20,001 entries).
+    /// The cardinality pmf ρ(0), ρ(1), …: ρ(n) is the probability of n objects (sums to 1; at
+    /// most 20,001 entries).
     pub cardinality: Numbers,
     /// The single-object density as a mixture (weights sum to 1).
     pub density: Vec<WeightedGaussian>,
@@ -293,13 +294,13 @@ pub struct IidCluster {
 #[derive(Clone, Debug, Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub enum MultiObjectDensity {
-    /// `{ multiBernoulli: Bernoulli[] }`.
+    /// `{ multiBernoulli: Bernoulli[] }`: one Bernoulli per potential object.
     MultiBernoulli(Vec<Bernoulli>),
-    /// `{ poisson: WeightedGaussian[] }`.
+    /// `{ poisson: WeightedGaussian[] }`: the PHD (intensity) of a Poisson RFS.
     Poisson(Vec<WeightedGaussian>),
-    /// `{ iidCluster: { cardinality, density } }`.
+    /// `{ iidCluster: { cardinality, density } }`: an i.i.d. cluster RFS.
     IidCluster(IidCluster),
-    /// `{ glmb: GlmbHypothesis[] }`.
+    /// `{ glmb: GlmbHypothesis[] }`: a generalised labelled multi-Bernoulli (GLMB) density.
     Glmb(Vec<GlmbHypothesis>),
 }
 
@@ -326,7 +327,7 @@ impl Axis {
     }
 }
 
-/// A grid of positions: one axis per coordinate.
+/// A 2D grid of positions: one axis `[min, max, count]` per coordinate.
 #[derive(Clone, Copy, Debug, Deserialize, Tsify)]
 pub struct Grid {
     /// The x axis `[min, max, count]`, `count` in [1, 4096].

@@ -21,15 +21,15 @@ use crate::error::{Result, check_probability};
 pub struct BernoulliEstimate {
     /// Whether {a*} is reported (`true`) or ∅ (`false`), eq. (10).
     pub declare: bool,
-    /// a* when declared, else `None`.
+    /// The reported point: a* when declared, else `None`.
     pub estimate: Option<Vec<f64>>,
     /// The MMUC estimate a* of eq. (12) (how it was found: [`Mmuc::method`]).
     pub mmuc: Mmuc,
-    /// Γ and its side, eq. (11).
+    /// The existence threshold Γ of eq. (11) and the side of it that reports.
     pub threshold: Threshold,
-    /// ρ_∅, eq. (14).
+    /// The expected loss ρ_∅ of reporting nothing, eq. (14).
     pub expected_loss_empty: f64,
-    /// ρ_{a*}, eq. (13).
+    /// The expected loss ρ_{a*} of reporting the single point a*, eq. (13).
     pub expected_loss_singleton: f64,
 }
 

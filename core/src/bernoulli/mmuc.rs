@@ -36,14 +36,14 @@ pub enum MmucMethod {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Mmuc {
-    /// a*.
+    /// The MMUC point a*: the centre of the radius-r0 ball most likely to hold the object.
     pub center: Vec<f64>,
     /// q(a*) = ∫ 1{‖x − a*‖ > r0} s(dx), computed exactly as
     /// [`SpatialDensity::prob_outside_ball`] computes it (same tolerance, same value).
     pub miss_probability: f64,
     /// The error estimate of `miss_probability` (0 for particles).
     pub error: f64,
-    /// How a* was found.
+    /// How a* was found (exact or heuristic).
     pub method: MmucMethod,
 }
 

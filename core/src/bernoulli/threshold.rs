@@ -132,7 +132,7 @@ pub fn expected_loss_singleton(
 pub struct LossCurveOptions {
     /// The existence probabilities p at which to evaluate, each in [0, 1].
     pub existences: Vec<f64>,
-    /// q(a*) in [0, 1].
+    /// The miss probability q(a*) ∈ [0, 1] of the point that would be reported.
     pub miss_probability: f64,
     /// The costs of the loss (7).
     pub costs: Costs,
@@ -144,13 +144,13 @@ pub struct LossCurveOptions {
 /// The expected losses against p ([`loss_curve`]), one entry per p.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LossCurve {
-    /// ρ_∅(p), eq. (14).
+    /// The expected loss ρ_∅(p) of reporting nothing, eq. (14), one per p.
     pub empty: Vec<f64>,
-    /// ρ_{a*}(p), eq. (13).
+    /// The expected loss ρ_{a*}(p) of reporting a*, eq. (13), one per p.
     pub singleton: Vec<f64>,
     /// The expected loss of the rule: ρ_{a*}(p) where it reports, else ρ_∅(p).
     pub rule: Vec<f64>,
-    /// The rule's threshold.
+    /// The rule's existence threshold (the given one, or the optimal Γ (11)).
     pub threshold: f64,
 }
 

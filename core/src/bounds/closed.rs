@@ -57,27 +57,28 @@ impl Terms {
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Ingredients {
-    /// r, the prior existence probability.
+    /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
-    /// P̄_o (14).
+    /// The mean detection probability P̄_o (14) = ∫ P_o(x) f(x) dx, in [0, 1].
     pub mean_detection: f64,
-    /// σ_e² (16), the variance of f_d'.
+    /// The variance σ_e² (16) of an undetected target's state: the variance of f_d'.
     pub undetected_variance: f64,
-    /// S: J'_1⁻¹, or Σ_n C_n J'_{1+n}⁻¹.
+    /// The estimation term S of a detected target: J'_1⁻¹, or Σ_n C_n J'_{1+n}⁻¹.
     pub inverse_information: f64,
-    /// W: w_1, or Σ_n C_n w_{n+1}.
+    /// The detected mass W: w_1, or Σ_n C_n w_{n+1}, in [0, 1].
     pub detected_mass: f64,
-    /// ε = Pr(Z = ∅ | X = ∅).
+    /// The probability ε = Pr(Z = ∅ | X = ∅) of an empty observation when no target exists.
     pub absent_empty: f64,
-    /// ν = Pr(Z ≠ ∅, declared ∅ | X = ∅): η1 or η2.
+    /// The probability ν = Pr(Z ≠ ∅, declared ∅ | X = ∅) that a target-free, non-empty observation
+    /// is declared empty: η1 or η2.
     pub absent_null: f64,
     /// ε_u = Pr(Z = ∅ | target exists, not observed).
     pub undetected_empty: f64,
     /// ν_u = Pr(Z ≠ ∅, declared ∅ | target exists, not observed).
     pub undetected_null: f64,
-    /// e_0², the squared error of a false target.
+    /// The squared error e_0² ≥ 0 of a false target (declaring one when none exists).
     pub false_alarm_error: f64,
-    /// e_1², the squared error of a missed target.
+    /// The squared error e_1² ≥ 0 of a missed target (declaring none when one exists).
     pub miss_error: f64,
 }
 
@@ -94,9 +95,9 @@ pub struct Assembled {
     pub existence_threshold: f64,
     /// The summands of the attaining phase.
     pub terms: Terms,
-    /// The HPE bound (48)/(57).
+    /// The HPE bound (48)/(57): the estimator declares {x*} on Z = ∅.
     pub hpe: f64,
-    /// The LPE bound (47)/(58).
+    /// The LPE bound (47)/(58): the estimator declares ∅ on Z = ∅.
     pub lpe: f64,
 }
 
@@ -198,7 +199,7 @@ pub struct NoClutterBound {
     pub declare_on_empty: bool,
     /// The HPE line r(P̄o J1⁻¹ + (1 − P̄o)σe²) + (1 − r)e0².
     pub hpe: f64,
-    /// The LPE line r(P̄o J1⁻¹ + (1 − P̄o)e1²).
+    /// The LPE bound, the line r(P̄o J1⁻¹ + (1 − P̄o)e1²) in r.
     pub lpe: f64,
     /// r_M* = (1 − q)/(2 − P̄o − q) with q = 0: where a MAP detector on Z = ∅ switches.
     pub map_threshold: f64,
@@ -419,11 +420,11 @@ impl NoClutterOptions {
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GaussianInformationOptions {
-    /// σ_x², the prior variance (> 0).
+    /// The prior variance σ_x² > 0 of the state x.
     pub prior_variance: f64,
-    /// a, the gain (finite).
+    /// The gain a of the measurement z = a x + v, finite.
     pub gain: f64,
-    /// σ_v², the measurement-noise variance (> 0).
+    /// The measurement noise variance σ_v² > 0 of v.
     pub noise_variance: f64,
 }
 
@@ -454,11 +455,13 @@ pub enum Sequential {
 /// Most steps [`sequential_bound`] computes (the Enumeration sum is O(k²) in total).
 pub const MAX_STEPS: usize = 5_000;
 
-/// The arguments of [`sequential_bound`].
+/// The arguments of [`sequential_bound`]: the IRF (35) or Enumeration (37) bound of Rezaeian & Vo,
+/// "Error bounds for joint detection and estimation of a single object with random finite set
+/// observation" (paper 002).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SequentialOptions {
-    /// `'enumeration'` (37) or `'irf'` (35).
+    /// The bound to compute: `'enumeration'` (37) or `'irf'` (35).
     pub method: Sequential,
     /// J_0 > 0, the information of the prior (of f_d').
     pub prior_information: f64,
@@ -474,7 +477,8 @@ pub struct SequentialOptions {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SequentialBound {
-    /// `bound[k − 1]` = P_k for k = 1 … steps.
+    /// The bound P_k on the mean-square error after k observations: `bound[k − 1]` = P_k for k = 1
+    /// … steps.
     pub bound: Vec<f64>,
 }
 

@@ -63,7 +63,7 @@ impl Density for UnitUniform {
 #[derive(Clone, Debug)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Example2Observation {
-    /// P_o (constant).
+    /// The detection probability P_o, a constant.
     pub detection: Detection,
 }
 
@@ -108,7 +108,9 @@ impl Observation for Example2Observation {
     }
 }
 
-/// One point of Fig. 2 right.
+/// One point of Fig. 2 (right) of Rezaeian & Vo, "Error bounds for joint detection and estimation
+/// of a single object with random finite set observation" (paper 002): Example 2's bound at one (r,
+/// P_o, q).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Example2 {
@@ -116,31 +118,33 @@ pub struct Example2 {
     pub bound: f64,
     /// Theorem 1 with J'_1 as (32) prints it (no 1/w_1²): the paper's curve.
     pub paper_bound: f64,
-    /// J'_1 of (20): A / w_1².
+    /// The information J'_1 of (20): A / w_1².
     pub information: f64,
-    /// J'_1 of (32): A = ∫_{Z'_0} (4/z)(e^z − 1) dz.
+    /// The information J'_1 as (32) prints it: A = ∫_{Z'_0} (4/z)(e^z − 1) dz.
     pub paper_information: f64,
-    /// w_1.
+    /// The mass w_1 ∈ [0, 1] of p_1 on the MAP region Z'_0.
     pub w: f64,
-    /// η1 = q(1 − |Z'_0|).
+    /// The probability η1 = q(1 − |Z'_0|) that a false observation occurs and is rejected.
     pub eta: f64,
-    /// σ_e² (the prior variance: P_o is constant).
+    /// The variance σ_e² of an undetected target's state (the prior variance: P_o is constant).
     pub undetected_variance: f64,
-    /// e_1² used (the option, or e_0² + σ_e²).
+    /// The squared error e_1² of a missed target used (the option, or e_0² + σ_e²).
     pub miss_error: f64,
-    /// Z'_0 as `[low, high]` intervals of [0, 1].
+    /// The MAP region Z'_0 of one-point observations, as `[low, high]` intervals of [0, 1].
     pub region: Vec<(f64, f64)>,
-    /// The phase of the (20) bound.
+    /// The phase of the (20) bound: the rule on Z = ∅, HPE (declare {x*}) or LPE (declare ∅).
     pub phase: Phase,
 }
 
-/// The arguments of [`example2`]: Example 2 of paper 002 at one (r, P_o, q) (Fig. 2 right).
+/// The arguments of [`example2`]: Example 2 of Rezaeian & Vo, "Error bounds for joint detection and
+/// estimation of a single object with random finite set observation" (paper 002) at one (r, P_o, q)
+/// (Fig. 2 right).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Example2Options {
-    /// r in [0, 1] (the figure: 0.6).
+    /// The prior existence probability r ∈ [0, 1] (the figure: 0.6).
     pub existence: f64,
-    /// P_o (constant) in [0, 1].
+    /// The detection probability P_o ∈ [0, 1], a constant.
     pub detection_probability: f64,
     /// q, the false-alarm probability, in [0, 1] (the figure's abscissa).
     pub false_alarm_probability: f64,
@@ -251,7 +255,7 @@ pub fn example2(
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Example2Regularity {
-    /// J_1 = ∫₀¹ 4(e^z − 1)/z dz = 5.2716.
+    /// The Fisher information J_1 = ∫₀¹ 4(e^z − 1)/z dz = 5.2716.
     pub information: f64,
     /// 1/J_1 = 0.1897: what the information inequality would claim as a bound.
     pub inverse_information: f64,

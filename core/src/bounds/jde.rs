@@ -37,9 +37,9 @@ pub const WRONG_MODEL: &str = "belongs to the other measurement model";
 /// II (22), Poisson clutter (Theorem 2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum JdeModel {
-    /// Model I (13).
+    /// Model I (13): a Bernoulli observation with false alarms.
     I,
-    /// Model II (22).
+    /// Model II (22): Poisson clutter.
     II,
 }
 
@@ -56,40 +56,40 @@ pub enum JdePrior {
 /// linear-Gaussian sensor (constant P_o) for a [`JdePrior::Vector`].
 #[derive(Clone, Debug, PartialEq)]
 pub enum JdeObservation {
-    /// z = a x + b + v.
+    /// A 1D linear-Gaussian observation z = a x + b + v.
     Scalar(LinearGaussian),
-    /// z = H x + b + v.
+    /// A vector linear-Gaussian observation z = H x + b + v.
     Vector(LinearGaussianSensor),
 }
 
 /// Model I's false observations: probability q and density ψ.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FalseAlarm {
-    /// q in [0, 1].
+    /// The false alarm probability q ∈ [0, 1]: the probability of one false observation.
     pub probability: f64,
-    /// ψ.
+    /// The density ψ of a false observation.
     pub density: Density1,
 }
 
 /// Model II's Poisson clutter: rate λ and the density of its points (v = λ · density).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Clutter {
-    /// λ ≥ 0.
+    /// The clutter rate λ ≥ 0: the mean number of clutter points.
     pub rate: f64,
-    /// v/λ.
+    /// The density v/λ of one clutter point (v the clutter intensity).
     pub density: Density1,
 }
 
 /// Everything [`jde_bound`] needs. The optional fields take their defaults when `None`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct JdeOptions {
-    /// I or II.
+    /// The measurement model: I (false alarms) or II (Poisson clutter).
     pub model: JdeModel,
-    /// r in [0, 1].
+    /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
-    /// f.
+    /// The prior density f of the target's state.
     pub prior: JdePrior,
-    /// P_o and g (of the prior's kind).
+    /// The observation: the detection probability P_o and the likelihood g (of the prior's kind).
     pub observation: JdeObservation,
     /// Model I: (q, ψ); `None`: q = 0. An error with model II.
     pub false_alarm: Option<FalseAlarm>,

@@ -143,18 +143,18 @@ pub const GAUSSIAN_SPAN: f64 = 12.0;
 /// interpolation between knots, 0 outside, normalised to integrate to 1).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Density1 {
-    /// N(mean, variance).
+    /// A Gaussian N(mean, variance).
     Gaussian {
-        /// The mean.
+        /// The mean, finite.
         mean: f64,
         /// The variance (> 0).
         variance: f64,
     },
-    /// U[low, high].
+    /// A uniform density U[low, high].
     Uniform {
-        /// The lower end.
+        /// The lower end of the support.
         low: f64,
-        /// The upper end (> low).
+        /// The upper end of the support (> low).
         high: f64,
     },
     /// Σ w_i N(mean_i, var_i) with normalised weights.
@@ -403,13 +403,13 @@ impl Density1 {
 /// P_o(x): a constant, or linear interpolation of a table (held constant beyond its ends).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Detection {
-    /// The same P_o everywhere.
+    /// The same detection probability P_o everywhere.
     Constant(f64),
     /// Knots x (strictly increasing) and probabilities in [0, 1].
     Table {
-        /// Knots.
+        /// The knots, strictly increasing.
         x: Vec<f64>,
-        /// P_o at the knots.
+        /// The detection probability P_o ∈ [0, 1] at the knots.
         probability: Vec<f64>,
     },
 }
@@ -457,13 +457,13 @@ impl Detection {
 /// g(z|x) = N(z; a x + b, σ_v²) with detection P_o(x): the linear-Gaussian observation.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LinearGaussian {
-    /// P_o.
+    /// The detection probability P_o(x).
     pub detection: Detection,
-    /// a.
+    /// The gain a of z = a x + b + v.
     pub gain: f64,
-    /// b.
+    /// The offset b of z = a x + b + v.
     pub offset: f64,
-    /// σ_v² > 0.
+    /// The measurement noise variance σ_v² > 0 of v.
     pub noise_variance: f64,
 }
 

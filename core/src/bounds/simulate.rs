@@ -52,14 +52,14 @@ pub enum SimulatedSystem<'a> {
     /// x ~ N(x0, P) in R^l, z = H x + b + v, v ~ N(0, R), constant P_o (Section V; l = 1 is
     /// Example 1).
     LinearGaussian {
-        /// N(x0, P).
+        /// The Gaussian prior N(x0, P) of the target's state.
         prior: &'a GaussianPrior,
-        /// P_o, H, b, R.
+        /// The linear-Gaussian sensor: detection probability P_o, H, offset b, noise covariance R.
         sensor: &'a LinearGaussianSensor,
     },
     /// Example 2 (32): f(x) = 2x(eˣ − 1), g(z|x) = x e^{xz}/(eˣ − 1) on [0, 1], constant P_o.
     Example2 {
-        /// P_o.
+        /// The detection probability P_o, a constant.
         detection_probability: f64,
     },
 }
@@ -67,16 +67,16 @@ pub enum SimulatedSystem<'a> {
 /// The problem simulated: r, the system, models I or II and the errors e0², e1².
 #[derive(Clone, Copy)]
 pub struct MonteCarloModel<'a> {
-    /// r.
+    /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
-    /// f, g and P_o.
+    /// The system: prior f, likelihood g and detection probability P_o.
     pub system: SimulatedSystem<'a>,
     /// Model I's (q, ψ) or model II's (λ, c); the densities must draw
     /// ([`Density::sample`]).
     pub measurement: VectorMeasurement<'a>,
-    /// e0² (of the whole state; coordinate i uses e0²/l).
+    /// The squared error e0² ≥ 0 of a false target (of the whole state; coordinate i uses e0²/l).
     pub false_alarm_error: f64,
-    /// e1² (of the whole state; coordinate i uses e1²/l).
+    /// The squared error e1² ≥ 0 of a missed target (of the whole state; coordinate i uses e1²/l).
     pub miss_error: f64,
 }
 
@@ -126,9 +126,9 @@ impl Default for JdeMonteCarloOptions {
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MonteCarloRisk {
-    /// The mean of e².
+    /// The mean of the squared error e² over the samples.
     pub mse: f64,
-    /// Its standard error.
+    /// The standard error of `mse`.
     pub se: f64,
 }
 
@@ -137,11 +137,11 @@ pub struct MonteCarloRisk {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct JdeMonteCarlo {
-    /// E e² (11), the mean over the samples.
+    /// The risk E e² (11): the mean squared error over the samples.
     pub mse: f64,
-    /// Its standard error.
+    /// The standard error of `mse`.
     pub se: f64,
-    /// The number of samples.
+    /// The number of simulated scenes.
     pub samples: usize,
     /// The false-target part: the mean of e0² 1{no target, one declared}.
     pub false_alarm: f64,
@@ -154,7 +154,7 @@ pub struct JdeMonteCarlo {
     pub declare_on_empty: bool,
     /// Per coordinate i: E e_i² with e_i(∅, {x'}) = e0/√l, e_i({x}, ∅) = e1/√l.
     pub components: Vec<MonteCarloRisk>,
-    /// After scan 1 … k (the last is `mse`, `se`).
+    /// The risk after each scan 1 … k (the last is `mse`, `se`).
     pub scans: Vec<MonteCarloRisk>,
     /// The seed of the draws ([`JdeMonteCarloOptions::seed`]): the run is reproduced by it.
     pub seed: u64,

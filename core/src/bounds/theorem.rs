@@ -23,7 +23,7 @@ pub struct TheoremOptions {
     /// Monte Carlo samples per cardinality n ≥ 2 (n ≥ 3 when `quadrature_cardinality` is 2)
     /// (Theorem 2; default 20,000).
     pub samples: usize,
-    /// Seed of the Monte Carlo draws.
+    /// The seed of the Monte Carlo draws.
     pub seed: u64,
     /// The Poisson series (23) stops where its tail Σ_{n>N} C_n is below this (default 1e-6).
     pub series_tolerance: f64,
@@ -76,9 +76,9 @@ pub struct Cardinality {
     pub inverse_information: f64,
     /// Pr(Σ β < threshold | n clutter points only): n-point clutter the detector rejects.
     pub clutter_null: f64,
-    /// How it was computed.
+    /// How `w` and the information were computed (quadrature or Monte Carlo).
     pub method: Method,
-    /// Its error estimate (in J'_n⁻¹; quadrature estimate or one standard error).
+    /// The error estimate of J'_n⁻¹ (quadrature estimate or one standard error).
     pub error: f64,
     /// The error estimate of `w`.
     pub w_error: f64,
@@ -92,11 +92,11 @@ pub struct Cardinality {
 pub struct JdeBound {
     /// The bound, its phase, threshold and terms.
     pub assembled: Assembled,
-    /// P̄_o (14).
+    /// The mean detection probability P̄_o (14) = ∫ P_o(x) f(x) dx, in [0, 1].
     pub mean_detection: f64,
-    /// x*, the mean of f_d' (Lemma 2).
+    /// The mean x* of f_d', an undetected target's state (Lemma 2).
     pub undetected_mean: f64,
-    /// σ_e² (16).
+    /// The variance σ_e² (16) of f_d', an undetected target's state.
     pub undetected_variance: f64,
     /// η1 (model I) or η2 (model II, computed exactly: see [`super::theorem2`]).
     pub eta: f64,
@@ -311,19 +311,19 @@ pub(crate) fn inverse_information(w: f64, a: f64, ew: f64, ea: f64) -> (f64, f64
 
 /// Measurement model I (13): Z = Θ_b(X), a Bernoulli observation with false alarms.
 pub struct ModelI<'a> {
-    /// r.
+    /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
-    /// f.
+    /// The prior density f of the target's state.
     pub prior: &'a dyn Density,
-    /// P_o and g.
+    /// The observation: the detection probability P_o and the likelihood g.
     pub observation: &'a dyn Observation,
-    /// q, the false-observation probability.
+    /// The false-observation probability q ∈ [0, 1].
     pub false_alarm_probability: f64,
-    /// ψ, the false-observation density.
+    /// The false-observation density ψ.
     pub false_alarm_density: &'a dyn Density,
-    /// e_0².
+    /// The squared error e_0² ≥ 0 of a false target.
     pub false_alarm_error: f64,
-    /// e_1².
+    /// The squared error e_1² ≥ 0 of a missed target.
     pub miss_error: f64,
 }
 

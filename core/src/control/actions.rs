@@ -7,17 +7,19 @@ use alloc::vec::Vec;
 use crate::math::fns::{cos, sin};
 use crate::smc::{Area, State};
 
-/// One action of (23).
+/// One sensor action u of (23) of Ristic & Vo, "Sensor control for multi-object state-space
+/// estimation using random finite sets" (paper 004): stay, or move j·ρ₀ along heading ℓ·θ₀.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Action {
-    /// 0 for stay, else 1 + (ring − 1)·N_θ + (heading − 1) (0 … 16 in the paper's grid).
+    /// The action's index: 0 for stay, else 1 + (ring − 1)·N_θ + (heading − 1) (0 … 16 in the
+    /// paper's grid).
     pub index: usize,
-    /// j: 0 (stay) … N_ρ; the move is j·ρ₀ (ρ₀ = 50 m).
+    /// The ring j of the move: 0 (stay) … N_ρ; the move is j·ρ₀ (ρ₀ = 50 m).
     pub ring: usize,
-    /// ℓ: 0 for stay, else 1 … N_θ (angle ℓ·θ₀ = ℓ·45° counter-clockwise from +x).
+    /// The heading ℓ: 0 for stay, else 1 … N_θ (angle ℓ·θ₀ = ℓ·45° counter-clockwise from +x).
     pub heading: usize,
-    /// The sensor's next location [x, y].
+    /// The sensor's next location [x, y], in m.
     pub position: State,
     /// Whether `position` lies in the area (admissible; not serialised).
     #[cfg_attr(feature = "serde", serde(skip))]
@@ -32,11 +34,11 @@ pub struct Action {
     serde(default)
 )]
 pub struct ActionGrid {
-    /// N_ρ (2).
+    /// The number N_ρ of rings of move lengths (2).
     pub rings: usize,
-    /// N_θ (8).
+    /// The number N_θ of headings (8).
     pub headings: usize,
-    /// ρ₀ (50 m).
+    /// The move length ρ₀ of one ring, in m (50 m).
     pub step: f64,
 }
 

@@ -42,7 +42,7 @@ pub const MAX_STEPS: usize = 1_000;
 /// The largest n_max (`max_objects`).
 pub const MAX_MAX_OBJECTS: usize = 8;
 
-/// A sensor-control scheme of Fig. 3: the expected Rényi divergence (15)–(17), the Fisher
+/// A sensor-control scheme of Fig. 3 of Ristic & Vo, "Sensor control for multi-object state-space estimation using random finite sets" (paper 004): the expected Rényi divergence (15)–(17), the Fisher
 /// information gain (27)–(29), PENT (30)–(34), or a uniformly random admissible action.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(
@@ -51,13 +51,13 @@ pub const MAX_MAX_OBJECTS: usize = 8;
     serde(rename_all = "lowercase")
 )]
 pub enum Scheme {
-    /// The expected Rényi divergence (15)–(17).
+    /// `renyi`: maximise the expected Rényi divergence (15)–(17).
     Renyi,
-    /// The trace of the Fisher information gain (27)–(29).
+    /// `fisher`: maximise the trace of the Fisher information gain (27)–(29).
     Fisher,
-    /// PENT, the posterior expected number of targets (30)–(34).
+    /// `pent`: maximise PENT, the posterior expected number of targets (30)–(34).
     Pent,
-    /// Uniformly random among the admissible actions.
+    /// `random`: an action drawn uniformly among the admissible ones.
     Random,
 }
 
@@ -76,68 +76,68 @@ impl Scheme {
     }
 }
 
-/// Options of one run of Algorithm 1 on the case study of paper `004`, Sec. 5 (𝒜 = [0, 1000]²
+/// Options of one run of Algorithm 1 on the case study of Ristic & Vo, "Sensor control for multi-object state-space estimation using random finite sets" (paper 004), Sec. 5 (𝒜 = [0, 1000]²
 /// m, p_D = 0.95, λ = 0.8, sources at (300, 600) and (750, 250), σ = 10 + 4·10⁻⁵ d²). The
 /// scene (area, truth, sensor, actions, regularisation) is the paper's and is not read by
 /// serde.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ControlOptions {
-    /// Seed (integer in [0, 2^53 − 1]); omitted: fresh entropy, read back as `run.seed`
+    /// The seed (integer in [0, 2^53 − 1]); omitted: fresh entropy, read back as `run.seed`
     /// (a binding draws it; [`ControlRun::new`] takes the seed it uses).
     #[cfg_attr(
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub seed: Option<u64>,
-    /// The control scheme.
+    /// The control scheme: which reward chooses the sensor's next action.
     pub scheme: Scheme,
-    /// N, the number of multi-object particles (default 750; 1 … 20,000).
+    /// The number N of multi-object particles (default 750; 1 … 20,000).
     #[cfg_attr(
         feature = "serde",
         serde(default = "ControlOptions::default_particles")
     )]
     pub particles: usize,
-    /// M, the ideal future scans per Rényi reward (default 200; 1 … 2,000; N·M·2^max(n_max − 4, 0)
-    /// ≤ 300,000).
+    /// The number M of ideal future scans per Rényi reward (default 200; 1 … 2,000;
+    /// N·M·2^max(n_max − 4, 0) ≤ 300,000).
     #[cfg_attr(
         feature = "serde",
         serde(default = "ControlOptions::default_future_scans")
     )]
     pub future_scans: usize,
-    /// α > 0 of the Rényi divergence (default 0.5; 1 is the Kullback–Leibler divergence).
+    /// The order α > 0 of the Rényi divergence (default 0.5; 1 is the Kullback–Leibler divergence).
     #[cfg_attr(feature = "serde", serde(default = "ControlOptions::default_alpha"))]
     pub alpha: f64,
-    /// K, the number of steps (default 40; 1 … 1,000).
+    /// The number K of steps of the run (default 40; 1 … 1,000).
     #[cfg_attr(feature = "serde", serde(default = "ControlOptions::default_steps"))]
     pub steps: usize,
-    /// The sensor's initial location [x, y] in the area (the paper does not state it;
+    /// The sensor's initial location [x, y] in m, in the area (the paper does not state it;
     /// default [0, 0]).
     #[cfg_attr(feature = "serde", serde(default = "ControlOptions::default_start"))]
     pub start: State,
-    /// n_max, the largest cardinality of a particle (default 4; 1 … 8; the paper does not
+    /// The largest number n_max of objects in a particle (default 4; 1 … 8; the paper does not
     /// state it).
     #[cfg_attr(
         feature = "serde",
         serde(default = "ControlOptions::default_max_objects")
     )]
     pub max_objects: usize,
-    /// 𝒜 = [0, 1000]².
+    /// The surveillance area 𝒜 = [0, 1000]² m².
     #[cfg_attr(feature = "serde", serde(skip, default = "ControlOptions::paper_area"))]
     pub area: Area,
-    /// The true objects, (300, 600) and (750, 250).
+    /// The true objects' positions [x, y] in m, (300, 600) and (750, 250).
     #[cfg_attr(
         feature = "serde",
         serde(skip, default = "ControlOptions::paper_truth")
     )]
     pub truth: Vec<State>,
-    /// The sensor.
+    /// The range-only sensor: detection probability, clutter and range noise of Sec. 5.
     #[cfg_attr(feature = "serde", serde(skip))]
     pub sensor: RangeSensor,
-    /// The actions (23).
+    /// The sensor's admissible actions (23): a grid of rings and headings.
     #[cfg_attr(feature = "serde", serde(skip))]
     pub actions: ActionGrid,
-    /// The regularisation (Sec. 5.2).
+    /// The particle regularisation after resampling (Sec. 5.2).
     #[cfg_attr(feature = "serde", serde(skip))]
     pub regularisation: Regularisation,
 }
@@ -275,25 +275,25 @@ impl ControlOptions {
     }
 }
 
-/// What one step of Algorithm 1 produced.
+/// What one step of Algorithm 1 of Ristic & Vo, "Sensor control for multi-object state-space estimation using random finite sets" (paper 004) produced.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct StepOutcome {
-    /// k, the 1-based step just processed.
+    /// The step number k, 1-based, of the step just processed.
     pub k: usize,
-    /// Where Z_k was taken [x, y].
+    /// The sensor location [x, y] in m where the scan Z_k was taken.
     pub sensor: State,
-    /// Z_k, the ranges received (m).
+    /// The scan Z_k: the ranges received, in m.
     pub measurements: Vec<f64>,
-    /// u_k, chosen after the update: where the sensor goes next.
+    /// The action u_k, chosen after the update: where the sensor goes next.
     pub action: Action,
     /// The reward of each action, indexed like `action.index`; −∞ for actions outside the
     /// area (in JavaScript `-Infinity`, a number: postMessage keeps it, JSON.stringify writes
     /// null). The random scheme: 0 when admissible.
     pub rewards: Vec<f64>,
-    /// X̂_k, the estimate (22).
+    /// The multi-object estimate X̂_k (22) after the update.
     pub estimate: SetEstimate,
-    /// OSPA of X̂_k against the truth.
+    /// The OSPA error of X̂_k against the true objects, with its parts.
     pub ospa: OspaParts,
 }
 
@@ -302,11 +302,11 @@ pub struct StepOutcome {
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OspaParts {
-    /// OSPA (24), in [0, 100].
+    /// The OSPA distance (24), in m, in [0, 100].
     pub distance: f64,
-    /// The localisation part (26).
+    /// The OSPA localisation part (26), in m.
     pub localisation: f64,
-    /// The cardinality part (25).
+    /// The OSPA cardinality part (25), in m.
     pub cardinality: f64,
 }
 
@@ -322,11 +322,11 @@ impl OspaParts {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ControlParticles {
-    /// w_i (1/N after each step).
+    /// The particle weights w_i, one per particle (1/N after each step).
     pub weights: Vec<f64>,
-    /// n_i.
+    /// The number of objects n_i of each particle.
     pub cardinalities: Vec<usize>,
-    /// The objects' x, y, particle after particle.
+    /// The objects' positions x, y in m, flat, particle after particle.
     pub positions: Vec<f64>,
 }
 
@@ -377,23 +377,23 @@ impl ControlRun {
         })
     }
 
-    /// The options.
+    /// The options of the run.
     pub fn options(&self) -> &ControlOptions {
         &self.config
     }
-    /// The particles (empty before the first step).
+    /// The multi-object particles (empty before the first step).
     pub fn particles(&self) -> &MultiObjectParticles {
         &self.particles
     }
-    /// The start and every location moved to.
+    /// The sensor's path: the start and every location moved to.
     pub fn sensor_path(&self) -> &[State] {
         &self.path
     }
-    /// Z_1 … Z_k.
+    /// The scans Z_1 … Z_k received so far (ranges in m).
     pub fn measurements(&self) -> &[Vec<f64>] {
         &self.measurements
     }
-    /// Steps done.
+    /// The number k of steps done.
     pub fn k(&self) -> usize {
         self.k
     }

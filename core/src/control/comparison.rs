@@ -15,50 +15,51 @@ pub const MAX_RUNS: usize = 1_000;
 /// The cap on the number of schemes of [`CompareOptions`].
 pub const MAX_SCHEMES: usize = 16;
 
-/// Options of the comparison of Fig. 3: `runs` seeded runs of each scheme of the case study,
+/// Options of the comparison of Fig. 3 of Ristic & Vo, "Sensor control for multi-object state-space estimation using random finite sets" (paper 004): `runs` seeded runs of each scheme of the case study,
 /// averaged (the rest as in [`ControlOptions`]).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CompareOptions {
-    /// Monte Carlo runs per scheme (1 … 1,000).
+    /// The number of Monte Carlo runs per scheme (1 … 1,000).
     pub runs: usize,
-    /// K, the steps of each run (1 … 1,000).
+    /// The number K of steps of each run (1 … 1,000).
     pub steps: usize,
-    /// Master seed; run r of every scheme uses the same derived seed ([`run_seeds`]).
+    /// The master seed; run r of every scheme uses the same derived seed ([`run_seeds`]).
     /// Omitted: entropy (a binding draws it).
     #[cfg_attr(
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub seed: Option<u64>,
-    /// The schemes (default all four: renyi, fisher, pent, random; 1 … 16 of them).
+    /// The control schemes to compare (default all four: renyi, fisher, pent, random; 1 … 16 of them).
     #[cfg_attr(feature = "serde", serde(default = "CompareOptions::default_schemes"))]
     pub schemes: Vec<Scheme>,
-    /// N (default 750).
+    /// The number N of multi-object particles (default 750; 1 … 20,000).
     #[cfg_attr(
         feature = "serde",
         serde(default = "crate::control::ControlOptions::default_particles")
     )]
     pub particles: usize,
-    /// M (default 200).
+    /// The number M of ideal future scans per Rényi reward (default 200; 1 … 2,000).
     #[cfg_attr(
         feature = "serde",
         serde(default = "crate::control::ControlOptions::default_future_scans")
     )]
     pub future_scans: usize,
-    /// α (default 0.5).
+    /// The order α > 0 of the Rényi divergence (default 0.5; 1 is the Kullback–Leibler
+    /// divergence).
     #[cfg_attr(
         feature = "serde",
         serde(default = "crate::control::ControlOptions::default_alpha")
     )]
     pub alpha: f64,
-    /// The sensor's initial location (default [0, 0]).
+    /// The sensor's initial location [x, y] in m (default [0, 0]).
     #[cfg_attr(
         feature = "serde",
         serde(default = "crate::control::ControlOptions::default_start")
     )]
     pub start: State,
-    /// n_max (default 4).
+    /// The largest number n_max of objects in a particle (default 4; 1 … 8).
     #[cfg_attr(
         feature = "serde",
         serde(default = "crate::control::ControlOptions::default_max_objects")
@@ -126,18 +127,20 @@ impl CompareOptions {
     }
 }
 
-/// The result of the comparison of Fig. 3.
+/// The result of the comparison of Fig. 3 of Ristic & Vo, "Sensor control for multi-object
+/// state-space estimation using random finite sets" (paper 004): each scheme's OSPA errors averaged
+/// over the runs.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Comparison {
-    /// The master seed used.
+    /// The master seed used (the option's, or the fresh one drawn).
     pub seed: u64,
     /// The seed of run r (the same for every scheme; 53-bit integers): a run of the case
     /// study seeded with it, with the same options and scheme, repeats that run exactly.
     pub run_seeds: Vec<u64>,
-    /// Runs per scheme.
+    /// The number of Monte Carlo runs per scheme.
     pub runs: usize,
-    /// K.
+    /// The number K of steps of each run.
     pub steps: usize,
     /// One entry per requested scheme, in order.
     pub schemes: Vec<SchemeSummary>,
@@ -147,23 +150,23 @@ pub struct Comparison {
 #[derive(Clone, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MeanSeries {
-    /// The mean at k = 1 … K.
+    /// The mean over the runs at each step k = 1 … K.
     pub mean: Vec<f64>,
-    /// The standard error at k = 1 … K.
+    /// The standard error of that mean at each step k = 1 … K.
     pub standard_error: Vec<f64>,
 }
 
-/// One scheme's averaged errors over time.
+/// One scheme's OSPA errors (eqs. (24)–(26) of Ristic & Vo, "Sensor control for multi-object state-space estimation using random finite sets", paper 004) averaged over the runs, per step.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SchemeSummary {
-    /// The scheme.
+    /// The control scheme.
     pub scheme: Scheme,
-    /// OSPA (24).
+    /// The OSPA distance (24) (c = 100 m, p = 2), in m.
     pub distance: MeanSeries,
-    /// The localisation part (26).
+    /// The OSPA localisation part (26), in m.
     pub localisation: MeanSeries,
-    /// The cardinality part (25).
+    /// The OSPA cardinality part (25), in m.
     pub cardinality: MeanSeries,
 }
 

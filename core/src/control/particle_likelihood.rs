@@ -24,21 +24,21 @@ pub struct MultiObjectLikelihoodOptions {
         serde(with = "crate::serde_shapes::rows_of_numbers")
     )]
     pub likelihoods: Vec<Vec<f64>>,
-    /// p_D, in [0, 1].
+    /// The detection probability p_D ∈ [0, 1] of each object.
     pub detection_probability: f64,
-    /// λ ≥ 0, the mean number of clutter measurements.
+    /// The clutter rate λ ≥ 0: the mean number of clutter measurements per scan.
     pub clutter_rate: f64,
-    /// c(z_j) ≥ 0, the clutter density at each measurement j (m ≤ 1000), so that
+    /// The clutter density c(z_j) ≥ 0 at each measurement j (m ≤ 1000), so that
     /// f_c(Z) = e^{−λ} Π_j λ c(z_j).
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::numbers"))]
     pub clutter_density: Vec<f64>,
 }
 
-/// The value of (20) for one particle.
+/// The multi-object likelihood (20) of Ristic & Vo, "Sensor control for multi-object state-space estimation using random finite sets" (paper 004) for one particle.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ParticleLikelihood {
-    /// ln g(Z | X) of (20); −∞ (`-Infinity`) when the likelihood is zero (never NaN).
+    /// The log-likelihood ln g(Z | X) of (20); −∞ (`-Infinity`) when the likelihood is zero (never NaN).
     pub log_likelihood: f64,
 }
 

@@ -21,15 +21,16 @@ use crate::smc::{LikelihoodWorkspace, MultiObjectLikelihood, State};
     serde(default)
 )]
 pub struct RangeSensor {
-    /// p_D (0.95).
+    /// The detection probability p_D ∈ [0, 1] of each object (0.95).
     pub detection: f64,
-    /// λ (0.8).
+    /// The clutter rate λ ≥ 0: the mean number of clutter ranges per scan (0.8).
     pub clutter_rate: f64,
-    /// R_max (√2·1000 m).
+    /// The largest range R_max, in m; clutter is uniform on [0, R_max] (√2·1000 m).
     pub max_range: f64,
-    /// σ₀ (10 m).
+    /// The range noise's standard deviation σ₀ at zero range, in m (10 m).
     pub sigma0: f64,
-    /// s (4·10⁻⁵ m⁻¹).
+    /// The growth s of the range noise's standard deviation with the squared range, in m⁻¹
+    /// (4·10⁻⁵ m⁻¹).
     pub sigma_slope: f64,
 }
 

@@ -192,7 +192,8 @@ pub fn jom_estimate(existence: &[f64], ln_peak: &[f64], ln_c: f64) -> Result<Vec
     Ok(report_top(n, &order, best_k))
 }
 
-/// One of the classical estimators of Fig. 2 of `003_…`.
+/// One of the classical estimators of Fig. 2 of García-Fernández & Svensson, "Spooky effect in
+/// optimal OSPA estimation and how GOSPA solves it" (paper 003).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]

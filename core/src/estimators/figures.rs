@@ -30,13 +30,13 @@ pub const MAX_IDENTICAL_COMPONENTS: usize = 300;
 pub enum DecisionEstimator {
     /// The optimal GOSPA estimate (with [`DecisionMapOptions::alpha`]).
     Gospa,
-    /// The optimal OSPA estimate.
+    /// `ospa`: the estimate that minimises the mean OSPA error.
     Ospa,
-    /// The optimal UOSPA estimate.
+    /// `uospa`: the estimate that minimises the mean UOSPA error.
     Uospa,
-    /// Marginal multi-target (Fig. 2).
+    /// `mam`: the marginal multi-target estimator (Fig. 2).
     Mam,
-    /// Joint multi-target (Fig. 2).
+    /// `jom`: the joint multi-target estimator (Fig. 2).
     Jom,
     /// MAP cardinality, then the most probable components (Fig. 2).
     MapCardinality,
@@ -53,7 +53,8 @@ pub const fn default_cutoff() -> f64 {
     1.0
 }
 
-/// Options of [`decision_map`].
+/// Options of [`decision_map`] (Figs. 1–2 of García-Fernández & Svensson, "Spooky effect in optimal
+/// OSPA estimation and how GOSPA solves it" (paper 003)).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct DecisionMapOptions {
@@ -90,7 +91,7 @@ impl DecisionMapOptions {
 #[derive(Clone, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct DecisionMap {
-    /// Cells per axis.
+    /// The number of grid cells per axis (the map has resolution² cells).
     pub resolution: usize,
     /// `decisions[row * resolution + col]` = u1 + 2·u2 at r1 = (col + ½)/resolution,
     /// r2 = (row + ½)/resolution.
@@ -176,15 +177,15 @@ pub struct IdenticalComponentCountsOptions {
 #[derive(Clone, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct IdenticalComponentCounts {
-    /// n = 1 … `max_components`.
+    /// The number of identical components n = 1 … `max_components`.
     pub n: Vec<usize>,
-    /// The optimal GOSPA estimate (α = 2).
+    /// The number of targets the optimal GOSPA estimate (α = 2) reports, for each n.
     pub gospa: Vec<usize>,
-    /// The optimal OSPA estimate.
+    /// The number of targets the optimal OSPA estimate reports, for each n.
     pub ospa: Vec<usize>,
-    /// The optimal UOSPA estimate.
+    /// The number of targets the optimal UOSPA estimate reports, for each n.
     pub uospa: Vec<usize>,
-    /// The MAP-cardinality rule.
+    /// The number of targets the MAP-cardinality rule reports, for each n.
     pub map_cardinality: Vec<usize>,
 }
 

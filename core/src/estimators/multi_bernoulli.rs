@@ -75,9 +75,9 @@ pub enum SetMetric {
         /// α, the cardinality-mismatch weight.
         alpha: f64,
     },
-    /// UOSPA (GOSPA with α = 1).
+    /// `uospa`: UOSPA (GOSPA with α = 1).
     Uospa,
-    /// OSPA.
+    /// `ospa`: OSPA.
     Ospa,
 }
 
@@ -104,7 +104,7 @@ enum Kind {
     Ospa,
 }
 
-/// An estimate and its mean error.
+/// A multi-Bernoulli estimate (which components are reported) and its mean error E[d^p].
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MbEstimate {

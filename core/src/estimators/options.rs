@@ -18,11 +18,11 @@ use crate::metrics::{default_alpha, default_order};
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
 pub enum SetMetricName {
-    /// GOSPA with the given `alpha`.
+    /// `gospa`: GOSPA with the given `alpha`.
     Gospa,
-    /// OSPA.
+    /// `ospa`: OSPA.
     Ospa,
-    /// UOSPA (GOSPA with α = 1).
+    /// `uospa`: UOSPA (GOSPA with α = 1).
     Uospa,
 }
 
@@ -53,7 +53,7 @@ pub struct MbOptimalEstimateOptions {
     pub existence: Vec<f64>,
     /// The metric whose mean error is minimised.
     pub metric: SetMetricName,
-    /// Cut-off c > 0 (default 1).
+    /// The metric's cut-off c > 0, in the units of the states (default 1).
     #[cfg_attr(feature = "serde", serde(default = "default_cutoff"))]
     pub c: f64,
     /// GOSPA's α in (0, 2] (default 2; ignored by OSPA and UOSPA).
@@ -88,15 +88,15 @@ pub struct MbMeanSquareErrorOptions {
     /// with α = 2; at most 20,000 for the other metrics (the cost is O(n²)).
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::numbers"))]
     pub existence: Vec<f64>,
-    /// The metric.
+    /// The set metric whose mean error E[d^p] is computed.
     pub metric: SetMetricName,
-    /// GOSPA's α in (0, 2] (default 2).
+    /// GOSPA's cardinality-mismatch weight α ∈ (0, 2] (default 2).
     #[cfg_attr(feature = "serde", serde(default = "default_alpha"))]
     pub alpha: f64,
-    /// Order p ≥ 1 (default 2).
+    /// The metric's order p ≥ 1 (default 2).
     #[cfg_attr(feature = "serde", serde(default = "default_order"))]
     pub p: f64,
-    /// Cut-off c > 0 (default 1).
+    /// The metric's cut-off c > 0, in the units of the states (default 1).
     #[cfg_attr(feature = "serde", serde(default = "default_cutoff"))]
     pub c: f64,
 }
@@ -112,7 +112,8 @@ impl MbMeanSquareErrorOptions {
     }
 }
 
-/// A classical estimator of Fig. 2, [`alternative_estimate`].
+/// A classical estimator of Fig. 2 of García-Fernández & Svensson, "Spooky effect in optimal OSPA
+/// estimation and how GOSPA solves it" (paper 003), [`alternative_estimate`].
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MbAlternativeEstimateOptions {
@@ -120,7 +121,7 @@ pub struct MbAlternativeEstimateOptions {
     /// `map-cardinality` (the cardinality pmf costs O(n²)); any number for `jom`.
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::numbers"))]
     pub existence: Vec<f64>,
-    /// The estimator.
+    /// The classical estimator: `mam`, `jom` or `map-cardinality`.
     pub method: AlternativeMethod,
     /// `ln_peak[i]` = −½ ln det(2π P_i) of component i's Gaussian (default 0 for all: equal
     /// covariances); one per component.

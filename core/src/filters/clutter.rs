@@ -84,7 +84,8 @@ impl PartialEq for ClutterDensity {
 pub struct Clutter {
     /// λ_c ≥ 0, the expected number of false reports per scan.
     pub rate: f64,
-    /// c̃(ζ).
+    /// The clutter density c̃(ζ) ≥ 0 of a false report ζ (a constant, one value per report, or a
+    /// function).
     pub density: ClutterDensity,
 }
 

@@ -61,9 +61,10 @@ pub(crate) fn normalised_density(mixture: &GaussianMixture, what: &str) -> Resul
 /// with Σ_ℓ w_ℓ = 1 (eq. (42)).
 #[derive(Clone, Debug, PartialEq)]
 pub struct GmBernoulli {
-    /// r, the probability that the object exists (`existence`).
+    /// The existence probability r ∈ [0, 1]: the probability that the object exists (`existence`).
     pub existence: f64,
-    /// p(x) (`mixture`), weights summing to 1.
+    /// The spatial density p(x) of the object's state (`mixture`), a Gaussian mixture with weights
+    /// summing to 1.
     pub mixture: GaussianMixture,
 }
 
@@ -90,9 +91,10 @@ impl GmBernoulli {
 /// density b(x) (eq. (43) of `001_…`) as a Gaussian mixture with weights summing to 1.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Birth {
-    /// p_b (`birth.probability`).
+    /// The birth probability p_b ∈ [0, 1] (`birth.probability`): the probability that an object
+    /// appears in one step when none exists.
     pub probability: f64,
-    /// b(x) (`birth.mixture`); may be empty when p_b = 0.
+    /// The birth density b(x) of a new object's state (`birth.mixture`); may be empty when p_b = 0.
     pub mixture: GaussianMixture,
 }
 
@@ -154,11 +156,12 @@ pub const MAX_REDUCED_COMPONENTS: usize = 1_000_000;
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PredictOptions {
-    /// π(x | x′) = N(x; F x′, Q) (`transition: { F, Q }`).
+    /// The motion model π(x | x′) = N(x; F x′, Q) (`transition: { F, Q }`).
     pub transition: LinearGaussianTransition,
-    /// p_S, the probability that an existing object survives one step (`survival`).
+    /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives
+    /// one step (`survival`).
     pub survival: f64,
-    /// p_b and b(x) (`birth`).
+    /// Object birth: the birth probability p_b and birth density b(x) (`birth`).
     pub birth: Birth,
 }
 
@@ -212,7 +215,9 @@ impl Default for Splitting {
 }
 
 /// The splitting step as a user gives it (`splitting`): the parameters of the split library
-/// and of Algorithms 1–2, every one optional, the defaults those of [`Splitting::default`].
+/// and of Algorithms 1–2 of LeGrand & Ferrari, "Split Happens! Imprecise and negative
+/// information in Gaussian mixture random finite set filtering" (paper 001), every one optional,
+/// the defaults those of [`Splitting::default`].
 /// [`SplittingOptions::build`] checks them and makes the [`Splitting`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(
@@ -375,9 +380,10 @@ pub struct UpdateOptions {
     /// n_s: the position is the first `position_dims` state components (`positionDims`,
     /// default 2). Every region (FoV, report, exclusion) has this dimension.
     pub position_dims: usize,
-    /// p_D(x; S) (`detection`).
+    /// Detection: the detection probability p_D(x; S) = 1_S(x) p_D inside the field of view S
+    /// (`detection`).
     pub detection: Detection,
-    /// λ_c and c̃(ζ) (`clutter`).
+    /// Clutter (false reports): the rate λ_c and density c̃(ζ) (`clutter`).
     pub clutter: Clutter,
     /// Algorithm 3's splitting step (`splitting`).
     #[cfg_attr(feature = "serde", serde(default))]
@@ -468,33 +474,38 @@ impl UpdateOptions {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BernoulliFilterOptions {
-    /// r_{0|0} (`existence`).
+    /// The initial existence probability r_{0|0} ∈ [0, 1] (`existence`).
     pub existence: f64,
-    /// p_{0|0} (`mixture`), weights summing to 1.
+    /// The initial spatial density p_{0|0} (`mixture`), a Gaussian mixture with weights summing to
+    /// 1.
     pub mixture: GaussianMixture,
-    /// F, Q (`transition`).
+    /// The motion model: transition matrix F and process noise covariance Q (`transition`).
     pub transition: LinearGaussianTransition,
-    /// p_S (`survival`).
+    /// The survival probability p_S ∈ [0, 1] (`survival`): the probability that an existing object
+    /// survives one step.
     pub survival: f64,
-    /// p_b, b(x) (`birth`).
+    /// Object birth: the birth probability p_b and birth density b(x) (`birth`).
     pub birth: Birth,
-    /// n_s (`positionDims`).
+    /// The number n_s of position components (`positionDims`): the first n_s state components are
+    /// the position that regions refer to.
     pub position_dims: usize,
-    /// p_D(x; S) (`detection`).
+    /// Detection: the detection probability p_D(x; S) = 1_S(x) p_D inside the field of view S
+    /// (`detection`).
     pub detection: Detection,
-    /// λ_c, c̃ (`clutter`).
+    /// Clutter (false reports): the rate λ_c and density c̃ (`clutter`).
     pub clutter: Clutter,
     /// H, R for vector measurements (`likelihood`); `None` when only region reports are
     /// processed.
     #[cfg_attr(feature = "serde", serde(default))]
     pub likelihood: Option<LinearGaussianLikelihood>,
-    /// (`splitting`; default [`Splitting::default`]).
+    /// The splitting step of the GM filter's update (`splitting`; default [`Splitting::default`]).
     #[cfg_attr(feature = "serde", serde(default = "Splitting::default"))]
     pub splitting: Splitting,
-    /// (`reduction`; default [`default_reduction`]).
+    /// The GM filter's mixture reduction after each update (`reduction`; default
+    /// [`default_reduction`]).
     #[cfg_attr(feature = "serde", serde(default = "default_reduction"))]
     pub reduction: ReductionOptions,
-    /// (`exclusions`; default none).
+    /// Regions the object cannot occupy (`exclusions`; default none).
     #[cfg_attr(feature = "serde", serde(default = "Vec::new"))]
     pub exclusions: Vec<Region>,
 }

@@ -11,9 +11,9 @@ use crate::regions::Region;
 /// detectable everywhere.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Detection {
-    /// p_D inside the field of view (`detection.probability`).
+    /// The detection probability p_D ∈ [0, 1] inside the field of view (`detection.probability`).
     pub probability: f64,
-    /// S (`detection.fov`); `None`: detection everywhere.
+    /// The field of view S (`detection.fov`); `None`: detection everywhere.
     pub fov: Option<Region>,
 }
 

@@ -29,7 +29,7 @@ pub struct EstimateOptions {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FilterEstimate {
-    /// r_{k|k}.
+    /// The posterior existence probability r_{k|k} ∈ [0, 1].
     pub existence: f64,
     /// The MMSE state estimate E[x | object exists] = ∫ x p(x) dx.
     pub mean: Vec<f64>,

@@ -108,13 +108,14 @@ pub fn gm_bernoulli_predict(state: &GmBernoulli, config: &PredictOptions) -> Res
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GmBernoulliUpdate {
-    /// r_{k|k} (`existence`).
+    /// The posterior existence probability r_{k|k} ∈ [0, 1] (`existence`).
     pub existence: f64,
-    /// p_{k|k} after the reduction (`mixture`), weights summing to 1.
+    /// The posterior spatial density p_{k|k} after the reduction (`mixture`), weights summing
+    /// to 1.
     pub mixture: GaussianMixture,
-    /// Δ_k of eq. (58) (`delta`), computed on the split, exclusion-constrained prediction;
-    /// 1 − Δ_k is the likelihood ratio of the scan under "the object exists" against "it
-    /// does not". −∞ when a report has zero clutter intensity (it can only be the object's).
+    /// The update's Δ_k of eq. (58) (`delta`), computed on the split, exclusion-constrained
+    /// prediction; 1 − Δ_k is the likelihood ratio of the scan under "the object exists" against
+    /// "it does not". −∞ when a report has zero clutter intensity (it can only be the object's).
     pub delta: f64,
     /// The number of components after splitting, before the update and reduction
     /// (`splitComponents`).
@@ -696,7 +697,7 @@ fn check_vector_work(components: usize, measurements: usize, n: usize) -> Result
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct UpdateInfo {
-    /// Δ_k of eq. (58) (−∞ when a report has zero clutter intensity).
+    /// The update's Δ_k of eq. (58) (−∞ when a report has zero clutter intensity).
     pub delta: f64,
     /// Components after splitting (GM filter); the particle count (particle filter).
     pub split_components: usize,

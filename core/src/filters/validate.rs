@@ -18,9 +18,9 @@ use crate::regions::{Node, Region};
 /// the shape (rows, length of its first row).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct ConfigShapes<'a> {
-    /// F (`transition.f`), rows × columns.
+    /// The shape of the transition matrix F (`transition.f`), rows × columns.
     pub f: (usize, usize),
-    /// Q (`transition.q`), rows × columns.
+    /// The shape of the process noise covariance Q (`transition.q`), rows × columns.
     pub q: (usize, usize),
     /// The length of each mean of p_{0|0} (`mixture[i].mean`).
     pub mixture: &'a [usize],
@@ -28,7 +28,7 @@ pub struct ConfigShapes<'a> {
     pub birth: &'a [usize],
     /// H and R (`likelihood.h`, `likelihood.r`), when given.
     pub likelihood: Option<((usize, usize), (usize, usize))>,
-    /// n_s (`position_dims`).
+    /// The number n_s of position components (`position_dims`).
     pub position_dims: usize,
 }
 

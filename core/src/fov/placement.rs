@@ -26,11 +26,11 @@ const SKIP: f64 = 1e-17;
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GridAxis {
-    /// The first centre.
+    /// The first FoV centre along the axis.
     pub min: f64,
-    /// The last centre.
+    /// The last FoV centre along the axis.
     pub max: f64,
-    /// The number of centres (≥ 1).
+    /// The number of FoV centres along the axis (≥ 1).
     pub count: usize,
 }
 
@@ -80,15 +80,15 @@ impl GridAxis {
 pub struct VarianceMap {
     /// Var[|X ∩ S(x_i, y_j)|], row-major with y as the outer index: entry `j·nx + i`.
     pub variance: Vec<f64>,
-    /// Centres along x.
+    /// The number of FoV centres along x.
     pub nx: usize,
-    /// Centres along y.
+    /// The number of FoV centres along y.
     pub ny: usize,
     /// The FoV centre (x, y) of the largest variance (the first in row-major order on ties).
     pub argmax: [f64; 2],
-    /// Its grid indices (i, j).
+    /// The grid indices (i, j) of the largest variance's centre.
     pub argmax_index: [usize; 2],
-    /// The largest variance.
+    /// The largest FoV-count variance over the grid.
     pub max: f64,
 }
 

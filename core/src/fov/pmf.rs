@@ -21,7 +21,7 @@ pub const MAX_ENUMERATED: usize = 12;
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FovCardinality {
-    /// ρ_S(0), ρ_S(1), …
+    /// The pmf ρ_S(0), ρ_S(1), … of the number of objects in the field of view S.
     pub pmf: Vec<f64>,
     /// E[|X ∩ S|], by the closed form of each function (not from the truncated pmf).
     pub mean: f64,

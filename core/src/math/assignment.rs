@@ -23,7 +23,7 @@ use alloc::vec::Vec;
 use crate::error::{Error, Result};
 use crate::math::sum::NeumaierSum;
 
-/// An optimal assignment.
+/// An optimal assignment: the row–column pairs of least total cost.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Assignment {

@@ -61,7 +61,8 @@ pub struct Gospa {
     alpha: f64,
 }
 
-/// GOSPA (α = 2) split into its parts (Prop. 3 of the spooky-effect paper).
+/// GOSPA (α = 2) split into its parts (Prop. 3 of García-Fernández & Svensson, "Spooky effect in
+/// optimal OSPA estimation and how GOSPA solves it", paper 003).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GospaDecomposition {
@@ -71,22 +72,23 @@ pub struct GospaDecomposition {
     /// not rooted, not normalised (so `distance^p = localisation + c^p/2 · (missed +
     /// false_targets)`), unlike OSPA's rooted, normalised `OspaDecomposition::localisation`.
     pub localisation: f64,
-    /// Truth points left unassigned.
+    /// The number of missed targets: truth points left unassigned.
     pub missed: usize,
-    /// Estimate points left unassigned.
+    /// The number of false targets: estimate points left unassigned.
     pub false_targets: usize,
     /// The assigned `(truth index, estimate index)` pairs, sorted by truth index; every pair
     /// has `d < c`.
     pub assignment: Vec<(usize, usize)>,
 }
 
-/// GOSPA between two point sets with, for α = 2, its decomposition (Prop. 3 of the
-/// spooky-effect paper): what [`Gospa::report`] returns. For α ≠ 2 only `distance` is set
+/// GOSPA between two point sets with, for α = 2, its decomposition (Prop. 3 of
+/// García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation and how GOSPA solves it",
+/// paper 003): what [`Gospa::report`] returns. For α ≠ 2 only `distance` is set
 /// (the decomposition into localisation, missed and false targets exists for α = 2 only).
 #[derive(Clone, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GospaReport {
-    /// The GOSPA distance.
+    /// The GOSPA distance, ≥ 0, in the units of the points.
     pub distance: f64,
     /// The localisation cost Σ d^p over the assigned pairs: a sum of p-th powers, not rooted,
     /// not normalised, so `distance^p = localisation + c^p/2 · (missed + falseTargets)`
@@ -96,13 +98,13 @@ pub struct GospaReport {
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub localisation: Option<f64>,
-    /// Unassigned truth points (α = 2 only).
+    /// The number of missed targets: unassigned truth points (α = 2 only).
     #[cfg_attr(
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")
     )]
     pub missed: Option<usize>,
-    /// Unassigned estimate points (α = 2 only).
+    /// The number of false targets: unassigned estimate points (α = 2 only).
     #[cfg_attr(
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")

@@ -20,7 +20,7 @@ pub const fn default_alpha() -> f64 {
     2.0
 }
 
-/// The parameters of a [`Gospa`] metric.
+/// The parameters of a [`Gospa`] metric: cut-off c, order p and cardinality-mismatch weight α.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GospaOptions {
@@ -114,7 +114,7 @@ impl GospaSeriesOptions {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OspaSeriesOptions {
-    /// The cut-off c > 0.
+    /// The cut-off c > 0, in the units of the points.
     pub c: f64,
     /// The order p ≥ 1 (finite; default 2).
     #[cfg_attr(feature = "serde", serde(default = "default_order"))]

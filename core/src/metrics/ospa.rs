@@ -45,18 +45,19 @@ pub struct Ospa {
     p: f64,
 }
 
-/// OSPA split into its localisation and cardinality parts, eqs. (24)–(26) of `004_…`.
+/// OSPA split into its localisation and cardinality parts, eqs. (24)–(26) of Ristic & Vo, "Sensor
+/// control for multi-object state-space estimation using random finite sets" (paper 004).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OspaDecomposition {
-    /// d̄_{c,p}(X, Y), eq. (24).
+    /// The OSPA distance d̄_{c,p}(X, Y), eq. (24), in [0, c].
     pub distance: f64,
     /// The localisation part e^loc_{c,p}, eq. (26): rooted and normalised,
     /// `((1/n) Σ min(d, c)^p)^(1/p)` over the optimal pairs (n the larger set's size), so
     /// `distance^p = localisation^p + cardinality^p`; not GOSPA's `localisation`, which is
     /// the sum Σ d^p itself.
     pub localisation: f64,
-    /// e^card_{c,p}, eq. (25) (rooted).
+    /// The cardinality part e^card_{c,p}, eq. (25) (rooted), in [0, c].
     pub cardinality: f64,
     /// The optimal permutation's `(truth index, estimate index)` pairs: all of the smaller
     /// set, sorted by truth index (cut-off pairs included).

@@ -9,7 +9,8 @@ use crate::error::{Error, Result, Shape};
 use crate::math::sum::sum;
 
 /// GOSPA over a scenario: the distance at every time step and its mean, with the α = 2
-/// decomposition (Prop. 3 of `003_…`: localisation, missed and false targets) per step and
+/// decomposition (Prop. 3 of García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation
+/// and how GOSPA solves it", paper 003: localisation, missed and false targets) per step and
 /// averaged, when it exists.
 ///
 /// Built by [`Gospa::series`] / [`Gospa::series_with`], or collected from per-step
@@ -17,7 +18,7 @@ use crate::math::sum::sum;
 #[derive(Clone, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GospaSeries {
-    /// GOSPA at each step.
+    /// The GOSPA distance at each step.
     pub distance: Vec<f64>,
     /// The mean of `distance` over the steps (0 for no steps).
     pub mean_distance: f64,
@@ -69,7 +70,8 @@ pub struct GospaSeries {
 #[derive(Clone, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OspaSeries {
-    /// OSPA at each step, eq. (24) of `004_…`.
+    /// The OSPA distance at each step, eq. (24) of Ristic & Vo, "Sensor control for multi-object
+    /// state-space estimation using random finite sets" (paper 004).
     pub distance: Vec<f64>,
     /// The localisation part at each step, eq. (26): rooted and normalised (unlike GOSPA's
     /// `localisation`, a sum of p-th powers).
@@ -78,9 +80,9 @@ pub struct OspaSeries {
     pub cardinality: Vec<f64>,
     /// The mean of `distance` (0 for no steps).
     pub mean_distance: f64,
-    /// The mean of `localisation`.
+    /// The mean of `localisation` over the steps.
     pub mean_localisation: f64,
-    /// The mean of `cardinality`.
+    /// The mean of `cardinality` over the steps.
     pub mean_cardinality: f64,
 }
 

@@ -22,11 +22,11 @@ use crate::regions::{AxisBox, Region};
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Anchor {
-    /// The name.
+    /// The anchor's name ("taco stand").
     pub name: String,
-    /// r_a.
+    /// The anchor's position r_a = [x, y].
     pub position: [f64; 2],
-    /// 2 d_a / 3, d_a the distance to the nearest other anchor.
+    /// The radius 2 d_a / 3 of the anchor's association disc, d_a the distance to the nearest other anchor.
     pub radius: f64,
 }
 
@@ -44,9 +44,9 @@ impl Anchor {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TruthPoint {
-    /// t = k T, seconds.
+    /// The report time t = k T, in seconds.
     pub t: f64,
-    /// (x, y, ẋ, ẏ), eq. (61).
+    /// The true state (x, y, ẋ, ẏ), position and velocity, eq. (61).
     pub state: [f64; 4],
 }
 
@@ -113,7 +113,7 @@ pub struct TruthPoint {
 #[derive(Clone, Debug)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct AirportScenario {
-    /// The anchors.
+    /// The ten anchors, in report-index order.
     pub anchors: Vec<Anchor>,
     /// The four exclusion rectangles, as boxes.
     pub exclusion_boxes: Vec<AxisBox>,
@@ -122,9 +122,9 @@ pub struct AirportScenario {
     /// The exclusion regions (`exclusions`): the four rectangles, then the terminal's
     /// exterior (the complement of the concourse).
     pub exclusions: Vec<Region>,
-    /// S = ∪_a 𝒜_a (`fov`).
+    /// The field of view S = ∪_a 𝒜_a, the union of the anchors' discs (`fov`).
     pub fov: Region,
-    /// T = 15 s (`dt`).
+    /// The report interval T = 15 s (`dt`).
     pub dt: f64,
     /// The configuration of both filters (`config`).
     pub config: BernoulliFilterOptions,

@@ -19,9 +19,9 @@ pub type State = [f64; 2];
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Area {
-    /// Lower corner.
+    /// The lower corner [x, y] of the rectangular area.
     pub lo: State,
-    /// Upper corner.
+    /// The upper corner [x, y] of the rectangular area.
     pub hi: State,
 }
 
@@ -66,24 +66,25 @@ impl Area {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MultiObjectParticles {
-    /// X_i, each of at most `max_objects` states.
+    /// The particles' object sets X_i, each of at most `max_objects` states.
     pub sets: Vec<Vec<State>>,
-    /// w_i (normalised).
+    /// The particle weights w_i (normalised).
     pub weights: Vec<f64>,
-    /// n_max.
+    /// The largest number n_max of objects in a particle.
     pub max_objects: usize,
 }
 
-/// The point estimate of Sec. 5.2: the MAP cardinality (22) and the mean of the particles
+/// The point estimate of Sec. 5.2 of Ristic & Vo, "Sensor control for multi-object state-space estimation using random finite sets" (paper 004): the MAP cardinality (22) and the mean of the particles
 /// with that cardinality.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SetEstimate {
-    /// n̂ = argmax_n Σ_i w_i Δ[n, n_i] (22) (ties: the smaller n).
+    /// The estimated number of objects n̂ = argmax_n Σ_i w_i Δ[n, n_i] (22) (ties: the smaller
+    /// n).
     pub cardinality: usize,
-    /// n̂ states.
+    /// The n̂ estimated object states [x, y]: the mean of the particles with n̂ objects.
     pub states: Vec<State>,
-    /// The weight of each cardinality 0 … n_max.
+    /// The cardinality pmf: the total particle weight of each cardinality 0 … n_max.
     pub cardinality_pmf: Vec<f64>,
 }
 

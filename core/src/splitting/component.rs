@@ -21,7 +21,7 @@ const EIGEN_MAX_ITER: usize = 10_000;
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Eigen {
-    /// λ₁ ≥ λ₂ ≥ … > 0.
+    /// The eigenvalues λ₁ ≥ λ₂ ≥ … > 0.
     pub values: Vec<f64>,
     /// Column i is the unit eigenvector of `values[i]`.
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::matrix"))]

@@ -86,13 +86,13 @@ pub fn non_detection_update(
 pub struct NegativeInformationStep {
     /// The time index k (1, 2, 3 for Fig. 5).
     pub step: usize,
-    /// p_{k|k−1}: the prediction of the previous posterior.
+    /// The predicted density p_{k|k−1}: the prediction of the previous posterior.
     pub predicted: GaussianMixture,
-    /// Algorithm 1 applied to the prediction.
+    /// The split: Algorithm 1 applied to the prediction.
     pub split: SplitOutcome,
-    /// p_{k|k}: the non-detection posterior (after the optional reduction).
+    /// The posterior density p_{k|k}: the non-detection posterior (after the optional reduction).
     pub posterior: GaussianMixture,
-    /// 1 − Δ_k: the predicted probability of not detecting the object (mean-based).
+    /// The predicted probability 1 − Δ_k of not detecting the object (mean-based).
     pub non_detection_prob: f64,
     /// ⟨1_S, p_{k|k−1}⟩, the exact probability that the object is in the FoV before the
     /// update ([`Region::gaussian_mass`]).
@@ -138,17 +138,17 @@ pub struct NegativeInformationStep {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct NegativeInformationScenario {
-    /// p_{0|0}.
+    /// The initial density p_{0|0}, a Gaussian mixture over (x, y, ẋ, ẏ).
     pub initial: GaussianMixture,
-    /// F of eq. (70).
+    /// The state transition matrix F of eq. (70).
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::matrix"))]
     pub transition: DMatrix<f64>,
-    /// Q of eq. (71).
+    /// The process noise covariance Q of eq. (71).
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::matrix"))]
     pub process_noise: DMatrix<f64>,
     /// The field of view S.
     pub fov: Region,
-    /// p_D inside S.
+    /// The detection probability p_D inside S.
     pub detection_prob: f64,
     /// The number of non-detection updates.
     pub steps: usize,

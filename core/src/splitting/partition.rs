@@ -11,13 +11,13 @@ use crate::regions::Region;
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Partition {
-    /// p_S: the components whose mean lies in S (11).
+    /// The inside part p_S: the components whose mean lies in S (11).
     pub inside: GaussianMixture,
-    /// p_C(S): the components whose mean lies outside S (12).
+    /// The outside part p_C(S): the components whose mean lies outside S (12).
     pub outside: GaussianMixture,
-    /// Σ of the inside weights: the partition's estimate of ⟨1_S, p⟩.
+    /// The inside weight, Σ of the inside weights: the partition's estimate of ⟨1_S, p⟩.
     pub inside_weight: f64,
-    /// Σ of the outside weights.
+    /// The outside weight: Σ of the weights of the components whose mean lies outside.
     pub outside_weight: f64,
 }
 
@@ -73,7 +73,7 @@ pub struct PartitionAccuracy {
     pub exact: f64,
     /// The error estimate of `exact` (sum of the per-component estimates).
     pub exact_error: f64,
-    /// |partitioned − exact|.
+    /// The partition error |partitioned − exact|.
     pub error: f64,
 }
 

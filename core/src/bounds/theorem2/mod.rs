@@ -48,19 +48,19 @@ pub(crate) use series::EtaBracket;
 
 /// Measurement model II: Z = Θ_b0(X) ∪ W, W a Poisson RFS of intensity v = λ c.
 pub struct ModelII<'a> {
-    /// r.
+    /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
-    /// f.
+    /// The prior density f of the target's state.
     pub prior: &'a dyn Density,
-    /// P_o and g.
+    /// The observation: the detection probability P_o and the likelihood g.
     pub observation: &'a dyn Observation,
-    /// λ, the mean number of clutter points.
+    /// The clutter rate λ ≥ 0: the mean number of clutter points.
     pub clutter_rate: f64,
-    /// c = v/λ, the clutter points' density.
+    /// The density c = v/λ of one clutter point.
     pub clutter_density: &'a dyn Density,
-    /// e_0².
+    /// The squared error e_0² ≥ 0 of a false target.
     pub false_alarm_error: f64,
-    /// e_1².
+    /// The squared error e_1² ≥ 0 of a missed target.
     pub miss_error: f64,
 }
 

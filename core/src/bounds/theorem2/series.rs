@@ -21,9 +21,9 @@ pub(super) fn truncation(lambda: f64, s: &TheoremOptions) -> (usize, f64) {
 /// S = Σ_k C_k J'_{k+1}⁻¹ and W = Σ_k C_k w_{k+1} + tail (the tail's w taken as 1), with the
 /// errors of each propagated linearly.
 pub(super) struct Sums {
-    /// S.
+    /// The estimation term S = Σ_n C_n J'_{1+n}⁻¹.
     pub s: f64,
-    /// W (not yet capped at 1).
+    /// The detected mass W = Σ_n C_n w_{n+1} (not yet capped at 1).
     pub w: f64,
     /// The error of S.
     pub err_s: f64,

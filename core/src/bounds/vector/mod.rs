@@ -45,7 +45,7 @@ pub struct ComponentBound {
     pub inverse_information: f64,
     /// x*_i, the mean of f_d' (the prior mean: P_o is constant).
     pub undetected_mean: f64,
-    /// σ_{e,i}² = P_ii.
+    /// The prior variance σ_{e,i}² = P_ii of this coordinate.
     pub undetected_variance: f64,
     /// Error estimate of the bound (quadrature, one Monte Carlo standard error).
     pub error: f64,

@@ -36,7 +36,7 @@ impl GaussianPrior {
         })
     }
 
-    /// l.
+    /// The state dimension l.
     pub fn dims(&self) -> usize {
         self.mean.len()
     }
@@ -88,7 +88,7 @@ impl LinearGaussianSensor {
         })
     }
 
-    /// m, the measurement dimension.
+    /// The measurement dimension m.
     pub fn measurement_dims(&self) -> usize {
         self.gain.nrows()
     }
@@ -125,16 +125,16 @@ fn spd(what: &'static str, n: usize, entries: &[f64]) -> Result<DMatrix<f64>> {
 pub enum VectorMeasurement<'a> {
     /// Model I (13): a false observation with probability q and density ψ.
     I {
-        /// q.
+        /// The false-observation probability q ∈ [0, 1].
         false_alarm_probability: f64,
-        /// ψ.
+        /// The false-observation density ψ.
         false_alarm_density: &'a dyn Density,
     },
     /// Model II (22): Poisson clutter of rate λ and density c (v = λ c).
     II {
-        /// λ.
+        /// The clutter rate λ ≥ 0: the mean number of clutter points.
         clutter_rate: f64,
-        /// c.
+        /// The density c = v/λ of one clutter point.
         clutter_density: &'a dyn Density,
     },
 }
@@ -143,17 +143,17 @@ pub enum VectorMeasurement<'a> {
 /// models I or II, and the component errors e0²/l, e1²/l.
 #[derive(Clone, Copy)]
 pub struct VectorModel<'a> {
-    /// r.
+    /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
-    /// f = N(x0, P).
+    /// The Gaussian prior f = N(x0, P) of the target's state.
     pub prior: &'a GaussianPrior,
-    /// P_o, H, b, R.
+    /// The linear-Gaussian sensor: detection probability P_o, H, offset b, noise covariance R.
     pub sensor: &'a LinearGaussianSensor,
     /// Model I or II and its false observations.
     pub measurement: VectorMeasurement<'a>,
-    /// e0² (of the whole state; component i uses e0²/l).
+    /// The squared error e0² ≥ 0 of a false target (of the whole state; component i uses e0²/l).
     pub false_alarm_error: f64,
-    /// e1² (of the whole state; component i uses e1²/l).
+    /// The squared error e1² ≥ 0 of a missed target (of the whole state; component i uses e1²/l).
     pub miss_error: f64,
 }
 
