@@ -200,6 +200,27 @@ for (const fn of ['multiBernoulliCardinality', 'multiBernoulliLeaveOneOut']) {
   });
 }
 
+// Two edges `node fuzz/run.mjs --cases 300000` found (seed 946630), with its shrunk inputs.
+const hasNaN = (v) => (typeof v === 'number' ? Number.isNaN(v) : v !== null && typeof v === 'object' && Object.values(v).some(hasNaN));
+
+test('why 7 (fuzz seed 946630): jdeMonteCarlo with a prior variance of 1e308 gives an infinite risk, not NaN', () => {
+  const r = fisst.jdeMonteCarlo({ model: 'II', existence: 1, prior: { multivariateGaussian: { mean: [0, 0, 0], cov: [[1e308, 0, 0], [0, 1, 0], [0, 0, 1]] } }, observation: { detectionProbability: 0, gain: [[0, 0, 0]], offset: [0], noiseCov: [[1]] }, falseAlarmError: 0, missError: 0, clutter: { rate: 0, density: { gaussian: { mean: 0, variance: 25 } } }, samples: 200, seed: 1, emptyRule: 'declare' });
+  assert.ok(!hasNaN(r), JSON.stringify(r).slice(0, 300));
+  assert.equal(r.mse, Infinity);
+});
+
+test('why 7 (fuzz seed 946630): a GmBernoulliFilter at -Number.MAX_VALUE split about a FoV has no NaN in its estimate', () => {
+  const f = new fisst.GmBernoulliFilter({ existence: 0, mixture: [{ weight: 1, mean: [-MAX, 0, 0, 0], cov: [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]] }], transition: { F: [[1, 0, 0.001, 0], [0, 1, 0, 0.001], [0, 0, 1, 0], [0, 0, 0, 1]], Q: [[3.3333333333333334e-19, 0, 5e-16, 0], [0, 3.3333333333333334e-19, 0, 5e-16], [5e-16, 0, 1.0000000000000002e-12, 0], [0, 5e-16, 0, 1.0000000000000002e-12]] }, detection: { probability: 1e-300, fov: { polygon: [[0.1, 0], [-0.04999999999999998, 0.08660254037844388], [-0.5273502691896265, -0.9133974596215564]] } }, splitting: { maxDepth: 2, variancePreserving: true }, reduction: { maxComponents: 7 }, clutter: { rate: 0, density: 0.1 } });
+  try {
+    f.predict();
+    f.update([]);
+    const e = f.estimate();
+    assert.ok(!hasNaN(e), JSON.stringify(e));
+  } finally {
+    f.free();
+  }
+});
+
 // The updates and the control step: a joint work cap, checked before any work, a RangeError
 // naming the list to shorten with the most it may hold (the four size edges `make fuzz` found;
 // specs.mjs largeCases times a case at each cap).

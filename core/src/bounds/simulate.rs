@@ -171,6 +171,13 @@ struct Tally {
 impl Tally {
     fn add(&mut self, v: f64) {
         self.n += 1;
+        // A squared error past the f64 range (a prior of variance near 1e308) is +∞: the
+        // mean and its spread are then +∞, not ∞ − ∞ = NaN.
+        if v == f64::INFINITY || self.mean == f64::INFINITY {
+            self.mean = f64::INFINITY;
+            self.m2 = f64::INFINITY;
+            return;
+        }
         let d = v - self.mean;
         self.mean += d / self.n as f64;
         self.m2 += d * (v - self.mean);
@@ -695,6 +702,23 @@ pub fn jde_monte_carlo(
 mod tests {
     use super::*;
     use crate::bounds::{Sequential, UnitUniform, gaussian_no_clutter, sequential_bound};
+
+    /// Fuzz seed 946630: a prior of variance 1e308 gives squared errors past the f64 range;
+    /// the risk is then +∞ with a +∞ standard error, never NaN (Welford's ∞ − ∞).
+    #[test]
+    fn a_squared_error_past_the_f64_range_gives_an_infinite_risk_not_nan() {
+        let mut t = Tally::default();
+        for v in [1.0, f64::INFINITY, 2.0, 1e300] {
+            t.add(v);
+        }
+        let r = t.risk();
+        assert_eq!((r.mse, r.se), (f64::INFINITY, f64::INFINITY));
+        let mut t = Tally::default();
+        for v in [1.0, 2.0, 3.0] {
+            t.add(v);
+        }
+        assert_eq!((t.risk().mse, t.risk().se), (2.0, fns::sqrt(1.0 / 3.0)));
+    }
 
     /// Fig. 2 left's system: σf² = 100, z = x + v with σv² = 100/3 (σh² = 25).
     fn fig2<'a>(

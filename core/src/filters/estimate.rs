@@ -161,6 +161,11 @@ pub fn gm_estimate(
             *acc += share(*w) * m;
         }
     }
+    // Means near ±f64::MAX: the plain sum overflowed (then ∞ − ∞ in the spread), the scaled
+    // one cannot; in range the plain sum is kept, bit for bit.
+    for (i, acc) in mean.iter_mut().enumerate() {
+        *acc = scaled_mean(*acc, comps.iter().map(|(w, g)| (share(*w), g.mean()[i])));
+    }
     let cov = spread_cov(
         comps
             .iter()
@@ -344,5 +349,15 @@ mod tests {
         assert!(e.cov.iter().flatten().all(|v| !v.is_nan()), "{:?}", e.cov);
         assert_eq!(e.cov[1][1], f64::INFINITY);
         assert_eq!(e.cov[0][0], 1.0);
+        // Fuzz seed 946630 (GmBernoulliFilter, after splitting about a FoV): components at
+        // −f64::MAX whose plain weighted mean rounds to −∞ (then ∞ · 0 in the spread).
+        let comps: Vec<_> = (0..123)
+            .map(|i| (1.0 / 123.0, [-f64::MAX, f64::from(i % 2)], 1.0))
+            .collect();
+        let plain: f64 = comps.iter().map(|(w, m, _)| w * m[0]).sum();
+        assert_eq!(plain, f64::NEG_INFINITY);
+        let e = gm_estimate(&gm(&comps), 2, &EstimateOptions::default()).unwrap();
+        assert_eq!(e.mean[0], -f64::MAX);
+        assert!(e.cov.iter().flatten().all(|v| !v.is_nan()), "{:?}", e.cov);
     }
 }
