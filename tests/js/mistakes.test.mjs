@@ -221,6 +221,11 @@ test('why 7 (fuzz seed 946630): a GmBernoulliFilter at -Number.MAX_VALUE split a
   }
 });
 
+test('why 7 (fuzz seed 317566): fovVarianceMap over a grid whose step is 1e308 has finite variances', () => {
+  const r = fisst.fovVarianceMap({ multiBernoulli: [{ existence: 5e-324, mean: [0, 0], cov: [[0.001, -1e-323], [-1e-323, 0.001]] }, { existence: 0, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { existence: 0, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { existence: 0, mean: [0, 1e308], cov: [[1, 0], [0, 1]] }], fovSize: [0.01, 0.01], grid: { x: [0, 0, 1], y: [0, 1e308, 2] } });
+  assert.ok(!hasNaN(r), JSON.stringify(r));
+});
+
 // The updates and the control step: a joint work cap, checked before any work, a RangeError
 // naming the list to shorten with the most it may hold (the four size edges `make fuzz` found;
 // specs.mjs largeCases times a case at each cap).

@@ -452,6 +452,20 @@ fn check_size(fov_size: [f64; 2]) -> Result<()> {
     Ok(())
 }
 
+/// ⟨1_S, p⟩ of one component for the FoV of size `size` centred at (`cx`, `cy`), by the
+/// direct bivariate rectangle ([`bivariate_normal::rectangle`]).
+fn direct_mass(comp: &Component, cx: f64, cy: f64, size: [f64; 2]) -> f64 {
+    // halves first: cx ± w/2 cannot overflow where cx + w could
+    let (hw, hh) = (0.5 * size[0], 0.5 * size[1]);
+    bivariate_normal::rectangle(
+        (cx - hw - comp.mx) / comp.sx,
+        (cx + hw - comp.mx) / comp.sx,
+        (cy - hh - comp.my) / comp.sy,
+        (cy + hh - comp.my) / comp.sy,
+        comp.rho,
+    )
+}
+
 /// The variance of the number of objects in an axis-aligned `fov_size[0] × fov_size[1]` FoV
 /// centred at every point of a grid, and its maximiser: the sensor-placement objective of
 /// Section VII of `001_…` (Figs 9–10) for a multi-Bernoulli RFS whose components
@@ -537,6 +551,14 @@ pub fn variance_map(
             continue;
         }
         component_masses(comp, &x, &y, fov_size, &mut work, |i, j, m| {
+            // A grid whose step is beyond the f64 range in standard deviations (a centre
+            // near ±1e308) breaks the recurrences (∞ − ∞): that cell's mass is then the
+            // direct rectangle (exact, finite for every limit).
+            let m = if m.is_finite() {
+                m
+            } else {
+                direct_mass(comp, x.centre(i), y.centre(j), fov_size)
+            };
             let q = r * m;
             variance[j * x.count + i] += q * (1.0 - q);
         });
@@ -595,6 +617,39 @@ mod tests {
             (cy + size[1] / 2.0 - comp.my) / comp.sy,
             comp.rho,
         )
+    }
+
+    /// Fuzz seed 317566: a grid of two centres 1e308 apart (a step of 3e309 standard
+    /// deviations) gave a NaN variance; the cells the recurrences cannot reach are computed
+    /// directly.
+    #[test]
+    fn a_grid_step_beyond_the_f64_range_gives_finite_variances() {
+        let g = |m: [f64; 2], p: [f64; 4]| Gaussian::from_slices(&m, &p, "p").unwrap();
+        let comps = [
+            (5e-324, g([0.0, 0.0], [0.001, -1e-323, -1e-323, 0.001])),
+            (0.5, g([0.0, 0.0], [1.0, 0.0, 0.0, 1.0])),
+            (0.0, g([0.0, 1e308], [1.0, 0.0, 0.0, 1.0])),
+        ];
+        let x = GridAxis {
+            min: 0.0,
+            max: 0.0,
+            count: 1,
+        };
+        let y = GridAxis {
+            min: 0.0,
+            max: 1e308,
+            count: 2,
+        };
+        let map = variance_map(&comps, [0.01, 0.01], x, y).unwrap();
+        assert!(
+            map.variance.iter().all(|v| v.is_finite()),
+            "{:?}",
+            map.variance
+        );
+        // the cell at the origin: the unit component's mass in a 0.01 square, ≈ 1.59e-5
+        let q = 0.5 * bivariate_normal::rectangle(-0.005, 0.005, -0.005, 0.005, 0.0);
+        assert!((map.variance[0] - q * (1.0 - q)).abs() <= 1e-12 * q);
+        assert_eq!(map.variance[1], 0.0);
     }
 
     #[test]
