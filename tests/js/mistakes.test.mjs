@@ -226,6 +226,20 @@ test('why 7 (fuzz seed 317566): fovVarianceMap over a grid whose step is 1e308 h
   assert.ok(!hasNaN(r), JSON.stringify(r));
 });
 
+test('why 7 (fuzz seed 198626): costs at the largest double give a loss without NaN', () => {
+  const m = Number.MAX_VALUE;
+  const r = fisst.multiBernoulliPointEstimate({ components: [{ existence: 0, density: { mean: [0], cov: [[1]] } }], radius: 0.01, costs: { c00: 1e308, c01: 1e308, c10: 1e308, c11: 1e308, c: 1e308 } });
+  assert.ok(!hasNaN(r), JSON.stringify(r));
+  const curve = fisst.bernoulliLossCurve({ existences: [0], missProbability: 0.5, costs: { c00: m, c01: m, c10: m, c11: m, c: m } });
+  assert.ok(!hasNaN(curve), JSON.stringify(curve));
+  assert.equal(curve.singleton[0], m);
+});
+
+test('why 7 (fuzz seed 198626): jdeMonteCarlo with a clutter rate of 3.5e-323 has a finite risk', () => {
+  const r = fisst.jdeMonteCarlo({ model: 'II', existence: 1, prior: { multivariateGaussian: { mean: [0], cov: [[1]] } }, observation: { detectionProbability: 0.006518354876926869, gain: [[0]], noiseCov: [[1]] }, falseAlarmError: 0, missError: 0, clutter: { rate: 3.5e-323, density: { gaussian: { mean: 0, variance: 25 } } }, samples: 200, seed: 1 });
+  assert.ok(!hasNaN(r) && Number.isFinite(r.mse), JSON.stringify(r).slice(0, 300));
+});
+
 // The updates and the control step: a joint work cap, checked before any work, a RangeError
 // naming the list to shorten with the most it may hold (the four size edges `make fuzz` found;
 // specs.mjs largeCases times a case at each cap).

@@ -1243,3 +1243,27 @@ fn eq12_mmuc_size_caps_name_the_array() {
     let s = SpatialDensity::particles(ParticleSet::new(&line, None).unwrap());
     assert!(s.check_mmuc_size().is_ok());
 }
+
+/// Fuzz seed 198626: costs at the largest double. ρ_{a} = (1 − p) c10 + p (c11 + c q)
+/// met 0 · ∞ at p = 0 (c11 + c q overflowed); the loss is now c10 there, and ±∞ or finite,
+/// never NaN, for every p and q.
+#[test]
+fn eq13_expected_loss_at_the_largest_costs_is_never_nan() {
+    let m = f64::MAX;
+    let c = Costs::new(m, m, m, m, m).unwrap();
+    assert_eq!(expected_loss_singleton(&c, 0.0, 0.5).unwrap(), m);
+    for p in [0.0, 1e-300, 0.25, 0.5, 1.0] {
+        for q in [0.0, 0.5, 1.0] {
+            let rho = expected_loss_singleton(&c, p, q).unwrap();
+            assert!(!rho.is_nan(), "p {p} q {q}");
+            assert!(!expected_loss_empty(&c, p).unwrap().is_nan(), "p {p}");
+        }
+    }
+    // in range the formula's bits are unchanged
+    let c = Costs::new(0.5, 2.0, 3.0, 0.25, 7.0).unwrap();
+    let (p, q) = (0.3, 0.2);
+    assert_eq!(
+        expected_loss_singleton(&c, p, q).unwrap(),
+        (1.0 - p) * 3.0 + p * (0.25 + 7.0 * q)
+    );
+}

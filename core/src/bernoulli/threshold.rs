@@ -124,7 +124,14 @@ pub fn expected_loss_singleton(
 ) -> Result<f64> {
     let p = check_probability(|| "existence".into(), existence)?;
     let q = check_probability(|| "missProbability".into(), miss_probability)?;
-    Ok((1.0 - p) * costs.c10() + p * (costs.c11() + costs.c() * q))
+    let rho = (1.0 - p) * costs.c10() + p * (costs.c11() + costs.c() * q);
+    if rho.is_nan() {
+        // c11 + c q overflowed to ±∞ and p = 0 (0 · ∞), or the two terms overflowed with
+        // opposite signs: each product alone is finite (p, q ≤ 1), so their plain sum is the
+        // loss or ±∞, never NaN (a compensated sum could meet ∞ − ∞ in its correction).
+        return Ok((1.0 - p) * costs.c10() + p * costs.c11() + (p * q) * costs.c());
+    }
+    Ok(rho)
 }
 
 /// Options of [`loss_curve`].

@@ -670,13 +670,31 @@ pub fn jde_monte_carlo(
                             *a += mz / v * mi;
                         }
                     }
-                    if !target {
-                        let w = 1.0 - p + p * beta;
-                        for (i, e) in estimate.iter_mut().enumerate() {
-                            *e = ((1.0 - p) * x_star[i] + p * acc[i]) / w;
+                    let overflow = !beta.is_finite() || acc.iter().any(|a| !a.is_finite());
+                    let underflow = target && points.iter().any(|&zi| c.pdf(zi) > 0.0);
+                    if overflow || underflow {
+                        // λ c(z) underflowed to 0, or ∫p_1 / (λ c) overflowed (a clutter
+                        // rate near the smallest double): the same decision and mean in
+                        // logarithms, the weights scaled by their largest.
+                        scaled_clutter_decision(
+                            &system,
+                            &points,
+                            lambda,
+                            c,
+                            (r, p),
+                            &x_star,
+                            (&mut mean, &mut acc),
+                            &mut estimate,
+                        )
+                    } else {
+                        if !target {
+                            let w = 1.0 - p + p * beta;
+                            for (i, e) in estimate.iter_mut().enumerate() {
+                                *e = ((1.0 - p) * x_star[i] + p * acc[i]) / w;
+                            }
                         }
+                        target || r * (1.0 - p + p * beta) >= 1.0 - r
                     }
-                    target || r * (1.0 - p + p * beta) >= 1.0 - r
                 }
             }
         };
@@ -696,6 +714,72 @@ pub fn jde_monte_carlo(
         scans: score.scans.iter().map(Tally::risk).collect(),
         seed: options.seed,
     })
+}
+
+/// Model II's MAP decision (40) and posterior mean with the clutter rate factored out, for
+/// a rate λ so small that λ c(z) underflows or ∫p_1(x, z)dx / (λ c(z)) overflows. With
+/// ℓ_i = ln ∫p_1(x, z_i)dx − ln c(z_i), L = max ℓ_i and u_i = e^{ℓ_i − L} ∈ [0, 1]:
+///
+/// ```text
+/// β = e^L Σu_i / λ,   x̂ = ((1 − P_o) κ x* + P_o Σu_i x̂(z_i)) / ((1 − P_o) κ + P_o Σu_i),
+/// κ = λ e^{−L};  declare iff r (1 − P_o + P_o β) ≥ 1 − r
+/// ```
+///
+/// (a point with c(z) = 0 is the target's, as in the plain form). Returns the decision.
+#[allow(clippy::too_many_arguments)]
+fn scaled_clutter_decision(
+    system: &System,
+    points: &[f64],
+    lambda: f64,
+    c: &dyn Density,
+    (r, p): (f64, f64),
+    x_star: &[f64],
+    (mean, acc): (&mut [f64], &mut [f64]),
+    estimate: &mut [f64],
+) -> bool {
+    let mut logs = Vec::with_capacity(points.len());
+    let mut means = Vec::with_capacity(points.len());
+    for &zi in points {
+        let mz = system.marginal(&[zi], mean);
+        let cz = c.pdf(zi);
+        if cz <= 0.0 {
+            // a point no clutter can make: the target's
+            estimate.copy_from_slice(mean);
+            return true;
+        }
+        logs.push(fns::ln(mz) - fns::ln(cz));
+        means.push(mean.to_vec());
+    }
+    let top = logs.iter().fold(f64::NEG_INFINITY, |a, &l| a.max(l));
+    if top == f64::NEG_INFINITY {
+        // no point has any target likelihood: the undetected mean, and β = 0
+        estimate.copy_from_slice(x_star);
+        return r * (1.0 - p) >= 1.0 - r;
+    }
+    let mut total = 0.0;
+    acc.iter_mut().for_each(|v| *v = 0.0);
+    for (l, m) in logs.iter().zip(&means) {
+        let u = fns::exp(l - top);
+        total += u;
+        for (a, mi) in acc.iter_mut().zip(m) {
+            *a += u * mi;
+        }
+    }
+    let kappa = fns::exp(fns::ln(lambda) - top);
+    for (i, e) in estimate.iter_mut().enumerate() {
+        *e = if kappa.is_finite() {
+            ((1.0 - p) * kappa * x_star[i] + p * acc[i]) / ((1.0 - p) * kappa + p * total)
+        } else {
+            x_star[i]
+        };
+    }
+    // P_o β = P_o e^{L − ln λ} Σu (0 when P_o = 0, never 0 · ∞)
+    let p_beta = if p > 0.0 {
+        p * fns::exp(top - fns::ln(lambda)) * total
+    } else {
+        0.0
+    };
+    r * (1.0 - p + p_beta) >= 1.0 - r
 }
 
 #[cfg(test)]
@@ -743,6 +827,42 @@ mod tests {
             GaussianPrior::new(&[3.0], &[100.0]).unwrap(),
             LinearGaussianSensor::new(p, &[1.0], 1, &[0.0], &[100.0 / 3.0]).unwrap(),
         )
+    }
+
+    /// Fuzz seed 198626: a clutter rate near the smallest double (3.5e-323), where λ c(z)
+    /// underflows and ∫p_1 / (λ c) overflows, gave a NaN risk. The scaled form decides as
+    /// the limit λ → 0 does: every point is the target's, so the risk is that of the
+    /// no-clutter system within the Monte Carlo error.
+    #[test]
+    fn model_ii_with_a_clutter_rate_near_the_smallest_double_has_a_finite_risk() {
+        let prior = GaussianPrior::new(&[0.0], &[1.0]).unwrap();
+        let sensor = LinearGaussianSensor::new(0.006518354876926869, &[0.0], 1, &[0.0], &[1.0])
+            .unwrap();
+        let density = crate::bounds::Density1::gaussian(0.0, 25.0).unwrap();
+        let model = |rate: f64| MonteCarloModel {
+            existence: 1.0,
+            system: SimulatedSystem::LinearGaussian {
+                prior: &prior,
+                sensor: &sensor,
+            },
+            measurement: VectorMeasurement::II {
+                clutter_rate: rate,
+                clutter_density: &density,
+            },
+            false_alarm_error: 0.0,
+            miss_error: 0.0,
+        };
+        let o = JdeMonteCarloOptions {
+            samples: 200,
+            seed: 1,
+            ..JdeMonteCarloOptions::default()
+        };
+        let tiny = jde_monte_carlo(&model(3.5e-323), &o).unwrap();
+        assert!(tiny.mse.is_finite() && tiny.se.is_finite(), "{tiny:?}");
+        for rate in [1e-300, 5e-324] {
+            let m = jde_monte_carlo(&model(rate), &o).unwrap();
+            assert!(m.mse.is_finite(), "rate {rate}: {m:?}");
+        }
     }
 
     #[test]
