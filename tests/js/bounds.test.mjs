@@ -653,6 +653,11 @@ test('jdeBound: bad values are RangeErrors and misspelt keys TypeErrors, each na
   throwsAt(() => fisst.jdeBound({ ...vb, observation: { ...vb.observation, detectionProbability: 1.5 } }), RangeError, 'options.observation.detectionProbability');
   throwsAt(() => fisst.jdeBound({ ...vb, observation: { ...TWO_ROWS, detectionProbability: 0.8 } }), RangeError, 'options.observation.gain'); // false alarms need m = 1
   throwsAt(() => fisst.jdeBound({ ...vb, observation: { ...TWO_ROWS, detectionProbability: 0.8, noiseCov: [[1, 0.3], [0.2, 2]] } }), RangeError, 'options.observation.noiseCov');
+  // issue 26 point 1: the covariance checks of every other function, in the same words
+  assert.throws(() => fisst.jdeBound({ ...vb, observation: { ...TWO_ROWS, detectionProbability: 0.8, noiseCov: [[1, 0.3], [0.2, 2]] } }),
+    { name: 'RangeError', message: 'options.observation.noiseCov is not symmetric: [0][1] = 0.3 but [1][0] = 0.2' });
+  assert.throws(() => fisst.jdeBound({ ...vb, prior: { multivariateGaussian: { mean: [0, 0], cov: [[1.25, 0], [0, -0.25]] } } }),
+    { name: 'RangeError', message: 'options.prior.multivariateGaussian.cov is not positive definite (smallest eigenvalue -0.25)' });
   throwsAt(() => fisst.jdeBound({ ...jb, observation: { ...jb.observation, gain: [[1]] } }), TypeError, 'options.observation.gain');
   throwsAt(() => fisst.jdeBound({ ...jb, observation: { ...jb.observation, noiseCov: [[1]] } }), TypeError, 'options.observation.noiseCov');
   throwsAt(() => fisst.jdeBound({ ...jb, observation: { detectionProbability: 0.5 } }), TypeError, 'options.observation.noiseVariance');

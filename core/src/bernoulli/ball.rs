@@ -139,8 +139,12 @@ impl GaussianBall {
             )
         } else {
             let eig = SymmetricEigen::try_new(gaussian.cov().clone(), f64::EPSILON, 100_000)
-                .ok_or_else(|| Error::NotPositiveDefinite {
+                // The Gaussian's P passed the checks of `covariance`: only a solver that
+                // does not converge gets here (no eigenvalue to say).
+                .ok_or_else(|| Error::NotDefinite {
                     what: alloc::format!("{what}.cov"),
+                    smallest_eigenvalue: f64::NAN,
+                    semidefinite: false,
                 })?;
             let mut order: Vec<usize> = (0..d).collect();
             crate::math::sort::sort_by(&mut order, |&i, &j| {

@@ -187,7 +187,8 @@ impl SpatialDensity {
     /// A Gaussian s = N(m, P) of any dimension with a full covariance.
     ///
     /// # Errors
-    /// [`Error::NotPositiveDefinite`] naming `density.cov` if the eigen-decomposition fails.
+    /// [`Error::NotDefinite`] naming `density.cov` (smallest eigenvalue NaN) if the
+    /// eigen-decomposition does not converge.
     pub fn gaussian(gaussian: Gaussian) -> Result<Self> {
         Ok(Self {
             repr: Repr::Gaussian(GaussianBall::new(gaussian, "density")?),
@@ -198,8 +199,9 @@ impl SpatialDensity {
     /// (`density.mean[i]`, `density.cov`).
     ///
     /// # Errors
-    /// As [`Gaussian::from_slices`] (non-finite entries, wrong sizes, covariance not
-    /// symmetric positive definite).
+    /// As [`Gaussian::from_slices`] (non-finite entries, wrong sizes; [`Error::NotSymmetric`]
+    /// or [`Error::NotDefinite`] naming `density.cov` for a covariance not symmetric or not
+    /// positive definite).
     pub fn gaussian_from_slices(mean: &[f64], cov_row_major: &[f64]) -> Result<Self> {
         Self::gaussian(Gaussian::from_slices(mean, cov_row_major, "density")?)
     }
@@ -211,7 +213,8 @@ impl SpatialDensity {
     /// # Errors
     /// [`Error::Unsupported`] for an empty mixture; [`Error::InvalidParameter`] naming
     /// `sum of density.mixture[].weight` if the weights sum to 0;
-    /// [`Error::NotPositiveDefinite`] if an eigen-decomposition fails.
+    /// [`Error::NotDefinite`] naming `density.mixture[j].cov` if an eigen-decomposition does
+    /// not converge.
     pub fn mixture(mixture: &GaussianMixture) -> Result<Self> {
         if mixture.is_empty() {
             return Err(Error::Unsupported {

@@ -1267,3 +1267,33 @@ fn eq13_expected_loss_at_the_largest_costs_is_never_nan() {
         (1.0 - p) * 3.0 + p * (0.25 + 7.0 * q)
     );
 }
+
+#[test]
+fn density_covariances_say_which_property_fails() {
+    use alloc::string::ToString;
+    let say = |cov: &[f64]| {
+        SpatialDensity::gaussian_from_slices(&[0.0, 0.0], cov)
+            .unwrap_err()
+            .to_string()
+    };
+    assert_eq!(
+        say(&[1.0, 0.5, 0.4, 1.0]),
+        "density.cov is not symmetric: [0][1] = 0.5 but [1][0] = 0.4"
+    );
+    assert_eq!(
+        say(&[1.25, 0.0, 0.0, -0.25]),
+        "density.cov is not positive definite (smallest eigenvalue -0.25)"
+    );
+    let g = |cov: &[f64]| Gaussian::from_slices(&[0.0, 0.0], cov, "density.mixture[1]");
+    let ok = g(&[1.0, 0.0, 0.0, 1.0]).unwrap();
+    assert_eq!(
+        g(&[1.0, 0.5, 0.4, 1.0]).unwrap_err().to_string(),
+        "density.mixture[1].cov is not symmetric: [0][1] = 0.5 but [1][0] = 0.4"
+    );
+    assert_eq!(
+        g(&[1.25, 0.0, 0.0, -0.25]).unwrap_err().to_string(),
+        "density.mixture[1].cov is not positive definite (smallest eigenvalue -0.25)"
+    );
+    let mix = GaussianMixture::new(vec![(1.0, ok.clone()), (1.0, ok)], "density.mixture").unwrap();
+    assert!(SpatialDensity::mixture(&mix).is_ok());
+}

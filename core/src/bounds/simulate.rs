@@ -24,6 +24,7 @@ use crate::bounds::theorem::{TheoremOptions, check_common};
 use crate::bounds::{Example2Observation, Example2Prior, GaussianPrior, LinearGaussianSensor};
 use crate::bounds::{MAX_CLUTTER_RATE, MAX_STEPS, VectorMeasurement, VectorModel};
 use crate::error::{Error, Result, check_probability};
+use crate::gaussian::covariance;
 use crate::math::fns;
 use crate::math::quadrature::Rule;
 use crate::math::rng::{SeededRng, poisson, seeded, uniform};
@@ -209,19 +210,21 @@ struct Gaussian {
     scans: Vec<(DMatrix<f64>, DMatrix<f64>)>,
 }
 
-/// The SPD inverse by Cholesky (the matrices were checked SPD when built).
+/// The SPD inverse by Cholesky (the matrices were checked SPD when built); a failure is
+/// [`Error::NotDefinite`] naming `what` with the smallest eigenvalue.
 fn spd_inverse(a: &DMatrix<f64>, what: &str) -> Result<DMatrix<f64>> {
     a.clone()
         .cholesky()
         .map(|c| c.inverse())
-        .ok_or_else(|| Error::NotPositiveDefinite { what: what.into() })
+        .ok_or_else(|| covariance::not_positive_definite(a, what.into()))
 }
 
+/// The lower Cholesky factor, failing as [`spd_inverse`].
 fn lower(a: &DMatrix<f64>, what: &str) -> Result<DMatrix<f64>> {
     a.clone()
         .cholesky()
         .map(|c| c.l())
-        .ok_or_else(|| Error::NotPositiveDefinite { what: what.into() })
+        .ok_or_else(|| covariance::not_positive_definite(a, what.into()))
 }
 
 impl Gaussian {
@@ -238,7 +241,7 @@ impl Gaussian {
         let s_chol = s
             .clone()
             .cholesky()
-            .ok_or_else(|| Error::NotPositiveDefinite { what: "S".into() })?;
+            .ok_or_else(|| covariance::not_positive_definite(&s, "S".into()))?;
         let det: f64 = s_chol.l().diagonal().iter().map(|d| d * d).product();
         let two_pi_m = (0..h.nrows()).fold(1.0, |a, _| a * 2.0 * core::f64::consts::PI);
         let s_inv = s_chol.inverse();
@@ -836,8 +839,8 @@ mod tests {
     #[test]
     fn model_ii_with_a_clutter_rate_near_the_smallest_double_has_a_finite_risk() {
         let prior = GaussianPrior::new(&[0.0], &[1.0]).unwrap();
-        let sensor = LinearGaussianSensor::new(0.006518354876926869, &[0.0], 1, &[0.0], &[1.0])
-            .unwrap();
+        let sensor =
+            LinearGaussianSensor::new(0.006518354876926869, &[0.0], 1, &[0.0], &[1.0]).unwrap();
         let density = crate::bounds::Density1::gaussian(0.0, 25.0).unwrap();
         let model = |rate: f64| MonteCarloModel {
             existence: 1.0,
@@ -863,6 +866,23 @@ mod tests {
             let m = jde_monte_carlo(&model(rate), &o).unwrap();
             assert!(m.mse.is_finite(), "rate {rate}: {m:?}");
         }
+    }
+
+    #[test]
+    fn a_failed_factorisation_says_the_smallest_eigenvalue() {
+        use alloc::string::ToString;
+        // P and R were checked when built (asymmetric or indefinite ones never get here, see
+        // `vector::tests::vector_covariances_say_which_property_fails`); S and P_m fail by
+        // their smallest eigenvalue.
+        let indef = DMatrix::from_row_slice(2, 2, &[1.25, 0.0, 0.0, -0.25]);
+        let said = "S is not positive definite (smallest eigenvalue -0.25)";
+        assert_eq!(spd_inverse(&indef, "S").unwrap_err().to_string(), said);
+        assert_eq!(lower(&indef, "S").unwrap_err().to_string(), said);
+        let asym = GaussianPrior::new(&[0.0, 0.0], &[1.0, 0.5, 0.4, 1.0]).unwrap_err();
+        assert_eq!(
+            asym.to_string(),
+            "cov is not symmetric: [0][1] = 0.5 but [1][0] = 0.4"
+        );
     }
 
     #[test]

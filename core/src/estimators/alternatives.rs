@@ -45,29 +45,34 @@ use nalgebra::DMatrix;
 use crate::cardinality::MAX_COMPONENTS;
 use crate::cardinality::multi_bernoulli::{check_components, pmf_unchecked};
 use crate::error::{Error, Result, check_probabilities};
+use crate::gaussian::covariance;
 use crate::math::fns;
 use crate::math::special::LN_2PI;
 
 /// `ln N(m; m, P) = −½ ln det(2πP)`, the log peak height of a Gaussian.
 ///
 /// # Errors
-/// [`Error::NotPositiveDefinite`] naming `cov` if P is not square, symmetric and positive
-/// definite.
+/// [`Error::DimensionMismatch`] naming `cov` if P is not square; [`Error::InvalidParameter`]
+/// naming `cov[i][j]` for a non-finite entry; [`Error::NotSymmetric`] or
+/// [`Error::NotDefinite`] naming `cov` (the checks of [`covariance`]).
 pub fn gaussian_ln_peak(cov: &DMatrix<f64>) -> Result<f64> {
-    let not_spd = || Error::NotPositiveDefinite { what: "cov".into() };
-    if !cov.is_square() || cov.iter().any(|v| !v.is_finite()) {
-        return Err(not_spd());
-    }
     let n = cov.nrows();
-    for i in 0..n {
-        for j in 0..i {
-            let (a, b) = (cov[(i, j)], cov[(j, i)]);
-            if fns::abs(a - b) > 1e-12 * (fns::abs(a) + fns::abs(b)).max(f64::MIN_POSITIVE) {
-                return Err(not_spd());
-            }
-        }
+    if cov.ncols() != n {
+        return Err(Error::dimension("cov", n, cov.ncols()));
     }
-    let chol = cov.clone().cholesky().ok_or_else(not_spd)?;
+    if let Some(k) = cov.iter().position(|v| !v.is_finite()) {
+        // nalgebra is column-major: k = col·n + row.
+        return Err(Error::parameter(
+            alloc::format!("cov[{}][{}]", k % n, k / n),
+            cov[k],
+            "finite",
+        ));
+    }
+    covariance::check_symmetric(cov, &|| "cov".into())?;
+    let chol = cov
+        .clone()
+        .cholesky()
+        .ok_or_else(|| covariance::not_positive_definite(cov, "cov".into()))?;
     let ln_det: f64 = chol.l().diagonal().iter().map(|d| 2.0 * fns::ln(*d)).sum();
     Ok(-0.5 * (n as f64 * LN_2PI + ln_det))
 }
@@ -227,6 +232,7 @@ pub fn alternative_estimate(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use alloc::string::ToString;
 
     #[test]
     fn fig2_alternative_estimate_dispatches_to_each_rule() {
@@ -302,13 +308,21 @@ mod tests {
         let det: f64 = 2.0 * 1.0 - 0.25;
         let expected = -0.5 * ((2.0 * core::f64::consts::PI).powi(2) * det).ln();
         assert!((gaussian_ln_peak(&cov).unwrap() - expected).abs() < 1e-14);
-        let bad = DMatrix::from_row_slice(2, 2, &[1.0, 2.0, 2.0, 1.0]);
-        let not_spd = Error::NotPositiveDefinite { what: "cov".into() };
-        assert_eq!(gaussian_ln_peak(&bad).unwrap_err(), not_spd);
+        let say = |m: &DMatrix<f64>| gaussian_ln_peak(m).unwrap_err().to_string();
+        let bad = DMatrix::from_row_slice(2, 2, &[1.25, 0.0, 0.0, -0.25]);
+        assert_eq!(
+            say(&bad),
+            "cov is not positive definite (smallest eigenvalue -0.25)"
+        );
         let not_square = DMatrix::from_row_slice(1, 2, &[1.0, 0.0]);
-        assert_eq!(gaussian_ln_peak(&not_square).unwrap_err(), not_spd);
+        assert_eq!(say(&not_square), "cov has length 2, expected 1");
         let asymmetric = DMatrix::from_row_slice(2, 2, &[1.0, 0.1, 0.0, 1.0]);
-        assert_eq!(gaussian_ln_peak(&asymmetric).unwrap_err(), not_spd);
+        assert_eq!(
+            say(&asymmetric),
+            "cov is not symmetric: [0][1] = 0.1 but [1][0] = 0"
+        );
+        let nan = DMatrix::from_row_slice(2, 2, &[1.0, 0.0, f64::NAN, 1.0]);
+        assert_eq!(say(&nan), "cov[1][0] must be finite, got NaN");
         assert!(
             (isotropic_ln_peak(0.5, 2)
                 - gaussian_ln_peak(&DMatrix::identity(2, 2).scale(0.5)).unwrap())

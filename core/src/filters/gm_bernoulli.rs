@@ -11,7 +11,7 @@ use super::config::{
 use super::estimate::{EstimateOptions, FilterEstimate, gm_estimate};
 use super::likelihood::{GeneralizedLikelihood, LinearGaussianLikelihood, RegionReports};
 use crate::error::{Error, Result, Shape};
-use crate::gaussian::{Gaussian, GaussianMixture};
+use crate::gaussian::{Gaussian, GaussianMixture, covariance};
 use crate::math::sum::NeumaierSum;
 use crate::mixture::reduce_owned;
 use crate::regions::Region;
@@ -34,7 +34,7 @@ use crate::splitting::split_for_regions;
 /// # Errors
 /// As [`GmBernoulli::new`] for `state`; [`PredictOptions::validate`];
 /// [`Error::DimensionMismatch`] naming `mixture` if its dimension differs from F's;
-/// [`Error::NotPositiveDefinite`] naming `mixture[ℓ].cov` if a predicted covariance is not
+/// [`Error::NotDefinite`] naming `mixture[ℓ].cov` if a predicted covariance is not
 /// positive definite.
 ///
 /// # Examples
@@ -549,8 +549,9 @@ fn finish(
 /// # Errors
 /// [`Error::DimensionMismatch`] naming `likelihood.h` (its column count is not the state
 /// dimension) or `measurements[j]` (length not m); [`Error::InvalidParameter`] naming
-/// `measurements[j][i]` for a non-finite coordinate; [`Error::NotPositiveDefinite`] naming
-/// `mixture[ℓ].cov` if an innovation covariance fails Cholesky; as
+/// `measurements[j][i]` for a non-finite coordinate; [`Error::NotDefinite`] naming
+/// `mixture[ℓ].cov`, with the smallest eigenvalue of S = H P Hᵀ + R, if an innovation
+/// covariance is not positive definite ([`Error::NotPositiveDefinite`] if it overflows); as
 /// [`gm_bernoulli_update_with`].
 pub fn gm_bernoulli_update_vector<M: AsRef<[f64]>>(
     state: &GmBernoulli,
@@ -595,11 +596,23 @@ pub fn gm_bernoulli_update_vector<M: AsRef<[f64]>>(
             let s = h * p * &ht + likelihood.r();
             let s = (&s + s.transpose()) * 0.5;
             let hm = h * g.mean();
-            let innov = Gaussian::new(hm.clone(), s, &what)
-                .map_err(|_| Error::NotPositiveDefinite { what: what.clone() })?;
+            // S is symmetric by construction: only its definiteness can fail, said with its
+            // smallest eigenvalue under the name of the component whose P gave it.
+            let innov = Gaussian::new(hm.clone(), s, &what).map_err(|e| match e {
+                Error::NotDefinite {
+                    smallest_eigenvalue,
+                    semidefinite,
+                    ..
+                } => Error::NotDefinite {
+                    what: what.clone(),
+                    smallest_eigenvalue,
+                    semidefinite,
+                },
+                _ => Error::NotPositiveDefinite { what: what.clone() },
+            })?;
             // K = P Hᵀ S⁻¹ via the Cholesky factor of S.
             let chol = nalgebra::Cholesky::new(innov.cov().clone())
-                .ok_or_else(|| Error::NotPositiveDefinite { what: what.clone() })?;
+                .ok_or_else(|| covariance::not_positive_definite(innov.cov(), what.clone()))?;
             let pht = p * &ht;
             let k = chol.solve(&pht.transpose()).transpose();
             let ikh = DMatrix::identity(n, n) - &k * h;

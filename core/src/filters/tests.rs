@@ -1184,3 +1184,39 @@ fn estimates_include_the_optimal_bernoulli_report() {
     assert!((report.threshold.gamma - direct.threshold.gamma).abs() < 1e-9);
     assert!((e.rss(0..2) - 2f64.sqrt()).abs() < 1e-12);
 }
+
+/// An innovation covariance S = H P Hᵀ + R = [[3, 3], [3, 3]] that is singular to rounding
+/// (H of rank one, R negligible next to H P Hᵀ; Cholesky's 3 − (3/√3)² < 0): the error names the component and says S's smallest
+/// eigenvalue. (Asymmetric or indefinite P and R are refused by `Gaussian` and
+/// `LinearGaussianLikelihood`, see `validate_tests`.)
+#[test]
+fn vector_update_says_the_innovation_smallest_eigenvalue() {
+    use alloc::string::ToString;
+    let g = gauss(&[0.0, 0.0], &[1.5, 0.0, 0.0, 1.5], "mixture[0]");
+    let state = GmBernoulli::new(
+        0.5,
+        GaussianMixture::new(vec![(1.0, g)], "mixture").unwrap(),
+    )
+    .unwrap();
+    let lik = LinearGaussianLikelihood::new(
+        DMatrix::from_row_slice(2, 2, &[1.0, 1.0, 1.0, 1.0]),
+        DMatrix::from_row_slice(2, 2, &[1e-30, 0.0, 0.0, 1e-30]),
+    )
+    .unwrap();
+    let e = gm_bernoulli_update_vector(&state, &[vec![0.0, 0.0]], &lik, &no_fov_config(0.9))
+        .unwrap_err();
+    let crate::Error::NotDefinite {
+        smallest_eigenvalue,
+        ..
+    } = e
+    else {
+        panic!("{e}");
+    };
+    assert!(smallest_eigenvalue.abs() < 1e-14, "{e}");
+    assert_eq!(
+        e.to_string(),
+        alloc::format!(
+            "mixture[0].cov is not positive definite (smallest eigenvalue {smallest_eigenvalue})"
+        )
+    );
+}

@@ -26,7 +26,7 @@ use crate::gaussian::{Gaussian, GaussianMixture};
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] naming `mergeDistance` if `distance` is negative or not
-/// finite; [`Error::NotPositiveDefinite`] if a merged covariance fails Cholesky.
+/// finite; [`Error::NotDefinite`] if a merged covariance fails Cholesky.
 ///
 /// # References
 /// B.-N. Vo, W.-K. Ma, "The Gaussian mixture probability hypothesis density filter," IEEE

@@ -57,7 +57,7 @@ pub(crate) fn merged_moments<'a>(
 ///
 /// # Errors
 /// [`Error::DimensionMismatch`] naming `components` for an empty list or `components[i]` for
-/// a component of another dimension; [`Error::NotPositiveDefinite`] naming `what` if the
+/// a component of another dimension; [`Error::NotDefinite`] naming `{what}.cov` if the
 /// merged covariance fails Cholesky (it cannot in exact arithmetic).
 ///
 /// # References

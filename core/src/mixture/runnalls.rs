@@ -207,7 +207,7 @@ const MATRIX_LIMIT: usize = RUNNALLS_CACHE_LIMIT;
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] naming `maxComponents` if it is 0;
-/// [`Error::NotPositiveDefinite`] if a merged covariance fails Cholesky.
+/// [`Error::NotDefinite`] if a merged covariance fails Cholesky.
 ///
 /// # References
 /// A. R. Runnalls, "Kullback-Leibler approach to Gaussian mixture reduction," IEEE Trans.

@@ -9,6 +9,7 @@ use nalgebra::{DMatrix, DVector, SymmetricEigen};
 use super::SplitLibrary;
 use crate::error::{Error, Result};
 use crate::gaussian::Gaussian;
+use crate::gaussian::covariance;
 use crate::math::fns;
 
 /// Iteration cap of the symmetric eigensolver (it converges in a few sweeps; the cap only
@@ -32,20 +33,25 @@ impl Eigen {
     /// The decomposition of `cov` (symmetric positive definite). `what` names it in errors.
     ///
     /// # Errors
-    /// [`Error::NotPositiveDefinite`] naming `what` if the solver does not converge or an
-    /// eigenvalue is not finite and > 0.
+    /// The checks of [`covariance`]: [`Error::NotSymmetric`] naming `what` and the first
+    /// asymmetric pair; [`Error::NotDefinite`] naming `what` with the smallest eigenvalue if
+    /// an eigenvalue is not finite and > 0 (NaN if the solver does not converge).
     pub fn new(cov: &DMatrix<f64>, what: &str) -> Result<Self> {
         let n = cov.nrows();
-        let not_pd = || Error::NotPositiveDefinite {
+        covariance::check_symmetric(cov, &|| String::from(what))?;
+        let not_definite = |smallest_eigenvalue: f64| Error::NotDefinite {
             what: String::from(what),
+            smallest_eigenvalue,
+            semidefinite: false,
         };
+        let not_pd = || not_definite(f64::NAN);
         if n == 2 {
             return Self::closed_form_2x2(
                 cov[(0, 0)],
                 0.5 * (cov[(0, 1)] + cov[(1, 0)]),
                 cov[(1, 1)],
             )
-            .ok_or_else(not_pd);
+            .map_err(not_definite);
         }
         let (eigenvalues, eigenvectors) = if n == 4 {
             // The same solver on a fixed-size matrix: no heap allocation.
@@ -77,7 +83,15 @@ impl Eigen {
         for (col, &i) in order.iter().enumerate() {
             let value = eig.eigenvalues[i];
             if !(value.is_finite() && value > 0.0) {
-                return Err(not_pd());
+                // Sorted descending (NaN as equal): say the smallest, or NaN if any is.
+                let smallest = eig.eigenvalues.iter().fold(f64::INFINITY, |a, &v| {
+                    if a.is_nan() || v.is_nan() {
+                        f64::NAN
+                    } else {
+                        a.min(v)
+                    }
+                });
+                return Err(not_definite(smallest));
             }
             values.push(value);
             let v = eig.eigenvectors.column(i);
@@ -105,14 +119,19 @@ impl Eigen {
     ///
     /// (λ₂ from the determinant, not by cancellation). With the conventions of
     /// [`Eigen::new`]: descending values, the identity's columns when b = 0 and a = c, and
-    /// each vector's largest-magnitude entry positive. `None` unless λ₂ is finite and > 0.
-    fn closed_form_2x2(a: f64, b: f64, c: f64) -> Option<Self> {
+    /// each vector's largest-magnitude entry positive. `Err(λ₂)` unless λ₁ and λ₂ are finite
+    /// and λ₂ > 0 (`Err(NaN)` if either is not finite: the closed form over- or underflowed).
+    fn closed_form_2x2(a: f64, b: f64, c: f64) -> core::result::Result<Self, f64> {
         let half = 0.5 * (a - c);
         let radius = fns::sqrt(half * half + b * b);
         let l1 = 0.5 * (a + c) + radius;
         let l2 = (a * c - b * b) / l1;
         if !(l1.is_finite() && l2.is_finite() && l2 > 0.0) {
-            return None;
+            return Err(if l1.is_finite() && l2.is_finite() {
+                l2
+            } else {
+                f64::NAN
+            });
         }
         let (mut x, mut y) = if b == 0.0 {
             if a >= c { (1.0, 0.0) } else { (0.0, 1.0) }
@@ -132,7 +151,7 @@ impl Eigen {
         };
         (x, y) = positive(x, y);
         let (x2, y2) = positive(-y, x);
-        Some(Self {
+        Ok(Self {
             values: alloc::vec![l1, l2],
             vectors: DMatrix::from_column_slice(2, 2, &[x, y, x2, y2]),
         })
@@ -165,8 +184,9 @@ struct Decomposed {
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] naming `k` if k ≥ n, `weight` if not finite and ≥ 0;
-/// [`Error::NotPositiveDefinite`] naming `{what}.cov` if the eigensolver fails or a child's
-/// covariance fails its Cholesky factorisation (only for extremely ill-conditioned P).
+/// [`Error::NotSymmetric`] or [`Error::NotDefinite`] naming `{what}.cov` as [`Eigen::new`]
+/// (P not symmetric, an eigenvalue not finite and > 0), or if a child's covariance fails its
+/// Cholesky factorisation (only for extremely ill-conditioned P).
 ///
 /// # Examples
 /// ```

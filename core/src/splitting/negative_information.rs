@@ -185,7 +185,8 @@ pub fn constant_velocity(t: f64, q: f64) -> (DMatrix<f64>, DMatrix<f64>) {
 ///
 /// # Errors
 /// [`Error::DimensionMismatch`] naming `transition` or `processNoise` for matrices that are
-/// not n × n; [`Error::NotPositiveDefinite`] if a predicted covariance is not.
+/// not n × n; [`Error::NotDefinite`] naming `mixture[i].cov` if a predicted covariance is not
+/// positive definite.
 pub fn predict(
     mixture: &GaussianMixture,
     transition: &DMatrix<f64>,

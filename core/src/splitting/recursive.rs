@@ -388,7 +388,7 @@ pub fn split_for_region(
 /// [`Error::InvalidParameter`] naming `positionDims` (0 or above the state dimension),
 /// `minWeight` (negative or not finite), `gridBound` (not finite and > 0), `gridPoints` (< 2
 /// or N_g^{n_s} > 2²⁰), `maxDepth` (> 64); [`Error::DimensionMismatch`] naming `regions[i]`
-/// for a region whose dimension is not n_s; [`Error::NotPositiveDefinite`] naming
+/// for a region whose dimension is not n_s; [`Error::NotDefinite`] naming
 /// `mixture[ℓ].cov` if an eigendecomposition or a child's Cholesky factorisation fails.
 ///
 /// # Examples

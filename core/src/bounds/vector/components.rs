@@ -8,6 +8,7 @@ use nalgebra::DMatrix;
 use super::problem::check_finite_gain;
 use crate::bounds::closed::{Assembled, Ingredients, NoClutterBound, assemble, corollary3};
 use crate::error::{Error, Result};
+use crate::gaussian::covariance;
 
 /// (63)/(64) for component i: the scalar ingredients `base` (η, w, r, P̄o, e0², e1² of the
 /// whole state) with component i's [J'⁻¹]_ii and σ_{e,i}², and the errors divided by l.
@@ -90,6 +91,13 @@ pub fn component_corollary1(
 
 /// J_1 = P⁻¹ + Hᵀ R⁻¹ H, the Fisher information matrix of N(x; x0, P) N(z; Hx, R) (the vector
 /// form of Example 1, corrected as NOTES.md says), and its inverse (the posterior covariance).
+///
+/// # Errors
+/// [`Error::DimensionMismatch`] naming `prior_covariance`, `gain` or `noise_covariance` for
+/// shapes that do not fit; [`Error::InvalidParameter`] for a non-finite entry;
+/// [`Error::NotSymmetric`] or [`Error::NotDefinite`] naming `prior_covariance` or
+/// `noise_covariance` (the checks of [`covariance`]); [`Error::NotDefinite`] naming `gain` if
+/// J_1 itself fails its Cholesky factorisation.
 pub fn gaussian_information_matrix(
     prior_cov: &DMatrix<f64>,
     gain: &DMatrix<f64>,
@@ -119,6 +127,8 @@ pub fn gaussian_information_matrix(
     for v in gain.iter() {
         check_finite_gain(*v)?;
     }
+    covariance::check_symmetric(prior_cov, &|| "prior_covariance".into())?;
+    covariance::check_symmetric(noise_cov, &|| "noise_covariance".into())?;
     let p_inv = spd_inverse(prior_cov, "prior_covariance")?;
     let r_inv = spd_inverse(noise_cov, "noise_covariance")?;
     let j = &p_inv + gain.transpose() * r_inv * gain;
@@ -126,11 +136,12 @@ pub fn gaussian_information_matrix(
     Ok((j, inv))
 }
 
-/// A⁻¹ through the Cholesky factor; the error names `what` when A is not positive definite.
+/// A⁻¹ through the Cholesky factor; the error ([`Error::NotDefinite`]) names `what` and the
+/// smallest eigenvalue when A is not positive definite.
 fn spd_inverse(a: &DMatrix<f64>, what: &str) -> Result<DMatrix<f64>> {
     let factor = a
         .clone()
         .cholesky()
-        .ok_or_else(|| Error::NotPositiveDefinite { what: what.into() })?;
+        .ok_or_else(|| covariance::not_positive_definite(a, what.into()))?;
     Ok(factor.inverse())
 }

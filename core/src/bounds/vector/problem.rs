@@ -7,7 +7,7 @@ use nalgebra::DMatrix;
 
 use crate::bounds::model::Density;
 use crate::error::{Error, Result};
-use crate::math::fns;
+use crate::gaussian::covariance;
 
 /// The Gaussian prior f = N(x; x0, P) of a state in R^l (Section V).
 #[derive(Clone, Debug, PartialEq)]
@@ -94,26 +94,19 @@ impl LinearGaussianSensor {
     }
 }
 
-/// A symmetric positive definite n × n matrix from row-major entries.
+/// A symmetric positive definite n × n matrix from row-major entries: every entry finite,
+/// then the checks of [`covariance`] (symmetric to a relative 1e-9, then positive definite).
 fn spd(what: &'static str, n: usize, entries: &[f64]) -> Result<DMatrix<f64>> {
     if entries.len() != n * n {
         return Err(Error::dimension(what, n * n, entries.len()));
     }
-    let a = DMatrix::from_row_slice(n, n, entries);
-    let scale = a.iter().fold(0.0f64, |s, v| s.max(fns::abs(*v)));
-    for i in 0..n {
-        for j in 0..n {
-            let (u, v) = (a[(i, j)], a[(j, i)]);
-            if !u.is_finite() {
-                return Err(Error::parameter(what, u, "finite"));
-            }
-            if fns::abs(u - v) > 1e-12 * scale {
-                return Err(Error::NotPositiveDefinite { what: what.into() });
-            }
-        }
+    if let Some(&v) = entries.iter().find(|v| !v.is_finite()) {
+        return Err(Error::parameter(what, v, "finite"));
     }
+    let a = DMatrix::from_row_slice(n, n, entries);
+    covariance::check_symmetric(&a, &|| what.into())?;
     if a.clone().cholesky().is_none() {
-        return Err(Error::NotPositiveDefinite { what: what.into() });
+        return Err(covariance::not_positive_definite(&a, what.into()));
     }
     Ok(a)
 }

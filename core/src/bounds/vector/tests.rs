@@ -342,3 +342,49 @@ fn eq63_vector_errors_name_the_field() {
     .unwrap_err();
     assert_eq!(e.field(), "observation.gain");
 }
+
+#[test]
+fn vector_covariances_say_which_property_fails() {
+    use alloc::string::ToString;
+    let asym = [1.0, 0.5, 0.4, 1.0];
+    let indef = [1.25, 0.0, 0.0, -0.25];
+    let say = |e: crate::Error| e.to_string();
+    assert_eq!(
+        say(GaussianPrior::new(&[0.0, 0.0], &asym).unwrap_err()),
+        "cov is not symmetric: [0][1] = 0.5 but [1][0] = 0.4"
+    );
+    assert_eq!(
+        say(GaussianPrior::new(&[0.0, 0.0], &indef).unwrap_err()),
+        "cov is not positive definite (smallest eigenvalue -0.25)"
+    );
+    let sensor = |r: &[f64]| LinearGaussianSensor::new(0.7, &[1.0, 0.0, 0.0, 1.0], 2, &[0.0; 2], r);
+    assert_eq!(
+        say(sensor(&asym).unwrap_err()),
+        "noise_cov is not symmetric: [0][1] = 0.5 but [1][0] = 0.4"
+    );
+    assert_eq!(
+        say(sensor(&indef).unwrap_err()),
+        "noise_cov is not positive definite (smallest eigenvalue -0.25)"
+    );
+    let (asym, indef) = (
+        DMatrix::from_row_slice(2, 2, &asym),
+        DMatrix::from_row_slice(2, 2, &indef),
+    );
+    let (eye, h) = (DMatrix::identity(2, 2), DMatrix::identity(2, 2));
+    assert_eq!(
+        say(gaussian_information_matrix(&asym, &h, &eye).unwrap_err()),
+        "prior_covariance is not symmetric: [0][1] = 0.5 but [1][0] = 0.4"
+    );
+    assert_eq!(
+        say(gaussian_information_matrix(&indef, &h, &eye).unwrap_err()),
+        "prior_covariance is not positive definite (smallest eigenvalue -0.25)"
+    );
+    assert_eq!(
+        say(gaussian_information_matrix(&eye, &h, &asym).unwrap_err()),
+        "noise_covariance is not symmetric: [0][1] = 0.5 but [1][0] = 0.4"
+    );
+    assert_eq!(
+        say(gaussian_information_matrix(&eye, &h, &indef).unwrap_err()),
+        "noise_covariance is not positive definite (smallest eigenvalue -0.25)"
+    );
+}
