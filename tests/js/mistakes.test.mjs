@@ -240,6 +240,11 @@ test('why 7 (fuzz seed 198626): jdeMonteCarlo with a clutter rate of 3.5e-323 ha
   assert.ok(!hasNaN(r) && Number.isFinite(r.mse), JSON.stringify(r).slice(0, 300));
 });
 
+test('why 7 (fuzz seed 602302): jdeMonteCarlo over 2 scans with a prior variance of 5e-324 has a finite risk', () => {
+  const r = fisst.jdeMonteCarlo({ model: 'II', existence: 0.001214289776742761, prior: { multivariateGaussian: { mean: [0, 0, 0], cov: [[1, 0, 0], [0, 5e-324, 0], [0, 0, 1]] } }, observation: { detectionProbability: 0.5, gain: [[0, 0, 0], [0, 0, 0], [0, 0, 0]], offset: [0, 0, 0], noiseCov: [[1, 0, 0], [0, 1, 0], [0, 0, 1]] }, falseAlarmError: 0, missError: 0, samples: 200, seed: 1, emptyRule: 'declare', scans: 2 });
+  assert.ok(!hasNaN(r) && Number.isFinite(r.mse), JSON.stringify(r).slice(0, 300));
+});
+
 // The updates and the control step: a joint work cap, checked before any work, a RangeError
 // naming the list to shorten with the most it may hold (the four size edges `make fuzz` found;
 // specs.mjs largeCases times a case at each cap).

@@ -255,6 +255,23 @@ impl Gaussian {
                 let pm = spd_inverse(&(&p_inv + &info * m as f64), "P_m")?;
                 post.push((&pm * &p_inv, &pm * &ht_r_inv));
             }
+            let finite = |a: &DMatrix<f64>| a.iter().all(|v| v.is_finite());
+            if !post.iter().all(|(a, b)| finite(a) && finite(b)) {
+                // A prior variance near the smallest double makes P⁻¹ overflow (then
+                // ∞ · 0): the same matrices without P⁻¹, P_m P⁻¹ = (I + m P Hᵀ R⁻¹ H)⁻¹
+                // and P_m Hᵀ R⁻¹ = (P_m P⁻¹) P Hᵀ R⁻¹.
+                post.clear();
+                let p_info = p * &info;
+                let p_ht_r_inv = p * &ht_r_inv;
+                let n = p.nrows();
+                for m in 0..=scans {
+                    let a = (DMatrix::identity(n, n) + &p_info * m as f64)
+                        .try_inverse()
+                        .ok_or_else(|| covariance::not_positive_definite(p, "P_m".into()))?;
+                    let b = &a * &p_ht_r_inv;
+                    post.push((a, b));
+                }
+            }
         }
         Ok(Gaussian {
             x0: prior.mean.clone(),
@@ -883,6 +900,46 @@ mod tests {
             asym.to_string(),
             "cov is not symmetric: [0][1] = 0.5 but [1][0] = 0.4"
         );
+    }
+
+    /// Fuzz seed 602302: a prior variance of 5e-324 with k = 2 scans made P⁻¹ overflow
+    /// (then ∞ · 0 = NaN in P_m P⁻¹); the matrices are then formed without P⁻¹.
+    #[test]
+    fn k_scans_with_a_prior_variance_near_the_smallest_double_have_a_finite_risk() {
+        let prior = GaussianPrior::new(
+            &[0.0, 0.0, 0.0],
+            &[1.0, 0.0, 0.0, 0.0, 5e-324, 0.0, 0.0, 0.0, 1.0],
+        )
+        .unwrap();
+        let sensor = LinearGaussianSensor::new(
+            0.5,
+            &[0.0; 9],
+            3,
+            &[0.0; 3],
+            &[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0],
+        )
+        .unwrap();
+        let model = MonteCarloModel {
+            existence: 0.001214289776742761,
+            system: SimulatedSystem::LinearGaussian {
+                prior: &prior,
+                sensor: &sensor,
+            },
+            measurement: VectorMeasurement::I {
+                false_alarm_probability: 0.0,
+                false_alarm_density: &UnitUniform,
+            },
+            false_alarm_error: 0.0,
+            miss_error: 0.0,
+        };
+        let o = JdeMonteCarloOptions {
+            samples: 200,
+            seed: 1,
+            scans: 2,
+            empty_rule: EmptyRule::Declare,
+        };
+        let mc = jde_monte_carlo(&model, &o).unwrap();
+        assert!(mc.mse.is_finite() && mc.se.is_finite(), "{mc:?}");
     }
 
     #[test]
