@@ -2,7 +2,6 @@
 //! estimation with applications", paper 000): the estimate of Theorem III.3, q(a), the MMUC
 //! estimate and the threshold curves of Fig. 3.
 
-use serde::de::{self, Deserializer, MapAccess, Visitor};
 use serde::{Deserialize, Serialize};
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
@@ -71,98 +70,18 @@ impl BernoulliDensity {
     }
 }
 
-/// Costs of the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with
-/// applications" (paper 000): the MPE preset `'mpe'` (0, 1, 1, 0, 1), the MMOL preset `{ mmol: {
-/// asset: c_A, countermeasure: c_M } }` (c00 = 0, c01 = c_A, c10 = c_M, c11 = c_M, c = c_A), or the
-/// five costs (finite, ≥ 0).
-#[derive(Clone, Copy, Debug, Tsify)]
-#[tsify(
-    type = "'mpe' | { mmol: { asset: number; countermeasure: number } } | { c00: number; c01: number; c10: number; c11: number; c: number }"
-)]
-pub enum BernoulliCosts {
-    /// `'mpe'`: the MPE (minimum probability of error) preset, costs (c00, c01, c10, c11, c) = (0,
-    /// 1, 1, 0, 1).
-    Mpe,
-    /// `{ mmol: { asset, countermeasure } }`: the MMOL (minimum mean operational loss) preset from
-    /// the asset cost c_A and the countermeasure cost c_M.
-    Mmol(Mmol),
-    /// `{ c00, c01, c10, c11, c }`: the five costs of the loss (7), each finite and ≥ 0.
-    Explicit([f64; 5]),
-}
-
-/// The MMOL (minimum mean operational loss) preset's two costs, each finite and ≥ 0.
-#[derive(Clone, Copy, Debug, Deserialize, Tsify)]
-pub struct Mmol {
-    /// The asset cost c_A ≥ 0: the cost of missing the asset.
-    pub asset: f64,
-    /// The countermeasure cost c_M ≥ 0: the cost of a countermeasure.
-    pub countermeasure: f64,
-}
-
-const COST_KEYS: [&str; 5] = ["c00", "c01", "c10", "c11", "c"];
-const COST_FIELDS: &[&str] = &["mmol", "c00", "c01", "c10", "c11", "c"];
-const COST_FORMS: &str = "'mpe', { mmol: { asset, countermeasure } } or { c00, c01, c10, c11, c }";
-
-impl<'de> Deserialize<'de> for BernoulliCosts {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = BernoulliCosts;
-            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str(COST_FORMS)
-            }
-            fn visit_str<E: de::Error>(self, s: &str) -> Result<BernoulliCosts, E> {
-                match s {
-                    "mpe" => Ok(BernoulliCosts::Mpe),
-                    other => Err(E::custom(format!("must be {COST_FORMS}, got {other:?}"))),
-                }
-            }
-            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<BernoulliCosts, A::Error> {
-                let mut values = [None; 5];
-                let mut mmol = None;
-                while let Some(key) = map.next_key::<String>()? {
-                    if key == "mmol" {
-                        mmol = Some(map.next_value::<Mmol>()?);
-                    } else if let Some(i) = COST_KEYS.iter().position(|k| *k == key) {
-                        values[i] = Some(map.next_value::<f64>()?);
-                    } else {
-                        return Err(de::Error::unknown_field(&key, COST_FIELDS));
-                    }
-                }
-                if let Some(m) = mmol {
-                    if values.iter().any(Option::is_some) {
-                        return Err(de::Error::invalid_type(
-                            de::Unexpected::Other("mmol together with c00…c"),
-                            &COST_FORMS,
-                        ));
-                    }
-                    return Ok(BernoulliCosts::Mmol(m));
-                }
-                let mut c = [0.0; 5];
-                for (i, v) in values.iter().enumerate() {
-                    c[i] = v.ok_or_else(|| de::Error::missing_field(COST_KEYS[i]))?;
-                }
-                Ok(BernoulliCosts::Explicit(c))
-            }
-        }
-        d.deserialize_any(V)
-    }
-}
-
-impl BernoulliCosts {
-    /// The core costs; errors name `path` (`options.costs`).
-    pub(crate) fn into_core(self, path: &str) -> JsResult<Costs> {
-        match self {
-            BernoulliCosts::Mpe => Ok(Costs::mpe()),
-            BernoulliCosts::Mmol(m) => {
-                Costs::mmol(m.asset, m.countermeasure).or_throw_in(&format!("{path}.mmol"))
-            }
-            BernoulliCosts::Explicit([c00, c01, c10, c11, c]) => {
-                Costs::new(c00, c01, c10, c11, c).or_throw_in(path)
-            }
-        }
-    }
-}
+// The costs of the loss (7) are the core's `Costs`, read by its own deserializer ('mpe',
+// `{ mmol }` or the five costs; errors name `.c01`, `.mmol.asset` under `options.costs`).
+#[wasm_bindgen(typescript_custom_section)]
+const COSTS: &str = r#"
+/**
+ * Costs of the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with
+ * applications" (paper 000): the MPE preset `'mpe'` (0, 1, 1, 0, 1), the MMOL preset `{ mmol: {
+ * asset: c_A, countermeasure: c_M } }` (c00 = 0, c01 = c_A, c10 = c_M, c11 = c_M, c = c_A), or the
+ * five costs (finite, ≥ 0).
+ */
+export type BernoulliCosts = 'mpe' | { mmol: { asset: number; countermeasure: number } } | { c00: number; c01: number; c10: number; c11: number; c: number };
+"#;
 
 /// Options of `bernoulliEstimate` (the loss (7) and Theorem III.3 of Narykov, Üney & Ralph,
 /// "Optimal Bernoulli point estimation with applications" (paper 000)).
@@ -177,7 +96,8 @@ pub struct BernoulliEstimateOptions {
     /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
     /// The costs of the loss (7).
-    pub costs: BernoulliCosts,
+    #[tsify(type = "BernoulliCosts")]
+    pub costs: Costs,
 }
 
 /// Result of `bernoulliEstimate`: the Bayes-optimal estimate of Theorem III.3 of Narykov, Üney &
@@ -229,7 +149,8 @@ pub struct BernoulliThresholdCurveOptions {
     /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
     /// The costs of the loss (7).
-    pub costs: BernoulliCosts,
+    #[tsify(type = "BernoulliCosts")]
+    pub costs: Costs,
     /// Dimension, an integer in [1, 10000] (default 1, as in Fig. 3).
     #[serde(default = "dim_one")]
     pub dim: usize,
@@ -295,7 +216,8 @@ pub struct MultiBernoulliPointEstimateOptions {
     /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
     /// The costs of the loss (7).
-    pub costs: BernoulliCosts,
+    #[tsify(type = "BernoulliCosts")]
+    pub costs: Costs,
 }
 
 /// Result of `multiBernoulliPointEstimate`: the reported components and their estimates.
@@ -319,7 +241,8 @@ pub struct BernoulliLossCurveOptions {
     /// The miss probability q(a*) ∈ [0, 1] of the point that would be reported.
     pub miss_probability: f64,
     /// The costs of the loss (7).
-    pub costs: BernoulliCosts,
+    #[tsify(type = "BernoulliCosts")]
+    pub costs: Costs,
     /// Report when p > threshold; default: the optimal rule of Theorem III.3.
     #[tsify(optional)]
     pub threshold: Option<f64>,
@@ -365,8 +288,7 @@ pub fn bernoulli_estimate(
     let o: BernoulliEstimateOptions = read(options, "options")?;
     let s = o.density.into_core("options.density")?;
     s.check_mmuc_size().or_throw_in("options")?;
-    let costs = o.costs.into_core("options.costs")?;
-    let loss = ApplicationLoss::new(costs, o.radius).or_throw_in("options")?;
+    let loss = ApplicationLoss::new(o.costs, o.radius).or_throw_in("options")?;
     let e = bernoulli::estimate(o.existence, &s, &loss).or_throw_in("options")?;
     write(&estimate_out(&e))
 }
@@ -397,8 +319,7 @@ pub fn bernoulli_threshold_curve(
 ) -> JsResult<JsValue> {
     let o: BernoulliThresholdCurveOptions = read(options, "options")?;
     let dim = check_range("options.dim", o.dim, 1, 10_000)?;
-    let costs = o.costs.into_core("options.costs")?;
-    let curve = bernoulli::isotropic_threshold_curve(&o.sigmas.0, o.radius, &costs, dim)
+    let curve = bernoulli::isotropic_threshold_curve(&o.sigmas.0, o.radius, &o.costs, dim)
         .or_throw_in("options")?;
     write(&curve)
 }
@@ -451,8 +372,7 @@ pub fn multi_bernoulli_point_estimate(
         s.check_mmuc_size().or_throw_in(&path)?;
         comps.push((c.existence, s));
     }
-    let costs = o.costs.into_core("options.costs")?;
-    let loss = ApplicationLoss::new(costs, o.radius).or_throw_in("options")?;
+    let loss = ApplicationLoss::new(o.costs, o.radius).or_throw_in("options")?;
     let m = bernoulli::multi_bernoulli_estimate(&comps, &loss).or_throw_in("options")?;
     write(&MultiBernoulliPointEstimateResult {
         reported: m.reported.clone(),
@@ -471,11 +391,10 @@ pub fn bernoulli_loss_curve(
     #[wasm_bindgen(unchecked_param_type = "BernoulliLossCurveOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: BernoulliLossCurveOptions = read(options, "options")?;
-    let costs = o.costs.into_core("options.costs")?;
     let c = bernoulli::loss_curve(&LossCurveOptions {
         existences: o.existences.0,
         miss_probability: o.miss_probability,
-        costs,
+        costs: o.costs,
         threshold: o.threshold,
     })
     .or_throw_rendered("options")?;
