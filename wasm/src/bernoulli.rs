@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{JsResult, OrThrow, check_range, read, type_error, write};
+use crate::boundary::{JsResult, OrThrow, read, type_error, write};
 use crate::types::{self, Covariance, Numbers, Point, WeightedGaussian};
 use fisst::bernoulli::{
     self, ApplicationLoss, BernoulliEstimate, Costs, LossCurveOptions, MmucMethod, ParticleSet,
@@ -318,8 +318,7 @@ pub fn bernoulli_threshold_curve(
     #[wasm_bindgen(unchecked_param_type = "BernoulliThresholdCurveOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: BernoulliThresholdCurveOptions = read(options, "options")?;
-    let dim = check_range("options.dim", o.dim, 1, 10_000)?;
-    let curve = bernoulli::isotropic_threshold_curve(&o.sigmas.0, o.radius, &o.costs, dim)
+    let curve = bernoulli::isotropic_threshold_curve(&o.sigmas.0, o.radius, &o.costs, o.dim)
         .or_throw_in("options")?;
     write(&curve)
 }

@@ -8,6 +8,11 @@ use crate::bernoulli::loss::{Costs, check_radius};
 use crate::bernoulli::threshold::threshold;
 use crate::error::{Error, Result};
 
+/// The largest dimension d [`isotropic_miss_probability`] and [`isotropic_threshold_curve`]
+/// accept: each q costs d/2 terms of [`chi_square_sf`], so a curve of a few hundred σ stays
+/// within milliseconds up to it.
+pub const MAX_ISOTROPIC_DIM: usize = 10_000;
+
 /// q(a*) for an isotropic Gaussian N(μ, σ² I_d) at its MMUC estimate a* = μ:
 ///
 /// ```text
@@ -18,8 +23,8 @@ use crate::error::{Error, Result};
 /// there: q = 2 Φ(−r0/σ)).
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] naming `sigma` or `radius` unless finite and > 0, or `dim`
-/// if it is 0.
+/// [`Error::InvalidParameter`] naming `sigma` or `radius` unless finite and > 0;
+/// [`Error::OutOfRange`] naming `dim` outside [1, [`MAX_ISOTROPIC_DIM`]].
 pub fn isotropic_miss_probability(sigma: f64, radius: f64, dim: usize) -> Result<f64> {
     check_sigma("sigma", sigma)?;
     check_radius(radius)?;
@@ -35,16 +40,17 @@ pub fn isotropic_miss_probability(sigma: f64, radius: f64, dim: usize) -> Result
 /// are still eq. (11); Γ = ±∞ when its denominator vanishes.
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] naming `sigmas[i]` unless finite and > 0, `radius` unless
-/// finite and > 0, or `dim` if it is 0.
+/// [`Error::OutOfRange`] naming `dim` outside [1, [`MAX_ISOTROPIC_DIM`]] (checked first);
+/// [`Error::InvalidParameter`] naming `sigmas[i]` unless finite and > 0, or `radius` unless
+/// finite and > 0.
 pub fn isotropic_threshold_curve(
     sigmas: &[f64],
     radius: f64,
     costs: &Costs,
     dim: usize,
 ) -> Result<Vec<f64>> {
-    check_radius(radius)?;
     check_dim(dim)?;
+    check_radius(radius)?;
     sigmas
         .iter()
         .enumerate()
@@ -74,16 +80,17 @@ fn check_sigma(what: &str, sigma: f64) -> Result<f64> {
 }
 
 fn check_dim(dim: usize) -> Result<usize> {
-    if dim == 0 {
-        Err(Error::parameter("dim", 0.0, "an integer >= 1"))
-    } else {
+    if (1..=MAX_ISOTROPIC_DIM).contains(&dim) {
         Ok(dim)
+    } else {
+        Err(Error::range("dim", dim, 1, MAX_ISOTROPIC_DIM))
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use alloc::string::ToString;
 
     #[test]
     fn isotropic_q_and_curve_validate() {
@@ -107,5 +114,26 @@ mod tests {
         );
         let e = isotropic_threshold_curve(&[1.0, f64::NAN], 1.0, &Costs::mpe(), 1).unwrap_err();
         assert_eq!(e.field(), "sigmas[1]");
+    }
+
+    #[test]
+    fn dim_lies_in_one_to_the_cap_and_is_checked_first() {
+        let curve = |dim| isotropic_threshold_curve(&[1.0], 1.0, &Costs::mpe(), dim);
+        assert!(curve(MAX_ISOTROPIC_DIM).is_ok());
+        for dim in [0, MAX_ISOTROPIC_DIM + 1] {
+            assert_eq!(
+                curve(dim).unwrap_err().to_string(),
+                alloc::format!("dim must be an integer in [1, 10000], got {dim}")
+            );
+        }
+        // before the radius, as the JavaScript binding always reported it
+        let e = isotropic_threshold_curve(&[1.0], -1.0, &Costs::mpe(), 0).unwrap_err();
+        assert_eq!(e.field(), "dim");
+        assert_eq!(
+            isotropic_miss_probability(1.0, 1.0, MAX_ISOTROPIC_DIM + 1)
+                .unwrap_err()
+                .field(),
+            "dim"
+        );
     }
 }
