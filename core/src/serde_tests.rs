@@ -404,3 +404,26 @@ fn costs_read_the_mpe_and_mmol_presets_and_name_fields_relative_to_the_costs() {
             .contains("unknown field `d`")
     );
 }
+
+#[test]
+fn loss_curve_options_read_with_the_threshold_optional_and_the_curve_round_trips() {
+    use crate::bernoulli::{LossCurveOptions, loss_curve};
+    let o: LossCurveOptions =
+        serde_json::from_str(r#"{"existences":[0.2,0.9],"miss_probability":0.3,"costs":"mpe"}"#)
+            .unwrap();
+    assert_eq!(
+        o,
+        LossCurveOptions {
+            existences: vec![0.2, 0.9],
+            miss_probability: 0.3,
+            costs: Costs::mpe(),
+            threshold: None,
+        }
+    );
+    round_trip(&o);
+    round_trip(&loss_curve(&o).unwrap());
+    assert!(
+        rejected::<LossCurveOptions>(r#"{"existences":[0.2],"costs":"mpe"}"#)
+            .contains("miss_probability")
+    );
+}
