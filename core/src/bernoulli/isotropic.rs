@@ -67,6 +67,38 @@ pub fn isotropic_threshold_curve(
         .collect()
 }
 
+/// The options of [`isotropic_threshold_curve`] as one value: Fig. 3 of `000_…`.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ThresholdCurveOptions {
+    /// Standard deviations σ > 0 of the isotropic Gaussian N(a*, σ² I).
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::numbers"))]
+    pub sigmas: Vec<f64>,
+    /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
+    pub radius: f64,
+    /// The costs of the loss (7).
+    pub costs: Costs,
+    /// The dimension d, an integer in [1, [`MAX_ISOTROPIC_DIM`]]; `None` (the default): 1, as
+    /// in Fig. 3.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub dim: Option<usize>,
+}
+
+impl ThresholdCurveOptions {
+    /// Γ for each σ: [`isotropic_threshold_curve`] with d = `dim` (default 1).
+    ///
+    /// # Errors
+    /// As [`isotropic_threshold_curve`].
+    pub fn curve(&self) -> Result<Vec<f64>> {
+        isotropic_threshold_curve(
+            &self.sigmas,
+            self.radius,
+            &self.costs,
+            self.dim.unwrap_or(1),
+        )
+    }
+}
+
 fn sq(x: f64) -> f64 {
     x * x
 }
@@ -114,6 +146,22 @@ mod tests {
         );
         let e = isotropic_threshold_curve(&[1.0, f64::NAN], 1.0, &Costs::mpe(), 1).unwrap_err();
         assert_eq!(e.field(), "sigmas[1]");
+    }
+
+    #[test]
+    fn curve_options_default_to_one_dimension() {
+        let mut o = ThresholdCurveOptions {
+            sigmas: alloc::vec![0.5, 2.0],
+            radius: 1.0,
+            costs: Costs::mpe(),
+            dim: None,
+        };
+        let one = isotropic_threshold_curve(&o.sigmas, 1.0, &Costs::mpe(), 1).unwrap();
+        assert_eq!(o.curve().unwrap(), one);
+        o.dim = Some(3);
+        assert_ne!(o.curve().unwrap(), one);
+        o.dim = Some(0);
+        assert_eq!(o.curve().unwrap_err().field(), "dim");
     }
 
     #[test]
