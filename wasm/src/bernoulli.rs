@@ -334,7 +334,7 @@ pub fn multi_bernoulli_point_estimate(
     #[wasm_bindgen(unchecked_param_type = "MultiBernoulliPointEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: MultiBernoulliPointEstimateOptions = read(options, "options")?;
-    types::check_gaussian_count(o.components.len(), "options.components")?;
+    bernoulli::check_multi_bernoulli_count(o.components.len()).or_throw_in("options")?;
     let mut comps = Vec::with_capacity(o.components.len());
     for (i, c) in o.components.into_iter().enumerate() {
         let path = format!("options.components[{i}]");
