@@ -107,7 +107,7 @@ fn main() {
         .filter(|r| !declared.contains(*r) && defs.contains_key(*r))
         .collect();
 
-    let (out, warnings) = tsgen::declarations(&defs, &wanted);
+    let (out, warnings) = tsgen::declarations_with(&defs, &wanted, &declared);
     for w in warnings {
         println!("cargo:warning=TypeScript of the core's types: {w}");
     }

@@ -232,6 +232,9 @@ pub struct Gen<'a> {
     pub holder: String,
     /// The fields each type is held in, which decide its fields' JavaScript names.
     pub parents: BTreeMap<String, BTreeSet<String>>,
+    /// Core types whose TypeScript the binding declares itself under the same name (a core
+    /// type with a hand-written serde form, such as `Costs`): named, not generated.
+    pub declared: &'a BTreeSet<String>,
 }
 
 impl Gen<'_> {
@@ -329,6 +332,8 @@ impl Gen<'_> {
                         }
                         if self.defs.contains_key(&name) {
                             self.want(&name);
+                            name
+                        } else if self.declared.contains(&name) {
                             name
                         } else {
                             self.warnings
@@ -494,8 +499,20 @@ impl Gen<'_> {
 }
 
 /// The declarations of `roots` (names of serde types in `defs`) and of every type they hold,
-/// with the warnings (types it could not render, written `unknown`).
+/// with the warnings (types it could not render, written `unknown`). (Used by the tests; the
+/// build script passes the binding's own names to [`declarations_with`].)
+#[allow(dead_code)]
 pub fn declarations(defs: &BTreeMap<String, Def>, roots: &[&String]) -> (String, Vec<String>) {
+    declarations_with(defs, roots, &BTreeSet::new())
+}
+
+/// [`declarations`], with the names of core types the binding declares itself (`declared`:
+/// named where held, never generated).
+pub fn declarations_with(
+    defs: &BTreeMap<String, Def>,
+    roots: &[&String],
+    declared: &BTreeSet<String>,
+) -> (String, Vec<String>) {
     // twice: the first pass learns which fields hold each type (their names decide the
     // JavaScript names of the matrix fields), the second writes
     let mut parents = BTreeMap::new();
@@ -509,6 +526,7 @@ pub fn declarations(defs: &BTreeMap<String, Def>, roots: &[&String]) -> (String,
             warnings: vec![],
             holder: String::new(),
             parents: std::mem::take(&mut parents),
+            declared,
         };
         for r in roots {
             g.want(r);

@@ -369,10 +369,61 @@ fn estimators_and_bernoulli_results_round_trip() {
     let points = [[0.0], [1.0]];
     let particles = crate::bernoulli::ParticleSet::new(&points, Some(&[0.25, 0.75])).unwrap();
     round_trip(&SpatialDensity::particles(particles));
+    // the constructor's message, the field named relative to the costs (`.c01`)
+    let expected = Costs::new(0.0, -1.0, 1.0, 0.0, 1.0)
+        .unwrap_err()
+        .map_field(|f| f.strip_prefix("costs").unwrap().into())
+        .to_string();
+    assert!(expected.starts_with(".c01 must be"), "{expected}");
+    assert!(
+        rejected::<Costs>(r#"{"c00":0.0,"c01":-1.0,"c10":1.0,"c11":0.0,"c":1.0}"#)
+            .starts_with(&expected)
+    );
+}
+
+#[test]
+fn costs_read_the_mpe_and_mmol_presets_and_name_fields_relative_to_the_costs() {
+    let read = |json: &str| serde_json::from_str::<Costs>(json);
+    assert_eq!(read(r#""mpe""#).unwrap(), Costs::mpe());
+    let mmol = read(r#"{"mmol":{"asset":0.9,"countermeasure":0.1}}"#).unwrap();
+    assert_eq!(mmol, Costs::mmol(0.9, 0.1).unwrap());
+    // written as the five costs, read back equal
+    assert_eq!(read(&serde_json::to_string(&mmol).unwrap()).unwrap(), mmol);
+    assert!(rejected::<Costs>(r#""MPE""#).contains(r#"must be 'mpe', { mmol: { asset, countermeasure } } or { c00, c01, c10, c11, c }, got "MPE""#));
+    assert!(
+        rejected::<Costs>(r#"{"mmol":{"asset":-1.0,"countermeasure":0.1}}"#)
+            .starts_with(".mmol.asset must be finite and >= 0")
+    );
+    assert!(
+        rejected::<Costs>(r#"{"mmol":{"asset":1.0,"countermeasure":0.1},"c00":0.0}"#)
+            .contains("mmol together with c00…c")
+    );
+    assert!(rejected::<Costs>(r#"{"c00":0.0,"c01":1.0,"c10":1.0,"c":1.0}"#).contains("c11"));
+    assert!(
+        rejected::<Costs>(r#"{"c00":0.0,"c01":1.0,"c10":1.0,"c11":0.0,"c":1.0,"d":1.0}"#)
+            .contains("unknown field `d`")
+    );
+}
+
+#[test]
+fn loss_curve_options_read_with_the_threshold_optional_and_the_curve_round_trips() {
+    use crate::bernoulli::{LossCurveOptions, loss_curve};
+    let o: LossCurveOptions =
+        serde_json::from_str(r#"{"existences":[0.2,0.9],"miss_probability":0.3,"costs":"mpe"}"#)
+            .unwrap();
     assert_eq!(
-        rejected::<Costs>(r#"{"c00":0.0,"c01":-1.0,"c10":1.0,"c11":0.0,"c":1.0}"#),
-        Costs::new(0.0, -1.0, 1.0, 0.0, 1.0)
-            .unwrap_err()
-            .to_string()
+        o,
+        LossCurveOptions {
+            existences: vec![0.2, 0.9],
+            miss_probability: 0.3,
+            costs: Costs::mpe(),
+            threshold: None,
+        }
+    );
+    round_trip(&o);
+    round_trip(&loss_curve(&o).unwrap());
+    assert!(
+        rejected::<LossCurveOptions>(r#"{"existences":[0.2],"costs":"mpe"}"#)
+            .contains("miss_probability")
     );
 }

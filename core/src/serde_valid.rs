@@ -10,7 +10,8 @@
 //! | [`LinearGaussianTransition`] | `{f, q}` | [`LinearGaussianTransition::new`] |
 //! | [`LinearGaussianLikelihood`] | `{h, r}` | [`LinearGaussianLikelihood::new`] |
 //! | [`Gospa`], [`Ospa`] | `{c, p, alpha}`, `{c, p}` | [`Gospa::new`], [`Ospa::new`] |
-//! | [`Costs`], [`ApplicationLoss`] | `{c00, c01, c10, c11, c}`, `{costs, radius}` | their `new` |
+//! | [`Costs`] | written `{c00, c01, c10, c11, c}`; read as that, `"mpe"` or `{mmol: {asset, countermeasure}}` (errors name `.c01`, `.mmol.asset`) | [`Costs::new`], [`Costs::mpe`], [`Costs::mmol`] |
+//! | [`ApplicationLoss`] | `{costs, radius}` | [`ApplicationLoss::new`] |
 //! | [`AxisBox`], [`Ball`], [`Polygon`] | `{min, max}`, `{center, radius}`, `{vertices}` | their `new` |
 //! | [`SplitLibrary`] | `{weights, means, sigma, lambda}` | [`SplitLibrary::new`] |
 //! | [`MultiObjectLikelihood`] | `{detection, clutter_rate}` | [`MultiObjectLikelihood::new`] |
@@ -229,7 +230,7 @@ through_constructor!(
     |r| Ospa::new(r.c, r.p)
 );
 
-#[derive(Serialize, Deserialize)]
+#[derive(Serialize)]
 struct CostsRepr {
     c00: f64,
     c01: f64,
@@ -238,18 +239,91 @@ struct CostsRepr {
     c: f64,
 }
 
-through_constructor!(
-    Costs,
-    CostsRepr,
-    |k| CostsRepr {
-        c00: k.c00(),
-        c01: k.c01(),
-        c10: k.c10(),
-        c11: k.c11(),
-        c: k.c(),
-    },
-    |r| Costs::new(r.c00, r.c01, r.c10, r.c11, r.c)
-);
+impl Serialize for Costs {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        CostsRepr {
+            c00: self.c00(),
+            c01: self.c01(),
+            c10: self.c10(),
+            c11: self.c11(),
+            c: self.c(),
+        }
+        .serialize(serializer)
+    }
+}
+
+/// The forms [`Costs`] are read in, as the error messages name them.
+const COST_FORMS: &str = "'mpe', { mmol: { asset, countermeasure } } or { c00, c01, c10, c11, c }";
+const COST_KEYS: [&str; 5] = ["c00", "c01", "c10", "c11", "c"];
+const COST_FIELDS: &[&str] = &["mmol", "c00", "c01", "c10", "c11", "c"];
+
+/// The MMOL preset's two costs as read: `{asset, countermeasure}`.
+#[derive(Deserialize)]
+struct MmolIn {
+    asset: f64,
+    countermeasure: f64,
+}
+
+/// A [`Costs`] constructor's error as a serde error naming the field relative to the costs
+/// (`.c01`, `.mmol.asset`), which a path-tracking deserializer appends to its path.
+fn costs_error<E: serde::de::Error>(e: Error) -> E {
+    E::custom(
+        e.map_field(|f| f.strip_prefix("costs").unwrap_or(f).to_string())
+            .to_string(),
+    )
+}
+
+/// Reads the three forms of the loss (7)'s costs: the string `"mpe"` ([`Costs::mpe`]),
+/// `{mmol: {asset, countermeasure}}` ([`Costs::mmol`]) or the five costs `{c00, c01, c10, c11,
+/// c}` ([`Costs::new`]); written back as the five costs.
+impl<'de> Deserialize<'de> for Costs {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        use serde::de::{MapAccess, Unexpected, Visitor};
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = Costs;
+            fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                f.write_str(COST_FORMS)
+            }
+            fn visit_str<E: serde::de::Error>(self, s: &str) -> Result<Costs, E> {
+                match s {
+                    "mpe" => Ok(Costs::mpe()),
+                    other => Err(E::custom(alloc::format!(
+                        "must be {COST_FORMS}, got {other:?}"
+                    ))),
+                }
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Costs, A::Error> {
+                let mut values = [None; 5];
+                let mut mmol = None;
+                while let Some(key) = map.next_key::<alloc::string::String>()? {
+                    if key == "mmol" {
+                        mmol = Some(map.next_value::<MmolIn>()?);
+                    } else if let Some(i) = COST_KEYS.iter().position(|k| *k == key) {
+                        values[i] = Some(map.next_value::<f64>()?);
+                    } else {
+                        return Err(A::Error::unknown_field(&key, COST_FIELDS));
+                    }
+                }
+                if let Some(m) = mmol {
+                    if values.iter().any(Option::is_some) {
+                        return Err(A::Error::invalid_type(
+                            Unexpected::Other("mmol together with c00…c"),
+                            &COST_FORMS,
+                        ));
+                    }
+                    return Costs::mmol(m.asset, m.countermeasure).map_err(costs_error);
+                }
+                let mut c = [0.0; 5];
+                for (i, v) in values.iter().enumerate() {
+                    c[i] = v.ok_or_else(|| A::Error::missing_field(COST_KEYS[i]))?;
+                }
+                Costs::new(c[0], c[1], c[2], c[3], c[4]).map_err(costs_error)
+            }
+        }
+        deserializer.deserialize_any(V)
+    }
+}
 
 #[derive(Serialize, Deserialize)]
 struct ApplicationLossRepr {

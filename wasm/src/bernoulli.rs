@@ -2,16 +2,16 @@
 //! estimation with applications", paper 000): the estimate of Theorem III.3, q(a), the MMUC
 //! estimate and the threshold curves of Fig. 3.
 
-use serde::de::{self, Deserializer, MapAccess, Visitor};
 use serde::{Deserialize, Serialize};
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{JsResult, OrThrow, check_range, read, type_error, write};
+use crate::boundary::{JsResult, OrThrow, read, type_error, write};
+use crate::names::Renamed;
 use crate::types::{self, Covariance, Numbers, Point, WeightedGaussian};
 use fisst::bernoulli::{
     self, ApplicationLoss, BernoulliEstimate, Costs, LossCurveOptions, MmucMethod, ParticleSet,
-    SpatialDensity,
+    SpatialDensity, ThresholdCurveOptions,
 };
 use fisst::gaussian::Gaussian as CoreGaussian;
 
@@ -71,98 +71,42 @@ impl BernoulliDensity {
     }
 }
 
-/// Costs of the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with
-/// applications" (paper 000): the MPE preset `'mpe'` (0, 1, 1, 0, 1), the MMOL preset `{ mmol: {
-/// asset: c_A, countermeasure: c_M } }` (c00 = 0, c01 = c_A, c10 = c_M, c11 = c_M, c = c_A), or the
-/// five costs (finite, ≥ 0).
-#[derive(Clone, Copy, Debug, Tsify)]
-#[tsify(
-    type = "'mpe' | { mmol: { asset: number; countermeasure: number } } | { c00: number; c01: number; c10: number; c11: number; c: number }"
-)]
-pub enum BernoulliCosts {
-    /// `'mpe'`: the MPE (minimum probability of error) preset, costs (c00, c01, c10, c11, c) = (0,
-    /// 1, 1, 0, 1).
-    Mpe,
-    /// `{ mmol: { asset, countermeasure } }`: the MMOL (minimum mean operational loss) preset from
-    /// the asset cost c_A and the countermeasure cost c_M.
-    Mmol(Mmol),
-    /// `{ c00, c01, c10, c11, c }`: the five costs of the loss (7), each finite and ≥ 0.
-    Explicit([f64; 5]),
-}
+// The costs of the loss (7) are the core's `Costs`, read by its own deserializer ('mpe',
+// `{ mmol }` or the five costs; errors name `.c01`, `.mmol.asset` under `options.costs`).
+#[wasm_bindgen(typescript_custom_section)]
+const COSTS: &str = r#"
+/**
+ * Costs of the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with
+ * applications" (paper 000): the MPE preset `'mpe'` (0, 1, 1, 0, 1), the MMOL preset `{ mmol: {
+ * asset: c_A, countermeasure: c_M } }` (c00 = 0, c01 = c_A, c10 = c_M, c11 = c_M, c = c_A), or the
+ * five costs (finite, ≥ 0).
+ */
+export type BernoulliCosts = 'mpe' | { mmol: { asset: number; countermeasure: number } } | { c00: number; c01: number; c10: number; c11: number; c: number };
+"#;
 
-/// The MMOL (minimum mean operational loss) preset's two costs, each finite and ≥ 0.
-#[derive(Clone, Copy, Debug, Deserialize, Tsify)]
-pub struct Mmol {
-    /// The asset cost c_A ≥ 0: the cost of missing the asset.
-    pub asset: f64,
-    /// The countermeasure cost c_M ≥ 0: the cost of a countermeasure.
-    pub countermeasure: f64,
-}
-
-const COST_KEYS: [&str; 5] = ["c00", "c01", "c10", "c11", "c"];
-const COST_FIELDS: &[&str] = &["mmol", "c00", "c01", "c10", "c11", "c"];
-const COST_FORMS: &str = "'mpe', { mmol: { asset, countermeasure } } or { c00, c01, c10, c11, c }";
-
-impl<'de> Deserialize<'de> for BernoulliCosts {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = BernoulliCosts;
-            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str(COST_FORMS)
-            }
-            fn visit_str<E: de::Error>(self, s: &str) -> Result<BernoulliCosts, E> {
-                match s {
-                    "mpe" => Ok(BernoulliCosts::Mpe),
-                    other => Err(E::custom(format!("must be {COST_FORMS}, got {other:?}"))),
-                }
-            }
-            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<BernoulliCosts, A::Error> {
-                let mut values = [None; 5];
-                let mut mmol = None;
-                while let Some(key) = map.next_key::<String>()? {
-                    if key == "mmol" {
-                        mmol = Some(map.next_value::<Mmol>()?);
-                    } else if let Some(i) = COST_KEYS.iter().position(|k| *k == key) {
-                        values[i] = Some(map.next_value::<f64>()?);
-                    } else {
-                        return Err(de::Error::unknown_field(&key, COST_FIELDS));
-                    }
-                }
-                if let Some(m) = mmol {
-                    if values.iter().any(Option::is_some) {
-                        return Err(de::Error::invalid_type(
-                            de::Unexpected::Other("mmol together with c00…c"),
-                            &COST_FORMS,
-                        ));
-                    }
-                    return Ok(BernoulliCosts::Mmol(m));
-                }
-                let mut c = [0.0; 5];
-                for (i, v) in values.iter().enumerate() {
-                    c[i] = v.ok_or_else(|| de::Error::missing_field(COST_KEYS[i]))?;
-                }
-                Ok(BernoulliCosts::Explicit(c))
-            }
-        }
-        d.deserialize_any(V)
-    }
-}
-
-impl BernoulliCosts {
-    /// The core costs; errors name `path` (`options.costs`).
-    pub(crate) fn into_core(self, path: &str) -> JsResult<Costs> {
-        match self {
-            BernoulliCosts::Mpe => Ok(Costs::mpe()),
-            BernoulliCosts::Mmol(m) => {
-                Costs::mmol(m.asset, m.countermeasure).or_throw_in(&format!("{path}.mmol"))
-            }
-            BernoulliCosts::Explicit([c00, c01, c10, c11, c]) => {
-                Costs::new(c00, c01, c10, c11, c).or_throw_in(path)
-            }
-        }
-    }
-}
+// `bernoulliLossCurve` and `bernoulliThresholdCurve` read (and write) the core's own types
+// (their TypeScript is generated by build.rs from the core's source); the contract's names for
+// them stay.
+#[cfg(feature = "bernoulli")]
+#[wasm_bindgen(typescript_custom_section)]
+const NAMES: &str = r#"
+/**
+ * The core's `Costs`: `BernoulliCosts`.
+ */
+export type Costs = BernoulliCosts;
+/**
+ * Options of `bernoulliLossCurve`: the core's `LossCurveOptions`.
+ */
+export type BernoulliLossCurveOptions = LossCurveOptions;
+/**
+ * Result of `bernoulliLossCurve`: the core's `LossCurve`.
+ */
+export type BernoulliLossCurveResult = LossCurve;
+/**
+ * Options of `bernoulliThresholdCurve`: the core's `ThresholdCurveOptions`.
+ */
+export type BernoulliThresholdCurveOptions = ThresholdCurveOptions;
+"#;
 
 /// Options of `bernoulliEstimate` (the loss (7) and Theorem III.3 of Narykov, Üney & Ralph,
 /// "Optimal Bernoulli point estimation with applications" (paper 000)).
@@ -177,7 +121,8 @@ pub struct BernoulliEstimateOptions {
     /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
     /// The costs of the loss (7).
-    pub costs: BernoulliCosts,
+    #[tsify(type = "BernoulliCosts")]
+    pub costs: Costs,
 }
 
 /// Result of `bernoulliEstimate`: the Bayes-optimal estimate of Theorem III.3 of Narykov, Üney &
@@ -214,25 +159,6 @@ pub struct ProbabilityOutsideBallOptions {
     pub center: Point,
     /// The ball's radius, > 0, in state units.
     pub radius: f64,
-}
-
-fn dim_one() -> usize {
-    1
-}
-
-/// Options of `bernoulliThresholdCurve` (Fig. 3 of Narykov, Üney & Ralph, "Optimal Bernoulli point
-/// estimation with applications" (paper 000)).
-#[derive(Deserialize, Tsify)]
-pub struct BernoulliThresholdCurveOptions {
-    /// Standard deviations σ > 0 of the isotropic Gaussian N(a*, σ² I).
-    pub sigmas: Numbers,
-    /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
-    pub radius: f64,
-    /// The costs of the loss (7).
-    pub costs: BernoulliCosts,
-    /// Dimension, an integer in [1, 10000] (default 1, as in Fig. 3).
-    #[serde(default = "dim_one")]
-    pub dim: usize,
 }
 
 /// Options of `mmucEstimate`: the MMUC (minimum mean uniform cost) point a* (12) of
@@ -295,7 +221,8 @@ pub struct MultiBernoulliPointEstimateOptions {
     /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
     /// The costs of the loss (7).
-    pub costs: BernoulliCosts,
+    #[tsify(type = "BernoulliCosts")]
+    pub costs: Costs,
 }
 
 /// Result of `multiBernoulliPointEstimate`: the reported components and their estimates.
@@ -307,37 +234,6 @@ pub struct MultiBernoulliPointEstimateResult {
     pub estimates: Vec<Vec<f64>>,
     /// The full Theorem III.3 result of each component, in the order of `components`.
     pub components: Vec<BernoulliEstimateResult>,
-}
-
-/// Options of `bernoulliLossCurve` (Fig. 2 of Narykov, Üney & Ralph, "Optimal Bernoulli point
-/// estimation with applications" (paper 000)).
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct BernoulliLossCurveOptions {
-    /// The existence probabilities p at which to evaluate.
-    pub existences: Numbers,
-    /// The miss probability q(a*) ∈ [0, 1] of the point that would be reported.
-    pub miss_probability: f64,
-    /// The costs of the loss (7).
-    pub costs: BernoulliCosts,
-    /// Report when p > threshold; default: the optimal rule of Theorem III.3.
-    #[tsify(optional)]
-    pub threshold: Option<f64>,
-}
-
-/// Result of `bernoulliLossCurve`: ρ_∅(p) (14), ρ_{a*}(p) (13), and the expected loss of the rule,
-/// for each p (the expected losses of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation
-/// with applications" (paper 000)).
-#[derive(Serialize, Tsify)]
-pub struct BernoulliLossCurveResult {
-    /// The expected loss ρ_∅(p) (14) of reporting nothing, one per p.
-    pub empty: Vec<f64>,
-    /// The expected loss ρ_{a*}(p) (13) of reporting a*, one per p.
-    pub singleton: Vec<f64>,
-    /// The expected loss of the rule "report when p > threshold", one per p.
-    pub rule: Vec<f64>,
-    /// The rule's existence threshold (the given one, or the optimal Γ (11)).
-    pub threshold: f64,
 }
 
 pub(crate) fn estimate_out(e: &BernoulliEstimate) -> BernoulliEstimateResult {
@@ -365,8 +261,7 @@ pub fn bernoulli_estimate(
     let o: BernoulliEstimateOptions = read(options, "options")?;
     let s = o.density.into_core("options.density")?;
     s.check_mmuc_size().or_throw_in("options")?;
-    let costs = o.costs.into_core("options.costs")?;
-    let loss = ApplicationLoss::new(costs, o.radius).or_throw_in("options")?;
+    let loss = ApplicationLoss::new(o.costs, o.radius).or_throw_in("options")?;
     let e = bernoulli::estimate(o.existence, &s, &loss).or_throw_in("options")?;
     write(&estimate_out(&e))
 }
@@ -395,12 +290,8 @@ pub fn probability_outside_ball(
 pub fn bernoulli_threshold_curve(
     #[wasm_bindgen(unchecked_param_type = "BernoulliThresholdCurveOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let o: BernoulliThresholdCurveOptions = read(options, "options")?;
-    let dim = check_range("options.dim", o.dim, 1, 10_000)?;
-    let costs = o.costs.into_core("options.costs")?;
-    let curve = bernoulli::isotropic_threshold_curve(&o.sigmas.0, o.radius, &costs, dim)
-        .or_throw_in("options")?;
-    write(&curve)
+    let o: ThresholdCurveOptions = read(options, "options")?;
+    write(&o.curve().or_throw_in("options")?)
 }
 
 /// The MMUC estimate a* = argmin_a q(a) (eq. (12)) alone. Options `{ density, radius }`;
@@ -443,7 +334,7 @@ pub fn multi_bernoulli_point_estimate(
     #[wasm_bindgen(unchecked_param_type = "MultiBernoulliPointEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: MultiBernoulliPointEstimateOptions = read(options, "options")?;
-    types::check_gaussian_count(o.components.len(), "options.components")?;
+    bernoulli::check_multi_bernoulli_count(o.components.len()).or_throw_in("options")?;
     let mut comps = Vec::with_capacity(o.components.len());
     for (i, c) in o.components.into_iter().enumerate() {
         let path = format!("options.components[{i}]");
@@ -451,8 +342,7 @@ pub fn multi_bernoulli_point_estimate(
         s.check_mmuc_size().or_throw_in(&path)?;
         comps.push((c.existence, s));
     }
-    let costs = o.costs.into_core("options.costs")?;
-    let loss = ApplicationLoss::new(costs, o.radius).or_throw_in("options")?;
+    let loss = ApplicationLoss::new(o.costs, o.radius).or_throw_in("options")?;
     let m = bernoulli::multi_bernoulli_estimate(&comps, &loss).or_throw_in("options")?;
     write(&MultiBernoulliPointEstimateResult {
         reported: m.reported.clone(),
@@ -470,19 +360,8 @@ pub fn multi_bernoulli_point_estimate(
 pub fn bernoulli_loss_curve(
     #[wasm_bindgen(unchecked_param_type = "BernoulliLossCurveOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let o: BernoulliLossCurveOptions = read(options, "options")?;
-    let costs = o.costs.into_core("options.costs")?;
-    let c = bernoulli::loss_curve(&LossCurveOptions {
-        existences: o.existences.0,
-        miss_probability: o.miss_probability,
-        costs,
-        threshold: o.threshold,
-    })
-    .or_throw_rendered("options")?;
-    write(&BernoulliLossCurveResult {
-        empty: c.empty,
-        singleton: c.singleton,
-        rule: c.rule,
-        threshold: c.threshold,
-    })
+    let o: LossCurveOptions = read(options, "options")?;
+    write(&Renamed::new(
+        &bernoulli::loss_curve(&o).or_throw_rendered("options")?,
+    ))
 }

@@ -10,7 +10,7 @@ use serde::{Deserialize, Serialize};
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::bernoulli::{BernoulliCosts, BernoulliEstimateResult, estimate_out};
+use crate::bernoulli::{BernoulliEstimateResult, estimate_out};
 use crate::boundary::{
     JsResult, core_error, range_error, read, render_path, seed_or_entropy, type_error, write,
 };
@@ -576,7 +576,7 @@ pub struct FilterEstimateOptions {
     pub radius: Option<f64>,
     /// The costs of the loss (7).
     #[tsify(optional)]
-    pub costs: Option<BernoulliCosts>,
+    pub costs: Option<fisst::bernoulli::Costs>,
 }
 
 /// The result of the filters' `estimate()`: the posterior existence, MMSE state and covariance.
@@ -644,10 +644,7 @@ fn estimate_options(options: JsValue) -> JsResult<EstimateOptions> {
     let o: FilterEstimateOptions = read(options, "options")?;
     Ok(match (o.radius, o.costs) {
         (Some(r), Some(c)) => EstimateOptions {
-            loss: Some(
-                ApplicationLoss::new(c.into_core("options.costs")?, r)
-                    .map_err(rendered("options"))?,
-            ),
+            loss: Some(ApplicationLoss::new(c, r).map_err(rendered("options"))?),
         },
         (None, None) => EstimateOptions::default(),
         // A missing field is a TypeError naming it (the README's rule), as `read` reports one.

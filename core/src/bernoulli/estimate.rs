@@ -124,17 +124,38 @@ impl MultiBernoulliEstimate {
     }
 }
 
+/// The most components [`multi_bernoulli_estimate`] takes: each costs an MMUC search, up to
+/// about a millisecond for a capped mixture or particle set.
+pub const MAX_MULTI_BERNOULLI_COMPONENTS: usize = 10_000;
+
+/// `Ok` if a multi-Bernoulli of `count` components is within
+/// [`MAX_MULTI_BERNOULLI_COMPONENTS`] (a binding checks it before reading the densities).
+///
+/// # Errors
+/// [`Error::Count`] naming `components`.
+pub fn check_multi_bernoulli_count(count: usize) -> Result<()> {
+    crate::Error::check_count(
+        "components",
+        "entries",
+        count,
+        0,
+        MAX_MULTI_BERNOULLI_COMPONENTS,
+    )
+}
+
 /// Theorem III.3 applied to each Bernoulli component `(r_i, s_i)` of a multi-Bernoulli, the
 /// use the paper's introduction names for it (the paper proves optimality for a single
 /// Bernoulli only; applying it per component is optimal when the components' losses add
 /// up, as for far-apart targets).
 ///
 /// # Errors
+/// [`Error::Count`] naming `components` for more than [`MAX_MULTI_BERNOULLI_COMPONENTS`];
 /// [`Error::InvalidProbability`] naming `components[i].existence` unless r_i ∈ [0, 1].
 pub fn multi_bernoulli_estimate(
     components: &[(f64, SpatialDensity)],
     loss: &ApplicationLoss,
 ) -> Result<MultiBernoulliEstimate> {
+    check_multi_bernoulli_count(components.len())?;
     let mut out = Vec::with_capacity(components.len());
     let mut reported = Vec::new();
     for (i, (p, s)) in components.iter().enumerate() {

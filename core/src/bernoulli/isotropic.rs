@@ -8,6 +8,11 @@ use crate::bernoulli::loss::{Costs, check_radius};
 use crate::bernoulli::threshold::threshold;
 use crate::error::{Error, Result};
 
+/// The largest dimension d [`isotropic_miss_probability`] and [`isotropic_threshold_curve`]
+/// accept: each q costs d/2 terms of [`chi_square_sf`], so a curve of a few hundred σ stays
+/// within milliseconds up to it.
+pub const MAX_ISOTROPIC_DIM: usize = 10_000;
+
 /// q(a*) for an isotropic Gaussian N(μ, σ² I_d) at its MMUC estimate a* = μ:
 ///
 /// ```text
@@ -18,8 +23,8 @@ use crate::error::{Error, Result};
 /// there: q = 2 Φ(−r0/σ)).
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] naming `sigma` or `radius` unless finite and > 0, or `dim`
-/// if it is 0.
+/// [`Error::InvalidParameter`] naming `sigma` or `radius` unless finite and > 0;
+/// [`Error::OutOfRange`] naming `dim` outside [1, [`MAX_ISOTROPIC_DIM`]].
 pub fn isotropic_miss_probability(sigma: f64, radius: f64, dim: usize) -> Result<f64> {
     check_sigma("sigma", sigma)?;
     check_radius(radius)?;
@@ -35,16 +40,17 @@ pub fn isotropic_miss_probability(sigma: f64, radius: f64, dim: usize) -> Result
 /// are still eq. (11); Γ = ±∞ when its denominator vanishes.
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] naming `sigmas[i]` unless finite and > 0, `radius` unless
-/// finite and > 0, or `dim` if it is 0.
+/// [`Error::OutOfRange`] naming `dim` outside [1, [`MAX_ISOTROPIC_DIM`]] (checked first);
+/// [`Error::InvalidParameter`] naming `sigmas[i]` unless finite and > 0, or `radius` unless
+/// finite and > 0.
 pub fn isotropic_threshold_curve(
     sigmas: &[f64],
     radius: f64,
     costs: &Costs,
     dim: usize,
 ) -> Result<Vec<f64>> {
-    check_radius(radius)?;
     check_dim(dim)?;
+    check_radius(radius)?;
     sigmas
         .iter()
         .enumerate()
@@ -61,6 +67,38 @@ pub fn isotropic_threshold_curve(
         .collect()
 }
 
+/// The options of [`isotropic_threshold_curve`] as one value: Fig. 3 of `000_…`.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ThresholdCurveOptions {
+    /// Standard deviations σ > 0 of the isotropic Gaussian N(a*, σ² I).
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::numbers"))]
+    pub sigmas: Vec<f64>,
+    /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
+    pub radius: f64,
+    /// The costs of the loss (7).
+    pub costs: Costs,
+    /// The dimension d, an integer in [1, [`MAX_ISOTROPIC_DIM`]]; `None` (the default): 1, as
+    /// in Fig. 3.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub dim: Option<usize>,
+}
+
+impl ThresholdCurveOptions {
+    /// Γ for each σ: [`isotropic_threshold_curve`] with d = `dim` (default 1).
+    ///
+    /// # Errors
+    /// As [`isotropic_threshold_curve`].
+    pub fn curve(&self) -> Result<Vec<f64>> {
+        isotropic_threshold_curve(
+            &self.sigmas,
+            self.radius,
+            &self.costs,
+            self.dim.unwrap_or(1),
+        )
+    }
+}
+
 fn sq(x: f64) -> f64 {
     x * x
 }
@@ -74,16 +112,17 @@ fn check_sigma(what: &str, sigma: f64) -> Result<f64> {
 }
 
 fn check_dim(dim: usize) -> Result<usize> {
-    if dim == 0 {
-        Err(Error::parameter("dim", 0.0, "an integer >= 1"))
-    } else {
+    if (1..=MAX_ISOTROPIC_DIM).contains(&dim) {
         Ok(dim)
+    } else {
+        Err(Error::range("dim", dim, 1, MAX_ISOTROPIC_DIM))
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use alloc::string::ToString;
 
     #[test]
     fn isotropic_q_and_curve_validate() {
@@ -107,5 +146,42 @@ mod tests {
         );
         let e = isotropic_threshold_curve(&[1.0, f64::NAN], 1.0, &Costs::mpe(), 1).unwrap_err();
         assert_eq!(e.field(), "sigmas[1]");
+    }
+
+    #[test]
+    fn curve_options_default_to_one_dimension() {
+        let mut o = ThresholdCurveOptions {
+            sigmas: alloc::vec![0.5, 2.0],
+            radius: 1.0,
+            costs: Costs::mpe(),
+            dim: None,
+        };
+        let one = isotropic_threshold_curve(&o.sigmas, 1.0, &Costs::mpe(), 1).unwrap();
+        assert_eq!(o.curve().unwrap(), one);
+        o.dim = Some(3);
+        assert_ne!(o.curve().unwrap(), one);
+        o.dim = Some(0);
+        assert_eq!(o.curve().unwrap_err().field(), "dim");
+    }
+
+    #[test]
+    fn dim_lies_in_one_to_the_cap_and_is_checked_first() {
+        let curve = |dim| isotropic_threshold_curve(&[1.0], 1.0, &Costs::mpe(), dim);
+        assert!(curve(MAX_ISOTROPIC_DIM).is_ok());
+        for dim in [0, MAX_ISOTROPIC_DIM + 1] {
+            assert_eq!(
+                curve(dim).unwrap_err().to_string(),
+                alloc::format!("dim must be an integer in [1, 10000], got {dim}")
+            );
+        }
+        // before the radius, as the JavaScript binding always reported it
+        let e = isotropic_threshold_curve(&[1.0], -1.0, &Costs::mpe(), 0).unwrap_err();
+        assert_eq!(e.field(), "dim");
+        assert_eq!(
+            isotropic_miss_probability(1.0, 1.0, MAX_ISOTROPIC_DIM + 1)
+                .unwrap_err()
+                .field(),
+            "dim"
+        );
     }
 }

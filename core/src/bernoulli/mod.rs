@@ -57,8 +57,13 @@ mod threshold;
 pub use ball::{BallProbability, DEFAULT_TOLERANCE};
 pub use chi_square::chi_square_sf;
 pub use density::{DensityKind, MIN_TOLERANCE, ParticleSet, SpatialDensity};
-pub use estimate::{BernoulliEstimate, MultiBernoulliEstimate, estimate, multi_bernoulli_estimate};
-pub use isotropic::{isotropic_miss_probability, isotropic_threshold_curve};
+pub use estimate::{
+    BernoulliEstimate, MAX_MULTI_BERNOULLI_COMPONENTS, MultiBernoulliEstimate,
+    check_multi_bernoulli_count, estimate, multi_bernoulli_estimate,
+};
+pub use isotropic::{
+    MAX_ISOTROPIC_DIM, ThresholdCurveOptions, isotropic_miss_probability, isotropic_threshold_curve,
+};
 pub use loss::{ApplicationLoss, Costs};
 pub use mmuc::{MAX_MMUC_COMPONENTS, MAX_MMUC_PARTICLES, Mmuc, MmucMethod};
 pub use threshold::{

@@ -1076,6 +1076,15 @@ fn thm3_per_component_of_a_multi_bernoulli() {
         multi_bernoulli_estimate(&bad, &l).unwrap_err().field(),
         "components[0].existence"
     );
+    // at most MAX_MULTI_BERNOULLI_COMPONENTS components
+    assert!(check_multi_bernoulli_count(MAX_MULTI_BERNOULLI_COMPONENTS).is_ok());
+    let point = SpatialDensity::particles(ParticleSet::new(&[[0.0]], None).unwrap());
+    let many = vec![(0.5, point); MAX_MULTI_BERNOULLI_COMPONENTS + 1];
+    let e = multi_bernoulli_estimate(&many, &l).unwrap_err();
+    assert_eq!(
+        alloc::string::ToString::to_string(&e),
+        "components has 10001 entries, at most 10000 are supported"
+    );
 }
 
 #[test]

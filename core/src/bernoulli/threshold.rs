@@ -136,8 +136,10 @@ pub fn expected_loss_singleton(
 
 /// Options of [`loss_curve`].
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct LossCurveOptions {
     /// The existence probabilities p at which to evaluate, each in [0, 1].
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::numbers"))]
     pub existences: Vec<f64>,
     /// The miss probability q(a*) ∈ [0, 1] of the point that would be reported.
     pub miss_probability: f64,
@@ -145,11 +147,13 @@ pub struct LossCurveOptions {
     pub costs: Costs,
     /// Report when p > `threshold`; `None` (the default): the optimal rule of Theorem III.3,
     /// [`threshold`].
+    #[cfg_attr(feature = "serde", serde(default))]
     pub threshold: Option<f64>,
 }
 
 /// The expected losses against p ([`loss_curve`]), one entry per p.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct LossCurve {
     /// The expected loss ρ_∅(p) of reporting nothing, eq. (14), one per p.
     pub empty: Vec<f64>,
