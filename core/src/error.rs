@@ -186,6 +186,31 @@ impl Error {
         }
     }
 
+    /// `Ok` if `count` items of `per_item` work each (`measure`) stay within `cap`, else an
+    /// [`Error::OverBudget`] naming `what` with the work, `limit` (the cap in words) and the
+    /// largest count within the cap.
+    pub fn check_work(
+        what: &str,
+        measure: &'static str,
+        limit: &'static str,
+        per_item: usize,
+        count: usize,
+        cap: usize,
+    ) -> Result<()> {
+        let per_item = per_item.max(1);
+        let work = per_item.saturating_mul(count);
+        if work > cap {
+            return Err(Error::OverBudget {
+                what: what.into(),
+                measure,
+                work,
+                limit,
+                at_most: cap / per_item,
+            });
+        }
+        Ok(())
+    }
+
     /// `Ok` if the list `what` of `found` `noun` has between `min` and `max` entries, else an
     /// [`Error::Count`].
     pub fn check_count(

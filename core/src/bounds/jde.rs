@@ -343,15 +343,14 @@ fn monte_carlo_settings(
         2
     };
     let points: usize = (first..=last + 1).sum();
-    if points.saturating_mul(samples) > MAX_SAMPLE_POINTS {
-        return Err(Error::OverBudget {
-            what: "samples".into(),
-            measure: "samples × Σ n",
-            work: points.saturating_mul(samples),
-            limit: "10^7 at this clutter rate; pass fewer samples",
-            at_most: MAX_SAMPLE_POINTS / points.max(1),
-        });
-    }
+    Error::check_work(
+        "samples",
+        "samples × Σ n",
+        "10^7 at this clutter rate; pass fewer samples",
+        points,
+        samples,
+        MAX_SAMPLE_POINTS,
+    )?;
     let seed = if last > 0 {
         Some(match seed {
             Some(s) => s,

@@ -674,11 +674,17 @@ pub fn jde_monte_carlo(
                 // β(Z) = Σ_i ∫p_1(x, z_i)dx / v(z_i); MAP (40): r(1 − P_o + P_o β) ≥ 1 − r;
                 // the posterior mean mixes x* (undetected) and x̂(z_i) with weights ∝ β_i
                 FalseObservations::II(lambda, c) => {
-                    let (mut beta, mut target) = (0.0, false);
+                    let (mut beta, mut target, mut underflow) = (0.0, false, false);
                     acc.iter_mut().for_each(|v| *v = 0.0);
                     for &zi in &points {
                         let mz = system.marginal(&[zi], &mut mean);
-                        let v = lambda * c.pdf(zi);
+                        let cz = c.pdf(zi);
+                        let v = lambda * cz;
+                        if v == 0.0 && cz > 0.0 {
+                            // λ c(z) underflowed: clutter can make this point
+                            underflow = true;
+                            break;
+                        }
                         if v == 0.0 {
                             // a point no clutter can make: the target's
                             estimate.copy_from_slice(&mean);
@@ -691,7 +697,6 @@ pub fn jde_monte_carlo(
                         }
                     }
                     let overflow = !beta.is_finite() || acc.iter().any(|a| !a.is_finite());
-                    let underflow = target && points.iter().any(|&zi| c.pdf(zi) > 0.0);
                     if overflow || underflow {
                         // λ c(z) underflowed to 0, or ∫p_1 / (λ c) overflowed (a clutter
                         // rate near the smallest double): the same decision and mean in

@@ -218,20 +218,15 @@ impl ControlOptions {
         Error::check_range("future_scans", self.future_scans, 1, MAX_FUTURE_SCANS)?;
         Error::check_range("steps", self.steps, 1, MAX_STEPS)?;
         Error::check_range("max_objects", self.max_objects, 1, MAX_MAX_OBJECTS)?;
-        let per_scan = self
-            .particles
-            .saturating_mul(1 << self.max_objects.saturating_sub(4));
-        let work = per_scan.saturating_mul(self.future_scans);
-        if work > MAX_WORK {
-            return Err(Error::OverBudget {
-                what: "future_scans".into(),
-                measure: "particles · future_scans · 2^max(max_objects − 4, 0)",
-                work,
-                limit: "300000",
-                at_most: MAX_WORK / per_scan,
-            });
-        }
-        Ok(())
+        Error::check_work(
+            "future_scans",
+            "particles · future_scans · 2^max(max_objects − 4, 0)",
+            "300000",
+            self.particles
+                .saturating_mul(1 << self.max_objects.saturating_sub(4)),
+            self.future_scans,
+            MAX_WORK,
+        )
     }
 
     /// Checks the fields (Rust names).

@@ -690,20 +690,14 @@ pub const MAX_VECTOR_UPDATE_WORK: usize = 1 << 18;
 /// # Errors
 /// [`Error::OverBudget`] naming `measurements`.
 fn check_vector_work(components: usize, measurements: usize, n: usize) -> Result<()> {
-    let per_measurement = components
-        .saturating_mul(n.saturating_mul(n).div_ceil(16))
-        .max(1);
-    let work = per_measurement.saturating_mul(measurements);
-    if work > MAX_VECTOR_UPDATE_WORK {
-        return Err(Error::OverBudget {
-            what: "measurements".into(),
-            measure: "mixture components (after splitting) × measurements × ⌈n²/16⌉",
-            work,
-            limit: "MAX_VECTOR_UPDATE_WORK = 2^18 (pass fewer measurements or reduce the mixture)",
-            at_most: MAX_VECTOR_UPDATE_WORK / per_measurement,
-        });
-    }
-    Ok(())
+    Error::check_work(
+        "measurements",
+        "mixture components (after splitting) × measurements × ⌈n²/16⌉",
+        "MAX_VECTOR_UPDATE_WORK = 2^18 (pass fewer measurements or reduce the mixture)",
+        components.saturating_mul(n.saturating_mul(n).div_ceil(16)),
+        measurements,
+        MAX_VECTOR_UPDATE_WORK,
+    )
 }
 
 /// What an update reported besides the new state.

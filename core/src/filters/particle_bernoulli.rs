@@ -286,7 +286,7 @@ impl ParticleBernoulliFilter {
         likelihood: &L,
     ) -> Result<UpdateInfo> {
         let m = likelihood.reports();
-        self.check_update_work("reports", m, 1)?;
+        self.check_update_work(m, None)?;
         let kappa = self.update.clutter.intensities(m, |_| None)?;
         let eval = |x: &[f64]| -> (f64, f64) {
             let (mut ratio, mut certain) = (0.0, 0.0);
@@ -321,11 +321,7 @@ impl ParticleBernoulliFilter {
         };
         check_measurements(measurements, &lik)?;
         let (d, n) = (lik.measurement_dim(), self.dim);
-        self.check_update_work(
-            "measurements",
-            measurements.len(),
-            (d * (n + d)).div_ceil(12),
-        )?;
+        self.check_update_work(measurements.len(), Some((d * (n + d)).div_ceil(12)))?;
         let kappa = self
             .update
             .clutter
@@ -340,36 +336,37 @@ impl ParticleBernoulliFilter {
         self.update_inner(&eval, count_zero_kappa(&kappa))
     }
 
-    /// `Ok` if an update with `m` reports (or measurements), each evaluation costing `cost`
-    /// units, stays within [`MAX_UPDATE_EVALUATIONS`].
+    /// `Ok` if an update with `m` reports (`cost` = 1) or measurements (`cost` per
+    /// evaluation) stays within [`MAX_UPDATE_EVALUATIONS`].
     ///
     /// # Errors
-    /// [`Error::OverBudget`] naming `what` (`reports` or `measurements`).
-    fn check_update_work(&self, what: &str, m: usize, cost: usize) -> Result<()> {
+    /// [`Error::OverBudget`] naming `reports` or `measurements`.
+    fn check_update_work(&self, m: usize, cost: Option<usize>) -> Result<()> {
         let per_report = self
             .weights
             .len()
             .saturating_mul(1 + self.options.mcmc_moves)
-            .saturating_mul(cost.max(1));
-        let work = per_report.saturating_mul(m.max(1));
-        if work > MAX_UPDATE_EVALUATIONS {
-            return Err(Error::OverBudget {
-                what: what.into(),
-                measure: if what == "measurements" {
-                    "particles × measurements × (1 + MCMC moves) × ⌈d (n + d) / 12⌉"
-                } else {
-                    "particles × reports × (1 + MCMC moves)"
-                },
-                work,
-                limit: if what == "measurements" {
-                    "MAX_UPDATE_EVALUATIONS = 2·10^7 (pass fewer measurements or particles)"
-                } else {
-                    "MAX_UPDATE_EVALUATIONS = 2·10^7 (pass fewer reports or particles)"
-                },
-                at_most: MAX_UPDATE_EVALUATIONS / per_report.max(1),
-            });
-        }
-        Ok(())
+            .saturating_mul(cost.unwrap_or(1).max(1));
+        let (what, measure, limit) = match cost {
+            None => (
+                "reports",
+                "particles × reports × (1 + MCMC moves)",
+                "MAX_UPDATE_EVALUATIONS = 2·10^7 (pass fewer reports or particles)",
+            ),
+            Some(_) => (
+                "measurements",
+                "particles × measurements × (1 + MCMC moves) × ⌈d (n + d) / 12⌉",
+                "MAX_UPDATE_EVALUATIONS = 2·10^7 (pass fewer measurements or particles)",
+            ),
+        };
+        Error::check_work(
+            what,
+            measure,
+            limit,
+            per_report,
+            m.max(1),
+            MAX_UPDATE_EVALUATIONS,
+        )
     }
 
     /// L(x) of the update (0 in an exclusion region).
