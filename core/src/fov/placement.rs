@@ -609,8 +609,6 @@ mod tests {
             .collect()
     }
 
-
-
     /// Fuzz seed 317566: a grid of two centres 1e308 apart (a step of 3e309 standard
     /// deviations) gave a NaN variance; the cells the recurrences cannot reach are computed
     /// directly.
