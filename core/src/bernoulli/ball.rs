@@ -191,6 +191,19 @@ impl GaussianBall {
         self.outside_by(center, radius, tol, Method::Auto)
     }
 
+    /// [`outside`](Self::outside) that also draws on a work budget shared by a whole search
+    /// (see [`Nested`]): its innermost evaluations, and d per inversion term, come out of
+    /// `shared` as well as out of the call's own budget.
+    pub(crate) fn outside_within(
+        &self,
+        center: &[f64],
+        radius: f64,
+        tol: f64,
+        shared: &Cell<usize>,
+    ) -> BallProbability {
+        self.outside_in(center, radius, tol, Method::Auto, Some(shared))
+    }
+
     /// q(center) in one dimension, in closed form: Φ(lo) + Q(hi) with lo, hi the standardised
     /// ends of the interval [center − radius, center + radius]; also returns lo and hi.
     fn outside_1d(&self, center: &[f64], radius: f64) -> (BallProbability, f64, f64) {
@@ -214,11 +227,15 @@ impl GaussianBall {
     ///
     /// computed on the nodes of the nested quadrature (d ≤ 4), in closed form in 1D, and by
     /// central differences otherwise.
+    ///
+    /// Its work comes out of the search's budget `shared` as well (see
+    /// [`outside_within`](Self::outside_within)).
     pub(crate) fn outside_with_gradient(
         &self,
         center: &[f64],
         radius: f64,
         tol: f64,
+        shared: &Cell<usize>,
     ) -> (BallProbability, Vec<f64>) {
         let d = self.dim();
         if d == 1 {
@@ -227,15 +244,15 @@ impl GaussianBall {
             return (b, alloc::vec![(normal::pdf(lo) - normal::pdf(hi)) / s]);
         }
         if d > GRAD_MAX_DIM || self.sd.iter().any(|&s| s <= 0.0) {
-            let b = self.outside(center, radius, tol);
+            let b = self.outside_within(center, radius, tol, shared);
             let h = 1e-6 * (radius + self.max_sd());
             let mut a = center.to_vec();
             let grad = (0..d)
                 .map(|i| {
                     a[i] = center[i] + h;
-                    let up = self.outside(&a, radius, 0.1 * tol).outside;
+                    let up = self.outside_within(&a, radius, 0.1 * tol, shared).outside;
                     a[i] = center[i] - h;
-                    let down = self.outside(&a, radius, 0.1 * tol).outside;
+                    let down = self.outside_within(&a, radius, 0.1 * tol, shared).outside;
                     a[i] = center[i];
                     (up - down) / (2.0 * h)
                 })
@@ -246,7 +263,8 @@ impl GaussianBall {
             return (b, alloc::vec![0.0; d]);
         }
         let mu = self.rotate(center);
-        let (v, error) = Nested::new(&self.sd, &mu).inside_grad(0, radius * radius, tol);
+        let (v, error) =
+            Nested::new(&self.sd, &mu, Some(shared)).inside_grad(0, radius * radius, tol);
         let mut grad = alloc::vec![0.0; d];
         for (j, u) in self.basis.iter().enumerate() {
             let g = v[1 + j] / (self.sd[j] * self.sd[j]);
@@ -305,6 +323,18 @@ impl GaussianBall {
         tol: f64,
         method: Method,
     ) -> BallProbability {
+        self.outside_in(center, radius, tol, method, None)
+    }
+
+    /// [`outside_by`](Self::outside_by), drawing on a search's budget `shared` too if given.
+    fn outside_in(
+        &self,
+        center: &[f64],
+        radius: f64,
+        tol: f64,
+        method: Method,
+        shared: Option<&Cell<usize>>,
+    ) -> BallProbability {
         let d = self.dim();
         if d == 1 {
             return self.outside_1d(center, radius).0;
@@ -331,11 +361,17 @@ impl GaussianBall {
                     t -= m * m;
                 }
             }
-            let max_terms = if method == Method::Inversion {
+            let mut max_terms = if method == Method::Inversion {
                 1 << 26
             } else {
                 INVERSION_MAX_TERMS
             };
+            // A term costs about d innermost evaluations; at least 64 terms (the first
+            // doubling step) so that a spent budget still returns an estimate, with its
+            // error bound saying how good it is.
+            if let Some(shared) = shared {
+                max_terms = max_terms.min((shared.get() / d).max(64));
+            }
             if lambda.is_empty() {
                 Some(Estimate {
                     value: if t >= 0.0 { 1.0 } else { 0.0 },
@@ -343,13 +379,17 @@ impl GaussianBall {
                     pieces: 0,
                 })
             } else {
-                inversion::cdf(&lambda, &mu_live, t, tol, max_terms)
+                let estimate = inversion::cdf(&lambda, &mu_live, t, tol, max_terms);
+                if let (Some(shared), Some(e)) = (shared, &estimate) {
+                    shared.set(shared.get().saturating_sub(e.pieces.saturating_mul(d)));
+                }
+                estimate
             }
         } else {
             None
         };
-        let inside =
-            inside.unwrap_or_else(|| Nested::new(&self.sd, &mu).inside(0, radius * radius, tol));
+        let inside = inside
+            .unwrap_or_else(|| Nested::new(&self.sd, &mu, shared).inside(0, radius * radius, tol));
         BallProbability {
             outside: (1.0 - inside.value).clamp(0.0, 1.0),
             error: inside.error + (d as f64) * TRUNCATION_MASS,
@@ -373,26 +413,34 @@ struct Nested<'a> {
     /// Innermost evaluations left; when spent, no level subdivides further (the error
     /// estimate then reports the shortfall). Bounds the time of a pathological case.
     budget: Cell<usize>,
+    /// The budget of a whole search (the MMUC search over a mixture evaluates q hundreds of
+    /// times), spent alongside `budget`: a search of many costly evaluations stays bounded
+    /// even when each one is within its own budget.
+    shared: Option<&'a Cell<usize>>,
 }
 
 /// Innermost evaluations allowed to one nested computation (about 0.2 s natively).
 const NESTED_BUDGET: usize = 5_000_000;
 
 impl<'a> Nested<'a> {
-    fn new(sd: &'a [f64], mu: &'a [f64]) -> Self {
+    fn new(sd: &'a [f64], mu: &'a [f64], shared: Option<&'a Cell<usize>>) -> Self {
         Self {
             sd,
             mu,
             budget: Cell::new(NESTED_BUDGET),
+            shared,
         }
     }
 
     fn spend(&self) {
         self.budget.set(self.budget.get().saturating_sub(1));
+        if let Some(shared) = self.shared {
+            shared.set(shared.get().saturating_sub(1));
+        }
     }
 
     fn keep_going(&self) -> bool {
-        self.budget.get() > 0
+        self.budget.get() > 0 && self.shared.is_none_or(|s| s.get() > 0)
     }
 
     /// A level's quadrature: G10/K21 to `tol` (or 64 ε ∫|f|), at most [`MAX_PIECES`] pieces,

@@ -2,6 +2,7 @@
 //! a* = argmin_a q(a), the centre of the ball of radius r0 holding the most probability.
 
 use alloc::vec::Vec;
+use core::cell::Cell;
 
 use crate::bernoulli::ball::{DEFAULT_TOLERANCE, GaussianBall, dist2};
 use crate::bernoulli::density::{ParticleSet, Repr, SpatialDensity, mixture_outside};
@@ -106,6 +107,8 @@ impl SpatialDensity {
     ///   that lie between modes — each run to steps below 1e-7 of the smallest length scale
     ///   min(r0, σ_min); the best is kept. A local search cannot prove a global optimum; the
     ///   tests compare it with dense grid searches.
+    ///   The whole search spends at most [`MMUC_SEARCH_BUDGET`] evaluations; when they are
+    ///   spent it returns the best centre found so far, with q at it computed in full.
     /// - **Particles**: exact in any dimension with the weight covered by a closed ball
     ///   (particles at exactly r0 are inside, as in (9)). 1D: a sweep over the sorted
     ///   particles (an optimal interval can start at a particle), O(n log n). 2D: an optimal
@@ -148,7 +151,29 @@ impl SpatialDensity {
 /// Tolerance on q during the search.
 const SEARCH_TOLERANCE: f64 = 1e-10;
 
+/// Work allowed to one MMUC search over a mixture, in innermost evaluations of q (one per
+/// component per evaluation at least; a nested-quadrature evaluation spends one per node of
+/// its innermost level, an inversion d per term): about 0.5 s natively. Each evaluation of q
+/// has its own budget as well, but a search evaluates q hundreds of times (a starting point
+/// per component mean and per promising midpoint, up to 200 BFGS steps from each, and up to
+/// 60 halvings per step), so a mixture whose components are each slow to integrate (one
+/// nearly degenerate covariance made a 3-D search take 2.6 s in Node) needs a bound on the
+/// whole. When it is spent the search stops with the best centre found so far, and q at that
+/// centre is still computed in full (its own budget).
+pub const MMUC_SEARCH_BUDGET: usize = 10_000_000;
+
 fn mixture_mmuc(components: &[(f64, GaussianBall)], mean: &[f64], radius: f64) -> Mmuc {
+    mixture_mmuc_within(components, mean, radius, MMUC_SEARCH_BUDGET).0
+}
+
+/// [`mixture_mmuc`] with a search budget of `search_budget` units; also returns the units
+/// spent.
+pub(crate) fn mixture_mmuc_within(
+    components: &[(f64, GaussianBall)],
+    mean: &[f64],
+    radius: f64,
+    search_budget: usize,
+) -> (Mmuc, usize) {
     let finish = |center: Vec<f64>, method: MmucMethod| {
         let b = mixture_outside(components, &center, radius, DEFAULT_TOLERANCE);
         Mmuc {
@@ -166,7 +191,7 @@ fn mixture_mmuc(components: &[(f64, GaussianBall)], mean: &[f64], radius: f64) -
     if let Some(first) = means.first()
         && means.iter().all(|m| m == first)
     {
-        return finish(first.clone(), MmucMethod::SharedMean);
+        return (finish(first.clone(), MmucMethod::SharedMean), 0);
     }
     // The smallest length scale on which q(a) can change, floored at 1e-6 r0: a component
     // far narrower than the ball is a point mass for q (a step at the ball's edge that no
@@ -179,7 +204,8 @@ fn mixture_mmuc(components: &[(f64, GaussianBall)], mean: &[f64], radius: f64) -
     let length = radius.min(min_sd).max(1e-6 * radius).max(f64::MIN_POSITIVE);
     let typical_sd = live.iter().map(|(w, g)| w * g.max_sd()).sum::<f64>();
     let step = 0.25 * (radius + typical_sd);
-    let q_start = |a: &[f64]| mixture_outside(components, a, radius, 1e-8).outside;
+    let budget = Cell::new(search_budget);
+    let q_start = |a: &[f64]| mixture_outside_within(components, a, radius, 1e-8, &budget);
 
     // Starts: every component mean, the mixture mean, promising midpoints.
     let mut starts: Vec<Vec<f64>> = Vec::new();
@@ -196,6 +222,9 @@ fn mixture_mmuc(components: &[(f64, GaussianBall)], mean: &[f64], radius: f64) -
     if live.len() <= 40 {
         for i in 0..live.len() {
             for j in i + 1..live.len() {
+                if budget.get() == 0 {
+                    break;
+                }
                 let (wi, gi) = live[i];
                 let (wj, gj) = live[j];
                 let reach = 2.0 * radius + 6.0 * (gi.max_sd() + gj.max_sd());
@@ -219,8 +248,14 @@ fn mixture_mmuc(components: &[(f64, GaussianBall)], mean: &[f64], radius: f64) -
         xtol: 1e-7 * length,
         max_iter: 200,
     };
-    let mut q_grad =
-        |a: &[f64]| mixture_outside_with_gradient(components, a, radius, SEARCH_TOLERANCE);
+    // Once the budget is spent every evaluation is +∞ (no step is accepted, so the BFGS run
+    // in progress ends, and a later start ends at once).
+    let mut q_grad = |a: &[f64]| {
+        if budget.get() == 0 {
+            return (f64::INFINITY, alloc::vec![0.0; a.len()]);
+        }
+        mixture_outside_with_gradient(components, a, radius, SEARCH_TOLERANCE, &budget)
+    };
     let mut best: Option<(f64, Vec<f64>)> = None;
     for x0 in &starts {
         let Minimum { x, value: fx, .. } = bfgs(&mut q_grad, x0, &opts);
@@ -229,15 +264,38 @@ fn mixture_mmuc(components: &[(f64, GaussianBall)], mean: &[f64], radius: f64) -
         }
     }
     let center = best.map_or_else(|| mean.to_vec(), |b| b.1);
-    finish(center, MmucMethod::MixtureSearch)
+    let spent = search_budget - budget.get();
+    (finish(center, MmucMethod::MixtureSearch), spent)
 }
 
-/// Σ_j w_j q_j(a) and its gradient.
+/// Σ_j w_j q_j(a) to `tol` per component, drawing on the search's `budget` (at least one
+/// unit per component).
+fn mixture_outside_within(
+    components: &[(f64, GaussianBall)],
+    center: &[f64],
+    radius: f64,
+    tol: f64,
+    budget: &Cell<usize>,
+) -> f64 {
+    let mut value = NeumaierSum::new();
+    for (w, g) in components {
+        if *w == 0.0 {
+            continue;
+        }
+        budget.set(budget.get().saturating_sub(1));
+        value.add(w * g.outside_within(center, radius, tol, budget).outside);
+    }
+    value.total().clamp(0.0, 1.0)
+}
+
+/// Σ_j w_j q_j(a) and its gradient, drawing on the search's `budget` (at least one unit per
+/// component).
 fn mixture_outside_with_gradient(
     components: &[(f64, GaussianBall)],
     center: &[f64],
     radius: f64,
     tol: f64,
+    budget: &Cell<usize>,
 ) -> (f64, Vec<f64>) {
     let mut value = NeumaierSum::new();
     let mut grad = alloc::vec![0.0; center.len()];
@@ -245,7 +303,8 @@ fn mixture_outside_with_gradient(
         if *w == 0.0 {
             continue;
         }
-        let (b, gj) = g.outside_with_gradient(center, radius, tol);
+        budget.set(budget.get().saturating_sub(1));
+        let (b, gj) = g.outside_with_gradient(center, radius, tol, budget);
         value.add(w * b.outside);
         for (a, x) in grad.iter_mut().zip(&gj) {
             *a += w * x;

@@ -65,7 +65,7 @@ pub use isotropic::{
     MAX_ISOTROPIC_DIM, ThresholdCurveOptions, isotropic_miss_probability, isotropic_threshold_curve,
 };
 pub use loss::{ApplicationLoss, Costs};
-pub use mmuc::{MAX_MMUC_COMPONENTS, MAX_MMUC_PARTICLES, Mmuc, MmucMethod};
+pub use mmuc::{MAX_MMUC_COMPONENTS, MAX_MMUC_PARTICLES, MMUC_SEARCH_BUDGET, Mmuc, MmucMethod};
 pub use threshold::{
     Direction, LossCurve, LossCurveOptions, Threshold, expected_loss_empty,
     expected_loss_singleton, loss_curve, threshold,

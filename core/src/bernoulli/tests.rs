@@ -1108,7 +1108,8 @@ fn gradient_of_q_matches_finite_differences() {
             GaussianBall::new(Gaussian::from_slices(&mean, &cov, "d").unwrap(), "d").unwrap();
         let center: Vec<f64> = (0..d).map(|i| 0.5 - 0.3 * i as f64).collect();
         let r = 1.1;
-        let (b, g) = ball.outside_with_gradient(&center, r, 1e-12);
+        let (b, g) =
+            ball.outside_with_gradient(&center, r, 1e-12, &core::cell::Cell::new(usize::MAX));
         assert!((b.outside - ball.outside(&center, r, 1e-12).outside).abs() < 1e-11);
         let h = 1e-4;
         for i in 0..d {
@@ -1305,4 +1306,100 @@ fn density_covariances_say_which_property_fails() {
     );
     let mix = GaussianMixture::new(vec![(1.0, ok.clone()), (1.0, ok)], "density.mixture").unwrap();
     assert!(SpatialDensity::mixture(&mix).is_ok());
+}
+
+/// The fuzzer's slow MMUC search (issue 26, seed 602302): a 3-D mixture whose heavy
+/// component is nearly degenerate (variances 1.8e-292 to 8.4e-9; one eigenvalue rounds to 0)
+/// and whose other component weighs 1.6e-127. Each evaluation of q was within its own budget,
+/// but the search evaluated q some 1,600 times (2.6 s in Node). The whole search now stops at
+/// [`mmuc::MMUC_SEARCH_BUDGET`]: this one spends all of it, and still returns a centre inside
+/// which the heavy component lies (q ≈ 2.5e-140, the light component's tail).
+#[test]
+fn mmuc_search_over_a_degenerate_mixture_stops_at_its_budget() {
+    use nalgebra::{DMatrix, DVector};
+    let light = Gaussian::new(
+        DVector::from_vec(vec![
+            -1.4035815575359678e-285,
+            -4.5651984964795094e-178,
+            -2.9309333900897442e-173,
+        ]),
+        DMatrix::from_row_slice(3, 3, &[0.001, 0.0, 0.0, 0.0, 0.001, 0.0, 0.0, 0.0, 0.001]),
+        "light",
+    )
+    .unwrap();
+    let heavy = Gaussian::new(
+        DVector::from_vec(vec![
+            1.3842930252453666e-130,
+            -1.3556882110795213e-61,
+            -9.471772948376036e-132,
+        ]),
+        DMatrix::from_row_slice(
+            3,
+            3,
+            &[
+                1.1150655654625976e-11,
+                -5.173865028903137e-271,
+                -2.9191461212067335e-110,
+                -5.173865028903137e-271,
+                1.8461991266345536e-292,
+                1.3789151307041794e-249,
+                -2.9191461212067335e-110,
+                1.3789151307041794e-249,
+                8.405850856824145e-9,
+            ],
+        ),
+        "heavy",
+    )
+    .unwrap();
+    let m =
+        GaussianMixture::new(vec![(1.5943428659959995e-127, light), (1.0, heavy)], "m").unwrap();
+    let d = SpatialDensity::mixture(&m).unwrap();
+    let radius = 0.2503930865808104;
+    let density::Repr::Mixture { components, mean } = d.repr() else {
+        panic!("a mixture")
+    };
+    let (r, spent) = mmuc::mixture_mmuc_within(components, mean, radius, mmuc::MMUC_SEARCH_BUDGET);
+    assert_eq!(spent, mmuc::MMUC_SEARCH_BUDGET);
+    assert_eq!(r, d.mmuc(radius).unwrap());
+    assert_eq!(r.method, MmucMethod::MixtureSearch);
+    // Within 1e-6 r0 of the heavy component's mean, and q is the light one's tail only.
+    assert!(
+        r.center.iter().all(|c| c.abs() < 1e-6 * radius),
+        "{:?}",
+        r.center
+    );
+    assert!(r.miss_probability < 1e-130 && r.error < 1e-130, "{r:?}");
+}
+
+/// A search cut short (a budget of 0, or of a few evaluations) still returns a starting point
+/// or better, with q at it computed in full: the same value as a fresh evaluation there.
+#[test]
+fn mmuc_search_cut_short_returns_a_start_with_q_in_full() {
+    let a = Gaussian::from_slices(&[0.0, 0.0], &[0.3, 0.1, 0.1, 0.2], "a").unwrap();
+    let b = Gaussian::from_slices(&[1.0, 0.5], &[0.2, 0.0, 0.0, 0.4], "b").unwrap();
+    let m = GaussianMixture::new(vec![(0.6, a), (0.4, b)], "m").unwrap();
+    let d = SpatialDensity::mixture(&m).unwrap();
+    let density::Repr::Mixture { components, mean } = d.repr() else {
+        panic!("a mixture")
+    };
+    let radius = 0.5;
+    let (full, spent) = mmuc::mixture_mmuc_within(components, mean, radius, usize::MAX);
+    assert!(spent > 0 && spent < mmuc::MMUC_SEARCH_BUDGET, "{spent}");
+    for budget in [0, 1, 50, spent / 2] {
+        let (cut, used) = mmuc::mixture_mmuc_within(components, mean, radius, budget);
+        assert!(used <= budget);
+        let q = d.prob_outside_ball(&cut.center, radius).unwrap();
+        assert_eq!(cut.miss_probability, q, "budget {budget}");
+        // never better than the full search (up to its tolerance)
+        assert!(
+            cut.miss_probability >= full.miss_probability - 1e-9,
+            "budget {budget}"
+        );
+    }
+    let (zero, _) = mmuc::mixture_mmuc_within(components, mean, radius, 0);
+    assert_eq!(
+        zero.center,
+        vec![0.0, 0.0],
+        "the first start, the first component's mean"
+    );
 }

@@ -210,3 +210,23 @@ test('fuzz #11: jdeBound with a subnormal prior variance is a RangeError naming 
     (e) => e instanceof RangeError && e.message.startsWith('options.prior'),
   );
 });
+
+test('fuzz #12: mmucEstimate over a mixture with a nearly degenerate 3-D component stops at its search budget', () => {
+  // Found by `node fuzz/run.mjs --cases 1000000` (seed 602302): each evaluation of q was
+  // within its own budget, but the search evaluated q some 1,600 times (2.6 s). The whole
+  // search now has one budget (core MMUC_SEARCH_BUDGET, 10^7 evaluations); the watchdog of
+  // the fuzz slice holds the time, this test the answer: a centre at the heavy component's
+  // mean (its covariance is tiny) and q the light component's tail.
+  const e = fisst.mmucEstimate({
+    density: {
+      mixture: [
+        { weight: 1.5943428659959995e-127, mean: [-1.4035815575359678e-285, -4.5651984964795094e-178, -2.9309333900897442e-173], cov: [[0.001, 0, 0], [0, 0.001, 0], [0, 0, 0.001]] },
+        { weight: 1, mean: [1.3842930252453666e-130, -1.3556882110795213e-61, -9.471772948376036e-132], cov: [[1.1150655654625976e-11, -5.173865028903137e-271, -2.9191461212067335e-110], [-5.173865028903137e-271, 1.8461991266345536e-292, 1.3789151307041794e-249], [-2.9191461212067335e-110, 1.3789151307041794e-249, 8.405850856824145e-9]] },
+      ],
+    },
+    radius: 0.2503930865808104,
+  });
+  noNaN(e);
+  assert.ok(e.center.every((c) => Math.abs(c) < 1e-6 * 0.25), JSON.stringify(e.center));
+  assert.ok(e.missProbability < 1e-130, `${e.missProbability}`);
+});
