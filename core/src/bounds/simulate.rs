@@ -238,6 +238,16 @@ impl Gaussian {
             ));
         }
         let s = h * p * h.transpose() + r;
+        let hx0 = h * nalgebra::DVector::from_column_slice(&prior.mean);
+        if !(s.iter().chain(hx0.iter()).all(|v| v.is_finite())) {
+            // A gain so large that H P Hᵀ + R or H x̄ overflows: every measurement would be
+            // ±∞ (then ∞ · 0 = NaN in the likelihoods); fuzz seed 888070, gain 1e308.
+            return Err(Error::Unsupported {
+                what: "observation.gain".into(),
+                reason: "H P Hᵀ + R or H times the prior mean overflows the f64 range; \
+                         rescale the measurement (a smaller gain and noise)",
+            });
+        }
         let s_chol = s
             .clone()
             .cholesky()
@@ -245,7 +255,6 @@ impl Gaussian {
         let det: f64 = s_chol.l().diagonal().iter().map(|d| d * d).product();
         let two_pi_m = (0..h.nrows()).fold(1.0, |a, _| a * 2.0 * core::f64::consts::PI);
         let s_inv = s_chol.inverse();
-        let hx0 = h * nalgebra::DVector::from_column_slice(&prior.mean);
         let mut post = Vec::new();
         if scans > 1 {
             let p_inv = spd_inverse(p, "prior.cov")?;
@@ -887,6 +896,49 @@ mod tests {
         for rate in [1e-300, 5e-324] {
             let m = jde_monte_carlo(&model(rate), &o).unwrap();
             assert!(m.mse.is_finite(), "rate {rate}: {m:?}");
+        }
+    }
+
+    /// Fuzz seed 888070: a gain of 1e308 makes H P Hᵀ + R overflow, so every measurement is
+    /// ±∞ and the likelihoods ∞ · 0 = NaN (a NaN risk). Such a gain, or one that overflows
+    /// H times the prior mean, is refused naming `observation.gain`; 1e150 still runs.
+    #[test]
+    fn a_gain_that_overflows_the_innovation_is_refused_naming_it() {
+        use alloc::string::ToString;
+        let density = crate::bounds::Density1::gaussian(0.0, 25.0).unwrap();
+        let o = JdeMonteCarloOptions {
+            samples: 200,
+            seed: 1,
+            ..JdeMonteCarloOptions::default()
+        };
+        for (mean, gain, ok) in [(0.0, 1e308, false), (1e300, 1e10, false), (0.0, 1e150, true)] {
+            let prior = GaussianPrior::new(&[mean], &[1.0]).unwrap();
+            let sensor =
+                LinearGaussianSensor::new(0.030435958513577614, &[gain], 1, &[0.0], &[1.0])
+                    .unwrap();
+            let model = MonteCarloModel {
+                existence: 0.9999999999999999,
+                system: SimulatedSystem::LinearGaussian {
+                    prior: &prior,
+                    sensor: &sensor,
+                },
+                measurement: VectorMeasurement::II {
+                    clutter_rate: 5e-324,
+                    clutter_density: &density,
+                },
+                false_alarm_error: 0.0,
+                miss_error: 0.0,
+            };
+            match jde_monte_carlo(&model, &o) {
+                Ok(m) => {
+                    assert!(ok, "gain {gain}, mean {mean}: {m:?}");
+                    assert!(m.mse.is_finite() && m.se.is_finite(), "{m:?}");
+                }
+                Err(e) => {
+                    assert!(!ok, "gain {gain}: {e}");
+                    assert!(e.to_string().starts_with("observation.gain: H P Hᵀ + R"), "{e}");
+                }
+            }
         }
     }
 

@@ -230,3 +230,12 @@ test('fuzz #12: mmucEstimate over a mixture with a nearly degenerate 3-D compone
   assert.ok(e.center.every((c) => Math.abs(c) < 1e-6 * 0.25), JSON.stringify(e.center));
   assert.ok(e.missProbability < 1e-130, `${e.missProbability}`);
 });
+
+test('fuzz #13: jdeMonteCarlo with a gain that overflows H P Hᵀ + R is a RangeError naming it, not a NaN risk', () => {
+  // Found by `node fuzz/run.mjs --cases 1000000` (seed 888070): gain 1e308 made every
+  // measurement ±∞ and the likelihoods ∞ · 0 = NaN. The core now refuses such a gain.
+  const base = { model: 'II', existence: 0.9999999999999999, prior: { multivariateGaussian: { mean: [0], cov: [[1]] } }, observation: { detectionProbability: 0.030435958513577614, gain: [[1e308]], noiseCov: [[1]] }, falseAlarmError: 0, missError: 0, clutter: { rate: 5e-324, density: { gaussian: { mean: 0, variance: 25 } } }, samples: 200, seed: 1 };
+  assert.throws(() => fisst.jdeMonteCarlo(base), (e) => e instanceof RangeError && e.message.startsWith('options.observation.gain: H P Hᵀ + R'));
+  const ok = fisst.jdeMonteCarlo({ ...base, observation: { ...base.observation, gain: [[1e150]] } });
+  noNaN(ok);
+});
