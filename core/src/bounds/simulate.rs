@@ -911,7 +911,11 @@ mod tests {
             seed: 1,
             ..JdeMonteCarloOptions::default()
         };
-        for (mean, gain, ok) in [(0.0, 1e308, false), (1e300, 1e10, false), (0.0, 1e150, true)] {
+        for (mean, gain, ok) in [
+            (0.0, 1e308, false),
+            (1e300, 1e10, false),
+            (0.0, 1e150, true),
+        ] {
             let prior = GaussianPrior::new(&[mean], &[1.0]).unwrap();
             let sensor =
                 LinearGaussianSensor::new(0.030435958513577614, &[gain], 1, &[0.0], &[1.0])
@@ -936,7 +940,10 @@ mod tests {
                 }
                 Err(e) => {
                     assert!(!ok, "gain {gain}: {e}");
-                    assert!(e.to_string().starts_with("observation.gain: H P Hᵀ + R"), "{e}");
+                    assert!(
+                        e.to_string().starts_with("observation.gain: H P Hᵀ + R"),
+                        "{e}"
+                    );
                 }
             }
         }
