@@ -4,14 +4,14 @@ SHELL := /bin/bash
 PORT ?= 8000
 export CHROMEDRIVER ?= /usr/bin/chromedriver
 
-.PHONY: demo test pkg web-pkg setup setup-test check lint test-native test-nostd test-embedded test-wasm test-js fuzz soak bench clean
+.PHONY: demo test pkg web-pkg setup setup-test setup-python check lint test-native test-nostd test-embedded test-wasm test-js test-python wheel fuzz-python fuzz soak bench clean
 
 ## make demo: install what is missing, build the npm package, serve web/ on 127.0.0.1:$(PORT)
 demo: setup web-pkg
 	node scripts/serve.mjs web $(PORT)
 
 ## make test: install what is missing, then every test (native, no_std, Cortex-M4 in QEMU, wasm in Node and Chromium, npm package, pages)
-test: setup-test lint test-native test-nostd test-embedded test-wasm test-js
+test: setup-test lint test-native test-nostd test-embedded test-wasm test-js test-python
 	@echo "make test: all passed"
 
 ## make pkg: the npm package `fisst` in wasm/pkg/
@@ -53,6 +53,25 @@ test-nostd:
 	cargo build --locked -p fisst --no-default-features --target thumbv7em-none-eabihf
 	cargo test --locked -p fisst --no-default-features --features serde --lib
 	cargo build --locked -p fisst --no-default-features --features serde --target thumbv7em-none-eabihf
+
+## make test-python: the Python package built once into .venv (profile `py`), its tests (contract,
+## parity, a seeded hypothesis slice) and the stubs checked against the module
+test-python: setup-python
+	cd python && ../.venv/bin/maturin develop --locked --profile py --quiet
+	.venv/bin/python -m pytest -q python/tests
+	cd python && ../.venv/bin/python -m mypy.stubtest fisst --allowlist stubtest-allowlist.txt
+
+## make wheel: the Python package's abi3 wheel (Linux x86_64, Python >= 3.10) in dist/
+wheel: setup-python
+	cd python && ../.venv/bin/maturin build --locked --release --out ../dist --quiet
+
+## make fuzz-python: the Python fuzz at full size (10^6 calls over every function)
+fuzz-python: setup-python
+	cd python && ../.venv/bin/maturin develop --locked --profile py --quiet
+	FISST_FUZZ_EXAMPLES=1000000 .venv/bin/python -m pytest -q python/tests/test_fuzz.py
+
+setup-python:
+	scripts/setup-python.sh
 
 ## make test-embedded: the Cortex-M4 example in QEMU, its output compared bit for bit with the native run
 test-embedded:

@@ -1,0 +1,47 @@
+//! The Python package `fisst`: the compiled module `fisst._fisst`. Each export converts its
+//! arguments (numpy arrays, keyword arguments), releases the GIL while the core works, and
+//! converts the core's result back through one mechanism (`convert::result`): a thin front,
+//! no numerics here.
+
+use pyo3::prelude::*;
+
+mod convert;
+mod metrics;
+mod multi_bernoulli;
+mod names;
+mod options;
+mod result;
+
+/// The compiled part of the Python package `fisst` (import `fisst`, not this module).
+#[pymodule]
+fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_class::<result::FisstResult>()?;
+    pyo3::types::PyMapping::register::<result::FisstResult>(m.py())?;
+    m.add_function(wrap_pyfunction!(metrics::gospa, m)?)?;
+    m.add_function(wrap_pyfunction!(metrics::ospa, m)?)?;
+    m.add_function(wrap_pyfunction!(metrics::uospa, m)?)?;
+    m.add_function(wrap_pyfunction!(metrics::gospa_series, m)?)?;
+    m.add_function(wrap_pyfunction!(metrics::ospa_series, m)?)?;
+    m.add_function(wrap_pyfunction!(metrics::linear_assignment, m)?)?;
+    m.add_function(wrap_pyfunction!(
+        multi_bernoulli::multi_bernoulli_cardinality,
+        m
+    )?)?;
+    m.add_function(wrap_pyfunction!(
+        multi_bernoulli::multi_bernoulli_leave_one_out,
+        m
+    )?)?;
+    m.add_function(wrap_pyfunction!(multi_bernoulli::mb_optimal_estimate, m)?)?;
+    m.add_function(wrap_pyfunction!(multi_bernoulli::mb_mean_square_error, m)?)?;
+    m.add_function(wrap_pyfunction!(
+        multi_bernoulli::mb_alternative_estimate,
+        m
+    )?)?;
+    m.add_function(wrap_pyfunction!(multi_bernoulli::mb_decision_map, m)?)?;
+    m.add_function(wrap_pyfunction!(
+        multi_bernoulli::mb_identical_component_counts,
+        m
+    )?)?;
+    Ok(())
+}

@@ -1,0 +1,116 @@
+"""A seeded property-based fuzz (hypothesis) over every function of the package: at least
+5,000 calls with valid, extreme and wrong inputs. Each call returns a result without NaN or
+raises TypeError or ValueError with a message; never a PanicException (a BaseException) or
+any other error. `make fuzz-python` runs the same properties with FISST_FUZZ_EXAMPLES=10^6
+spread over the functions."""
+
+import math
+import os
+
+import numpy as np
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import fisst
+
+TOTAL = int(os.environ.get("FISST_FUZZ_EXAMPLES", "6000"))
+
+EXTREMES = [0.0, -0.0, 1.0, -1.0, 0.5, 2.0, 1e-300, 5e-324, 1e300, 1.7976931348623157e308,
+            -1e308, float("inf"), float("-inf"), float("nan"), 2.0**53]
+number = st.one_of(st.floats(-10, 10), st.sampled_from(EXTREMES), st.integers(-3, 5))
+probability = st.one_of(st.floats(0, 1), st.sampled_from([0.0, 1.0, -0.1, 1.1, float("nan")]))
+junk = st.sampled_from(["x", None, [], {}, [[]], [["a"]], {"a": 1}, object(), b"\x00", (1, 2)])
+
+
+def point_set(d):
+    return st.one_of(
+        st.lists(st.lists(number, min_size=d, max_size=d), max_size=6),
+        st.lists(st.lists(st.floats(-5, 5), min_size=d, max_size=d), max_size=6).map(np.array),
+    )
+
+
+points = st.one_of(st.integers(1, 3).flatmap(point_set), junk)
+existence = st.one_of(st.lists(probability, max_size=8), st.lists(probability, max_size=8).map(np.array), junk)
+metric = st.sampled_from(["gospa", "ospa", "uospa", "x", 3])
+kw_number = st.one_of(number, junk)
+
+
+def maybe(strategy):
+    """A keyword that is sometimes omitted (None here means: leave it out)."""
+    return st.one_of(st.none(), strategy)
+
+
+CALLS = {
+    "gospa": st.tuples(points, points, st.fixed_dictionaries({"c": kw_number}, optional={"p": kw_number, "alpha": kw_number})),
+    "ospa": st.tuples(points, points, st.fixed_dictionaries({"c": kw_number}, optional={"p": kw_number})),
+    "uospa": st.tuples(points, points, st.fixed_dictionaries({"c": kw_number}, optional={"p": kw_number})),
+    "gospa_series": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"truths": st.lists(points, max_size=4), "estimates": st.lists(points, max_size=4), "c": kw_number},
+        optional={"p": kw_number, "alpha": kw_number})),
+    "ospa_series": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"truths": st.lists(points, max_size=4), "estimates": st.lists(points, max_size=4), "c": kw_number},
+        optional={"p": kw_number})),
+    "linear_assignment": st.tuples(points, st.just(None), st.just({})),
+    "multi_bernoulli_cardinality": st.tuples(existence, st.just(None), st.just({})),
+    "multi_bernoulli_leave_one_out": st.tuples(existence, st.just(None), st.just({})),
+    "mb_optimal_estimate": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"existence": existence, "metric": metric},
+        optional={"c": kw_number, "p": kw_number, "alpha": kw_number, "bogus": st.just(1)})),
+    "mb_mean_square_error": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"existence": existence, "metric": metric, "report": st.lists(st.booleans(), max_size=8)},
+        optional={"c": kw_number, "p": kw_number, "alpha": kw_number})),
+    "mb_alternative_estimate": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"existence": existence, "method": st.sampled_from(["mam", "jom", "map-cardinality", "x"])},
+        optional={"ln_peak": existence, "ln_c": kw_number})),
+    "mb_decision_map": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"estimator": st.sampled_from(["gospa", "ospa", "uospa", "mam", "jom", "map-cardinality", "y"])},
+        optional={"resolution": st.one_of(st.integers(-2, 60), st.sampled_from([10**6, 2**64])), "c": kw_number, "p": kw_number, "alpha": kw_number})),
+    "mb_identical_component_counts": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"existence": kw_number, "max_components": st.one_of(st.integers(-2, 40), st.sampled_from([10**6, 2**70]))})),
+}
+
+assert set(CALLS) == {n for n in fisst.__all__ if callable(getattr(fisst, n)) and n != "Result"}
+
+
+def nan_in(value):
+    if isinstance(value, float):
+        return math.isnan(value)
+    if isinstance(value, np.ndarray):
+        return value.dtype.kind == "f" and bool(np.isnan(value).any())
+    if isinstance(value, (list, tuple)):
+        return any(nan_in(v) for v in value)
+    if isinstance(value, fisst.Result):
+        return any(nan_in(v) for v in value.values())
+    return False
+
+
+def call(name, args):
+    a, b, kwargs = args
+    positional = [x for x in (a, b) if x is not None] if name in ("gospa", "ospa", "uospa", "linear_assignment", "multi_bernoulli_cardinality", "multi_bernoulli_leave_one_out") else []
+    if name in ("linear_assignment", "multi_bernoulli_cardinality", "multi_bernoulli_leave_one_out"):
+        positional = [a]
+    if name in ("gospa", "ospa", "uospa"):
+        positional = [a, b]
+    f = getattr(fisst, name)
+    try:
+        out = f(*positional, **kwargs)
+    except (TypeError, ValueError) as e:
+        assert str(e), f"{name}: an empty message"
+        return
+    except BaseException as e:  # noqa: BLE001 - a PanicException is a BaseException
+        raise AssertionError(f"{name}{args!r} raised {type(e).__name__}: {e}") from e
+    assert not nan_in(out), f"{name}{args!r} returned a NaN: {out!r}"
+
+
+def make(name):
+    @settings(max_examples=TOTAL // len(CALLS) + 1, derandomize=True, database=None, deadline=None,
+              suppress_health_check=list(HealthCheck))
+    @given(CALLS[name])
+    def run(args):
+        call(name, args)
+
+    return run
+
+
+for _name in CALLS:
+    globals()[f"test_fuzz_{_name}"] = make(_name)
