@@ -22,17 +22,12 @@ use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
     self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, ClutterDensity,
     ConfigShapes, Detection, EstimateOptions, FilterEstimate, GmBernoulli,
-    LinearGaussianLikelihood, LinearGaussianTransition, PredictOptions, Splitting,
+    LinearGaussianLikelihood, LinearGaussianTransition, ParticleOptions, PredictOptions, Splitting,
     SplittingOptions, UpdateInfo, UpdateOptions,
 };
 use fisst::mixture::ReductionOptions;
 use fisst::regions::Region as CoreRegion;
 use fisst::sim::airport::{AirportScenarioOptions, Anchor, TruthPoint};
-
-/// The shape (rows, length of the first row) of a matrix given as rows.
-fn shape_of(rows: &[Vec<f64>]) -> (usize, usize) {
-    (rows.len(), rows.first().map_or(0, Vec::len))
-}
 
 /// The mean lengths of the components of a mixture as given.
 fn mean_lengths(items: &[WeightedGaussian]) -> Vec<usize> {
@@ -51,11 +46,11 @@ fn check_shapes(
 ) -> JsResult<()> {
     let birth = birth.map(|b| mean_lengths(&b.mixture)).unwrap_or_default();
     ConfigShapes {
-        f: shape_of(&transition.f),
-        q: shape_of(&transition.q),
+        f: ConfigShapes::of_rows(&transition.f),
+        q: ConfigShapes::of_rows(&transition.q),
         mixture: &mean_lengths(mixture),
         birth: &birth,
-        likelihood: likelihood.map(|l| (shape_of(&l.h), shape_of(&l.r))),
+        likelihood: likelihood.map(|l| (ConfigShapes::of_rows(&l.h), ConfigShapes::of_rows(&l.r))),
         position_dims,
     }
     .check()
@@ -445,11 +440,11 @@ pub struct BernoulliFilterConfig {
     pub seed: Option<u64>,
 }
 
+/// A configuration as read: the core's, the particle filter's settings (seed 0) and the seed
+/// asked for.
 struct Converted {
     config: CoreConfig,
-    particles: usize,
-    birth_particles: Option<usize>,
-    mcmc_moves: usize,
+    particle: ParticleOptions,
     seed: Option<u64>,
 }
 
@@ -489,12 +484,16 @@ fn convert(c: BernoulliFilterConfig) -> JsResult<Converted> {
         reduction: update.reduction,
         exclusions: update.exclusions,
     };
-    config.validate().or_throw_rendered("config")?;
-    Ok(Converted {
-        config,
+    // both filters' constructors validate the configuration as a whole first
+    let particle = ParticleOptions {
         particles: c.particles,
         birth_particles: c.birth_particles,
         mcmc_moves: c.mcmc_moves,
+        seed: 0,
+    };
+    Ok(Converted {
+        config,
+        particle,
         seed: c.seed,
     })
 }
@@ -747,12 +746,7 @@ impl ParticleBernoulliFilterJs {
         let c: BernoulliFilterConfig = read(config, "config")?;
         let c = convert(c)?;
         let seed = seed_or_entropy(c.seed)?;
-        let options = core_filters::ParticleOptions {
-            particles: c.particles,
-            birth_particles: c.birth_particles,
-            mcmc_moves: c.mcmc_moves,
-            seed,
-        };
+        let options = ParticleOptions { seed, ..c.particle };
         Ok(Self {
             inner: core_filters::ParticleBernoulliFilter::new(c.config, options)
                 .or_throw_rendered("config")?,
