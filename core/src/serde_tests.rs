@@ -25,7 +25,7 @@ use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::metrics::{Gospa, GospaSeries, Ospa};
 use crate::mixture::ReductionOptions;
 use crate::regions::Region;
-use crate::sim::airport::airport_scenario;
+use crate::sim::airport::{AirportScenarioOptions, airport_scenario};
 use crate::smc::{MultiObjectLikelihood, Regularisation};
 use crate::splitting::{SplitLibrary, SplitOptions, split_for_region};
 
@@ -149,6 +149,20 @@ fn filter_config_round_trips_and_omitted_fields_take_the_defaults() {
     round_trip(&ParticleOptions::default());
     let state = GmBernoulli::new(0.5, config.mixture.clone()).unwrap();
     round_trip(&state);
+}
+
+#[test]
+fn airport_options_omitted_take_the_defaults_and_round_trip() {
+    let empty: AirportScenarioOptions = serde_json::from_str("{}").unwrap();
+    assert_eq!(empty, AirportScenarioOptions::default());
+    assert_eq!((empty.seed, empty.steps), (None, 60));
+    let given = AirportScenarioOptions {
+        seed: Some(7),
+        steps: 3,
+    };
+    assert_eq!(round_trip(&given), r#"{"seed":7,"steps":3}"#);
+    let run = airport_scenario(given.seed.unwrap(), given.steps).unwrap();
+    assert_eq!(run.truth.len(), 3);
 }
 
 #[test]

@@ -3,7 +3,6 @@
 
 use std::boxed::Box;
 use std::format;
-use std::string::String;
 use std::vec::Vec;
 
 use serde::{Deserialize, Serialize};
@@ -12,8 +11,10 @@ use wasm_bindgen::prelude::*;
 
 use crate::bernoulli::{BernoulliEstimateResult, estimate_out};
 use crate::boundary::{
-    JsResult, core_error, range_error, read, render_path, seed_or_entropy, type_error, write,
+    JsResult, OrThrow, core_error, core_error_rendered, range_error, read, render_path,
+    seed_or_entropy, type_error, write,
 };
+use crate::names::Renamed;
 use crate::types::{
     self, BoxRegion, DiscRegion, MixtureComponent, Point, Region, WeightedGaussian,
 };
@@ -21,29 +22,12 @@ use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
     self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, ClutterDensity,
     ConfigShapes, Detection, EstimateOptions, FilterEstimate, GmBernoulli,
-    LinearGaussianLikelihood, LinearGaussianTransition, PredictOptions, Splitting,
+    LinearGaussianLikelihood, LinearGaussianTransition, ParticleOptions, PredictOptions, Splitting,
     SplittingOptions, UpdateInfo, UpdateOptions,
 };
 use fisst::mixture::ReductionOptions;
 use fisst::regions::Region as CoreRegion;
-use fisst::serde_shapes::ScalarOr;
-
-/// A core error whose field is a Rust path under the argument `root`, in JavaScript names
-/// (`transition.q` → `options.transition.Q`).
-fn rendered(root: &'static str) -> impl Fn(fisst::Error) -> JsValue {
-    move |e| core_error(e.within(root).map_paths(js_path))
-}
-
-/// A Rust error path in this part's JavaScript names: [`render_path`], and a region's ball is
-/// the contract's `disc` (`reports[0].ball.center` → `reports[0].disc.center`).
-fn js_path(rust_path: &str) -> String {
-    render_path(rust_path).replace(".ball.", ".disc.")
-}
-
-/// The shape (rows, length of the first row) of a matrix given as rows.
-fn shape_of(rows: &[Vec<f64>]) -> (usize, usize) {
-    (rows.len(), rows.first().map_or(0, Vec::len))
-}
+use fisst::sim::airport::{AirportScenarioOptions, Anchor, TruthPoint};
 
 /// The mean lengths of the components of a mixture as given.
 fn mean_lengths(items: &[WeightedGaussian]) -> Vec<usize> {
@@ -62,15 +46,15 @@ fn check_shapes(
 ) -> JsResult<()> {
     let birth = birth.map(|b| mean_lengths(&b.mixture)).unwrap_or_default();
     ConfigShapes {
-        f: shape_of(&transition.f),
-        q: shape_of(&transition.q),
+        f: ConfigShapes::of_rows(&transition.f),
+        q: ConfigShapes::of_rows(&transition.q),
         mixture: &mean_lengths(mixture),
         birth: &birth,
-        likelihood: likelihood.map(|l| (shape_of(&l.h), shape_of(&l.r))),
+        likelihood: likelihood.map(|l| (ConfigShapes::of_rows(&l.h), ConfigShapes::of_rows(&l.r))),
         position_dims,
     }
     .check()
-    .map_err(rendered(root))
+    .or_throw_rendered(root)
 }
 
 /// The linear-Gaussian transition N(x; F x′, Q) (eq. (44) of LeGrand & Ferrari, "Split Happens!
@@ -89,7 +73,7 @@ pub struct Transition {
 impl Transition {
     /// The transition of the argument `root` (the core checks the rows and the size).
     fn into_core(self, root: &'static str) -> JsResult<LinearGaussianTransition> {
-        LinearGaussianTransition::from_rows(&self.f, &self.q).map_err(rendered(root))
+        LinearGaussianTransition::from_rows(&self.f, &self.q).or_throw_rendered(root)
     }
 }
 
@@ -116,29 +100,45 @@ pub struct DetectionOptions {
     pub fov: Option<Region>,
 }
 
-/// c̃(ζ): one number for every report, or one per report (the core's `ScalarOr`).
-#[derive(Clone, Debug, Deserialize, Tsify)]
-#[tsify(type = "number | number[]")]
-pub struct ClutterDensityOption(ScalarOr<f64>);
-
-/// Poisson false reports: rate λ_c and density c̃(ζ).
-#[derive(Deserialize, Tsify)]
-pub struct ClutterOptions {
-    /// The clutter rate λ_c ≥ 0: the mean number of false reports per scan.
-    pub rate: f64,
-    /// The clutter density c̃(ζ) ≥ 0 of a false report (e.g. 1 / number of anchors, or 1 / area for
-    /// vector measurements).
-    pub density: ClutterDensityOption,
+// `clutter` is the core's `Clutter` (its density reads as a number or an array, the core's
+// `ScalarOr`), and `reduction` the core's `ReductionOptions` (omitted: the filters' default
+// reduction); their TypeScript names stay. `Clutter`'s is written here: the core's density
+// also holds a function (Rust only), which has no TypeScript.
+#[wasm_bindgen(typescript_custom_section)]
+const CORE_NAMES: &str = r#"
+/**
+ * c̃(ζ): one number for every report, or one per report.
+ */
+export type ClutterDensityOption = number | number[];
+/**
+ * Poisson false reports: rate λ_c and density c̃(ζ).
+ */
+export interface ClutterOptions {
+    /**
+     * The clutter rate λ_c ≥ 0: the mean number of false reports per scan.
+     */
+    rate: number;
+    /**
+     * The clutter density c̃(ζ) ≥ 0 of a false report (e.g. 1 / number of anchors, or 1 / area for
+     * vector measurements).
+     */
+    density: ClutterDensityOption;
 }
-
-impl ClutterOptions {
-    fn into_core(self) -> Clutter {
-        Clutter {
-            rate: self.rate,
-            density: ClutterDensity::from(self.density.0),
-        }
-    }
-}
+/**
+ * The reduction after the update (the options of `reduceMixture`): the core's
+ * `ReductionOptions`. Omitted: prune 1e-6, merge within Mahalanobis distance 2 (U = 4),
+ * Runnalls to 100.
+ */
+export type ReductionOptionsJs = ReductionOptions;
+/**
+ * An anchor of the airport example: the core's `Anchor`.
+ */
+export type AnchorOut = Anchor;
+/**
+ * The truth at one report time: the core's `TruthPoint`.
+ */
+export type TruthOut = TruthPoint;
+"#;
 
 /// The linear-Gaussian likelihood N(z; H x, R) of vector measurements.
 #[derive(Deserialize, Tsify)]
@@ -154,35 +154,7 @@ pub struct LikelihoodOptions {
 impl LikelihoodOptions {
     /// The likelihood of the argument `root` (the core checks the rows and the size).
     fn into_core(self, root: &'static str) -> JsResult<LinearGaussianLikelihood> {
-        LinearGaussianLikelihood::from_rows(&self.h, &self.r).map_err(rendered(root))
-    }
-}
-
-/// The reduction after the update (the options of `reduceMixture`). Omitted: prune 1e-6,
-/// merge within Mahalanobis distance 2 (U = 4), Runnalls to 100.
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct ReductionOptionsJs {
-    /// Pruning threshold ≥ 0: components of smaller weight are dropped (default 0).
-    #[serde(default)]
-    pub prune_below: f64,
-    /// Merge distance ≥ 0: components within this Mahalanobis distance are merged (Vo & Ma);
-    /// omitted: no merging.
-    #[tsify(optional)]
-    pub merge_distance: Option<f64>,
-    /// The most components kept, in [1, 1e6], by Runnalls' merging; omitted: no cap.
-    #[tsify(optional)]
-    pub max_components: Option<usize>,
-}
-
-fn reduction(r: Option<ReductionOptionsJs>) -> ReductionOptions {
-    match r {
-        None => core_filters::default_reduction(),
-        Some(r) => ReductionOptions {
-            prune_below: r.prune_below,
-            merge_distance: r.merge_distance,
-            max_components: r.max_components,
-        },
+        LinearGaussianLikelihood::from_rows(&self.h, &self.r).or_throw_rendered(root)
     }
 }
 
@@ -200,7 +172,7 @@ fn birth(b: Option<BirthOptions>, root: &'static str) -> JsResult<Birth> {
         None => Ok(Birth::none()),
         Some(b) => {
             let m = types::mixture(b.mixture, &format!("{root}.birth.mixture"))?;
-            Birth::new(b.probability, m).map_err(rendered(root))
+            Birth::new(b.probability, m).or_throw_rendered(root)
         }
     }
 }
@@ -265,7 +237,7 @@ pub fn gm_bernoulli_predict(
         survival: o.survival,
         birth: birth(o.birth, "options")?,
     };
-    let out = core_filters::gm_bernoulli_predict(&state, &config).map_err(rendered("options"))?;
+    let out = core_filters::gm_bernoulli_predict(&state, &config).or_throw_rendered("options")?;
     write(&GmBernoulliResult {
         existence: out.existence,
         mixture: types::mixture_out(&out.mixture),
@@ -301,13 +273,14 @@ pub struct GmBernoulliUpdateOptions {
     #[tsify(optional)]
     pub likelihood: Option<LikelihoodOptions>,
     /// Clutter (false reports): the rate λ_c and density c̃.
-    pub clutter: ClutterOptions,
+    #[tsify(type = "ClutterOptions")]
+    pub clutter: Clutter,
     /// The splitting step; omitted: the defaults.
     #[tsify(optional, type = "SplittingOptions")]
     pub splitting: Option<SplittingOptions>,
     /// The reduction; omitted: prune 1e-6, merge within 2, Runnalls to 100.
-    #[tsify(optional)]
-    pub reduction: Option<ReductionOptionsJs>,
+    #[tsify(optional, type = "ReductionOptionsJs")]
+    pub reduction: Option<ReductionOptions>,
     /// Regions the object cannot occupy (mass removed by the mean-based partition after
     /// splitting; the existence is unchanged).
     #[tsify(optional)]
@@ -331,9 +304,9 @@ pub struct GmBernoulliUpdateResult {
 fn update_config(
     position_dims: usize,
     detection: DetectionOptions,
-    clutter: ClutterOptions,
+    clutter: Clutter,
     splitting: Option<SplittingOptions>,
-    red: Option<ReductionOptionsJs>,
+    reduction: Option<ReductionOptions>,
     exclusions: Option<Vec<Region>>,
     root: &'static str,
 ) -> JsResult<UpdateOptions> {
@@ -347,12 +320,12 @@ fn update_config(
             probability: detection.probability,
             fov,
         },
-        clutter: clutter.into_core(),
+        clutter,
         splitting: match splitting {
-            Some(s) => s.build(position_dims).map_err(rendered(root))?,
+            Some(s) => s.build(position_dims).or_throw_rendered(root)?,
             None => Splitting::default(),
         },
-        reduction: reduction(red),
+        reduction: reduction.unwrap_or_else(core_filters::default_reduction),
         exclusions: regions(
             exclusions.unwrap_or_default(),
             &format!("{root}.exclusions"),
@@ -392,7 +365,7 @@ pub fn gm_bernoulli_update(
             let lik = l.into_core("options")?;
             let z = measurements(z);
             core_filters::gm_bernoulli_update_vector(&state, &z, &lik, &config)
-                .map_err(rendered("options"))?
+                .or_throw_rendered("options")?
         }
         (Some(_), None) => {
             return Err(range_error(
@@ -401,7 +374,7 @@ pub fn gm_bernoulli_update(
         }
         (None, _) => {
             let r = regions(o.reports.unwrap_or_default(), "options.reports")?;
-            core_filters::gm_bernoulli_update(&state, &r, &config).map_err(rendered("options"))?
+            core_filters::gm_bernoulli_update(&state, &r, &config).or_throw_rendered("options")?
         }
     };
     write(&GmBernoulliUpdateResult {
@@ -438,7 +411,8 @@ pub struct BernoulliFilterConfig {
     /// Detection: the detection probability p_D inside the field of view S.
     pub detection: DetectionOptions,
     /// Clutter (false reports): the rate λ_c and density c̃.
-    pub clutter: ClutterOptions,
+    #[tsify(type = "ClutterOptions")]
+    pub clutter: Clutter,
     /// The likelihood (measurement matrix H, noise covariance R) for `update({ measurements })`.
     #[tsify(optional)]
     pub likelihood: Option<LikelihoodOptions>,
@@ -447,8 +421,8 @@ pub struct BernoulliFilterConfig {
     pub splitting: Option<SplittingOptions>,
     /// The reduction after each update (GM filter only); omitted: prune 1e-6, merge within 2,
     /// Runnalls to 100.
-    #[tsify(optional)]
-    pub reduction: Option<ReductionOptionsJs>,
+    #[tsify(optional, type = "ReductionOptionsJs")]
+    pub reduction: Option<ReductionOptions>,
     /// Regions the object cannot occupy.
     #[tsify(optional)]
     pub exclusions: Option<Vec<Region>>,
@@ -466,11 +440,11 @@ pub struct BernoulliFilterConfig {
     pub seed: Option<u64>,
 }
 
+/// A configuration as read: the core's, the particle filter's settings (seed 0) and the seed
+/// asked for.
 struct Converted {
     config: CoreConfig,
-    particles: usize,
-    birth_particles: Option<usize>,
-    mcmc_moves: usize,
+    particle: ParticleOptions,
     seed: Option<u64>,
 }
 
@@ -510,12 +484,16 @@ fn convert(c: BernoulliFilterConfig) -> JsResult<Converted> {
         reduction: update.reduction,
         exclusions: update.exclusions,
     };
-    config.validate().map_err(rendered("config"))?;
-    Ok(Converted {
-        config,
+    // both filters' constructors validate the configuration as a whole first
+    let particle = ParticleOptions {
         particles: c.particles,
         birth_particles: c.birth_particles,
         mcmc_moves: c.mcmc_moves,
+        seed: 0,
+    };
+    Ok(Converted {
+        config,
+        particle,
         seed: c.seed,
     })
 }
@@ -552,7 +530,7 @@ fn scan_error(e: fisst::Error) -> JsValue {
     } else if field.starts_with("measurements") {
         "reports"
     } else {
-        return rendered("config")(e);
+        return core_error_rendered(e, "config");
     };
     // the scan's field under its argument, the one it disagrees with (`position_dims`,
     // `likelihood.h`) in the config
@@ -562,7 +540,7 @@ fn scan_error(e: fisst::Error) -> JsValue {
             "" => f.into(),
             _ => format!("{root}.{f}"),
         });
-    core_error(e.map_paths(js_path))
+    core_error(e.map_paths(render_path))
 }
 
 /// Options of `estimate`: the loss (7) of the optimal Bernoulli estimate (Narykov, Üney & Ralph,
@@ -644,7 +622,7 @@ fn estimate_options(options: JsValue) -> JsResult<EstimateOptions> {
     let o: FilterEstimateOptions = read(options, "options")?;
     Ok(match (o.radius, o.costs) {
         (Some(r), Some(c)) => EstimateOptions {
-            loss: Some(ApplicationLoss::new(c, r).map_err(rendered("options"))?),
+            loss: Some(ApplicationLoss::new(c, r).or_throw_rendered("options")?),
         },
         (None, None) => EstimateOptions::default(),
         // A missing field is a TypeError naming it (the README's rule), as `read` reports one.
@@ -688,13 +666,13 @@ impl GmBernoulliFilterJs {
         let c: BernoulliFilterConfig = read(config, "config")?;
         let c = convert(c)?;
         Ok(Self {
-            inner: core_filters::GmBernoulliFilter::new(c.config).map_err(rendered("config"))?,
+            inner: core_filters::GmBernoulliFilter::new(c.config).or_throw_rendered("config")?,
         })
     }
 
     /// One prediction (40)–(49); on failure the filter is unchanged.
     pub fn predict(&mut self) -> JsResult<()> {
-        self.inner.predict().map_err(rendered("config"))
+        self.inner.predict().or_throw_rendered("config")
     }
 
     /// The update with `Region[]` (imprecise reports; `[]`: the non-detection update) or
@@ -721,7 +699,7 @@ impl GmBernoulliFilterJs {
     ) -> JsResult<JsValue> {
         let o = estimate_options(options)?;
         write(&estimate_result(
-            self.inner.estimate(&o).map_err(rendered("options"))?,
+            self.inner.estimate(&o).or_throw_rendered("options")?,
         ))
     }
 
@@ -744,18 +722,7 @@ fn run_update(
     reports: JsValue,
     update: impl FnOnce(Scan) -> fisst::Result<UpdateInfo>,
 ) -> JsResult<JsValue> {
-    let info = update(scan(reports)?).map_err(scan_error)?;
-    write(&UpdateInfoJs {
-        delta: info.delta,
-        split_components: info.split_components,
-    })
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct UpdateInfoJs {
-    delta: f64,
-    split_components: usize,
+    write(&Renamed::new(&update(scan(reports)?).map_err(scan_error)?))
 }
 
 /// The Bernoulli particle filter (Ristic, Vo, Vo & Farina, "A tutorial on Bernoulli filters:
@@ -779,15 +746,10 @@ impl ParticleBernoulliFilterJs {
         let c: BernoulliFilterConfig = read(config, "config")?;
         let c = convert(c)?;
         let seed = seed_or_entropy(c.seed)?;
-        let options = core_filters::ParticleOptions {
-            particles: c.particles,
-            birth_particles: c.birth_particles,
-            mcmc_moves: c.mcmc_moves,
-            seed,
-        };
+        let options = ParticleOptions { seed, ..c.particle };
         Ok(Self {
             inner: core_filters::ParticleBernoulliFilter::new(c.config, options)
-                .map_err(rendered("config"))?,
+                .or_throw_rendered("config")?,
             seed,
         })
     }
@@ -826,7 +788,7 @@ impl ParticleBernoulliFilterJs {
             } else {
                 "options"
             };
-            rendered(root)(e)
+            core_error_rendered(e, root)
         })?;
         write(&estimate_result(e))
     }
@@ -861,40 +823,6 @@ impl ParticleBernoulliFilterJs {
     pub fn seed(&self) -> f64 {
         self.seed as f64
     }
-}
-
-/// Options of `airportScenario` (the airport example of LeGrand & Ferrari, "Split Happens!
-/// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper 001),
-/// Section V-C).
-#[derive(Deserialize, Tsify)]
-pub struct AirportScenarioOptions {
-    /// The seed (integer in [0, 2^53 − 1]); omitted: fresh entropy.
-    #[tsify(optional)]
-    pub seed: Option<u64>,
-    /// Report times (default 60, at most 2000).
-    #[serde(default = "fisst::sim::airport::default_steps")]
-    pub steps: usize,
-}
-
-/// An anchor of the airport example: a named landmark whose association disc is a report.
-#[derive(Serialize, Tsify)]
-pub struct AnchorOut {
-    /// The anchor's name ("taco stand").
-    pub name: String,
-    /// The anchor's position r_a = [x, y].
-    pub position: [f64; 2],
-    /// The radius 2 d_a / 3 of the anchor's association disc, d_a the distance to the nearest other
-    /// anchor.
-    pub radius: f64,
-}
-
-/// The truth at one report time.
-#[derive(Serialize, Tsify)]
-pub struct TruthOut {
-    /// The report time t = k T, in seconds.
-    pub t: f64,
-    /// The true state (x, y, ẋ, ẏ): position and velocity.
-    pub state: [f64; 4],
 }
 
 /// The filter configuration of the example, ready for both classes (a `BernoulliFilterConfig`).
@@ -961,7 +889,8 @@ pub struct AirportClutter {
 #[serde(rename_all = "camelCase")]
 pub struct AirportScenarioResult {
     /// The ten anchors, in report-index order.
-    pub anchors: Vec<AnchorOut>,
+    #[tsify(type = "AnchorOut[]")]
+    pub anchors: Vec<Anchor>,
     /// The exclusion regions (four rectangles, then the exterior of the concourse).
     pub exclusions: Vec<Region>,
     /// The concourse, a box [0, 300] × [0, 30].
@@ -973,7 +902,8 @@ pub struct AirportScenarioResult {
     /// The configuration of both filters.
     pub config: AirportConfig,
     /// The person's true state at each report time.
-    pub truth: Vec<TruthOut>,
+    #[tsify(type = "TruthOut[]")]
+    pub truth: Vec<TruthPoint>,
     /// The reported anchor indices per step.
     pub reports: Vec<Vec<usize>>,
     /// The anchor of the true report per step (null: missed).
@@ -1010,23 +940,11 @@ pub fn airport_scenario(
     >,
 ) -> JsResult<JsValue> {
     let o: AirportScenarioOptions = match options {
-        None => AirportScenarioOptions {
-            seed: None,
-            steps: fisst::sim::airport::default_steps(),
-        },
+        None => AirportScenarioOptions::default(),
         Some(options) => read(options, "options")?,
     };
     let seed = seed_or_entropy(o.seed)?;
-    let sc = fisst::sim::airport::airport_scenario(seed, o.steps).map_err(rendered("options"))?;
-    let anchors: Vec<AnchorOut> = sc
-        .anchors
-        .iter()
-        .map(|a| AnchorOut {
-            name: a.name.clone(),
-            position: a.position,
-            radius: a.radius,
-        })
-        .collect();
+    let sc = fisst::sim::airport::airport_scenario(seed, o.steps).or_throw_rendered("options")?;
     let fov = Region::Union(
         sc.anchors
             .iter()
@@ -1072,20 +990,13 @@ pub fn airport_scenario(
         seed,
     };
     write(&AirportScenarioResult {
-        anchors,
+        anchors: sc.anchors.clone(),
         exclusions,
         concourse: box_region(&sc.concourse),
         fov,
         dt: sc.dt,
         config,
-        truth: sc
-            .truth
-            .iter()
-            .map(|t| TruthOut {
-                t: t.t,
-                state: t.state,
-            })
-            .collect(),
+        truth: sc.truth.clone(),
         reports: sc.reports.clone(),
         true_reports: sc.true_reports.clone(),
         in_fov: sc.in_fov.clone(),

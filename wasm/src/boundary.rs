@@ -138,6 +138,15 @@ mod tests {
         assert_eq!(render_path("existence[3]"), "existence[3]");
         assert_eq!(render_path("missProbability"), "missProbability");
         assert_eq!(render_path("transition.F"), "transition.F");
+        assert_eq!(render_path("transition.q"), "transition.Q");
+        assert_eq!(
+            render_path("reports[0].ball.center"),
+            "reports[0].disc.center"
+        );
+        assert_eq!(
+            render_path("detection.fov.complement.union[0].ball.center"),
+            "detection.fov.complement.union[0].disc.center"
+        );
         assert_eq!(render_path(""), "");
     }
 }

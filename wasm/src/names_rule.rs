@@ -13,6 +13,11 @@ pub const EXCEPTIONS: &[(&str, &str, &str)] = &[
     ("likelihood", "r", "R"),
 ];
 
+/// Parts of a value whose JavaScript name is not their camelCase whatever holds them:
+/// `(Rust name, JS name)`. The core's `ball` region is the contract's `disc` (`{ disc: { center,
+/// radius } }`), so an error path `reports[0].ball.center` reads `reports[0].disc.center`.
+pub const ANY_PARENT: &[(&str, &str)] = &[("ball", "disc")];
+
 /// The JavaScript name of a Rust name that is not one of the exceptions: camelCase
 /// (`future_scans` → `futureScans`); a name without an underscore comes back borrowed. Rust
 /// field names are ASCII, so the ASCII case map is enough (and keeps Unicode's tables out of
@@ -36,13 +41,19 @@ pub fn camel_case(field: &str) -> Cow<'_, str> {
     Cow::Owned(out)
 }
 
-/// The JavaScript name of `field` held in `parent`, as text (the exceptions, else camelCase).
+/// The JavaScript name of `field` held in `parent`, as text (the exceptions, then
+/// [`ANY_PARENT`], else camelCase).
 pub fn js_name_of(parent: &str, field: &str) -> String {
-    match EXCEPTIONS
+    let exception = EXCEPTIONS
         .iter()
         .find(|(p, f, _)| *p == parent && *f == field)
-    {
-        Some((_, _, js)) => String::from(*js),
+        .map(|(_, _, js)| js);
+    let any = ANY_PARENT
+        .iter()
+        .find(|(f, _)| *f == field)
+        .map(|(_, js)| js);
+    match exception.or(any) {
+        Some(js) => String::from(*js),
         None => camel_case(field).into_owned(),
     }
 }

@@ -33,6 +33,11 @@ pub struct ConfigShapes<'a> {
 }
 
 impl ConfigShapes<'_> {
+    /// The shape of a matrix given as rows: (rows, length of its first row); `[]` is 0 × 0.
+    pub fn of_rows(rows: &[Vec<f64>]) -> (usize, usize) {
+        (rows.len(), rows.first().map_or(0, Vec::len))
+    }
+
     /// Checks the dimensions against F's: Q n × n, every mean of length n, H with n columns,
     /// R m × m for an H of m rows, n_s ≤ n. F itself (square, not empty) and each field's
     /// values are left to the field's own check.

@@ -26,6 +26,23 @@ fn rows(n: usize, m: usize, v: f64) -> Vec<Vec<f64>> {
 }
 
 #[test]
+fn eq44_shapes_of_rows_as_a_user_gives_them() {
+    assert_eq!(ConfigShapes::of_rows(&rows(2, 3, 1.0)), (2, 3));
+    assert_eq!(ConfigShapes::of_rows(&[]), (0, 0));
+    // the first row decides the columns; ragged rows are left to the matrix's own check
+    assert_eq!(ConfigShapes::of_rows(&[vec![1.0], vec![1.0, 2.0]]), (2, 1));
+    let shapes = ConfigShapes {
+        f: ConfigShapes::of_rows(&rows(2, 2, 1.0)),
+        q: ConfigShapes::of_rows(&rows(3, 3, 1.0)),
+        ..ConfigShapes::default()
+    };
+    assert_eq!(
+        message(shapes.check()),
+        "transition.q is 3×3 but transition.f is 2×2"
+    );
+}
+
+#[test]
 fn eq39_a_4d_mixture_with_a_2x2_f_names_both() {
     let mut c = ncv_filter_config(0.5, 0.9);
     c.transition = LinearGaussianTransition::from_rows(&rows(2, 2, 1.0), &rows(2, 2, 0.1)).unwrap();

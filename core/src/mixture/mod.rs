@@ -30,13 +30,14 @@ use crate::gaussian::GaussianMixture;
     serde(default)
 )]
 pub struct ReductionOptions {
-    /// Drop components lighter than this, renormalising the rest ([`prune`]); 0 keeps all.
+    /// Pruning threshold ≥ 0: components lighter than this are dropped and the rest
+    /// renormalised ([`prune`]); 0 (the default) keeps all.
     pub prune_below: f64,
-    /// Merge components within this Mahalanobis distance of the heaviest ([`merge_close`]);
-    /// `None` skips the pass.
+    /// Merge distance ≥ 0: components within this Mahalanobis distance of the heaviest are
+    /// merged (Vo & Ma, [`merge_close`]); omitted (`None`): no merging.
     pub merge_distance: Option<f64>,
-    /// Reduce to at most this many components by Runnalls ([`runnalls`]); `None` skips the
-    /// pass.
+    /// The most components kept, in [1, 1e6], by Runnalls' merging ([`runnalls`]); omitted
+    /// (`None`): no cap.
     pub max_components: Option<usize>,
 }
 

@@ -192,6 +192,33 @@ pub const AIRPORT_PAPER_STEPS: usize = 60;
 pub const fn default_steps() -> usize {
     AIRPORT_PAPER_STEPS
 }
+
+/// Options of [`airport_scenario`] (`airportScenario`, the airport example of LeGrand &
+/// Ferrari, "Split Happens! Imprecise and negative information in Gaussian mixture random
+/// finite set filtering" (paper 001), Section V-C); every field optional, the defaults those
+/// of [`AirportScenarioOptions::default`] (fresh entropy, 60 steps).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
+pub struct AirportScenarioOptions {
+    /// The seed (integer in [0, 2^53 − 1]); omitted: fresh entropy.
+    pub seed: Option<u64>,
+    /// Report times (default 60, at most 2000).
+    pub steps: usize,
+}
+
+impl Default for AirportScenarioOptions {
+    /// No seed (the caller draws one) and [`default_steps`].
+    fn default() -> Self {
+        Self {
+            seed: None,
+            steps: default_steps(),
+        }
+    }
+}
 /// The largest number of steps [`airport_scenario`] simulates.
 pub const MAX_AIRPORT_STEPS: usize = 2000;
 
