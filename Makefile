@@ -59,7 +59,7 @@ test-nostd:
 test-python: setup-python
 	cd python && ../.venv/bin/maturin develop --locked --profile py --quiet
 	.venv/bin/python -m pytest -q python/tests
-	cd python && ../.venv/bin/python -m mypy.stubtest fisst --allowlist stubtest-allowlist.txt
+	cd python && ../.venv/bin/python -m mypy.stubtest fisst --allowlist stubtest-allowlist.txt --mypy-config-file pyproject.toml
 
 ## make wheel: the Python package's abi3 wheel (Linux x86_64, Python >= 3.10) in dist/
 wheel: setup-python

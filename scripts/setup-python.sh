@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The Python virtual environment of the project, `.venv` (git-ignored), with what building and
 # testing the Python package needs, from PyPI; skips whatever is already there.
-#   scripts/setup-python.sh           maturin, numpy, pytest, hypothesis, pandas, mypy
+#   scripts/setup-python.sh           maturin, numpy, pytest, hypothesis, pandas, mypy, stonesoup
+#                                     1.9.1 (the interoperability tests) and matplotlib
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -15,7 +16,7 @@ if [ ! -x .venv/bin/python ]; then
 fi
 need=()
 for spec in "maturin>=1.8,<2:maturin" "numpy>=1.23:numpy" "pytest>=8:pytest" "hypothesis>=6:hypothesis" \
-            "pandas>=2:pandas" "mypy>=1.10:mypy"; do
+            "pandas>=2:pandas" "mypy>=1.10:mypy" "stonesoup==1.9.1:stonesoup" "matplotlib>=3.7:matplotlib"; do
   module=${spec##*:}
   .venv/bin/python -c "import $module" 2>/dev/null || need+=("${spec%:*}")
 done
