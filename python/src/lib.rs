@@ -5,6 +5,9 @@
 
 use pyo3::prelude::*;
 
+mod bernoulli;
+mod bounds;
+mod control;
 mod convert;
 mod metrics;
 mod multi_bernoulli;
@@ -43,5 +46,15 @@ fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
         multi_bernoulli::mb_identical_component_counts,
         m
     )?)?;
+    m.add_function(wrap_pyfunction!(bernoulli::bernoulli_loss_curve, m)?)?;
+    m.add_function(wrap_pyfunction!(bernoulli::bernoulli_threshold_curve, m)?)?;
+    m.add_function(wrap_pyfunction!(bounds::jde_bound_no_clutter, m)?)?;
+    m.add_function(wrap_pyfunction!(bounds::gaussian_fisher_information, m)?)?;
+    m.add_function(wrap_pyfunction!(bounds::jde_sequential_bound, m)?)?;
+    m.add_function(wrap_pyfunction!(bounds::jde_example2, m)?)?;
+    m.add_function(wrap_pyfunction!(bounds::jde_example2_regularity, m)?)?;
+    m.add_function(wrap_pyfunction!(control::multi_object_likelihood, m)?)?;
+    m.add_class::<control::SensorControlRun>()?;
+    m.add_function(wrap_pyfunction!(control::compare_schemes, m)?)?;
     Ok(())
 }

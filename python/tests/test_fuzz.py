@@ -33,6 +33,8 @@ points = st.one_of(st.integers(1, 3).flatmap(point_set), junk)
 existence = st.one_of(st.lists(probability, max_size=8), st.lists(probability, max_size=8).map(np.array), junk)
 metric = st.sampled_from(["gospa", "ospa", "uospa", "x", 3])
 kw_number = st.one_of(number, junk)
+costs = st.one_of(st.sampled_from(["mpe", "x"]), st.fixed_dictionaries({"mmol": st.fixed_dictionaries({"asset": kw_number, "countermeasure": kw_number})}),
+                  st.fixed_dictionaries({"c00": kw_number, "c01": kw_number, "c10": kw_number, "c11": kw_number, "c": kw_number}), junk)
 
 
 def maybe(strategy):
@@ -67,9 +69,44 @@ CALLS = {
         optional={"resolution": st.one_of(st.integers(-2, 60), st.sampled_from([10**6, 2**64])), "c": kw_number, "p": kw_number, "alpha": kw_number})),
     "mb_identical_component_counts": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
         {"existence": kw_number, "max_components": st.one_of(st.integers(-2, 40), st.sampled_from([10**6, 2**70]))})),
+    "bernoulli_loss_curve": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"existences": existence, "miss_probability": st.one_of(probability, junk), "costs": costs},
+        optional={"threshold": st.one_of(probability, junk)})),
+    "bernoulli_threshold_curve": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"sigmas": st.one_of(st.lists(number, max_size=5), junk), "radius": kw_number, "costs": costs},
+        optional={"dim": st.one_of(st.integers(-1, 12), junk)})),
+    "jde_bound_no_clutter": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"existence": probability, "detection_probability": probability, "prior_variance": kw_number,
+         "posterior_variance": kw_number, "false_alarm_error": kw_number, "miss_error": kw_number})),
+    "gaussian_fisher_information": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"prior_variance": kw_number, "gain": kw_number, "noise_variance": kw_number})),
+    "jde_sequential_bound": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"method": st.sampled_from(["enumeration", "irf", "x"]), "prior_information": kw_number,
+         "detected_information": kw_number, "detection_probability": probability,
+         "steps": st.one_of(st.integers(-1, 60), st.sampled_from([5000, 5001, 10**9]))})),
+    "jde_example2": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"existence": probability, "detection_probability": probability, "false_alarm_probability": probability,
+         "false_alarm_error": kw_number}, optional={"miss_error": kw_number})),
+    "jde_example2_regularity": st.tuples(st.just(None), st.just(None), st.one_of(st.just({}), st.just({"x": 1}))),
+    "multi_object_likelihood": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"likelihoods": st.one_of(st.lists(st.lists(st.one_of(st.floats(0, 2), st.sampled_from(EXTREMES)), min_size=2, max_size=2), max_size=5), junk),
+         "detection_probability": probability, "clutter_rate": kw_number,
+         "clutter_density": st.one_of(st.lists(st.one_of(st.floats(0, 1), st.sampled_from(EXTREMES)), min_size=2, max_size=2), junk)})),
+    "compare_schemes": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"runs": st.one_of(st.integers(-1, 2), junk), "steps": st.one_of(st.integers(-1, 3), junk), "seed": st.integers(0, 99)},
+        optional={"schemes": st.lists(st.sampled_from(["renyi", "fisher", "pent", "random", "x"]), max_size=3),
+                  "particles": st.integers(-1, 60), "future_scans": st.integers(-1, 8), "alpha": kw_number,
+                  "max_objects": st.integers(-1, 9), "start": st.one_of(st.lists(number, min_size=2, max_size=2), junk)})),
+    "SensorControlRun": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"scheme": st.sampled_from(["renyi", "fisher", "pent", "random", "x"]), "seed": st.integers(0, 99),
+         "steps": st.one_of(st.integers(-1, 3), junk)},
+        optional={"particles": st.integers(-1, 60), "future_scans": st.integers(-1, 8), "alpha": kw_number,
+                  "max_objects": st.integers(-1, 9), "start": st.one_of(st.lists(number, min_size=2, max_size=2), junk)})),
 }
 
-assert set(CALLS) == {n for n in fisst.__all__ if callable(getattr(fisst, n)) and n != "Result"}
+assert set(CALLS) == {n for n in fisst.__all__ if callable(getattr(fisst, n)) and n != "Result"}, (
+    "every export is fuzzed"
+)
 
 
 def nan_in(value):
@@ -94,6 +131,8 @@ def call(name, args):
     f = getattr(fisst, name)
     try:
         out = f(*positional, **kwargs)
+        if name == "SensorControlRun":
+            out = out.step()
     except (TypeError, ValueError) as e:
         assert str(e), f"{name}: an empty message"
         return

@@ -1,6 +1,6 @@
 """Type stubs of the compiled module ``fisst._fisst`` (checked by ``python -m mypy.stubtest fisst``)."""
 
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from typing import Any, TypeAlias, final
 
 import numpy as np
@@ -9,9 +9,18 @@ import numpy.typing as npt
 __version__: str
 __all__ = [
     "Result",
+    "SensorControlRun",
     "__version__",
+    "bernoulli_loss_curve",
+    "bernoulli_threshold_curve",
+    "compare_schemes",
+    "gaussian_fisher_information",
     "gospa",
     "gospa_series",
+    "jde_bound_no_clutter",
+    "jde_example2",
+    "jde_example2_regularity",
+    "jde_sequential_bound",
     "linear_assignment",
     "mb_alternative_estimate",
     "mb_decision_map",
@@ -20,6 +29,7 @@ __all__ = [
     "mb_optimal_estimate",
     "multi_bernoulli_cardinality",
     "multi_bernoulli_leave_one_out",
+    "multi_object_likelihood",
     "ospa",
     "ospa_series",
     "uospa",
@@ -86,3 +96,85 @@ def mb_decision_map(
     *, estimator: str, resolution: int = 100, c: float = 1.0, p: float = 2.0, alpha: float = 2.0
 ) -> Result: ...
 def mb_identical_component_counts(*, existence: float, max_components: int) -> Result: ...
+
+_Costs: TypeAlias = str | dict[str, Any]
+
+def bernoulli_loss_curve(
+    *, existences: npt.ArrayLike, miss_probability: float, costs: _Costs, threshold: float | None = None
+) -> Result: ...
+def bernoulli_threshold_curve(
+    *, sigmas: npt.ArrayLike, radius: float, costs: _Costs, dim: int | None = None
+) -> npt.NDArray[np.float64]: ...
+def jde_bound_no_clutter(
+    *,
+    existence: float,
+    detection_probability: float,
+    prior_variance: float,
+    posterior_variance: float,
+    false_alarm_error: float,
+    miss_error: float,
+) -> Result: ...
+def gaussian_fisher_information(*, prior_variance: float, gain: float, noise_variance: float) -> Result: ...
+def jde_sequential_bound(
+    *,
+    method: str,
+    prior_information: float,
+    detected_information: float,
+    detection_probability: float,
+    steps: int,
+) -> Result: ...
+def jde_example2(
+    *,
+    existence: float,
+    detection_probability: float,
+    false_alarm_probability: float,
+    false_alarm_error: float,
+    miss_error: float | None = None,
+) -> Result: ...
+def jde_example2_regularity() -> Result: ...
+def multi_object_likelihood(
+    *,
+    likelihoods: npt.ArrayLike,
+    detection_probability: float,
+    clutter_rate: float,
+    clutter_density: npt.ArrayLike,
+) -> Result: ...
+@final
+class SensorControlRun:
+    """One run of Algorithm 1 of paper 004 (sensor control with the SMC multi-object filter)."""
+
+    def __new__(cls, **options: Any) -> SensorControlRun: ...
+    def step(self) -> Result: ...
+    @property
+    def particles(self) -> Result: ...
+    @property
+    def sensor_path(self) -> Any: ...
+    @property
+    def truth(self) -> Any: ...
+    @property
+    def measurements(self) -> Any: ...
+    @property
+    def k(self) -> int: ...
+    @property
+    def steps(self) -> int: ...
+    @property
+    def seed(self) -> int: ...
+    @property
+    def scheme(self) -> str: ...
+    def __reduce__(self) -> tuple[Any, ...]: ...
+    @staticmethod
+    def _restore(options: dict[str, Any], k: int) -> SensorControlRun: ...
+
+def compare_schemes(
+    *,
+    runs: int,
+    steps: int,
+    seed: int | None = None,
+    schemes: Sequence[str] | None = None,
+    particles: int = 750,
+    future_scans: int = 200,
+    alpha: float = 0.5,
+    start: Sequence[float] = [0, 0],
+    max_objects: int = 4,
+    on_progress: Callable[[int, int], object] | None = None,
+) -> Result: ...

@@ -1,0 +1,48 @@
+//! Optimal Bernoulli point estimation (paper 000, Narykov, Üney & Ralph, "Optimal Bernoulli
+//! point estimation with applications"): the loss curves and the threshold curve, on the
+//! core's own `fisst::bernoulli` types.
+
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::convert::{result, to_py};
+use crate::options::from_kwargs;
+use fisst::bernoulli::{self, LossCurveOptions, ThresholdCurveOptions};
+
+/// Fig. 2 of paper 000: the expected losses against the existence probability p at each of
+/// ``existences``, for a point whose miss probability is ``miss_probability`` and the
+/// ``costs`` of the loss (7) (``"mpe"``, ``{"mmol": {"asset": .., "countermeasure": ..}}``
+/// or ``{"c00": .., "c01": .., "c10": .., "c11": .., "c": ..}``): ρ_∅(p) (14), ρ_a*(p) (13)
+/// and the loss of the rule "report when p > threshold" (default: the optimal Γ of (11)).
+/// Returns a ``Result`` (``LossCurve``: ``empty``, ``singleton``, ``rule``, ``threshold``).
+#[pyfunction]
+#[pyo3(
+    signature = (**options),
+    text_signature = "(*, existences, miss_probability, costs, threshold=None)"
+)]
+pub fn bernoulli_loss_curve<'py>(
+    py: Python<'py>,
+    options: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let o: LossCurveOptions = from_kwargs(py, "bernoulli_loss_curve", options)?;
+    let c = py.detach(|| bernoulli::loss_curve(&o)).map_err(to_py)?;
+    result(py, &c)
+}
+
+/// Fig. 3 of paper 000: the optimal existence threshold Γ of (11) against the standard
+/// deviation σ of an isotropic Gaussian spatial density, one per entry of ``sigmas``, for
+/// the tolerance radius ``radius`` and the ``costs`` (as ``bernoulli_loss_curve``), in
+/// ``dim`` dimensions (default 1, as in Fig. 3). Returns a float64 array.
+#[pyfunction]
+#[pyo3(
+    signature = (**options),
+    text_signature = "(*, sigmas, radius, costs, dim=None)"
+)]
+pub fn bernoulli_threshold_curve<'py>(
+    py: Python<'py>,
+    options: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let o: ThresholdCurveOptions = from_kwargs(py, "bernoulli_threshold_curve", options)?;
+    let c = py.detach(|| o.curve()).map_err(to_py)?;
+    result(py, &c)
+}

@@ -1,0 +1,41 @@
+// The npm package's results on a set of inputs from the contract tests, as JSON on stdout:
+// python/tests/test_js_parity.py runs this and checks that the Python package returns the same
+// numbers (bit for bit) from the same inputs under its own names (snake_case keywords).
+//   node tests/js/python/fixture.mjs > out.json
+import * as fisst from 'fisst';
+
+const calls = [
+  ['gospa', [[[0, 0], [10, 0]], [[0, 1]], { c: 2 }]],
+  ['gospa', [[[0, 0], [1, 2], [3, 1]], [[0.5, 0], [3, 1.5]], { c: 2, p: 1, alpha: 2 }]],
+  ['gospa', [[[0, 0], [1, 2], [3, 1]], [[0.5, 0], [3, 1.5]], { c: 2, p: 3, alpha: 1 }]],
+  ['ospa', [[[0, 0], [1, 1]], [[0, 1]], { c: 2, p: 1 }]],
+  ['ospa', [[[0, 0, 0], [1, 1, 1], [4, 0, 2]], [[0, 1, 0], [5, 0, 2]], { c: 3 }]],
+  ['uospa', [[[0, 0], [1, 1]], [[0, 1]], { c: 2 }]],
+  ['gospaSeries', [{ truths: [[[0, 0]], [], [[1, 1], [2, 2]]], estimates: [[[0, 1]], [[1, 1]], [[2, 2.5]]], c: 2, p: 2 }]],
+  ['ospaSeries', [{ truths: [[[0, 0]], [], [[1, 1], [2, 2]]], estimates: [[[0, 1]], [[1, 1]], [[2, 2.5]]], c: 2, p: 1 }]],
+  ['linearAssignment', [[[4, 1, 3], [2, 0, 5], [3, 2, 2]]]],
+  ['multiBernoulliCardinality', [[0.31180874673401826, 0.6562714661775726, 0.5775291650070283]]],
+  ['multiBernoulliLeaveOneOut', [[0.3, 0.7, 0.55]]],
+  ['mbOptimalEstimate', [{ existence: [0.4, 0.4], metric: 'ospa' }]],
+  ['mbOptimalEstimate', [{ existence: [0.9, 0.2, 0.55, 0.6], metric: 'gospa', c: 2, p: 1 }]],
+  ['mbMeanSquareError', [{ existence: [0.4, 0.4], report: [true, false], metric: 'gospa' }]],
+  ['mbAlternativeEstimate', [{ existence: [0.4, 0.7, 0.2], method: 'mam' }]],
+  ['mbAlternativeEstimate', [{ existence: [0.4, 0.7, 0.2], method: 'map-cardinality' }]],
+  ['mbIdenticalComponentCounts', [{ existence: 0.6, maxComponents: 6 }]],
+  ['bernoulliLossCurve', [{ existences: [0.1, 0.5, 0.9], missProbability: 0.2, costs: 'mpe' }]],
+  ['bernoulliLossCurve', [{ existences: [0.1, 0.5, 0.9], missProbability: 0.3, costs: { mmol: { asset: 2, countermeasure: 1 } } }]],
+  ['bernoulliThresholdCurve', [{ sigmas: [0.5, 1, 2, 4], radius: 1, costs: 'mpe' }]],
+  ['jdeBoundNoClutter', [{ existence: 0.5, detectionProbability: 0.9, priorVariance: 100, posteriorVariance: 1, falseAlarmError: 100, missError: 100 }]],
+  ['gaussianFisherInformation', [{ priorVariance: 4, gain: 2, noiseVariance: 3 }]],
+  ['jdeSequentialBound', [{ method: 'enumeration', priorInformation: 0.1, detectedInformation: 1, detectionProbability: 0.8, steps: 5 }]],
+  ['jdeSequentialBound', [{ method: 'irf', priorInformation: 0.1, detectedInformation: 1, detectionProbability: 0.8, steps: 5 }]],
+  ['multiObjectLikelihood', [{ likelihoods: [[0.5, 0.1], [0.2, 0.3]], detectionProbability: 0.9, clutterRate: 1, clutterDensity: [0.1, 0.1] }]],
+];
+
+const out = calls.map(([fn, args]) => ({ fn, args, result: fisst[fn](...args) }));
+// SensorControlRun: three seeded steps
+const run = new fisst.SensorControlRun({ scheme: 'pent', seed: 7, steps: 3, particles: 200, futureScans: 20 });
+const steps = [run.step(), run.step(), run.step()];
+out.push({ fn: 'SensorControlRun', args: [{ scheme: 'pent', seed: 7, steps: 3, particles: 200, futureScans: 20 }], result: steps });
+const replacer = (_, v) => (v instanceof Float64Array || v instanceof Uint8Array ? Array.from(v) : typeof v === 'number' && !Number.isFinite(v) ? { nonFinite: String(v) } : v);
+process.stdout.write(JSON.stringify(out, replacer));
