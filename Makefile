@@ -54,20 +54,26 @@ test-nostd:
 	cargo test --locked -p fisst --no-default-features --features serde --lib
 	cargo build --locked -p fisst --no-default-features --features serde --target thumbv7em-none-eabihf
 
-## make test-python: the Python package built once into .venv (profile `py`), its tests (contract,
-## parity, a seeded hypothesis slice) and the stubs checked against the module
+## make test-python: the Python package's wheel built once (profile `py`, into dist/) and installed
+## into .venv, then its tests (contract, parity with native and npm, Stone Soup, a seeded
+## hypothesis slice, the wheel in a fresh venv) and the stubs checked against the module
 test-python: setup-python
-	cd python && ../.venv/bin/maturin develop --locked --profile py --quiet
+	rm -f dist/fisst-*.whl
+	cd python && ../.venv/bin/maturin build --locked --profile py --out ../dist --quiet
+	.venv/bin/python -m pip install --quiet --disable-pip-version-check --force-reinstall --no-deps dist/fisst-*.whl
 	.venv/bin/python -m pytest -q python/tests
 	cd python && ../.venv/bin/python -m mypy.stubtest fisst --allowlist stubtest-allowlist.txt --mypy-config-file pyproject.toml
 
 ## make wheel: the Python package's abi3 wheel (Linux x86_64, Python >= 3.10) in dist/
 wheel: setup-python
+	rm -f dist/fisst-*.whl
 	cd python && ../.venv/bin/maturin build --locked --release --out ../dist --quiet
 
 ## make fuzz-python: the Python fuzz at full size (10^6 calls over every function)
 fuzz-python: setup-python
-	cd python && ../.venv/bin/maturin develop --locked --profile py --quiet
+	rm -f dist/fisst-*.whl
+	cd python && ../.venv/bin/maturin build --locked --profile py --out ../dist --quiet
+	.venv/bin/python -m pip install --quiet --disable-pip-version-check --force-reinstall --no-deps dist/fisst-*.whl
 	FISST_FUZZ_EXAMPLES=1000000 .venv/bin/python -m pytest -q python/tests/test_fuzz.py
 
 setup-python:
