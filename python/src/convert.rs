@@ -2,14 +2,11 @@
 //! core's results out (one mechanism: its `Serialize` → a [`FisstResult`] per struct, numpy
 //! arrays for numeric arrays), and the core's errors as Python exceptions naming the argument.
 
-use numpy::{AllowTypeChange, PyArrayLikeDyn, PyUntypedArrayMethods, ToPyArray};
+use numpy::{AllowTypeChange, PyArrayLikeDyn, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyBytes, PyDict, PyFloat, PyInt, PyList, PyMapping, PyString, PyTuple};
-use pythonize::{PythonizeMappingType, PythonizeNamedMappingType, PythonizeTypes};
+use pyo3::types::PyString;
 use serde::Serialize;
-
-use crate::result::FisstResult;
 
 /// The Python exception for a core error: a `ValueError` whose message starts with the path
 /// of the offending argument in Python's names (the core's Rust names, with the matrix names
@@ -22,7 +19,7 @@ pub fn to_py(e: fisst::Error) -> PyErr {
 /// A point set read from Python: an `(n, d)` array-like of numbers (a numpy array of any
 /// numeric dtype and layout, a list of lists, a pandas `DataFrame`; converted once to
 /// float64 by numpy). An empty sequence is the empty set.
-pub fn points(value: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<Vec<f64>>> {
+pub fn points(value: &Bound<'_, PyAny>, name: &str) -> PyResult<Points> {
     if value.is_instance_of::<PyString>() || value.is_none() {
         return Err(PyTypeError::new_err(format!(
             "{name} must be an (n, d) array of numbers, got {}",
@@ -35,14 +32,60 @@ pub fn points(value: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<Vec<f64>>> {
             e.value(value.py())
         ))
     })?;
-    let view = array.as_array();
-    match view.ndim() {
-        1 if view.is_empty() => Ok(Vec::new()),
-        2 => Ok(view.rows().into_iter().map(|r| r.to_vec()).collect()),
+    let dims = array.shape().to_vec();
+    match dims.as_slice() {
+        [0] => Ok(Points {
+            flat: Vec::new(),
+            n: 0,
+            d: 0,
+        }),
+        &[n, d] => {
+            // one copy into a flat buffer: a memcpy for a C-contiguous float64 array
+            let view = array.as_array();
+            let flat = match view.as_slice() {
+                Some(s) => s.to_vec(),                  // C order
+                None => view.iter().copied().collect(), // any other layout, in logical order
+            };
+            Ok(Points { flat, n, d })
+        }
         _ => Err(PyValueError::new_err(format!(
             "{name} must be an (n, d) array (one row per point), got shape {}",
-            shape(array.shape())
+            shape(&dims)
         ))),
+    }
+}
+
+/// A point set read by [`points`]: n points of dimension d, row-major in one buffer.
+pub struct Points {
+    flat: Vec<f64>,
+    n: usize,
+    d: usize,
+}
+
+impl Points {
+    /// The number of points n.
+    #[allow(clippy::len_without_is_empty)]
+    pub fn len(&self) -> usize {
+        self.n
+    }
+
+    /// The dimension d.
+    pub fn dim(&self) -> usize {
+        self.d
+    }
+
+    /// The coordinates, row-major.
+    pub fn flat(&self) -> &[f64] {
+        &self.flat
+    }
+
+    /// The points, one slice each (borrowed from the buffer).
+    pub fn rows(&self) -> Vec<&[f64]> {
+        if self.d == 0 {
+            // (n, 0): n points of dimension 0 (the core says what it makes of them)
+            return vec![&[][..]; self.n];
+        }
+        self.flat.chunks(self.d).collect()
     }
 }
 
@@ -91,7 +134,7 @@ pub fn number_or(value: Option<&Bound<'_, PyAny>>, name: &str, default: f64) -> 
 
 /// A sequence of point sets (`truths[t]`): a list (or tuple) of [`points`], each named
 /// `name[t]`.
-pub fn point_sets(value: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<Vec<Vec<f64>>>> {
+pub fn point_sets(value: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<Points>> {
     if value.is_instance_of::<PyString>() || value.is_none() {
         return Err(PyTypeError::new_err(format!(
             "{name} must be a sequence of (n, d) arrays, got {}",
@@ -115,175 +158,13 @@ pub fn point_sets(value: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<Vec<Vec<
     Ok(out)
 }
 
-/// The core's value `value` as Python objects: every struct a [`FisstResult`] (attributes
+/// The core's value `value` as Python objects: every struct a `fisst.Result` (attributes
 /// under the Rust field names, a readable `repr`, picklable), every array of numbers a numpy
 /// array (float64, int64 or bool; an array of equal-length numeric rows a 2-D array),
-/// `None` as `None`, a unit enum variant as its name.
+/// `None` as `None`, a unit enum variant as its name ([`crate::ser`]).
 pub fn result<'py, T: Serialize + ?Sized>(
     py: Python<'py>,
     value: &T,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let out = pythonize::pythonize_custom::<Types, _>(py, value)
-        .map_err(|e| PyValueError::new_err(e.to_string()))?;
-    arrays(py, out)
+    crate::ser::to_python(py, value)
 }
-
-/// A list of numbers as a numpy array, a list of equal-length numeric rows (tuples or 1-D
-/// arrays of one dtype) as a 2-D one, bottom-up through nested lists; anything else as it is.
-/// Structs convert their own fields as they are built.
-fn arrays<'py>(py: Python<'py>, value: Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-    if let Ok(bytes) = value.cast::<PyBytes>() {
-        // a `Vec<u8>` the core writes as bytes: a uint8 array
-        return Ok(bytes.as_bytes().to_pyarray(py).into_any());
-    }
-    let Ok(list) = value.cast::<PyList>() else {
-        return Ok(value);
-    };
-    let items = list
-        .iter()
-        .map(|x| arrays(py, x))
-        .collect::<PyResult<Vec<Bound<'py, PyAny>>>>()?;
-    if items.is_empty() {
-        return Ok(Vec::<f64>::new().to_pyarray(py).into_any());
-    }
-    if let Some(kind) = kind_of(&items) {
-        return reshape(py, kind, &items, items.len(), 0);
-    }
-    // rows of equal length: tuples of numbers
-    let rows: Option<Vec<Vec<Bound<'py, PyAny>>>> = items
-        .iter()
-        .map(|r| r.cast::<PyTuple>().ok().map(|t| t.iter().collect()))
-        .collect();
-    if let Some(rows) = rows
-        && rows.iter().all(|r| r.len() == rows[0].len())
-    {
-        let flat: Vec<Bound<'py, PyAny>> = rows.concat();
-        if let Some(kind) = kind_of(&flat) {
-            return reshape(py, kind, &flat, rows.len(), rows[0].len());
-        }
-    }
-    // rows of equal length: 1-D arrays of one dtype
-    let first = items[0].cast::<numpy::PyUntypedArray>().ok();
-    if let Some(a) = first
-        && a.ndim() == 1
-        && items.iter().all(|x| {
-            x.cast::<numpy::PyUntypedArray>()
-                .is_ok_and(|b| b.ndim() == 1 && b.shape() == a.shape() && b.dtype().is(a.dtype()))
-        })
-    {
-        return py.import("numpy")?.call_method1("stack", (items,));
-    }
-    Ok(PyList::new(py, items)?.into_any())
-}
-
-/// The kind of numbers a list holds, if it holds only numbers of one kind.
-#[derive(Clone, Copy, PartialEq)]
-enum Kind {
-    Float,
-    Int,
-    Bool,
-}
-
-fn kind_of(items: &[Bound<'_, PyAny>]) -> Option<Kind> {
-    let mut kind = None;
-    for x in items {
-        let k = if x.is_instance_of::<PyBool>() {
-            Kind::Bool
-        } else if x.is_instance_of::<PyInt>() {
-            Kind::Int
-        } else if x.is_instance_of::<PyFloat>() {
-            Kind::Float
-        } else {
-            return None;
-        };
-        kind = match (kind, k) {
-            (None, k) => Some(k),
-            (Some(a), b) if a == b => Some(a),
-            (Some(Kind::Int), Kind::Float) | (Some(Kind::Float), Kind::Int) => Some(Kind::Float),
-            _ => return None,
-        };
-    }
-    kind
-}
-
-/// `items` as a numpy array of `kind`: 1-D when `d` is 0, else `n × d`.
-fn reshape<'py>(
-    py: Python<'py>,
-    kind: Kind,
-    items: &[Bound<'py, PyAny>],
-    n: usize,
-    d: usize,
-) -> PyResult<Bound<'py, PyAny>> {
-    let array = match kind {
-        Kind::Float => items
-            .iter()
-            .map(|x| x.extract::<f64>())
-            .collect::<PyResult<Vec<_>>>()?
-            .to_pyarray(py)
-            .into_any(),
-        Kind::Int => items
-            .iter()
-            .map(|x| x.extract::<i64>())
-            .collect::<PyResult<Vec<_>>>()?
-            .to_pyarray(py)
-            .into_any(),
-        Kind::Bool => items
-            .iter()
-            .map(|x| x.extract::<bool>())
-            .collect::<PyResult<Vec<_>>>()?
-            .to_pyarray(py)
-            .into_any(),
-    };
-    if d == 0 {
-        Ok(array)
-    } else {
-        array.call_method1("reshape", ((n, d),))
-    }
-}
-
-/// pythonize's types: plain dicts for maps, [`FisstResult`] for structs, lists (made into
-/// arrays by [`arrays`]) for sequences.
-pub struct Types;
-
-impl PythonizeTypes for Types {
-    type Map = PyDict;
-    type NamedMap = Named;
-    type List = PyList;
-}
-
-/// Builds a [`FisstResult`] from a struct's fields.
-pub struct Named;
-
-impl PythonizeNamedMappingType for Named {
-    type Builder<'py> = (&'static str, Bound<'py, PyDict>);
-
-    fn builder<'py>(
-        py: Python<'py>,
-        _len: usize,
-        name: &'static str,
-    ) -> PyResult<Self::Builder<'py>> {
-        Ok((name, PyDict::new(py)))
-    }
-
-    fn push_field<'py>(
-        builder: &mut Self::Builder<'py>,
-        name: Bound<'py, PyString>,
-        value: Bound<'py, PyAny>,
-    ) -> PyResult<()> {
-        let py = name.py();
-        builder.1.set_item(name, arrays(py, value)?)
-    }
-
-    fn finish<'py>(builder: Self::Builder<'py>) -> PyResult<Bound<'py, PyMapping>> {
-        let (name, fields) = builder;
-        let py = fields.py();
-        let r = Bound::new(py, FisstResult::from_fields(name, fields.unbind()))?;
-        Ok(r.into_any().cast_into::<PyMapping>()?)
-    }
-}
-
-// pythonize's `Map` must be a mapping type; a dict is.
-const _: fn() = || {
-    fn is_mapping<T: PythonizeMappingType>() {}
-    is_mapping::<PyDict>();
-};

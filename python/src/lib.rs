@@ -14,6 +14,7 @@ mod multi_bernoulli;
 mod names;
 mod options;
 mod result;
+mod ser;
 
 /// The compiled part of the Python package `fisst` (import `fisst`, not this module).
 #[pymodule]

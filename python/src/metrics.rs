@@ -38,6 +38,7 @@ pub fn gospa<'py>(
         number_or(alpha, "alpha", 2.0)?,
     );
     let (t, e) = (points(truth, "truth")?, points(estimate, "estimate")?);
+    let (t, e) = (t.rows(), e.rows());
     let metric = Gospa::new(c, p, alpha).map_err(to_py)?;
     let report = py.detach(|| metric.report(&t, &e)).map_err(to_py)?;
     result(py, &report)
@@ -62,6 +63,7 @@ pub fn ospa<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let (c, p) = (number(c, "c")?, number_or(p, "p", 2.0)?);
     let (t, e) = (points(truth, "truth")?, points(estimate, "estimate")?);
+    let (t, e) = (t.rows(), e.rows());
     let metric = Ospa::new(c, p).map_err(to_py)?;
     let d = py.detach(|| metric.decompose(&t, &e)).map_err(to_py)?;
     result(py, &d)
@@ -79,6 +81,7 @@ pub fn uospa<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let (c, p) = (number(c, "c")?, number_or(p, "p", 2.0)?);
     let (t, e) = (points(truth, "truth")?, points(estimate, "estimate")?);
+    let (t, e) = (t.rows(), e.rows());
     let metric = Gospa::uospa(c, p).map_err(to_py)?;
     let report = py.detach(|| metric.report(&t, &e)).map_err(to_py)?;
     result(py, &report)
@@ -105,10 +108,16 @@ pub fn gospa_series<'py>(
         number_or(alpha, "alpha", 2.0)?,
     );
     let metric = Gospa::new(c, p, alpha).map_err(to_py)?;
+    if let Ok(steps) = truths.len() {
+        // before reading them: reading 10^6 steps alone takes seconds
+        fisst::metrics::check_series_steps(steps).map_err(to_py)?;
+    }
     let (t, e) = (
         point_sets(truths, "truths")?,
         point_sets(estimates, "estimates")?,
     );
+    let t: Vec<Vec<&[f64]>> = t.iter().map(|p| p.rows()).collect();
+    let e: Vec<Vec<&[f64]>> = e.iter().map(|p| p.rows()).collect();
     fisst::metrics::check_series_steps(t.len()).map_err(to_py)?;
     let s = py.detach(|| metric.series(&t, &e)).map_err(to_py)?;
     result(py, &s)
@@ -128,10 +137,16 @@ pub fn ospa_series<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let (c, p) = (number(c, "c")?, number_or(p, "p", 2.0)?);
     let metric = Ospa::new(c, p).map_err(to_py)?;
+    if let Ok(steps) = truths.len() {
+        // before reading them: reading 10^6 steps alone takes seconds
+        fisst::metrics::check_series_steps(steps).map_err(to_py)?;
+    }
     let (t, e) = (
         point_sets(truths, "truths")?,
         point_sets(estimates, "estimates")?,
     );
+    let t: Vec<Vec<&[f64]>> = t.iter().map(|p| p.rows()).collect();
+    let e: Vec<Vec<&[f64]>> = e.iter().map(|p| p.rows()).collect();
     fisst::metrics::check_series_steps(t.len()).map_err(to_py)?;
     let s = py.detach(|| metric.series(&t, &e)).map_err(to_py)?;
     result(py, &s)
@@ -147,11 +162,10 @@ pub fn linear_assignment<'py>(
     py: Python<'py>,
     cost: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let rows = points(cost, "cost")?;
-    let cols = rows.first().map_or(0, Vec::len);
-    let flat: Vec<f64> = rows.concat();
+    let cost = points(cost, "cost")?;
+    let (rows, cols, flat) = (cost.len(), cost.dim(), cost.flat());
     let a = py
-        .detach(|| fisst::math::linear_assignment(&flat, rows.len(), cols))
+        .detach(|| fisst::math::linear_assignment(flat, rows, cols))
         .map_err(to_py)?;
     result(py, &a)
 }

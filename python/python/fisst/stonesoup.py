@@ -63,30 +63,69 @@ def extract_states(objects: Iterable[Any]) -> tuple[list[Any], list[int]]:
     as Stone Soup's own metric generators take them."""
     states: list[Any] = []
     ids: list[int] = []
+    kinds: dict[type, bool] = {}  # per type: a sequence of states (True) or one state (False)
     for i, element in enumerate(list(objects)):
-        if isinstance(element, StateMutableSequence) and not isinstance(element, State):
+        kind = kinds.get(type(element))
+        if kind is None:
+            if isinstance(element, StateMutableSequence) and not isinstance(element, State):
+                kind = True
+            elif isinstance(element, State):
+                kind = False
+            else:
+                raise TypeError(f"objects[{i}] must be a State, a Track or a GroundTruthPath, got {type(element).__name__}")
+            kinds[type(element)] = kind
+        if kind:
             got = list(element.last_timestamp_generator())
             states.extend(got)
             ids.extend([i] * len(got))
-        elif isinstance(element, State):
+        else:
             states.append(element)
             ids.append(i)
-        else:
-            raise TypeError(f"objects[{i}] must be a State, a Track or a GroundTruthPath, got {type(element).__name__}")
     return states, ids
+
+
+def _reader(states: Sequence[Any], name: str) -> list[Any]:
+    """The attribute ``name`` of every state. Stone Soup keeps a plain property's value in the
+    instance dict under the property's ``_property_name``; reading it there skips the
+    descriptor call (a third of the time of a 60,000-state scenario). Any other case (a
+    property with a getter, mixed types) goes through ``getattr``."""
+    types = {type(s) for s in states}
+    if len(types) == 1:
+        prop = getattr(next(iter(types)), name, None)
+        key = getattr(prop, "_property_name", None)
+        if isinstance(prop, Property) and getattr(prop, "_getter", None) is None and key:
+            try:
+                return [s.__dict__[key] for s in states]
+            except (KeyError, AttributeError):
+                pass
+    return [getattr(s, name) for s in states]
+
+
+def _vectors(states: Sequence[Any]) -> np.ndarray:
+    """The state vectors (``mean`` where a state type has one, as Stone Soup's ``Euclidean``
+    does) as one ``(n, d)`` float64 array."""
+    if not states:
+        return np.empty((0, 0))
+    if any(hasattr(t, "mean") for t in {type(s) for s in states}):
+        columns = [getattr(s, "mean", s.state_vector) for s in states]
+    else:
+        columns = _reader(states, "state_vector")
+    try:
+        return np.asarray(columns, dtype=np.float64).reshape(len(columns), -1)
+    except ValueError as e:
+        raise ValueError(f"the states' vectors must all have one dimension: {e}") from None
 
 
 def state_points(states: Sequence[Any], mapping: Sequence[int] | None = None) -> np.ndarray:
     """The state vectors of ``states`` (their ``mean`` where they have one, as Stone Soup's
     ``Euclidean`` does) as an ``(n, d)`` float64 array, restricted to the coordinates
     ``mapping`` if given."""
-    rows = []
-    for s in states:
-        v = np.asarray(getattr(s, "mean", s.state_vector), dtype=np.float64).reshape(-1)
-        rows.append(v if mapping is None else v[list(mapping)])
-    if not rows:
-        return np.empty((0, 0 if mapping is None else len(mapping)))
-    return np.vstack(rows)
+    points = _vectors(states)
+    if mapping is None:
+        return points
+    if len(points) == 0:
+        return np.empty((0, len(mapping)))
+    return points[:, list(mapping)]
 
 
 def points_by_time(
@@ -96,13 +135,20 @@ def points_by_time(
     points an ``(n, d)`` array (see :func:`state_points`), ``ids`` the index of each point's
     track or path in ``objects``."""
     states, ids = extract_states(objects)
-    groups: dict[Any, list[int]] = {}
-    for k, s in enumerate(states):
-        groups.setdefault(s.timestamp, []).append(k)
-    out = {}
-    for t, idx in groups.items():
-        out[t] = (state_points([states[k] for k in idx], mapping), np.array([ids[k] for k in idx], dtype=np.int64))
-    return out
+    if not states:
+        return {}
+    points = state_points(states, mapping)
+    # one code per distinct timestamp, in order of first appearance; a stable sort by code
+    # groups the states without a Python loop per group
+    index: dict[Any, int] = {}
+    codes = np.fromiter((index.setdefault(t, len(index)) for t in _reader(states, "timestamp")), dtype=np.intp, count=len(states))
+    order = np.argsort(codes, kind="stable")
+    bounds = np.cumsum(np.bincount(codes, minlength=len(index)))[:-1]
+    id_array = np.asarray(ids, dtype=np.int64)
+    return {
+        t: (points[group], id_array[group])
+        for t, group in zip(index, np.split(order, bounds))
+    }
 
 
 # ----------------------------------------------------------------------------- the generators
