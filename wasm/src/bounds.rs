@@ -407,18 +407,19 @@ pub struct ClutterShape {
     pub density: DensityShape,
 }
 
-/// The measurement model of Rezaeian & Vo, "Error bounds for joint detection and estimation of a
-/// single object with random finite set observation" (paper 002): `'I'` (Theorem 1: Bernoulli
-/// observation with false alarms) or `'II'` (Theorem 2: Poisson clutter).
-#[derive(Deserialize, Tsify, Clone, Copy)]
-pub enum MeasurementModel {
-    /// `'I'`: model I (13), a Bernoulli observation with false alarms.
-    #[serde(rename = "I")]
-    One,
-    /// `'II'`: model II (22), Poisson clutter.
-    #[serde(rename = "II")]
-    Two,
-}
+// The measurement model and the rule on Z = ∅ are the core's `JdeModel` ('I' or 'II') and
+// `EmptyRule` ('optimal', 'map', 'declare', 'reject'), under the contract's names.
+#[wasm_bindgen(typescript_custom_section)]
+const MODEL_TYPES: &str = r#"
+/**
+ * The measurement model of `jdeBound` and `jdeMonteCarlo`: the core's `JdeModel`.
+ */
+export type MeasurementModel = JdeModel;
+/**
+ * The rule of `jdeMonteCarlo` on Z = ∅: the core's `EmptyRule`.
+ */
+export type EmptyRuleShape = EmptyRule;
+"#;
 
 /// The prior f of `jdeBound`: a 1D density (`{ gaussian }`, `{ uniform }`, `{ mixture }`,
 /// `{ table }`, as [`DensityShape`]) or, for a state in R^l, `{ multivariateGaussian: { mean,
@@ -467,7 +468,8 @@ impl PriorShape {
 #[serde(rename_all = "camelCase")]
 pub struct JdeBoundOptions {
     /// The measurement model: `'I'` (false alarms) or `'II'` (Poisson clutter).
-    pub model: MeasurementModel,
+    #[tsify(type = "MeasurementModel")]
+    pub model: bounds::JdeModel,
     /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
     /// The prior density f of the state: a 1D density, or `{ multivariateGaussian: { mean,
@@ -704,10 +706,7 @@ pub fn jde_bound(
         None => None,
     };
     let options = bounds::JdeOptions {
-        model: match o.model {
-            MeasurementModel::One => bounds::JdeModel::I,
-            MeasurementModel::Two => bounds::JdeModel::II,
-        },
+        model: o.model,
         existence: o.existence,
         prior,
         observation,
@@ -750,11 +749,7 @@ pub fn jde_bound(
 fn jde_error(e: fisst::Error, prior: &bounds::JdePrior) -> JsValue {
     match &e {
         fisst::Error::Unsupported { what, reason } if *reason == bounds::WRONG_MODEL => {
-            crate::boundary::type_error(if what == "clutter" {
-                "options.clutter is for model 'II' (use falseAlarm with model 'I')"
-            } else {
-                "options.falseAlarm is for model 'I' (use clutter with model 'II')"
-            })
+            wrong_model(what == "clutter")
         }
         fisst::Error::DimensionMismatch {
             what,
@@ -770,6 +765,15 @@ fn jde_error(e: fisst::Error, prior: &bounds::JdePrior) -> JsValue {
         }),
         _ => crate::boundary::core_error_rendered(e, "options"),
     }
+}
+
+/// The `TypeError` of `clutter` given with model I (`clutter`) or `falseAlarm` with model II.
+fn wrong_model(clutter: bool) -> JsValue {
+    crate::boundary::type_error(if clutter {
+        "options.clutter is for model 'II' (use falseAlarm with model 'I')"
+    } else {
+        "options.falseAlarm is for model 'I' (use clutter with model 'II')"
+    })
 }
 
 fn phase_name(p: bounds::Phase) -> &'static str {
@@ -863,21 +867,6 @@ pub fn jde_example2_regularity() -> JsResult<JsValue> {
     write(&Renamed::new(&bounds::example2_regularity()))
 }
 
-/// The rule of `jdeMonteCarlo` on Z = ∅: `'optimal'` (the cheaper of HPE and LPE (46)),
-/// `'map'` (MAP detection, Section IV-A), `'declare'` (always HPE) or `'reject'` (always LPE).
-#[derive(Deserialize, Tsify, Clone, Copy)]
-#[serde(rename_all = "kebab-case")]
-pub enum EmptyRuleShape {
-    /// `'optimal'`: the cheaper of HPE (declare {x*}) and LPE (declare ∅).
-    Optimal,
-    /// `'map'`: MAP detection (Section IV-A).
-    Map,
-    /// `'declare'`: always declare {x*} (HPE).
-    Declare,
-    /// `'reject'`: always declare ∅ (LPE).
-    Reject,
-}
-
 /// The state of `jdeMonteCarlo`: `{ gaussian: { mean, variance } }`, `{ multivariateGaussian:
 /// { mean, cov } }` (a linear-Gaussian `observation`), or `'example2'` (Example 2 (32): f and
 /// g fixed, `observation.detectionProbability` a constant P_o).
@@ -898,7 +887,8 @@ pub enum MonteCarloPriorShape {
 #[serde(rename_all = "camelCase")]
 pub struct JdeMonteCarloOptions {
     /// The measurement model, `'I'` or `'II'`.
-    pub model: MeasurementModel,
+    #[tsify(type = "MeasurementModel")]
+    pub model: bounds::JdeModel,
     /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
     /// The prior density f of the target's state.
@@ -918,8 +908,8 @@ pub struct JdeMonteCarloOptions {
     /// The squared error (cost) e_1² ≥ 0 of a missed target: the square itself.
     pub miss_error: f64,
     /// The rule on Z = ∅ (default `'optimal'`).
-    #[tsify(optional)]
-    pub empty_rule: Option<EmptyRuleShape>,
+    #[tsify(optional, type = "EmptyRuleShape")]
+    pub empty_rule: Option<bounds::EmptyRule>,
     /// The number k of scans of one target, 1 to 5,000 (default 1; k > 1 needs a Gaussian prior and
     /// no false alarms or clutter): `result.scans[k − 1]` is the risk after scan k.
     #[tsify(optional)]
@@ -958,24 +948,16 @@ pub fn jde_monte_carlo(
     let defaults = bounds::JdeMonteCarloOptions::default();
     let (flat, false_density, clutter_density);
     let measurement = match (o.model, o.false_alarm, o.clutter) {
-        (MeasurementModel::One, _, Some(_)) => {
-            return Err(crate::boundary::type_error(
-                "options.clutter is for model 'II' (use falseAlarm with model 'I')",
-            ));
-        }
-        (MeasurementModel::Two, Some(_), _) => {
-            return Err(crate::boundary::type_error(
-                "options.falseAlarm is for model 'I' (use clutter with model 'II')",
-            ));
-        }
-        (MeasurementModel::One, Some(f), None) => {
+        (bounds::JdeModel::I, _, Some(_)) => return Err(wrong_model(true)),
+        (bounds::JdeModel::II, Some(_), _) => return Err(wrong_model(false)),
+        (bounds::JdeModel::I, Some(f), None) => {
             false_density = f.density.into_core("options.falseAlarm.density")?;
             bounds::VectorMeasurement::I {
                 false_alarm_probability: f.probability,
                 false_alarm_density: &false_density,
             }
         }
-        (MeasurementModel::Two, None, Some(c)) => {
+        (bounds::JdeModel::II, None, Some(c)) => {
             clutter_density = c.density.into_core("options.clutter.density")?;
             bounds::VectorMeasurement::II {
                 clutter_rate: c.rate,
@@ -1030,12 +1012,6 @@ pub fn jde_monte_carlo(
         }
     };
     let seed = crate::boundary::seed_or_entropy(o.seed)?;
-    let empty_rule = match o.empty_rule.unwrap_or(EmptyRuleShape::Optimal) {
-        EmptyRuleShape::Optimal => bounds::EmptyRule::Optimal,
-        EmptyRuleShape::Map => bounds::EmptyRule::Map,
-        EmptyRuleShape::Declare => bounds::EmptyRule::Declare,
-        EmptyRuleShape::Reject => bounds::EmptyRule::Reject,
-    };
     let out = bounds::jde_monte_carlo(
         &bounds::MonteCarloModel {
             existence: o.existence,
@@ -1047,7 +1023,7 @@ pub fn jde_monte_carlo(
         &bounds::JdeMonteCarloOptions {
             samples: o.samples.unwrap_or(defaults.samples),
             seed,
-            empty_rule,
+            empty_rule: o.empty_rule.unwrap_or(defaults.empty_rule),
             scans: o.scans.unwrap_or(defaults.scans),
         },
     )

@@ -32,8 +32,14 @@ use crate::math::rng::{SeededRng, poisson, seeded, uniform};
 /// The most work one call does: samples × scans × (1 + ⌈q or λ⌉) draws of a scene.
 pub const MAX_MONTE_CARLO_WORK: usize = 10_000_000;
 
-/// What the detector-estimator does on Z = ∅ (after every scan so far was empty).
+/// What the detector-estimator does on Z = ∅ (after every scan so far was empty). Serialised
+/// in lower case: `"optimal"`, `"map"`, `"declare"`, `"reject"`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "lowercase")
+)]
 pub enum EmptyRule {
     /// The cheaper of HPE and LPE (46): declare {x*} iff
     /// (1 − r)ε e0² + r(1 − P_o)^k σ² ≤ r(1 − P_o)^k e1² (ε = P(Z = ∅ | no target)).
