@@ -467,8 +467,10 @@ fn system_of(
         SimulatedSystem::Example2 {
             detection_probability: p,
         } => {
-            let detection = crate::bounds::Detection::constant(p)
-                .map_err(|e| e.within("detection_probability"))?;
+            // named as the observation's P_o, as in every binding's options (it was
+            // `detection_probability.detection_probability`)
+            let detection =
+                crate::bounds::Detection::constant(p).map_err(|e| e.within("observation"))?;
             // x* and σe² of f (P_o constant, so f_d' = f): smooth, one G10K21 panel
             let f = |x: f64| Example2Prior.pdf(x);
             let m = Rule::G10K21.apply_vec(&mut |x| [f(x), x * f(x), x * x * f(x)], 0.0, 1.0);
@@ -1102,6 +1104,16 @@ mod tests {
                 o
             ),
             "miss_error"
+        );
+        let example2 = |p| MonteCarloModel {
+            system: SimulatedSystem::Example2 {
+                detection_probability: p,
+            },
+            ..m
+        };
+        assert_eq!(
+            field(&example2(1.5), o),
+            "observation.detection_probability"
         );
         let clutter = MonteCarloModel {
             measurement: VectorMeasurement::II {
