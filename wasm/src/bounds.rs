@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{JsResult, OrThrow, check_range, read, write};
+use crate::boundary::{JsResult, OrThrow, read, write};
 use crate::names::Renamed;
 use crate::types::{Covariance, Gaussian, Numbers};
 use fisst::bounds;
@@ -240,9 +240,6 @@ type GainShape = ScalarOr<Vec<f64>>;
 /// The offset b, or one number per measurement coordinate.
 type OffsetShape = ScalarOr<f64>;
 
-/// At most this many state coordinates l, and this many measurement coordinates m.
-pub use bounds::MAX_DIMS;
-
 /// The observation: P_o(x) and g(z|x) = N(z; gain·x + offset, noiseVariance) for a 1D prior,
 /// or g(z|x) = N(z; H x + b, R) with H = `gain` (m rows of l numbers) and R = `noiseCov`
 /// (or, for m = 1, `noiseVariance`) for a `multivariateGaussian` prior.
@@ -327,11 +324,7 @@ impl ObservationShape {
             ScalarOr::Array(rows) => rows,
         };
         let m = rows.len();
-        if m == 0 || m > MAX_DIMS {
-            return Err(crate::boundary::range_error(format!(
-                "{path}.gain must have 1 to {MAX_DIMS} rows, got {m}"
-            )));
-        }
+        bounds::check_measurement_dims(m).or_throw_rendered(path)?;
         for (i, r) in rows.iter().enumerate() {
             if r.len() != dims {
                 return Err(crate::boundary::range_error(format!(
@@ -452,7 +445,7 @@ impl PriorShape {
             PriorShape::Table(t) => scalar(DensityShape::Table(t)),
             PriorShape::MultivariateGaussian(g) => {
                 let p = format!("{path}.multivariateGaussian");
-                let l = check_range(&format!("{p}.mean.length"), g.mean.0.len(), 1, MAX_DIMS)?;
+                let l = bounds::check_state_dims(g.mean.0.len()).or_throw_rendered(&p)?;
                 let cov = g.cov.row_major(l, &format!("{p}.cov"))?;
                 bounds::GaussianPrior::new(&g.mean.0, &cov)
                     .or_throw_rendered(&p)

@@ -81,8 +81,8 @@ pub use jde::{
 mod vector;
 pub use vector::{
     ComponentBound, GaussianPrior, LinearGaussianSensor, VectorBound, VectorMeasurement,
-    VectorModel, component_bound, component_bounds_no_clutter, component_corollary1,
-    gaussian_information_matrix, vector_bound,
+    VectorModel, check_measurement_dims, check_state_dims, component_bound,
+    component_bounds_no_clutter, component_corollary1, gaussian_information_matrix, vector_bound,
 };
 mod simulate;
 pub use simulate::{
