@@ -546,23 +546,50 @@ impl<'de> Deserialize<'de> for Region {
     }
 }
 
-/// One component of a [`Density1::Mixture`] as read and written: `{weight, mean, variance}`.
+/// One component of a Gaussian mixture on the line: `{weight, mean, variance}`.
 #[derive(Serialize, Deserialize)]
-struct MixtureComponentRepr {
+struct Density1Component {
+    /// The component's weight, > 0 (the weights are normalised).
     weight: f64,
+    /// The component's mean, finite.
     mean: f64,
+    /// The component's variance, > 0.
     variance: f64,
 }
 
-/// [`Density1`] as the arguments of its constructors, keyed by the lower-case kind (the
-/// shape every binding shows: `{"gaussian": {mean, variance}}`).
+// [`Density1`] as the arguments of its constructors; the JavaScript binding's TypeScript
+// generator declares `Density1` by this form (its `rename`).
+/// A density on the line, keyed by its kind: a Gaussian, a uniform density, a Gaussian
+/// mixture (1 to 1,000 components) or a table (linear interpolation between knots, 0
+/// outside, normalised).
 #[derive(Serialize, Deserialize)]
 #[serde(rename = "Density1", rename_all = "camelCase")]
 enum Density1Repr {
-    Gaussian { mean: f64, variance: f64 },
-    Uniform { low: f64, high: f64 },
-    Mixture(Vec<MixtureComponentRepr>),
-    Table { x: Vec<f64>, density: Vec<f64> },
+    /// `{ gaussian: { mean, variance } }`: N(mean, variance).
+    Gaussian {
+        /// The mean, a finite number.
+        mean: f64,
+        /// The variance (> 0, a normal float: at least 2.2250738585072014e-308).
+        variance: f64,
+    },
+    /// `{ uniform: { low, high } }`: U[low, high].
+    Uniform {
+        /// The lower end of the support, finite.
+        low: f64,
+        /// The upper end of the support, finite and > low.
+        high: f64,
+    },
+    /// `{ mixture: [{ weight, mean, variance }, …] }`: a Gaussian mixture.
+    Mixture(Vec<Density1Component>),
+    /// `{ table: { x, density } }`: a tabulated density.
+    Table {
+        /// The knots x, strictly increasing (2 to 10,000).
+        #[serde(with = "crate::serde_shapes::numbers")]
+        x: Vec<f64>,
+        /// Density ≥ 0 at each knot (any positive scale: it is normalised).
+        #[serde(with = "crate::serde_shapes::numbers")]
+        density: Vec<f64>,
+    },
 }
 
 impl Serialize for Density1 {
@@ -578,7 +605,7 @@ impl Serialize for Density1 {
             },
             Density1::Mixture(c) => Density1Repr::Mixture(
                 c.iter()
-                    .map(|&(weight, mean, variance)| MixtureComponentRepr {
+                    .map(|&(weight, mean, variance)| Density1Component {
                         weight,
                         mean,
                         variance,

@@ -96,75 +96,135 @@ pub fn jde_sequential_bound(
     write(&Renamed::new(&o.bound().or_throw_rendered("options")?))
 }
 
-/// A 1D Gaussian density N(mean, variance).
-#[derive(Deserialize, Tsify)]
-pub struct GaussianShape {
-    /// The mean, a finite number.
-    pub mean: f64,
-    /// The variance (> 0, a normal float: at least 2.2250738585072014e-308).
-    pub variance: f64,
+// A 1D density is the core's `bounds::Density1`, read and checked by its own deserializer
+// (`{ gaussian }`, `{ uniform }`, `{ mixture }`, `{ table }`; errors name
+// `….gaussian.variance`, `….table.x[3]`), under the contract's names.
+#[wasm_bindgen(typescript_custom_section)]
+const DENSITY_TYPES: &str = r#"
+/**
+ * A 1D density: `{ gaussian: { mean, variance } }`, `{ uniform: { low, high } }`,
+ * `{ mixture: [{ weight, mean, variance }, …] }` (1 to 1,000 components) or
+ * `{ table: { x, density } }`: the core's `Density1`.
+ */
+export type DensityShape = Density1;
+"#;
+
+/// The 1D densities' kinds, read by [`bounds::Density1`]'s own deserializer.
+const DENSITY_KINDS: [&str; 4] = ["gaussian", "uniform", "mixture", "table"];
+
+/// A prior read as `{ <kind>: … }` (or a kind's bare name): the 1D densities' kinds go to
+/// [`bounds::Density1`]'s deserializer, the others to [`PriorKinds::other`].
+trait PriorKinds: Sized {
+    /// Every kind, in the order the unknown-kind error lists them.
+    const KINDS: &'static [&'static str];
+    /// The value of a 1D density.
+    fn density(d: bounds::Density1) -> Self;
+    /// The value of any other kind.
+    fn other<'de, V: serde::de::VariantAccess<'de>>(kind: &str, v: V) -> Result<Self, V::Error>;
 }
 
-/// A 1D uniform density U[low, high].
-#[derive(Deserialize, Tsify)]
-pub struct UniformShape {
-    /// The lower end of the support, finite.
-    pub low: f64,
-    /// The upper end of the support, finite and > low.
-    pub high: f64,
-}
+struct PriorVisitor<T>(std::marker::PhantomData<T>);
 
-/// One component of a 1D Gaussian mixture.
-#[derive(Deserialize, Tsify)]
-pub struct MixtureShape {
-    /// The component's weight, > 0 (the weights are normalised).
-    pub weight: f64,
-    /// The component's mean, finite.
-    pub mean: f64,
-    /// The component's variance, > 0.
-    pub variance: f64,
-}
-
-/// A tabulated density: linear interpolation between knots, 0 outside, normalised.
-#[derive(Deserialize, Tsify)]
-pub struct TableShape {
-    /// The knots x, strictly increasing (2 to 10,000).
-    pub x: Numbers,
-    /// Density ≥ 0 at each knot (any positive scale: it is normalised).
-    pub density: Numbers,
-}
-
-/// A 1D density: `{ gaussian: { mean, variance } }`, `{ uniform: { low, high } }`,
-/// `{ mixture: [{ weight, mean, variance }, …] }` (1 to 1,000 components) or
-/// `{ table: { x, density } }`.
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub enum DensityShape {
-    /// `{ gaussian: { mean, variance } }`: a Gaussian.
-    Gaussian(GaussianShape),
-    /// `{ uniform: { low, high } }`: a uniform density.
-    Uniform(UniformShape),
-    /// `{ mixture: [...] }`: a Gaussian mixture.
-    Mixture(Vec<MixtureShape>),
-    /// `{ table: { x, density } }`: a tabulated density.
-    Table(TableShape),
-}
-
-impl DensityShape {
-    fn into_core(self, path: &str) -> JsResult<bounds::Density1> {
-        match self {
-            DensityShape::Gaussian(g) => bounds::Density1::gaussian(g.mean, g.variance)
-                .or_throw_rendered(&format!("{path}.gaussian")),
-            DensityShape::Uniform(u) => bounds::Density1::uniform(u.low, u.high)
-                .or_throw_rendered(&format!("{path}.uniform")),
-            DensityShape::Mixture(c) => {
-                let c: Vec<(f64, f64, f64)> =
-                    c.iter().map(|c| (c.weight, c.mean, c.variance)).collect();
-                bounds::Density1::mixture(&c).or_throw_rendered(&format!("{path}.mixture"))
-            }
-            DensityShape::Table(t) => bounds::Density1::table(&t.x.0, &t.density.0)
-                .or_throw_rendered(&format!("{path}.table")),
+impl<'de, T: PriorKinds> serde::de::Visitor<'de> for PriorVisitor<T> {
+    type Value = T;
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a prior")
+    }
+    fn visit_enum<A: serde::de::EnumAccess<'de>>(self, a: A) -> Result<T, A::Error> {
+        let (kind, variant): (String, _) = a.variant()?;
+        if DENSITY_KINDS.contains(&kind.as_str()) {
+            bounds::Density1::deserialize(OneKind { kind, variant }).map(T::density)
+        } else {
+            T::other(&kind, variant)
         }
+    }
+}
+
+fn read_prior<'de, T: PriorKinds, D: serde::Deserializer<'de>>(d: D) -> Result<T, D::Error> {
+    d.deserialize_enum("Prior", T::KINDS, PriorVisitor(std::marker::PhantomData))
+}
+
+/// A kind already read and its value, handed on as an enum of that one variant.
+struct OneKind<A> {
+    kind: String,
+    variant: A,
+}
+
+impl<'de, A: serde::de::VariantAccess<'de>> serde::Deserializer<'de> for OneKind<A> {
+    type Error = A::Error;
+    fn deserialize_any<W: serde::de::Visitor<'de>>(self, w: W) -> Result<W::Value, A::Error> {
+        w.visit_enum(self)
+    }
+    serde::forward_to_deserialize_any! {
+        bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes byte_buf
+        option unit unit_struct newtype_struct seq tuple tuple_struct map struct enum
+        identifier ignored_any
+    }
+}
+
+impl<'de, A: serde::de::VariantAccess<'de>> serde::de::EnumAccess<'de> for OneKind<A> {
+    type Error = A::Error;
+    type Variant = AsNewtype<A>;
+    fn variant_seed<S: serde::de::DeserializeSeed<'de>>(
+        self,
+        seed: S,
+    ) -> Result<(S::Value, AsNewtype<A>), A::Error> {
+        use serde::de::IntoDeserializer;
+        let kind = seed.deserialize(self.kind.as_str().into_deserializer())?;
+        Ok((kind, AsNewtype(self.variant)))
+    }
+}
+
+/// A kind's value read as one value (`{ gaussian: … }`), whatever its Rust form: the
+/// contract's words for a bare name given for a kind that takes a value.
+struct AsNewtype<A>(A);
+
+impl<'de, A: serde::de::VariantAccess<'de>> serde::de::VariantAccess<'de> for AsNewtype<A> {
+    type Error = A::Error;
+    fn unit_variant(self) -> Result<(), A::Error> {
+        self.0.unit_variant()
+    }
+    fn newtype_variant_seed<T: serde::de::DeserializeSeed<'de>>(
+        self,
+        seed: T,
+    ) -> Result<T::Value, A::Error> {
+        self.0.newtype_variant_seed(seed)
+    }
+    fn tuple_variant<V: serde::de::Visitor<'de>>(
+        self,
+        len: usize,
+        visitor: V,
+    ) -> Result<V::Value, A::Error> {
+        self.0.tuple_variant(len, visitor)
+    }
+    fn struct_variant<V: serde::de::Visitor<'de>>(
+        self,
+        fields: &'static [&'static str],
+        visitor: V,
+    ) -> Result<V::Value, A::Error> {
+        self.0.newtype_variant_seed(StructSeed(fields, visitor))
+    }
+}
+
+/// Reads a struct with `fields` by `visitor`.
+struct StructSeed<V>(&'static [&'static str], V);
+
+impl<'de, V: serde::de::Visitor<'de>> serde::de::DeserializeSeed<'de> for StructSeed<V> {
+    type Value = V::Value;
+    fn deserialize<D: serde::Deserializer<'de>>(self, d: D) -> Result<V::Value, D::Error> {
+        d.deserialize_struct("", self.0, self.1)
+    }
+}
+
+/// A 1D density field (`falseAlarm.density`, `clutter.density`), read by the core's
+/// deserializer with its path kept.
+impl PriorKinds for bounds::Density1 {
+    const KINDS: &'static [&'static str] = &DENSITY_KINDS;
+    fn density(d: bounds::Density1) -> Self {
+        d
+    }
+    fn other<'de, V: serde::de::VariantAccess<'de>>(_: &str, _: V) -> Result<Self, V::Error> {
+        unreachable!("every kind of a density is a density")
     }
 }
 
@@ -388,7 +448,9 @@ pub struct FalseAlarmShape {
     /// The false alarm probability q ∈ [0, 1]: the probability of one false observation.
     pub probability: f64,
     /// The density ψ of a false observation on the measurement line.
-    pub density: DensityShape,
+    #[tsify(type = "DensityShape")]
+    #[serde(deserialize_with = "read_prior")]
+    pub density: bounds::Density1,
 }
 
 /// Model II's Poisson clutter: rate λ and the density of its points (v = λ · density).
@@ -397,7 +459,9 @@ pub struct ClutterShape {
     /// The clutter rate λ ≥ 0: the mean number of clutter points (at most 1000).
     pub rate: f64,
     /// The density v/λ of one clutter point on the measurement line (v the clutter intensity).
-    pub density: DensityShape,
+    #[tsify(type = "DensityShape")]
+    #[serde(deserialize_with = "read_prior")]
+    pub density: bounds::Density1,
 }
 
 // The measurement model and the rule on Z = ∅ are the core's `JdeModel` ('I' or 'II') and
@@ -415,34 +479,46 @@ export type EmptyRuleShape = EmptyRule;
 "#;
 
 /// The prior f of `jdeBound`: a 1D density (`{ gaussian }`, `{ uniform }`, `{ mixture }`,
-/// `{ table }`, as [`DensityShape`]) or, for a state in R^l, `{ multivariateGaussian: { mean,
-/// cov } }` (the vector bounds (63)–(72) of Section V).
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
+/// `{ table }`, the core's `Density1`) or, for a state in R^l, `{ multivariateGaussian: {
+/// mean, cov } }` (the vector bounds (63)–(72) of Section V): `mean` l finite numbers (1 ≤ l ≤
+/// 64), `cov` l rows of l numbers (or l·l row-major numbers; a bare number when l = 1),
+/// symmetric positive definite. The observation then has a constant P_o, gain rows H and
+/// `noiseCov`.
+#[derive(Tsify)]
+#[tsify(type = "DensityShape | { multivariateGaussian: Gaussian }")]
 pub enum PriorShape {
-    /// `{ gaussian: { mean, variance } }`: a Gaussian N(mean, variance).
-    Gaussian(GaussianShape),
-    /// `{ uniform: { low, high } }`: a uniform density.
-    Uniform(UniformShape),
-    /// `{ mixture: [...] }`: a Gaussian mixture (1 to 1,000 components).
-    Mixture(Vec<MixtureShape>),
-    /// `{ table: { x, density } }`: a tabulated density.
-    Table(TableShape),
-    /// `{ multivariateGaussian: { mean, cov } }`: N(mean, cov) in R^l: `mean` l finite numbers (1 ≤
-    /// l ≤ 64), `cov` l rows of l numbers (or l·l row-major numbers; a bare number when l = 1),
-    /// symmetric positive definite. The observation then has a constant P_o, gain rows H and
-    /// `noiseCov`.
+    /// A 1D density.
+    Density(bounds::Density1),
+    /// `{ multivariateGaussian: { mean, cov } }`: N(mean, cov) in R^l.
     MultivariateGaussian(Gaussian),
+}
+
+impl PriorKinds for PriorShape {
+    const KINDS: &'static [&'static str] = &[
+        "gaussian",
+        "uniform",
+        "mixture",
+        "table",
+        "multivariateGaussian",
+    ];
+    fn density(d: bounds::Density1) -> Self {
+        PriorShape::Density(d)
+    }
+    fn other<'de, V: serde::de::VariantAccess<'de>>(_: &str, v: V) -> Result<Self, V::Error> {
+        v.newtype_variant().map(PriorShape::MultivariateGaussian)
+    }
+}
+
+impl<'de> Deserialize<'de> for PriorShape {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        read_prior(d)
+    }
 }
 
 impl PriorShape {
     fn into_core(self, path: &str) -> JsResult<bounds::JdePrior> {
-        let scalar = |d: DensityShape| d.into_core(path).map(bounds::JdePrior::Scalar);
         match self {
-            PriorShape::Gaussian(g) => scalar(DensityShape::Gaussian(g)),
-            PriorShape::Uniform(u) => scalar(DensityShape::Uniform(u)),
-            PriorShape::Mixture(m) => scalar(DensityShape::Mixture(m)),
-            PriorShape::Table(t) => scalar(DensityShape::Table(t)),
+            PriorShape::Density(d) => Ok(bounds::JdePrior::Scalar(d)),
             PriorShape::MultivariateGaussian(g) => {
                 let p = format!("{path}.multivariateGaussian");
                 let l = bounds::check_state_dims(g.mean.0.len()).or_throw_rendered(&p)?;
@@ -687,14 +763,14 @@ pub fn jde_bound(
     let false_alarm = match o.false_alarm {
         Some(f) => Some(bounds::FalseAlarm {
             probability: f.probability,
-            density: f.density.into_core("options.falseAlarm.density")?,
+            density: f.density,
         }),
         None => None,
     };
     let clutter = match o.clutter {
         Some(c) => Some(bounds::Clutter {
             rate: c.rate,
-            density: c.density.into_core("options.clutter.density")?,
+            density: c.density,
         }),
         None => None,
     };
@@ -862,16 +938,40 @@ pub fn jde_example2_regularity() -> JsResult<JsValue> {
 
 /// The state of `jdeMonteCarlo`: `{ gaussian: { mean, variance } }`, `{ multivariateGaussian:
 /// { mean, cov } }` (a linear-Gaussian `observation`), or `'example2'` (Example 2 (32): f and
-/// g fixed, `observation.detectionProbability` a constant P_o).
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
+/// g fixed, `observation.detectionProbability` a constant P_o; f(x) = 2x(eˣ − 1) on [0, 1]
+/// with g(z|x) = x e^{xz}/(eˣ − 1)).
+#[derive(Tsify)]
+#[tsify(
+    type = "Extract<DensityShape, { gaussian: unknown }> | { multivariateGaussian: Gaussian } | \"example2\""
+)]
 pub enum MonteCarloPriorShape {
     /// `{ gaussian: { mean, variance } }`: a 1D Gaussian N(mean, variance).
-    Gaussian(GaussianShape),
+    Gaussian(bounds::Density1),
     /// `{ multivariateGaussian: { mean, cov } }`: a Gaussian N(mean, cov) in R^l.
     MultivariateGaussian(Gaussian),
-    /// `'example2'`: f(x) = 2x(eˣ − 1) on [0, 1] with g(z|x) = x e^{xz}/(eˣ − 1).
+    /// `'example2'`: Example 2's f and g.
     Example2,
+}
+
+impl PriorKinds for MonteCarloPriorShape {
+    const KINDS: &'static [&'static str] = &["gaussian", "multivariateGaussian", "example2"];
+    fn density(d: bounds::Density1) -> Self {
+        MonteCarloPriorShape::Gaussian(d)
+    }
+    fn other<'de, V: serde::de::VariantAccess<'de>>(kind: &str, v: V) -> Result<Self, V::Error> {
+        if kind == "example2" {
+            v.unit_variant().map(|()| MonteCarloPriorShape::Example2)
+        } else {
+            v.newtype_variant()
+                .map(MonteCarloPriorShape::MultivariateGaussian)
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for MonteCarloPriorShape {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        read_prior(d)
+    }
 }
 
 /// Options of `jdeMonteCarlo`: the problem of `jdeBound` (Gaussian priors and Example 2), the
@@ -944,14 +1044,14 @@ pub fn jde_monte_carlo(
         (bounds::JdeModel::I, _, Some(_)) => return Err(wrong_model(true)),
         (bounds::JdeModel::II, Some(_), _) => return Err(wrong_model(false)),
         (bounds::JdeModel::I, Some(f), None) => {
-            false_density = f.density.into_core("options.falseAlarm.density")?;
+            false_density = f.density;
             bounds::VectorMeasurement::I {
                 false_alarm_probability: f.probability,
                 false_alarm_density: &false_density,
             }
         }
         (bounds::JdeModel::II, None, Some(c)) => {
-            clutter_density = c.density.into_core("options.clutter.density")?;
+            clutter_density = c.density;
             bounds::VectorMeasurement::II {
                 clutter_rate: c.rate,
                 clutter_density: &clutter_density,
@@ -980,11 +1080,10 @@ pub fn jde_monte_carlo(
         },
         shape => {
             prior = match shape {
-                MonteCarloPriorShape::Gaussian(g) => {
-                    let (mean, variance) = (g.mean, g.variance);
-                    PriorShape::Gaussian(g).into_core(path)?;
+                MonteCarloPriorShape::Gaussian(bounds::Density1::Gaussian { mean, variance }) => {
                     bounds::GaussianPrior::new(&[mean], &[variance]).or_throw_rendered(path)?
                 }
+                MonteCarloPriorShape::Gaussian(_) => unreachable!("only 'gaussian' is read"),
                 MonteCarloPriorShape::MultivariateGaussian(g) => {
                     match PriorShape::MultivariateGaussian(g).into_core(path)? {
                         bounds::JdePrior::Vector(v) => v,
