@@ -109,125 +109,6 @@ const DENSITY_TYPES: &str = r#"
 export type DensityShape = Density1;
 "#;
 
-/// The 1D densities' kinds, read by [`bounds::Density1`]'s own deserializer.
-const DENSITY_KINDS: [&str; 4] = ["gaussian", "uniform", "mixture", "table"];
-
-/// A prior read as `{ <kind>: … }` (or a kind's bare name): the 1D densities' kinds go to
-/// [`bounds::Density1`]'s deserializer, the others to [`PriorKinds::other`].
-trait PriorKinds: Sized {
-    /// Every kind, in the order the unknown-kind error lists them.
-    const KINDS: &'static [&'static str];
-    /// The value of a 1D density.
-    fn density(d: bounds::Density1) -> Self;
-    /// The value of any other kind.
-    fn other<'de, V: serde::de::VariantAccess<'de>>(kind: &str, v: V) -> Result<Self, V::Error>;
-}
-
-struct PriorVisitor<T>(std::marker::PhantomData<T>);
-
-impl<'de, T: PriorKinds> serde::de::Visitor<'de> for PriorVisitor<T> {
-    type Value = T;
-    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("a prior")
-    }
-    fn visit_enum<A: serde::de::EnumAccess<'de>>(self, a: A) -> Result<T, A::Error> {
-        let (kind, variant): (String, _) = a.variant()?;
-        if DENSITY_KINDS.contains(&kind.as_str()) {
-            bounds::Density1::deserialize(OneKind { kind, variant }).map(T::density)
-        } else {
-            T::other(&kind, variant)
-        }
-    }
-}
-
-fn read_prior<'de, T: PriorKinds, D: serde::Deserializer<'de>>(d: D) -> Result<T, D::Error> {
-    d.deserialize_enum("Prior", T::KINDS, PriorVisitor(std::marker::PhantomData))
-}
-
-/// A kind already read and its value, handed on as an enum of that one variant.
-struct OneKind<A> {
-    kind: String,
-    variant: A,
-}
-
-impl<'de, A: serde::de::VariantAccess<'de>> serde::Deserializer<'de> for OneKind<A> {
-    type Error = A::Error;
-    fn deserialize_any<W: serde::de::Visitor<'de>>(self, w: W) -> Result<W::Value, A::Error> {
-        w.visit_enum(self)
-    }
-    serde::forward_to_deserialize_any! {
-        bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes byte_buf
-        option unit unit_struct newtype_struct seq tuple tuple_struct map struct enum
-        identifier ignored_any
-    }
-}
-
-impl<'de, A: serde::de::VariantAccess<'de>> serde::de::EnumAccess<'de> for OneKind<A> {
-    type Error = A::Error;
-    type Variant = AsNewtype<A>;
-    fn variant_seed<S: serde::de::DeserializeSeed<'de>>(
-        self,
-        seed: S,
-    ) -> Result<(S::Value, AsNewtype<A>), A::Error> {
-        use serde::de::IntoDeserializer;
-        let kind = seed.deserialize(self.kind.as_str().into_deserializer())?;
-        Ok((kind, AsNewtype(self.variant)))
-    }
-}
-
-/// A kind's value read as one value (`{ gaussian: … }`), whatever its Rust form: the
-/// contract's words for a bare name given for a kind that takes a value.
-struct AsNewtype<A>(A);
-
-impl<'de, A: serde::de::VariantAccess<'de>> serde::de::VariantAccess<'de> for AsNewtype<A> {
-    type Error = A::Error;
-    fn unit_variant(self) -> Result<(), A::Error> {
-        self.0.unit_variant()
-    }
-    fn newtype_variant_seed<T: serde::de::DeserializeSeed<'de>>(
-        self,
-        seed: T,
-    ) -> Result<T::Value, A::Error> {
-        self.0.newtype_variant_seed(seed)
-    }
-    fn tuple_variant<V: serde::de::Visitor<'de>>(
-        self,
-        len: usize,
-        visitor: V,
-    ) -> Result<V::Value, A::Error> {
-        self.0.tuple_variant(len, visitor)
-    }
-    fn struct_variant<V: serde::de::Visitor<'de>>(
-        self,
-        fields: &'static [&'static str],
-        visitor: V,
-    ) -> Result<V::Value, A::Error> {
-        self.0.newtype_variant_seed(StructSeed(fields, visitor))
-    }
-}
-
-/// Reads a struct with `fields` by `visitor`.
-struct StructSeed<V>(&'static [&'static str], V);
-
-impl<'de, V: serde::de::Visitor<'de>> serde::de::DeserializeSeed<'de> for StructSeed<V> {
-    type Value = V::Value;
-    fn deserialize<D: serde::Deserializer<'de>>(self, d: D) -> Result<V::Value, D::Error> {
-        d.deserialize_struct("", self.0, self.1)
-    }
-}
-
-/// A 1D density field (`falseAlarm.density`, `clutter.density`), read by the core's
-/// deserializer with its path kept.
-impl PriorKinds for bounds::Density1 {
-    const KINDS: &'static [&'static str] = &DENSITY_KINDS;
-    fn density(d: bounds::Density1) -> Self {
-        d
-    }
-    fn other<'de, V: serde::de::VariantAccess<'de>>(_: &str, _: V) -> Result<Self, V::Error> {
-        unreachable!("every kind of a density is a density")
-    }
-}
-
 /// A tabulated detection probability P_o(x): linear interpolation, held constant beyond the end
 /// knots.
 #[derive(Deserialize, Tsify)]
@@ -449,7 +330,6 @@ pub struct FalseAlarmShape {
     pub probability: f64,
     /// The density ψ of a false observation on the measurement line.
     #[tsify(type = "DensityShape")]
-    #[serde(deserialize_with = "read_prior")]
     pub density: bounds::Density1,
 }
 
@@ -460,7 +340,6 @@ pub struct ClutterShape {
     pub rate: f64,
     /// The density v/λ of one clutter point on the measurement line (v the clutter intensity).
     #[tsify(type = "DensityShape")]
-    #[serde(deserialize_with = "read_prior")]
     pub density: bounds::Density1,
 }
 
@@ -493,7 +372,7 @@ pub enum PriorShape {
     MultivariateGaussian(Gaussian),
 }
 
-impl PriorKinds for PriorShape {
+impl bounds::DensityOr for PriorShape {
     const KINDS: &'static [&'static str] = &[
         "gaussian",
         "uniform",
@@ -511,7 +390,7 @@ impl PriorKinds for PriorShape {
 
 impl<'de> Deserialize<'de> for PriorShape {
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        read_prior(d)
+        bounds::deserialize_density_or(d)
     }
 }
 
@@ -953,7 +832,7 @@ pub enum MonteCarloPriorShape {
     Example2,
 }
 
-impl PriorKinds for MonteCarloPriorShape {
+impl bounds::DensityOr for MonteCarloPriorShape {
     const KINDS: &'static [&'static str] = &["gaussian", "multivariateGaussian", "example2"];
     fn density(d: bounds::Density1) -> Self {
         MonteCarloPriorShape::Gaussian(d)
@@ -970,7 +849,7 @@ impl PriorKinds for MonteCarloPriorShape {
 
 impl<'de> Deserialize<'de> for MonteCarloPriorShape {
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        read_prior(d)
+        bounds::deserialize_density_or(d)
     }
 }
 

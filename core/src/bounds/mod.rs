@@ -69,6 +69,8 @@ pub use model::{
 pub use theorem::{Cardinality, JdeBound, Method, ModelI, TheoremOptions, theorem1};
 pub use theorem2::{MAX_CLUTTER_RATE, ModelII, theorem2};
 mod example2;
+#[cfg(feature = "serde")]
+pub use crate::serde_valid::{DENSITY1_KINDS, DensityOr, deserialize_density_or};
 pub use example2::{
     Example2, Example2Observation, Example2Options, Example2Prior, Example2Regularity, UnitUniform,
     example2, example2_regularity,
