@@ -731,25 +731,16 @@ fn phase_name(p: bounds::Phase) -> &'static str {
     }
 }
 
+/// The summands of (17)/(23) in the contract's order and names.
 fn terms(t: &bounds::Terms) -> Vec<BoundTerm> {
-    vec![
-        BoundTerm {
-            name: "estimation",
-            value: t.estimation,
-        },
-        BoundTerm {
-            name: "undetected",
-            value: t.undetected,
-        },
-        BoundTerm {
-            name: "missed",
-            value: t.missed,
-        },
-        BoundTerm {
-            name: "falseTarget",
-            value: t.false_target,
-        },
+    [
+        ("estimation", t.estimation),
+        ("undetected", t.undetected),
+        ("missed", t.missed),
+        ("falseTarget", t.false_target),
     ]
+    .map(|(name, value)| BoundTerm { name, value })
+    .into()
 }
 
 fn result(b: &bounds::JdeBound, seed: Option<u64>) -> JdeBoundResult {
