@@ -164,13 +164,20 @@ pub fn collect(dir: &Path, out: &mut BTreeMap<String, Def>) {
     }
 }
 
+/// Registers the serde types of `items` by their Rust names. A type with a hand-written serde
+/// impl has no derive to read; when the impl goes through a derived form renamed to it
+/// (`#[serde(rename = "Density1")] enum Density1Repr`), the form is also registered under that
+/// name, which is how the type is written.
 pub fn walk(items: Vec<Item>, out: &mut BTreeMap<String, Def>) {
+    let mut forms = Vec::new();
     for it in items {
         match &it {
             Item::Struct(s) if serde_of(&s.attrs).derive => {
+                forms.extend(serde_of(&s.attrs).rename.map(|r| (r, it.clone())));
                 out.insert(s.ident.to_string(), Def { item: it.clone() });
             }
             Item::Enum(e) if serde_of(&e.attrs).derive => {
+                forms.extend(serde_of(&e.attrs).rename.map(|r| (r, it.clone())));
                 out.insert(e.ident.to_string(), Def { item: it.clone() });
             }
             // a plain alias (`pub type State = [f64; 2];`), written inline where it is used
@@ -185,6 +192,9 @@ pub fn walk(items: Vec<Item>, out: &mut BTreeMap<String, Def>) {
             }
             _ => {}
         }
+    }
+    for (name, item) in forms {
+        out.entry(name).or_insert(Def { item });
     }
 }
 

@@ -18,7 +18,7 @@
 //! | [`ParticleSet`] | `{points, weights}` | [`ParticleSet::new`] |
 //! | [`GmBernoulli`], [`Birth`] | `{existence, mixture}`, `{probability, mixture}` | their `new` |
 //! | [`Detection`] | `{probability, fov}` (`fov` optional) | [`Detection::new`] |
-//! | [`Density1`] | `{"gaussian": {mean, variance}}`, `{"uniform": {low, high}}`, `{"mixture": [{weight, mean, variance}, …]}`, `{"table": {x, density}}` (errors name `.gaussian.variance`, `.mixture[2].weight`, …) | [`Density1::gaussian`], … (a table's `cdf` is recomputed) |
+//! | [`Density1`] | `{"gaussian": {mean, variance}}`, `{"uniform": {low, high}}`, `{"mixture": [{weight, mean, variance}, …]}`, `{"table": {x, density}}` (errors name `.gaussian.variance`, `.mixture[2].weight`, …); [`DensityOr`] with [`deserialize_density_or`] reads a value of those kinds or others of its own (a prior: a density or a Gaussian state) | [`Density1::gaussian`], … (a table's `cdf` is recomputed) |
 //! | [`bounds::Detection`](BoundsDetection) | a number p (constant), `{"table": {x, probability}}` (errors name `.table.x[3]`, …) | [`BoundsDetection::constant`], [`BoundsDetection::table`] |
 //! | [`LinearGaussian`] | `{detection, gain, offset, noise_variance}` | [`LinearGaussian::new`] |
 //! | [`GaussianPrior`] | `{mean, cov}` (`cov` rows) | [`GaussianPrior::new`] |
@@ -546,23 +546,50 @@ impl<'de> Deserialize<'de> for Region {
     }
 }
 
-/// One component of a [`Density1::Mixture`] as read and written: `{weight, mean, variance}`.
+/// One component of a Gaussian mixture on the line: `{weight, mean, variance}`.
 #[derive(Serialize, Deserialize)]
-struct MixtureComponentRepr {
+struct Density1Component {
+    /// The component's weight, > 0 (the weights are normalised).
     weight: f64,
+    /// The component's mean, finite.
     mean: f64,
+    /// The component's variance, > 0.
     variance: f64,
 }
 
-/// [`Density1`] as the arguments of its constructors, keyed by the lower-case kind (the
-/// shape every binding shows: `{"gaussian": {mean, variance}}`).
+// [`Density1`] as the arguments of its constructors; the JavaScript binding's TypeScript
+// generator declares `Density1` by this form (its `rename`).
+/// A density on the line, keyed by its kind: a Gaussian, a uniform density, a Gaussian
+/// mixture (1 to 1,000 components) or a table (linear interpolation between knots, 0
+/// outside, normalised).
 #[derive(Serialize, Deserialize)]
 #[serde(rename = "Density1", rename_all = "camelCase")]
 enum Density1Repr {
-    Gaussian { mean: f64, variance: f64 },
-    Uniform { low: f64, high: f64 },
-    Mixture(Vec<MixtureComponentRepr>),
-    Table { x: Vec<f64>, density: Vec<f64> },
+    /// `{ gaussian: { mean, variance } }`: N(mean, variance).
+    Gaussian {
+        /// The mean, a finite number.
+        mean: f64,
+        /// The variance (> 0, a normal float: at least 2.2250738585072014e-308).
+        variance: f64,
+    },
+    /// `{ uniform: { low, high } }`: U[low, high].
+    Uniform {
+        /// The lower end of the support, finite.
+        low: f64,
+        /// The upper end of the support, finite and > low.
+        high: f64,
+    },
+    /// `{ mixture: [{ weight, mean, variance }, …] }`: a Gaussian mixture.
+    Mixture(Vec<Density1Component>),
+    /// `{ table: { x, density } }`: a tabulated density.
+    Table {
+        /// The knots x, strictly increasing (2 to 10,000).
+        #[serde(with = "crate::serde_shapes::numbers")]
+        x: Vec<f64>,
+        /// Density ≥ 0 at each knot (any positive scale: it is normalised).
+        #[serde(with = "crate::serde_shapes::numbers")]
+        density: Vec<f64>,
+    },
 }
 
 impl Serialize for Density1 {
@@ -578,7 +605,7 @@ impl Serialize for Density1 {
             },
             Density1::Mixture(c) => Density1Repr::Mixture(
                 c.iter()
-                    .map(|&(weight, mean, variance)| MixtureComponentRepr {
+                    .map(|&(weight, mean, variance)| Density1Component {
                         weight,
                         mean,
                         variance,
@@ -601,25 +628,163 @@ fn relative(e: Error, kind: &str) -> alloc::string::String {
     e.within(&alloc::format!(".{kind}")).to_string()
 }
 
+/// [`Density1`] from its form through its constructors; their errors name the part at fault
+/// relative to the value (`.gaussian.variance`).
+fn density_from(repr: Density1Repr) -> Result<Density1, alloc::string::String> {
+    match repr {
+        Density1Repr::Gaussian { mean, variance } => {
+            Density1::gaussian(mean, variance).map_err(|e| relative(e, "gaussian"))
+        }
+        Density1Repr::Uniform { low, high } => {
+            Density1::uniform(low, high).map_err(|e| relative(e, "uniform"))
+        }
+        Density1Repr::Mixture(c) => {
+            let c: Vec<(f64, f64, f64)> =
+                c.iter().map(|c| (c.weight, c.mean, c.variance)).collect();
+            Density1::mixture(&c).map_err(|e| relative(e, "mixture"))
+        }
+        Density1Repr::Table { x, density } => {
+            Density1::table(&x, &density).map_err(|e| relative(e, "table"))
+        }
+    }
+}
+
 impl<'de> Deserialize<'de> for Density1 {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let built = match Density1Repr::deserialize(deserializer)? {
-            Density1Repr::Gaussian { mean, variance } => {
-                Density1::gaussian(mean, variance).map_err(|e| relative(e, "gaussian"))
+        deserialize_density_or(deserializer)
+    }
+}
+
+impl DensityOr for Density1 {
+    const KINDS: &'static [&'static str] = &DENSITY1_KINDS;
+    fn density(d: Density1) -> Self {
+        d
+    }
+}
+
+/// The kinds of a [`Density1`], its keys as read and written.
+pub const DENSITY1_KINDS: [&str; 4] = ["gaussian", "uniform", "mixture", "table"];
+
+/// A value read as one of several kinds, `{kind: value}` (or a kind's bare name), some of
+/// which are the [`Density1`] kinds: a prior that is a density on the line or a Gaussian
+/// vector state, say. The density kinds are read as [`Density1`] (through its constructors,
+/// errors relative to the value as there), the others by [`DensityOr::other`]. Read with
+/// [`deserialize_density_or`].
+pub trait DensityOr: Sized {
+    /// Every kind, [`DENSITY1_KINDS`] among them, in the order an unknown kind's error lists
+    /// them.
+    const KINDS: &'static [&'static str];
+    /// The value of a density kind.
+    fn density(d: Density1) -> Self;
+    /// The value of any other kind (default: an unknown kind).
+    ///
+    /// # Errors
+    /// The variant's, or an unknown-variant error.
+    fn other<'de, V: serde::de::VariantAccess<'de>>(kind: &str, v: V) -> Result<Self, V::Error> {
+        let _ = v;
+        Err(serde::de::Error::unknown_variant(kind, Self::KINDS))
+    }
+}
+
+/// Reads a [`DensityOr`] (and [`Density1`] itself): the kinds are `T::KINDS`; a density
+/// constructor's error is raised while the kind's value is being read, so a path-tracking
+/// deserializer names it under the value (`options.clutter.density.gaussian.variance`).
+///
+/// # Errors
+/// The deserializer's, or a density constructor's message.
+pub fn deserialize_density_or<'de, T: DensityOr, D: Deserializer<'de>>(
+    d: D,
+) -> Result<T, D::Error> {
+    struct Kinds<T>(core::marker::PhantomData<T>);
+    impl<'de, T: DensityOr> serde::de::Visitor<'de> for Kinds<T> {
+        type Value = T;
+        fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+            f.write_str("one of the kinds")
+        }
+        fn visit_enum<A: serde::de::EnumAccess<'de>>(self, a: A) -> Result<T, A::Error> {
+            let (kind, variant): (alloc::string::String, _) = a.variant()?;
+            if DENSITY1_KINDS.contains(&kind.as_str()) {
+                let repr = Density1Repr::deserialize(OneKind { kind, variant })?;
+                density_from(repr)
+                    .map(T::density)
+                    .map_err(serde::de::Error::custom)
+            } else {
+                T::other(&kind, variant)
             }
-            Density1Repr::Uniform { low, high } => {
-                Density1::uniform(low, high).map_err(|e| relative(e, "uniform"))
-            }
-            Density1Repr::Mixture(c) => {
-                let c: Vec<(f64, f64, f64)> =
-                    c.iter().map(|c| (c.weight, c.mean, c.variance)).collect();
-                Density1::mixture(&c).map_err(|e| relative(e, "mixture"))
-            }
-            Density1Repr::Table { x, density } => {
-                Density1::table(&x, &density).map_err(|e| relative(e, "table"))
-            }
-        };
-        built.map_err(D::Error::custom)
+        }
+    }
+    d.deserialize_enum("Density1", T::KINDS, Kinds(core::marker::PhantomData))
+}
+
+/// A kind already read and its value, handed on as an enum of that one variant.
+struct OneKind<A> {
+    kind: alloc::string::String,
+    variant: A,
+}
+
+impl<'de, A: serde::de::VariantAccess<'de>> Deserializer<'de> for OneKind<A> {
+    type Error = A::Error;
+    fn deserialize_any<W: serde::de::Visitor<'de>>(self, w: W) -> Result<W::Value, A::Error> {
+        w.visit_enum(self)
+    }
+    serde::forward_to_deserialize_any! {
+        bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes byte_buf
+        option unit unit_struct newtype_struct seq tuple tuple_struct map struct enum
+        identifier ignored_any
+    }
+}
+
+impl<'de, A: serde::de::VariantAccess<'de>> serde::de::EnumAccess<'de> for OneKind<A> {
+    type Error = A::Error;
+    type Variant = AsNewtype<A>;
+    fn variant_seed<S: serde::de::DeserializeSeed<'de>>(
+        self,
+        seed: S,
+    ) -> Result<(S::Value, AsNewtype<A>), A::Error> {
+        use serde::de::IntoDeserializer;
+        let kind = seed.deserialize(self.kind.as_str().into_deserializer())?;
+        Ok((kind, AsNewtype(self.variant)))
+    }
+}
+
+/// A kind's value read as one value (`{"gaussian": …}`), whatever its Rust form, so that every
+/// kind of a [`DensityOr`] reads (and fails) alike.
+struct AsNewtype<A>(A);
+
+impl<'de, A: serde::de::VariantAccess<'de>> serde::de::VariantAccess<'de> for AsNewtype<A> {
+    type Error = A::Error;
+    fn unit_variant(self) -> Result<(), A::Error> {
+        self.0.unit_variant()
+    }
+    fn newtype_variant_seed<T: serde::de::DeserializeSeed<'de>>(
+        self,
+        seed: T,
+    ) -> Result<T::Value, A::Error> {
+        self.0.newtype_variant_seed(seed)
+    }
+    fn tuple_variant<V: serde::de::Visitor<'de>>(
+        self,
+        len: usize,
+        visitor: V,
+    ) -> Result<V::Value, A::Error> {
+        self.0.tuple_variant(len, visitor)
+    }
+    fn struct_variant<V: serde::de::Visitor<'de>>(
+        self,
+        fields: &'static [&'static str],
+        visitor: V,
+    ) -> Result<V::Value, A::Error> {
+        self.0.newtype_variant_seed(StructSeed(fields, visitor))
+    }
+}
+
+/// Reads a struct with `fields` by `visitor`.
+struct StructSeed<V>(&'static [&'static str], V);
+
+impl<'de, V: serde::de::Visitor<'de>> serde::de::DeserializeSeed<'de> for StructSeed<V> {
+    type Value = V::Value;
+    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<V::Value, D::Error> {
+        d.deserialize_struct("", self.0, self.1)
     }
 }
 
@@ -827,5 +992,71 @@ mod bounds_tests {
         );
         let bad = r#"{"mean":[0.0],"cov":[[-1.0]]}"#;
         assert!(serde_json::from_str::<GaussianPrior>(bad).is_err());
+    }
+
+    /// A prior of paper 002: a density on the line or a Gaussian state, one kind each.
+    #[derive(Debug, PartialEq)]
+    enum Prior {
+        Line(Density1),
+        Vector(GaussianPrior),
+    }
+
+    impl DensityOr for Prior {
+        const KINDS: &'static [&'static str] = &[
+            "gaussian",
+            "uniform",
+            "mixture",
+            "table",
+            "multivariate_gaussian",
+        ];
+        fn density(d: Density1) -> Self {
+            Prior::Line(d)
+        }
+        fn other<'de, V: serde::de::VariantAccess<'de>>(
+            kind: &str,
+            v: V,
+        ) -> Result<Self, V::Error> {
+            match kind {
+                "multivariate_gaussian" => v.newtype_variant().map(Prior::Vector),
+                _ => Err(serde::de::Error::unknown_variant(kind, Self::KINDS)),
+            }
+        }
+    }
+
+    impl<'de> Deserialize<'de> for Prior {
+        fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+            deserialize_density_or(d)
+        }
+    }
+
+    #[test]
+    fn eq63_a_prior_is_a_density_kind_or_its_own() {
+        let line: Prior =
+            serde_json::from_str(r#"{"gaussian": {"mean": 1, "variance": 4}}"#).unwrap();
+        assert_eq!(line, Prior::Line(Density1::gaussian(1.0, 4.0).unwrap()));
+        let table: Prior =
+            serde_json::from_str(r#"{"table": {"x": [0, 1, 2], "density": [0, 1, 0]}}"#).unwrap();
+        assert!(matches!(table, Prior::Line(Density1::Table { .. })));
+        let vector: Prior = serde_json::from_str(
+            r#"{"multivariate_gaussian": {"mean": [0, 1], "cov": [[2, 0.5], [0.5, 1]]}}"#,
+        )
+        .unwrap();
+        assert_eq!(
+            vector,
+            Prior::Vector(GaussianPrior::new(&[0.0, 1.0], &[2.0, 0.5, 0.5, 1.0]).unwrap())
+        );
+        // a density's constructor error names the part at fault, relative to the value
+        let e = serde_json::from_str::<Prior>(r#"{"gaussian": {"mean": 0, "variance": -1}}"#)
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with(".gaussian.variance must be"), "{e}");
+        let e = serde_json::from_str::<Prior>(r#"{"gausian": {}}"#)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("multivariate_gaussian"), "{e}");
+        // Density1 alone reads the same way and knows only its own kinds
+        let d: Density1 = serde_json::from_str(r#"{"uniform": {"low": 0, "high": 1}}"#).unwrap();
+        assert_eq!(d, Density1::uniform(0.0, 1.0).unwrap());
+        assert!(serde_json::from_str::<Density1>(r#"{"multivariate_gaussian": {}}"#).is_err());
     }
 }

@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{JsResult, OrThrow, check_range, read, write};
+use crate::boundary::{JsResult, OrThrow, read, write};
 use crate::names::Renamed;
 use crate::types::{Covariance, Gaussian, Numbers};
 use fisst::bounds;
@@ -96,77 +96,18 @@ pub fn jde_sequential_bound(
     write(&Renamed::new(&o.bound().or_throw_rendered("options")?))
 }
 
-/// A 1D Gaussian density N(mean, variance).
-#[derive(Deserialize, Tsify)]
-pub struct GaussianShape {
-    /// The mean, a finite number.
-    pub mean: f64,
-    /// The variance (> 0, a normal float: at least 2.2250738585072014e-308).
-    pub variance: f64,
-}
-
-/// A 1D uniform density U[low, high].
-#[derive(Deserialize, Tsify)]
-pub struct UniformShape {
-    /// The lower end of the support, finite.
-    pub low: f64,
-    /// The upper end of the support, finite and > low.
-    pub high: f64,
-}
-
-/// One component of a 1D Gaussian mixture.
-#[derive(Deserialize, Tsify)]
-pub struct MixtureShape {
-    /// The component's weight, > 0 (the weights are normalised).
-    pub weight: f64,
-    /// The component's mean, finite.
-    pub mean: f64,
-    /// The component's variance, > 0.
-    pub variance: f64,
-}
-
-/// A tabulated density: linear interpolation between knots, 0 outside, normalised.
-#[derive(Deserialize, Tsify)]
-pub struct TableShape {
-    /// The knots x, strictly increasing (2 to 10,000).
-    pub x: Numbers,
-    /// Density ≥ 0 at each knot (any positive scale: it is normalised).
-    pub density: Numbers,
-}
-
-/// A 1D density: `{ gaussian: { mean, variance } }`, `{ uniform: { low, high } }`,
-/// `{ mixture: [{ weight, mean, variance }, …] }` (1 to 1,000 components) or
-/// `{ table: { x, density } }`.
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub enum DensityShape {
-    /// `{ gaussian: { mean, variance } }`: a Gaussian.
-    Gaussian(GaussianShape),
-    /// `{ uniform: { low, high } }`: a uniform density.
-    Uniform(UniformShape),
-    /// `{ mixture: [...] }`: a Gaussian mixture.
-    Mixture(Vec<MixtureShape>),
-    /// `{ table: { x, density } }`: a tabulated density.
-    Table(TableShape),
-}
-
-impl DensityShape {
-    fn into_core(self, path: &str) -> JsResult<bounds::Density1> {
-        match self {
-            DensityShape::Gaussian(g) => bounds::Density1::gaussian(g.mean, g.variance)
-                .or_throw_rendered(&format!("{path}.gaussian")),
-            DensityShape::Uniform(u) => bounds::Density1::uniform(u.low, u.high)
-                .or_throw_rendered(&format!("{path}.uniform")),
-            DensityShape::Mixture(c) => {
-                let c: Vec<(f64, f64, f64)> =
-                    c.iter().map(|c| (c.weight, c.mean, c.variance)).collect();
-                bounds::Density1::mixture(&c).or_throw_rendered(&format!("{path}.mixture"))
-            }
-            DensityShape::Table(t) => bounds::Density1::table(&t.x.0, &t.density.0)
-                .or_throw_rendered(&format!("{path}.table")),
-        }
-    }
-}
+// A 1D density is the core's `bounds::Density1`, read and checked by its own deserializer
+// (`{ gaussian }`, `{ uniform }`, `{ mixture }`, `{ table }`; errors name
+// `….gaussian.variance`, `….table.x[3]`), under the contract's names.
+#[wasm_bindgen(typescript_custom_section)]
+const DENSITY_TYPES: &str = r#"
+/**
+ * A 1D density: `{ gaussian: { mean, variance } }`, `{ uniform: { low, high } }`,
+ * `{ mixture: [{ weight, mean, variance }, …] }` (1 to 1,000 components) or
+ * `{ table: { x, density } }`: the core's `Density1`.
+ */
+export type DensityShape = Density1;
+"#;
 
 /// A tabulated detection probability P_o(x): linear interpolation, held constant beyond the end
 /// knots.
@@ -239,9 +180,6 @@ export type OffsetShape = number | number[] | Float64Array;
 type GainShape = ScalarOr<Vec<f64>>;
 /// The offset b, or one number per measurement coordinate.
 type OffsetShape = ScalarOr<f64>;
-
-/// At most this many state coordinates l, and this many measurement coordinates m.
-pub use bounds::MAX_DIMS;
 
 /// The observation: P_o(x) and g(z|x) = N(z; gain·x + offset, noiseVariance) for a 1D prior,
 /// or g(z|x) = N(z; H x + b, R) with H = `gain` (m rows of l numbers) and R = `noiseCov`
@@ -327,11 +265,7 @@ impl ObservationShape {
             ScalarOr::Array(rows) => rows,
         };
         let m = rows.len();
-        if m == 0 || m > MAX_DIMS {
-            return Err(crate::boundary::range_error(format!(
-                "{path}.gain must have 1 to {MAX_DIMS} rows, got {m}"
-            )));
-        }
+        bounds::check_measurement_dims(m).or_throw_rendered(path)?;
         for (i, r) in rows.iter().enumerate() {
             if r.len() != dims {
                 return Err(crate::boundary::range_error(format!(
@@ -395,7 +329,8 @@ pub struct FalseAlarmShape {
     /// The false alarm probability q ∈ [0, 1]: the probability of one false observation.
     pub probability: f64,
     /// The density ψ of a false observation on the measurement line.
-    pub density: DensityShape,
+    #[tsify(type = "DensityShape")]
+    pub density: bounds::Density1,
 }
 
 /// Model II's Poisson clutter: rate λ and the density of its points (v = λ · density).
@@ -404,54 +339,68 @@ pub struct ClutterShape {
     /// The clutter rate λ ≥ 0: the mean number of clutter points (at most 1000).
     pub rate: f64,
     /// The density v/λ of one clutter point on the measurement line (v the clutter intensity).
-    pub density: DensityShape,
+    #[tsify(type = "DensityShape")]
+    pub density: bounds::Density1,
 }
 
-/// The measurement model of Rezaeian & Vo, "Error bounds for joint detection and estimation of a
-/// single object with random finite set observation" (paper 002): `'I'` (Theorem 1: Bernoulli
-/// observation with false alarms) or `'II'` (Theorem 2: Poisson clutter).
-#[derive(Deserialize, Tsify, Clone, Copy)]
-pub enum MeasurementModel {
-    /// `'I'`: model I (13), a Bernoulli observation with false alarms.
-    #[serde(rename = "I")]
-    One,
-    /// `'II'`: model II (22), Poisson clutter.
-    #[serde(rename = "II")]
-    Two,
-}
+// The measurement model and the rule on Z = ∅ are the core's `JdeModel` ('I' or 'II') and
+// `EmptyRule` ('optimal', 'map', 'declare', 'reject'), under the contract's names.
+#[wasm_bindgen(typescript_custom_section)]
+const MODEL_TYPES: &str = r#"
+/**
+ * The measurement model of `jdeBound` and `jdeMonteCarlo`: the core's `JdeModel`.
+ */
+export type MeasurementModel = JdeModel;
+/**
+ * The rule of `jdeMonteCarlo` on Z = ∅: the core's `EmptyRule`.
+ */
+export type EmptyRuleShape = EmptyRule;
+"#;
 
 /// The prior f of `jdeBound`: a 1D density (`{ gaussian }`, `{ uniform }`, `{ mixture }`,
-/// `{ table }`, as [`DensityShape`]) or, for a state in R^l, `{ multivariateGaussian: { mean,
-/// cov } }` (the vector bounds (63)–(72) of Section V).
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
+/// `{ table }`, the core's `Density1`) or, for a state in R^l, `{ multivariateGaussian: {
+/// mean, cov } }` (the vector bounds (63)–(72) of Section V): `mean` l finite numbers (1 ≤ l ≤
+/// 64), `cov` l rows of l numbers (or l·l row-major numbers; a bare number when l = 1),
+/// symmetric positive definite. The observation then has a constant P_o, gain rows H and
+/// `noiseCov`.
+#[derive(Tsify)]
+#[tsify(type = "DensityShape | { multivariateGaussian: Gaussian }")]
 pub enum PriorShape {
-    /// `{ gaussian: { mean, variance } }`: a Gaussian N(mean, variance).
-    Gaussian(GaussianShape),
-    /// `{ uniform: { low, high } }`: a uniform density.
-    Uniform(UniformShape),
-    /// `{ mixture: [...] }`: a Gaussian mixture (1 to 1,000 components).
-    Mixture(Vec<MixtureShape>),
-    /// `{ table: { x, density } }`: a tabulated density.
-    Table(TableShape),
-    /// `{ multivariateGaussian: { mean, cov } }`: N(mean, cov) in R^l: `mean` l finite numbers (1 ≤
-    /// l ≤ 64), `cov` l rows of l numbers (or l·l row-major numbers; a bare number when l = 1),
-    /// symmetric positive definite. The observation then has a constant P_o, gain rows H and
-    /// `noiseCov`.
+    /// A 1D density.
+    Density(bounds::Density1),
+    /// `{ multivariateGaussian: { mean, cov } }`: N(mean, cov) in R^l.
     MultivariateGaussian(Gaussian),
+}
+
+impl bounds::DensityOr for PriorShape {
+    const KINDS: &'static [&'static str] = &[
+        "gaussian",
+        "uniform",
+        "mixture",
+        "table",
+        "multivariateGaussian",
+    ];
+    fn density(d: bounds::Density1) -> Self {
+        PriorShape::Density(d)
+    }
+    fn other<'de, V: serde::de::VariantAccess<'de>>(_: &str, v: V) -> Result<Self, V::Error> {
+        v.newtype_variant().map(PriorShape::MultivariateGaussian)
+    }
+}
+
+impl<'de> Deserialize<'de> for PriorShape {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        bounds::deserialize_density_or(d)
+    }
 }
 
 impl PriorShape {
     fn into_core(self, path: &str) -> JsResult<bounds::JdePrior> {
-        let scalar = |d: DensityShape| d.into_core(path).map(bounds::JdePrior::Scalar);
         match self {
-            PriorShape::Gaussian(g) => scalar(DensityShape::Gaussian(g)),
-            PriorShape::Uniform(u) => scalar(DensityShape::Uniform(u)),
-            PriorShape::Mixture(m) => scalar(DensityShape::Mixture(m)),
-            PriorShape::Table(t) => scalar(DensityShape::Table(t)),
+            PriorShape::Density(d) => Ok(bounds::JdePrior::Scalar(d)),
             PriorShape::MultivariateGaussian(g) => {
                 let p = format!("{path}.multivariateGaussian");
-                let l = check_range(&format!("{p}.mean.length"), g.mean.0.len(), 1, MAX_DIMS)?;
+                let l = bounds::check_state_dims(g.mean.0.len()).or_throw_rendered(&p)?;
                 let cov = g.cov.row_major(l, &format!("{p}.cov"))?;
                 bounds::GaussianPrior::new(&g.mean.0, &cov)
                     .or_throw_rendered(&p)
@@ -467,7 +416,8 @@ impl PriorShape {
 #[serde(rename_all = "camelCase")]
 pub struct JdeBoundOptions {
     /// The measurement model: `'I'` (false alarms) or `'II'` (Poisson clutter).
-    pub model: MeasurementModel,
+    #[tsify(type = "MeasurementModel")]
+    pub model: bounds::JdeModel,
     /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
     /// The prior density f of the state: a 1D density, or `{ multivariateGaussian: { mean,
@@ -692,22 +642,19 @@ pub fn jde_bound(
     let false_alarm = match o.false_alarm {
         Some(f) => Some(bounds::FalseAlarm {
             probability: f.probability,
-            density: f.density.into_core("options.falseAlarm.density")?,
+            density: f.density,
         }),
         None => None,
     };
     let clutter = match o.clutter {
         Some(c) => Some(bounds::Clutter {
             rate: c.rate,
-            density: c.density.into_core("options.clutter.density")?,
+            density: c.density,
         }),
         None => None,
     };
     let options = bounds::JdeOptions {
-        model: match o.model {
-            MeasurementModel::One => bounds::JdeModel::I,
-            MeasurementModel::Two => bounds::JdeModel::II,
-        },
+        model: o.model,
         existence: o.existence,
         prior,
         observation,
@@ -750,11 +697,7 @@ pub fn jde_bound(
 fn jde_error(e: fisst::Error, prior: &bounds::JdePrior) -> JsValue {
     match &e {
         fisst::Error::Unsupported { what, reason } if *reason == bounds::WRONG_MODEL => {
-            crate::boundary::type_error(if what == "clutter" {
-                "options.clutter is for model 'II' (use falseAlarm with model 'I')"
-            } else {
-                "options.falseAlarm is for model 'I' (use clutter with model 'II')"
-            })
+            wrong_model(what == "clutter")
         }
         fisst::Error::DimensionMismatch {
             what,
@@ -772,6 +715,15 @@ fn jde_error(e: fisst::Error, prior: &bounds::JdePrior) -> JsValue {
     }
 }
 
+/// The `TypeError` of `clutter` given with model I (`clutter`) or `falseAlarm` with model II.
+fn wrong_model(clutter: bool) -> JsValue {
+    crate::boundary::type_error(if clutter {
+        "options.clutter is for model 'II' (use falseAlarm with model 'I')"
+    } else {
+        "options.falseAlarm is for model 'I' (use clutter with model 'II')"
+    })
+}
+
 fn phase_name(p: bounds::Phase) -> &'static str {
     match p {
         bounds::Phase::Hpe => "HPE",
@@ -779,25 +731,16 @@ fn phase_name(p: bounds::Phase) -> &'static str {
     }
 }
 
+/// The summands of (17)/(23) in the contract's order and names.
 fn terms(t: &bounds::Terms) -> Vec<BoundTerm> {
-    vec![
-        BoundTerm {
-            name: "estimation",
-            value: t.estimation,
-        },
-        BoundTerm {
-            name: "undetected",
-            value: t.undetected,
-        },
-        BoundTerm {
-            name: "missed",
-            value: t.missed,
-        },
-        BoundTerm {
-            name: "falseTarget",
-            value: t.false_target,
-        },
+    [
+        ("estimation", t.estimation),
+        ("undetected", t.undetected),
+        ("missed", t.missed),
+        ("falseTarget", t.false_target),
     ]
+    .map(|(name, value)| BoundTerm { name, value })
+    .into()
 }
 
 fn result(b: &bounds::JdeBound, seed: Option<u64>) -> JdeBoundResult {
@@ -863,33 +806,42 @@ pub fn jde_example2_regularity() -> JsResult<JsValue> {
     write(&Renamed::new(&bounds::example2_regularity()))
 }
 
-/// The rule of `jdeMonteCarlo` on Z = ∅: `'optimal'` (the cheaper of HPE and LPE (46)),
-/// `'map'` (MAP detection, Section IV-A), `'declare'` (always HPE) or `'reject'` (always LPE).
-#[derive(Deserialize, Tsify, Clone, Copy)]
-#[serde(rename_all = "kebab-case")]
-pub enum EmptyRuleShape {
-    /// `'optimal'`: the cheaper of HPE (declare {x*}) and LPE (declare ∅).
-    Optimal,
-    /// `'map'`: MAP detection (Section IV-A).
-    Map,
-    /// `'declare'`: always declare {x*} (HPE).
-    Declare,
-    /// `'reject'`: always declare ∅ (LPE).
-    Reject,
-}
-
 /// The state of `jdeMonteCarlo`: `{ gaussian: { mean, variance } }`, `{ multivariateGaussian:
 /// { mean, cov } }` (a linear-Gaussian `observation`), or `'example2'` (Example 2 (32): f and
-/// g fixed, `observation.detectionProbability` a constant P_o).
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
+/// g fixed, `observation.detectionProbability` a constant P_o; f(x) = 2x(eˣ − 1) on [0, 1]
+/// with g(z|x) = x e^{xz}/(eˣ − 1)).
+#[derive(Tsify)]
+#[tsify(
+    type = "Extract<DensityShape, { gaussian: unknown }> | { multivariateGaussian: Gaussian } | \"example2\""
+)]
 pub enum MonteCarloPriorShape {
     /// `{ gaussian: { mean, variance } }`: a 1D Gaussian N(mean, variance).
-    Gaussian(GaussianShape),
+    Gaussian(bounds::Density1),
     /// `{ multivariateGaussian: { mean, cov } }`: a Gaussian N(mean, cov) in R^l.
     MultivariateGaussian(Gaussian),
-    /// `'example2'`: f(x) = 2x(eˣ − 1) on [0, 1] with g(z|x) = x e^{xz}/(eˣ − 1).
+    /// `'example2'`: Example 2's f and g.
     Example2,
+}
+
+impl bounds::DensityOr for MonteCarloPriorShape {
+    const KINDS: &'static [&'static str] = &["gaussian", "multivariateGaussian", "example2"];
+    fn density(d: bounds::Density1) -> Self {
+        MonteCarloPriorShape::Gaussian(d)
+    }
+    fn other<'de, V: serde::de::VariantAccess<'de>>(kind: &str, v: V) -> Result<Self, V::Error> {
+        if kind == "example2" {
+            v.unit_variant().map(|()| MonteCarloPriorShape::Example2)
+        } else {
+            v.newtype_variant()
+                .map(MonteCarloPriorShape::MultivariateGaussian)
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for MonteCarloPriorShape {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        bounds::deserialize_density_or(d)
+    }
 }
 
 /// Options of `jdeMonteCarlo`: the problem of `jdeBound` (Gaussian priors and Example 2), the
@@ -898,7 +850,8 @@ pub enum MonteCarloPriorShape {
 #[serde(rename_all = "camelCase")]
 pub struct JdeMonteCarloOptions {
     /// The measurement model, `'I'` or `'II'`.
-    pub model: MeasurementModel,
+    #[tsify(type = "MeasurementModel")]
+    pub model: bounds::JdeModel,
     /// The prior existence probability r ∈ [0, 1]: the probability that the target exists.
     pub existence: f64,
     /// The prior density f of the target's state.
@@ -918,8 +871,8 @@ pub struct JdeMonteCarloOptions {
     /// The squared error (cost) e_1² ≥ 0 of a missed target: the square itself.
     pub miss_error: f64,
     /// The rule on Z = ∅ (default `'optimal'`).
-    #[tsify(optional)]
-    pub empty_rule: Option<EmptyRuleShape>,
+    #[tsify(optional, type = "EmptyRuleShape")]
+    pub empty_rule: Option<bounds::EmptyRule>,
     /// The number k of scans of one target, 1 to 5,000 (default 1; k > 1 needs a Gaussian prior and
     /// no false alarms or clutter): `result.scans[k − 1]` is the risk after scan k.
     #[tsify(optional)]
@@ -958,25 +911,17 @@ pub fn jde_monte_carlo(
     let defaults = bounds::JdeMonteCarloOptions::default();
     let (flat, false_density, clutter_density);
     let measurement = match (o.model, o.false_alarm, o.clutter) {
-        (MeasurementModel::One, _, Some(_)) => {
-            return Err(crate::boundary::type_error(
-                "options.clutter is for model 'II' (use falseAlarm with model 'I')",
-            ));
-        }
-        (MeasurementModel::Two, Some(_), _) => {
-            return Err(crate::boundary::type_error(
-                "options.falseAlarm is for model 'I' (use clutter with model 'II')",
-            ));
-        }
-        (MeasurementModel::One, Some(f), None) => {
-            false_density = f.density.into_core("options.falseAlarm.density")?;
+        (bounds::JdeModel::I, _, Some(_)) => return Err(wrong_model(true)),
+        (bounds::JdeModel::II, Some(_), _) => return Err(wrong_model(false)),
+        (bounds::JdeModel::I, Some(f), None) => {
+            false_density = f.density;
             bounds::VectorMeasurement::I {
                 false_alarm_probability: f.probability,
                 false_alarm_density: &false_density,
             }
         }
-        (MeasurementModel::Two, None, Some(c)) => {
-            clutter_density = c.density.into_core("options.clutter.density")?;
+        (bounds::JdeModel::II, None, Some(c)) => {
+            clutter_density = c.density;
             bounds::VectorMeasurement::II {
                 clutter_rate: c.rate,
                 clutter_density: &clutter_density,
@@ -1005,11 +950,10 @@ pub fn jde_monte_carlo(
         },
         shape => {
             prior = match shape {
-                MonteCarloPriorShape::Gaussian(g) => {
-                    let (mean, variance) = (g.mean, g.variance);
-                    PriorShape::Gaussian(g).into_core(path)?;
+                MonteCarloPriorShape::Gaussian(bounds::Density1::Gaussian { mean, variance }) => {
                     bounds::GaussianPrior::new(&[mean], &[variance]).or_throw_rendered(path)?
                 }
+                MonteCarloPriorShape::Gaussian(_) => unreachable!("only 'gaussian' is read"),
                 MonteCarloPriorShape::MultivariateGaussian(g) => {
                     match PriorShape::MultivariateGaussian(g).into_core(path)? {
                         bounds::JdePrior::Vector(v) => v,
@@ -1030,12 +974,6 @@ pub fn jde_monte_carlo(
         }
     };
     let seed = crate::boundary::seed_or_entropy(o.seed)?;
-    let empty_rule = match o.empty_rule.unwrap_or(EmptyRuleShape::Optimal) {
-        EmptyRuleShape::Optimal => bounds::EmptyRule::Optimal,
-        EmptyRuleShape::Map => bounds::EmptyRule::Map,
-        EmptyRuleShape::Declare => bounds::EmptyRule::Declare,
-        EmptyRuleShape::Reject => bounds::EmptyRule::Reject,
-    };
     let out = bounds::jde_monte_carlo(
         &bounds::MonteCarloModel {
             existence: o.existence,
@@ -1047,7 +985,7 @@ pub fn jde_monte_carlo(
         &bounds::JdeMonteCarloOptions {
             samples: o.samples.unwrap_or(defaults.samples),
             seed,
-            empty_rule,
+            empty_rule: o.empty_rule.unwrap_or(defaults.empty_rule),
             scans: o.scans.unwrap_or(defaults.scans),
         },
     )

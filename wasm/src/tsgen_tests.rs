@@ -192,3 +192,36 @@ fn an_item_is_compiled_for_a_part_when_its_cfg_holds() {
     // a build script is not a test build
     assert!(!holds("#[cfg(test)] mod tsgen_tests;"));
 }
+
+#[test]
+fn a_hand_written_impl_is_declared_by_the_form_renamed_to_it() {
+    // the core's pattern: a type (no derive) read and written through a derived form
+    let source = r#"
+pub enum Density { Gaussian { mean: f64, variance: f64 }, Table(Vec<f64>) }
+/// A 1D density as read and written.
+#[derive(Serialize, Deserialize)]
+#[serde(rename = "Density", rename_all = "camelCase")]
+enum DensityRepr { Gaussian { mean: f64, variance: f64 }, Table { x: Vec<f64> } }
+/// Another type's form, not renamed to a type: only its own name.
+#[derive(Serialize, Deserialize)]
+struct PlainRepr { low: f64 }
+/// A derived type keeps its own declaration against a form renamed to its name.
+#[derive(Serialize, Deserialize)]
+pub struct Kept { kept: f64 }
+#[derive(Serialize, Deserialize)]
+#[serde(rename = "Kept")]
+struct KeptRepr { other: f64 }
+"#;
+    let mut defs = BTreeMap::new();
+    tsgen::walk(syn::parse_file(source).unwrap().items, &mut defs);
+    let roots = ["Density".to_string(), "Kept".to_string()];
+    let refs: std::vec::Vec<&String> = roots.iter().collect();
+    let (ts, warnings) = tsgen::declarations(&defs, &refs);
+    assert!(warnings.is_empty(), "{warnings:?}");
+    assert!(ts.contains("export type Density =\n"), "{ts}");
+    assert!(ts.contains("| { gaussian: {\n"), "{ts}");
+    assert!(ts.contains("| { table: {\n"), "{ts}");
+    assert!(ts.contains("    kept: number;"), "{ts}");
+    assert!(!ts.contains("other"), "{ts}");
+    assert!(defs.contains_key("PlainRepr") && !defs.contains_key("Plain"));
+}

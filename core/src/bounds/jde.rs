@@ -34,8 +34,9 @@ pub const MAX_SAMPLE_POINTS: usize = 10_000_000;
 pub const WRONG_MODEL: &str = "belongs to the other measurement model";
 
 /// The measurement model: I (13), a Bernoulli observation with false alarms (Theorem 1), or
-/// II (22), Poisson clutter (Theorem 2).
+/// II (22), Poisson clutter (Theorem 2). Serialised as `"I"` or `"II"`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum JdeModel {
     /// Model I (13): a Bernoulli observation with false alarms.
     I,

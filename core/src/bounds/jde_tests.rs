@@ -346,3 +346,25 @@ fn eq64_vector_outcome_is_the_vector_bound() {
     assert_eq!(rows.concat(), want.inverse_information);
     assert_eq!(rows.len(), 2);
 }
+
+#[cfg(feature = "serde")]
+#[test]
+fn thm1_thm2_models_and_empty_rules_read_their_names() {
+    use crate::bounds::EmptyRule;
+    let m: [JdeModel; 2] = serde_json::from_str(r#"["I", "II"]"#).unwrap();
+    assert_eq!(m, [JdeModel::I, JdeModel::II]);
+    assert!(serde_json::from_str::<JdeModel>(r#""III""#).is_err());
+    let rules: [EmptyRule; 4] =
+        serde_json::from_str(r#"["optimal", "map", "declare", "reject"]"#).unwrap();
+    assert_eq!(
+        rules,
+        [
+            EmptyRule::Optimal,
+            EmptyRule::Map,
+            EmptyRule::Declare,
+            EmptyRule::Reject
+        ]
+    );
+    assert_eq!(serde_json::to_string(&EmptyRule::Map).unwrap(), r#""map""#);
+    assert!(serde_json::from_str::<EmptyRule>(r#""hpe""#).is_err());
+}

@@ -69,6 +69,8 @@ pub use model::{
 pub use theorem::{Cardinality, JdeBound, Method, ModelI, TheoremOptions, theorem1};
 pub use theorem2::{MAX_CLUTTER_RATE, ModelII, theorem2};
 mod example2;
+#[cfg(feature = "serde")]
+pub use crate::serde_valid::{DENSITY1_KINDS, DensityOr, deserialize_density_or};
 pub use example2::{
     Example2, Example2Observation, Example2Options, Example2Prior, Example2Regularity, UnitUniform,
     example2, example2_regularity,
@@ -81,8 +83,8 @@ pub use jde::{
 mod vector;
 pub use vector::{
     ComponentBound, GaussianPrior, LinearGaussianSensor, VectorBound, VectorMeasurement,
-    VectorModel, component_bound, component_bounds_no_clutter, component_corollary1,
-    gaussian_information_matrix, vector_bound,
+    VectorModel, check_measurement_dims, check_state_dims, component_bound,
+    component_bounds_no_clutter, component_corollary1, gaussian_information_matrix, vector_bound,
 };
 mod simulate;
 pub use simulate::{

@@ -32,8 +32,14 @@ use crate::math::rng::{SeededRng, poisson, seeded, uniform};
 /// The most work one call does: samples × scans × (1 + ⌈q or λ⌉) draws of a scene.
 pub const MAX_MONTE_CARLO_WORK: usize = 10_000_000;
 
-/// What the detector-estimator does on Z = ∅ (after every scan so far was empty).
+/// What the detector-estimator does on Z = ∅ (after every scan so far was empty). Serialised
+/// in lower case: `"optimal"`, `"map"`, `"declare"`, `"reject"`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "lowercase")
+)]
 pub enum EmptyRule {
     /// The cheaper of HPE and LPE (46): declare {x*} iff
     /// (1 − r)ε e0² + r(1 − P_o)^k σ² ≤ r(1 − P_o)^k e1² (ε = P(Z = ∅ | no target)).
@@ -470,8 +476,10 @@ fn system_of(
         SimulatedSystem::Example2 {
             detection_probability: p,
         } => {
-            let detection = crate::bounds::Detection::constant(p)
-                .map_err(|e| e.within("detection_probability"))?;
+            // named as the observation's P_o, as in every binding's options (it was
+            // `detection_probability.detection_probability`)
+            let detection =
+                crate::bounds::Detection::constant(p).map_err(|e| e.within("observation"))?;
             // x* and σe² of f (P_o constant, so f_d' = f): smooth, one G10K21 panel
             let f = |x: f64| Example2Prior.pdf(x);
             let m = Rule::G10K21.apply_vec(&mut |x| [f(x), x * f(x), x * x * f(x)], 0.0, 1.0);
@@ -1155,6 +1163,16 @@ mod tests {
                 o
             ),
             "miss_error"
+        );
+        let example2 = |p| MonteCarloModel {
+            system: SimulatedSystem::Example2 {
+                detection_probability: p,
+            },
+            ..m
+        };
+        assert_eq!(
+            field(&example2(1.5), o),
+            "observation.detection_probability"
         );
         let clutter = MonteCarloModel {
             measurement: VectorMeasurement::II {

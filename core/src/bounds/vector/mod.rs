@@ -32,7 +32,10 @@ mod zone;
 pub use components::{
     component_bound, component_bounds_no_clutter, component_corollary1, gaussian_information_matrix,
 };
-pub use problem::{GaussianPrior, LinearGaussianSensor, VectorMeasurement, VectorModel};
+pub use problem::{
+    GaussianPrior, LinearGaussianSensor, VectorMeasurement, VectorModel, check_measurement_dims,
+    check_state_dims,
+};
 use zone::Zone;
 
 /// The bound (63)/(64) on the MSE σ_i² of component i.

@@ -5,9 +5,24 @@
 use alloc::vec::Vec;
 use nalgebra::DMatrix;
 
+use crate::bounds::MAX_DIMS;
 use crate::bounds::model::Density;
 use crate::error::{Error, Result};
 use crate::gaussian::covariance;
+
+/// `l` if a state dimension (the length of a prior's mean) lies in [1, [`MAX_DIMS`]], else an
+/// [`Error::OutOfRange`] naming `mean.length`. [`GaussianPrior::new`] checks it first; a
+/// binding that must know l before it reads the covariance can check it earlier.
+pub fn check_state_dims(l: usize) -> Result<usize> {
+    Error::check_range("mean.length", l, 1, MAX_DIMS)
+}
+
+/// `Ok` if a gain of `m` rows (the measurement dimension) has 1 to [`MAX_DIMS`] of them, else
+/// an [`Error::Count`] naming `gain`. [`LinearGaussianSensor::new`] checks it before the
+/// offset and the noise, whose sizes follow from m.
+pub fn check_measurement_dims(m: usize) -> Result<()> {
+    Error::check_count("gain", "rows", m, 1, MAX_DIMS)
+}
 
 /// The Gaussian prior f = N(x; x0, P) of a state in R^l (Section V).
 #[derive(Clone, Debug, PartialEq)]
@@ -18,12 +33,10 @@ pub struct GaussianPrior {
 
 impl GaussianPrior {
     /// N(`mean`, `cov`), `cov` the l × l covariance in row-major order (symmetric positive
-    /// definite). Errors name `mean[i]` or `cov`.
+    /// definite), 1 ≤ l ≤ [`MAX_DIMS`]. Errors name `mean.length` ([`check_state_dims`]),
+    /// `mean[i]` or `cov`.
     pub fn new(mean: &[f64], cov: &[f64]) -> Result<Self> {
-        let l = mean.len();
-        if l == 0 {
-            return Err(Error::dimension("mean", 1, 0));
-        }
+        let l = check_state_dims(mean.len())?;
         for (i, &v) in mean.iter().enumerate() {
             if !v.is_finite() {
                 return Err(Error::parameter(alloc::format!("mean[{i}]"), v, "finite"));
@@ -55,7 +68,8 @@ pub struct LinearGaussianSensor {
 impl LinearGaussianSensor {
     /// P_o = `detection`, H = `gain` (m × `dims`, row-major; m = `gain.len() / dims`),
     /// b = `offset` (length m), R = `noise_cov` (m × m, row-major, symmetric positive
-    /// definite). Errors name `detection_probability`, `gain`, `offset` or `noise_cov`.
+    /// definite), 1 ≤ m ≤ [`MAX_DIMS`] ([`check_measurement_dims`]). Errors name
+    /// `detection_probability`, `gain`, `offset` or `noise_cov`.
     pub fn new(
         detection: f64,
         gain: &[f64],
@@ -64,10 +78,11 @@ impl LinearGaussianSensor {
         noise_cov: &[f64],
     ) -> Result<Self> {
         crate::error::check_probability(|| "detection_probability".into(), detection)?;
-        if dims == 0 || gain.is_empty() || !gain.len().is_multiple_of(dims) {
+        if dims == 0 || !gain.len().is_multiple_of(dims) {
             return Err(Error::dimension("gain", dims.max(1), gain.len()));
         }
         let m = gain.len() / dims;
+        check_measurement_dims(m)?;
         for &v in gain {
             check_finite_gain(v)?;
         }

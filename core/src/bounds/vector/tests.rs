@@ -344,6 +344,31 @@ fn eq63_vector_errors_name_the_field() {
 }
 
 #[test]
+fn eq63_state_and_measurement_dimensions_are_1_to_max_dims() {
+    use crate::bounds::MAX_DIMS;
+    use alloc::string::ToString;
+    use alloc::vec;
+    let e = GaussianPrior::new(&[], &[]).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "mean.length must be an integer in [1, 64], got 0"
+    );
+    let big = MAX_DIMS + 1;
+    let mut cov = vec![0.0; big * big];
+    for i in 0..big {
+        cov[i * big + i] = 1.0;
+    }
+    let e = GaussianPrior::new(&vec![0.0; big], &cov).unwrap_err();
+    assert_eq!(e.field(), "mean.length");
+    assert_eq!(check_state_dims(MAX_DIMS).unwrap(), MAX_DIMS);
+    let e = LinearGaussianSensor::new(0.7, &[], 2, &[], &[]).unwrap_err();
+    assert_eq!(e.to_string(), "gain must have 1 to 64 rows, got 0");
+    let e = LinearGaussianSensor::new(0.7, &vec![1.0; big], 1, &vec![0.0; big], &cov).unwrap_err();
+    assert_eq!(e.to_string(), "gain must have 1 to 64 rows, got 65");
+    assert!(check_measurement_dims(MAX_DIMS).is_ok());
+}
+
+#[test]
 fn vector_covariances_say_which_property_fails() {
     use alloc::string::ToString;
     let asym = [1.0, 0.5, 0.4, 1.0];
