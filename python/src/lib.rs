@@ -9,6 +9,7 @@ mod bernoulli;
 mod bounds;
 mod control;
 mod convert;
+mod filters;
 mod metrics;
 mod multi_bernoulli;
 mod names;
@@ -54,6 +55,10 @@ fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(bounds::jde_sequential_bound, m)?)?;
     m.add_function(wrap_pyfunction!(bounds::jde_example2, m)?)?;
     m.add_function(wrap_pyfunction!(bounds::jde_example2_regularity, m)?)?;
+    m.add_class::<filters::GmBernoulliFilter>()?;
+    m.add_class::<filters::ParticleBernoulliFilter>()?;
+    m.add_function(wrap_pyfunction!(filters::gm_bernoulli_predict, m)?)?;
+    m.add_function(wrap_pyfunction!(filters::gm_bernoulli_update, m)?)?;
     m.add_function(wrap_pyfunction!(control::multi_object_likelihood, m)?)?;
     m.add_class::<control::SensorControlRun>()?;
     m.add_function(wrap_pyfunction!(control::compare_schemes, m)?)?;

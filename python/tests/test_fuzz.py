@@ -36,6 +36,21 @@ kw_number = st.one_of(number, junk)
 costs = st.one_of(st.sampled_from(["mpe", "x"]), st.fixed_dictionaries({"mmol": st.fixed_dictionaries({"asset": kw_number, "countermeasure": kw_number})}),
                   st.fixed_dictionaries({"c00": kw_number, "c01": kw_number, "c10": kw_number, "c11": kw_number, "c": kw_number}), junk)
 
+matrix2 = st.one_of(st.just([[1.0, 0.0], [0.0, 1.0]]), st.lists(st.lists(number, min_size=2, max_size=2), min_size=2, max_size=2), junk)
+component = st.fixed_dictionaries({"weight": st.one_of(st.floats(0, 2), st.sampled_from(EXTREMES)), "mean": st.one_of(st.lists(number, min_size=2, max_size=2), junk),
+                                   "cov": st.one_of(st.just([[1.0, 0.0], [0.0, 1.0]]), matrix2, number)})
+mixture = st.one_of(st.lists(component, min_size=1, max_size=3), junk)
+transition = st.one_of(st.fixed_dictionaries({"F": matrix2, "Q": matrix2}), junk)
+region = st.one_of(
+    st.fixed_dictionaries({"box": st.fixed_dictionaries({"min": st.lists(number, min_size=2, max_size=2), "max": st.lists(number, min_size=2, max_size=2)})}),
+    st.fixed_dictionaries({"ball": st.fixed_dictionaries({"center": st.lists(number, min_size=2, max_size=2), "radius": number})}),
+    junk)
+detection = st.one_of(st.fixed_dictionaries({"probability": probability}, optional={"fov": region}), junk)
+clutter = st.one_of(st.fixed_dictionaries({"rate": kw_number, "density": kw_number}), junk)
+filter_config = st.fixed_dictionaries(
+    {"existence": probability, "mixture": mixture, "transition": transition, "detection": detection, "clutter": clutter},
+    optional={"survival": probability, "position_dims": st.integers(0, 3), "exclusions": st.lists(region, max_size=2)})
+
 
 def maybe(strategy):
     """A keyword that is sometimes omitted (None here means: leave it out)."""
@@ -102,6 +117,14 @@ CALLS = {
          "steps": st.one_of(st.integers(-1, 3), junk)},
         optional={"particles": st.integers(-1, 60), "future_scans": st.integers(-1, 8), "alpha": kw_number,
                   "max_objects": st.integers(-1, 9), "start": st.one_of(st.lists(number, min_size=2, max_size=2), junk)})),
+    "GmBernoulliFilter": st.tuples(st.just(None), st.just(None), filter_config),
+    "ParticleBernoulliFilter": st.tuples(st.just(None), st.just(None), filter_config.map(lambda c: {**c, "particles": 50, "seed": 1})),
+    "gm_bernoulli_predict": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"existence": probability, "mixture": mixture, "transition": transition},
+        optional={"survival": probability, "birth": st.fixed_dictionaries({"probability": probability, "mixture": mixture})})),
+    "gm_bernoulli_update": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"existence": probability, "mixture": mixture, "detection": detection, "clutter": clutter},
+        optional={"reports": st.lists(region, max_size=2), "position_dims": st.integers(0, 3)})),
 }
 
 assert set(CALLS) == {n for n in fisst.__all__ if callable(getattr(fisst, n)) and n != "Result"}, (
@@ -133,6 +156,10 @@ def call(name, args):
         out = f(*positional, **kwargs)
         if name == "SensorControlRun":
             out = out.step()
+        if name in ("GmBernoulliFilter", "ParticleBernoulliFilter"):
+            out.predict()
+            out.update([])
+            out = out.estimate()
     except (TypeError, ValueError) as e:
         assert str(e), f"{name}: an empty message"
         return

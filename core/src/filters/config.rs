@@ -159,9 +159,12 @@ pub struct PredictOptions {
     /// The motion model π(x | x′) = N(x; F x′, Q) (`transition: { F, Q }`).
     pub transition: LinearGaussianTransition,
     /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives
-    /// one step (`survival`).
+    /// one step (`survival`; default [`default_survival`], 0.99).
+    #[cfg_attr(feature = "serde", serde(default = "default_survival"))]
     pub survival: f64,
-    /// Object birth: the birth probability p_b and birth density b(x) (`birth`).
+    /// Object birth: the birth probability p_b and birth density b(x) (`birth`; default
+    /// [`Birth::none`]).
+    #[cfg_attr(feature = "serde", serde(default = "Birth::none"))]
     pub birth: Birth,
 }
 
@@ -379,6 +382,7 @@ pub fn default_reduction() -> ReductionOptions {
 pub struct UpdateOptions {
     /// n_s: the position is the first `position_dims` state components (`positionDims`,
     /// default 2). Every region (FoV, report, exclusion) has this dimension.
+    #[cfg_attr(feature = "serde", serde(default = "default_position_dims"))]
     pub position_dims: usize,
     /// Detection: the detection probability p_D(x; S) = 1_S(x) p_D inside the field of view S
     /// (`detection`).
@@ -482,12 +486,16 @@ pub struct BernoulliFilterOptions {
     /// The motion model: transition matrix F and process noise covariance Q (`transition`).
     pub transition: LinearGaussianTransition,
     /// The survival probability p_S ∈ [0, 1] (`survival`): the probability that an existing object
-    /// survives one step.
+    /// survives one step (default [`default_survival`], 0.99).
+    #[cfg_attr(feature = "serde", serde(default = "default_survival"))]
     pub survival: f64,
-    /// Object birth: the birth probability p_b and birth density b(x) (`birth`).
+    /// Object birth: the birth probability p_b and birth density b(x) (`birth`; default
+    /// [`Birth::none`]: no birth).
+    #[cfg_attr(feature = "serde", serde(default = "Birth::none"))]
     pub birth: Birth,
     /// The number n_s of position components (`positionDims`): the first n_s state components are
-    /// the position that regions refer to.
+    /// the position that regions refer to (default [`default_position_dims`], 2).
+    #[cfg_attr(feature = "serde", serde(default = "default_position_dims"))]
     pub position_dims: usize,
     /// Detection: the detection probability p_D(x; S) = 1_S(x) p_D inside the field of view S
     /// (`detection`).

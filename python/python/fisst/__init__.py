@@ -10,12 +10,14 @@ docstring (``help(fisst.gospa)``).
 
 from ._fisst import (
     Result,
-    SensorControlRun,
     __version__,
     bernoulli_loss_curve,
     bernoulli_threshold_curve,
     compare_schemes,
     gaussian_fisher_information,
+    gm_bernoulli_predict,
+    gm_bernoulli_update,
+    GmBernoulliFilter,
     gospa,
     gospa_series,
     jde_bound_no_clutter,
@@ -33,17 +35,21 @@ from ._fisst import (
     multi_object_likelihood,
     ospa,
     ospa_series,
+    ParticleBernoulliFilter,
+    SensorControlRun,
     uospa,
 )
 
 __all__ = [
     "Result",
-    "SensorControlRun",
     "__version__",
     "bernoulli_loss_curve",
     "bernoulli_threshold_curve",
     "compare_schemes",
     "gaussian_fisher_information",
+    "gm_bernoulli_predict",
+    "gm_bernoulli_update",
+    "GmBernoulliFilter",
     "gospa",
     "gospa_series",
     "jde_bound_no_clutter",
@@ -61,5 +67,7 @@ __all__ = [
     "multi_object_likelihood",
     "ospa",
     "ospa_series",
+    "ParticleBernoulliFilter",
+    "SensorControlRun",
     "uospa",
 ]

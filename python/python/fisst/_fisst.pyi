@@ -9,12 +9,14 @@ import numpy.typing as npt
 __version__: str
 __all__ = [
     "Result",
-    "SensorControlRun",
     "__version__",
     "bernoulli_loss_curve",
     "bernoulli_threshold_curve",
     "compare_schemes",
     "gaussian_fisher_information",
+    "gm_bernoulli_predict",
+    "gm_bernoulli_update",
+    "GmBernoulliFilter",
     "gospa",
     "gospa_series",
     "jde_bound_no_clutter",
@@ -32,6 +34,8 @@ __all__ = [
     "multi_object_likelihood",
     "ospa",
     "ospa_series",
+    "ParticleBernoulliFilter",
+    "SensorControlRun",
     "uospa",
 ]
 
@@ -177,4 +181,60 @@ def compare_schemes(
     start: Sequence[float] = [0, 0],
     max_objects: int = 4,
     on_progress: Callable[[int, int], object] | None = None,
+) -> Result: ...
+
+_Region: TypeAlias = dict[str, Any]
+
+@final
+class GmBernoulliFilter:
+    """The GM Bernoulli filter of Algorithm 3 of paper 001 (imprecise reports, negative information)."""
+
+    def __new__(cls, **config: Any) -> GmBernoulliFilter: ...
+    def predict(self) -> None: ...
+    def update(self, reports: Sequence[_Region] | None = None, *, measurements: npt.ArrayLike | None = None) -> Result: ...
+    def estimate(self, *, radius: float | None = None, costs: _Costs | None = None) -> Result: ...
+    @property
+    def existence(self) -> float: ...
+    @property
+    def mixture(self) -> Any: ...
+    def __reduce__(self) -> tuple[Any, ...]: ...
+    @staticmethod
+    def _restore(options: dict[str, Any], ops: list[Any]) -> GmBernoulliFilter: ...
+
+@final
+class ParticleBernoulliFilter:
+    """The particle Bernoulli filter of paper 001 (systematic resampling, an MCMC move)."""
+
+    def __new__(cls, **config: Any) -> ParticleBernoulliFilter: ...
+    def predict(self) -> None: ...
+    def update(self, reports: Sequence[_Region] | None = None, *, measurements: npt.ArrayLike | None = None) -> Result: ...
+    def estimate(self, *, radius: float | None = None, costs: _Costs | None = None) -> Result: ...
+    @property
+    def existence(self) -> float: ...
+    @property
+    def particles(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def weights(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def seed(self) -> int: ...
+    def __reduce__(self) -> tuple[Any, ...]: ...
+    @staticmethod
+    def _restore(options: dict[str, Any], particle: dict[str, Any], ops: list[Any]) -> ParticleBernoulliFilter: ...
+
+def gm_bernoulli_predict(
+    *, existence: float, mixture: Sequence[dict[str, Any]], transition: dict[str, Any], survival: float = 0.99, birth: dict[str, Any] | None = None
+) -> Result: ...
+def gm_bernoulli_update(
+    *,
+    existence: float,
+    mixture: Sequence[dict[str, Any]],
+    reports: Sequence[_Region] | None = None,
+    measurements: npt.ArrayLike | None = None,
+    likelihood: dict[str, Any] | None = None,
+    position_dims: int = 2,
+    detection: dict[str, Any],
+    clutter: dict[str, Any],
+    splitting: dict[str, Any] = ...,
+    reduction: dict[str, Any] = ...,
+    exclusions: Sequence[_Region] = [],
 ) -> Result: ...

@@ -37,5 +37,25 @@ const out = calls.map(([fn, args]) => ({ fn, args, result: fisst[fn](...args) })
 const run = new fisst.SensorControlRun({ scheme: 'pent', seed: 7, steps: 3, particles: 200, futureScans: 20 });
 const steps = [run.step(), run.step(), run.step()];
 out.push({ fn: 'SensorControlRun', args: [{ scheme: 'pent', seed: 7, steps: 3, particles: 200, futureScans: 20 }], result: steps });
+// GmBernoulliFilter and ParticleBernoulliFilter: predict, update with regions, an empty scan,
+// and a vector update; the update infos, existence and mixture after each
+const filterConfig = {
+  existence: 0.5,
+  mixture: [{ weight: 1, mean: [0, 0, 1, 0], cov: [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]] }],
+  transition: { F: [[1, 0, 1, 0], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]], Q: [[0.1, 0, 0, 0], [0, 0.1, 0, 0], [0, 0, 0.1, 0], [0, 0, 0, 0.1]] },
+  detection: { probability: 0.9, fov: { box: { min: [-5, -5], max: [5, 5] } } },
+  clutter: { rate: 1, density: 0.01 },
+  likelihood: { H: [[1, 0, 0, 0], [0, 1, 0, 0]], R: [[0.5, 0], [0, 0.5]] },
+};
+const scans = [[{ disc: { center: [1, 0], radius: 1 } }], [], { measurements: [[2.5, 0.2]] }];
+for (const [name, extra] of [['GmBernoulliFilter', {}], ['ParticleBernoulliFilter', { particles: 300, seed: 5 }]]) {
+  const f = new fisst[name]({ ...filterConfig, ...extra });
+  const trace = [];
+  for (const s of scans) {
+    f.predict();
+    trace.push({ info: f.update(s), existence: f.existence, ...(name === 'GmBernoulliFilter' ? { mixture: f.mixture } : { weights: f.weights }) });
+  }
+  out.push({ fn: name, args: [{ ...filterConfig, ...extra }], scans, result: trace });
+}
 const replacer = (_, v) => (v instanceof Float64Array || v instanceof Uint8Array ? Array.from(v) : typeof v === 'number' && !Number.isFinite(v) ? { nonFinite: String(v) } : v);
 process.stdout.write(JSON.stringify(out, replacer));
