@@ -135,6 +135,54 @@ fn ops_to_py<'py>(py: Python<'py>, ops: &[Op]) -> PyResult<Bound<'py, PyList>> {
     Ok(list)
 }
 
+/// What the two core filters share, so that one update serves both classes.
+trait Scans: Send {
+    fn by_reports(&mut self, reports: &[Region]) -> fisst::Result<fisst::filters::UpdateInfo>;
+    fn by_measurements(&mut self, z: &[&[f64]]) -> fisst::Result<fisst::filters::UpdateInfo>;
+}
+
+impl Scans for CoreGm {
+    fn by_reports(&mut self, reports: &[Region]) -> fisst::Result<fisst::filters::UpdateInfo> {
+        self.update(reports)
+    }
+    fn by_measurements(&mut self, z: &[&[f64]]) -> fisst::Result<fisst::filters::UpdateInfo> {
+        self.update_measurements(z)
+    }
+}
+
+impl Scans for CorePf {
+    fn by_reports(&mut self, reports: &[Region]) -> fisst::Result<fisst::filters::UpdateInfo> {
+        self.update(reports)
+    }
+    fn by_measurements(&mut self, z: &[&[f64]]) -> fisst::Result<fisst::filters::UpdateInfo> {
+        self.update_measurements(z)
+    }
+}
+
+/// The update of `filter` with a scan (GIL released), recorded in `ops` when it succeeds (a
+/// failed update leaves the filter as it was, and the record too).
+fn update_with<'py, F: Scans>(
+    py: Python<'py>,
+    filter: &mut F,
+    ops: &mut Vec<Op>,
+    scan: Scan,
+) -> PyResult<Bound<'py, PyAny>> {
+    let (info, op) = match scan {
+        Scan::Reports(r) => (
+            py.detach(|| filter.by_reports(&r)).map_err(to_py)?,
+            Op::Update(r),
+        ),
+        Scan::Measurements(z, n, d) => {
+            let info = py
+                .detach(|| filter.by_measurements(&rows(&z, n, d)))
+                .map_err(to_py)?;
+            (info, Op::Measurements(z, n, d))
+        }
+    };
+    ops.push(op);
+    result(py, &info)
+}
+
 fn busy<'a, T>(m: &'a Mutex<T>, class: &str) -> PyResult<MutexGuard<'a, T>> {
     m.try_lock().map_err(|_| {
         PyRuntimeError::new_err(format!(
@@ -205,18 +253,8 @@ impl GmBernoulliFilter {
     ) -> PyResult<Bound<'py, PyAny>> {
         let scan = scan(reports, measurements)?;
         let mut s = busy(&self.inner, "GmBernoulliFilter")?;
-        let f: &mut CoreGm = &mut s.filter;
-        let (info, op) = match scan {
-            Scan::Reports(r) => (py.detach(|| f.update(&r)).map_err(to_py)?, Op::Update(r)),
-            Scan::Measurements(z, n, d) => {
-                let info = py
-                    .detach(|| f.update_measurements(&rows(&z, n, d)))
-                    .map_err(to_py)?;
-                (info, Op::Measurements(z, n, d))
-            }
-        };
-        s.ops.push(op);
-        result(py, &info)
+        let s = &mut *s;
+        update_with(py, &mut s.filter, &mut s.ops, scan)
     }
 
     /// The MMSE estimate (``estimate()``) or the optimal point estimate of the loss (7) of
@@ -380,18 +418,8 @@ impl ParticleBernoulliFilter {
     ) -> PyResult<Bound<'py, PyAny>> {
         let scan = scan(reports, measurements)?;
         let mut s = busy(&self.inner, "ParticleBernoulliFilter")?;
-        let f: &mut CorePf = &mut s.filter;
-        let (info, op) = match scan {
-            Scan::Reports(r) => (py.detach(|| f.update(&r)).map_err(to_py)?, Op::Update(r)),
-            Scan::Measurements(z, n, d) => {
-                let info = py
-                    .detach(|| f.update_measurements(&rows(&z, n, d)))
-                    .map_err(to_py)?;
-                (info, Op::Measurements(z, n, d))
-            }
-        };
-        s.ops.push(op);
-        result(py, &info)
+        let s = &mut *s;
+        update_with(py, &mut s.filter, &mut s.ops, scan)
     }
 
     /// The MMSE estimate or the optimal point estimate (as ``GmBernoulliFilter.estimate``).
