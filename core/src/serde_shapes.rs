@@ -11,6 +11,11 @@ use nalgebra::{DMatrix, DVector};
 use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
+/// At most this many Gaussians in one mixture read (a `GaussianMixture`, a
+/// `SpatialDensity`'s `mixture`): a longer array is an error naming it ("has 10001 entries, at
+/// most 10000 are supported").
+pub const MAX_GAUSSIANS: usize = 10_000;
+
 /// `DVector<f64>` as `[x, …]`.
 pub mod vector {
     use super::*;

@@ -271,7 +271,8 @@ pub struct GlmbHypothesis {
     /// The hypothesis weight (all weights sum to 1).
     pub weight: f64,
     /// The single-object densities of its labels, one Gaussian per object.
-    pub components: Vec<Gaussian>,
+    #[tsify(type = "Gaussian[]")]
+    pub components: Vec<CoreGaussian>,
 }
 
 /// An i.i.d. cluster density: a cardinality pmf and one single-object density.
@@ -281,7 +282,8 @@ pub struct IidCluster {
     /// most 20,001 entries).
     pub cardinality: Numbers,
     /// The single-object density as a mixture (weights sum to 1).
-    pub density: Vec<WeightedGaussian>,
+    #[tsify(type = "WeightedGaussian[]")]
+    pub density: GaussianMixture,
 }
 
 /// A multi-object density: exactly one key.
@@ -297,7 +299,7 @@ pub enum MultiObjectDensity {
     /// `{ multiBernoulli: Bernoulli[] }`: one Bernoulli per potential object.
     MultiBernoulli(Vec<Bernoulli>),
     /// `{ poisson: WeightedGaussian[] }`: the PHD (intensity) of a Poisson RFS.
-    Poisson(Vec<WeightedGaussian>),
+    Poisson(#[tsify(type = "WeightedGaussian[]")] GaussianMixture),
     /// `{ iidCluster: { cardinality, density } }`: an i.i.d. cluster RFS.
     IidCluster(IidCluster),
     /// `{ glmb: GlmbHypothesis[] }`: a generalised labelled multi-Bernoulli (GLMB) density.
