@@ -466,6 +466,46 @@ fn spatial_densities_read_one_of_three_forms() {
     }
 }
 
+/// A multi-Bernoulli of Gaussians through `serde_shapes::bernoullis`.
+#[test]
+fn bernoullis_read_existence_mean_cov() {
+    #[derive(serde::Serialize, serde::Deserialize, Debug)]
+    struct Mb {
+        #[serde(with = "crate::serde_shapes::bernoullis")]
+        mb: Vec<(f64, Gaussian)>,
+    }
+    let mb = Mb {
+        mb: vec![(0.5, gaussian(&[1.0, 2.0], &[2.0, 0.5, 0.5, 1.0]))],
+    };
+    let json = serde_json::to_string(&mb).unwrap();
+    assert_eq!(
+        json,
+        r#"{"mb":[{"existence":0.5,"mean":[1.0,2.0],"cov":[[2.0,0.5],[0.5,1.0]]}]}"#
+    );
+    let back: Mb = serde_json::from_str(&json).unwrap();
+    assert_eq!(back.mb, mb.mb);
+    let flat: Mb =
+        serde_json::from_str(r#"{"mb":[{"cov":[2,0.5,0.5,1],"mean":[1,2],"existence":0.5}]}"#)
+            .unwrap();
+    assert_eq!(flat.mb, mb.mb);
+    for case in [
+        r#"[{"existence":0.5,"mean":[0,0],"cov":1}] | invalid type: floating point `1.0`, expected a nested 2×2 array (a bare number is a 1D variance)"#,
+        r#"[{"existence":0.5,"mean":[0,0],"cov":[[1,2],[2,1]]}] | [0].cov is not positive definite (smallest eigenvalue -1)"#,
+        r#"[{"mean":[0],"cov":1}] | missing field `existence`"#,
+        r#"[{"existence":1,"weight":1,"mean":[0],"cov":1}] | unknown field `weight`, expected one of `existence`, `mean`, `cov`"#,
+    ] {
+        let (items, message) = case.split_once(" | ").unwrap();
+        let got = without_position(rejected::<Mb>(&alloc::format!(r#"{{"mb":{items}}}"#)));
+        assert_eq!(got, message, "{items}");
+    }
+    let component = r#"{"existence":1,"mean":[0],"cov":1}"#;
+    let many = alloc::format!(r#"{{"mb":[{}]}}"#, vec![component; 10_001].join(","));
+    assert_eq!(
+        without_position(rejected::<Mb>(&many)),
+        "has 10001 entries, at most 10000 are supported"
+    );
+}
+
 /// A mixture read has at most `MAX_GAUSSIANS` components.
 #[test]
 fn mixtures_read_at_most_max_gaussians_components() {

@@ -136,30 +136,26 @@ struct GaussianRead {
 
 const GAUSSIAN_FIELDS: &[&str] = &["mean", "cov"];
 const COMPONENT_FIELDS: &[&str] = &["weight", "mean", "cov"];
+const BERNOULLI_FIELDS: &[&str] = &["existence", "mean", "cov"];
 
-/// Reads [`GaussianRead`]; `WEIGHTED` takes the `weight` of a mixture component too.
-struct GaussianVisitor<const WEIGHTED: bool>;
+/// Reads [`GaussianRead`] with the keys `fields`: `mean`, `cov` and, when there are three, the
+/// weight first (`weight` of a mixture component, `existence` of a Bernoulli).
+struct GaussianVisitor(&'static [&'static str]);
 
-impl<'de, const WEIGHTED: bool> serde::de::Visitor<'de> for GaussianVisitor<WEIGHTED> {
+impl<'de> serde::de::Visitor<'de> for GaussianVisitor {
     type Value = GaussianRead;
     fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.write_str(match WEIGHTED {
-            true => "a mixture component { weight, mean, cov }",
-            false => "a Gaussian { mean, cov }",
-        })
+        write!(f, "an object {{ {} }}", self.0.join(", "))
     }
     fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<GaussianRead, A::Error> {
-        let fields = if WEIGHTED {
-            COMPONENT_FIELDS
-        } else {
-            GAUSSIAN_FIELDS
-        };
+        let fields = self.0;
+        let weight_key = (fields.len() == 3).then(|| fields[0]);
         let (mut weight, mut mean, mut cov) = (None, None::<Vec<f64>>, None);
         while let Some(key) = map.next_key::<alloc::string::String>()? {
             match key.as_str() {
-                "weight" if WEIGHTED => {
+                k if Some(k) == weight_key => {
                     if weight.is_some() {
-                        return Err(A::Error::duplicate_field("weight"));
+                        return Err(A::Error::duplicate_field(fields[0]));
                     }
                     weight = Some(map.next_value::<f64>()?);
                 }
@@ -181,8 +177,8 @@ impl<'de, const WEIGHTED: bool> serde::de::Visitor<'de> for GaussianVisitor<WEIG
                 _ => return Err(A::Error::unknown_field(&key, fields)),
             }
         }
-        let weight = match (WEIGHTED, weight) {
-            (true, None) => return Err(A::Error::missing_field("weight")),
+        let weight = match (weight_key, weight) {
+            (Some(k), None) => return Err(A::Error::missing_field(k)),
             (_, w) => w.unwrap_or(1.0),
         };
         let mean = mean.ok_or_else(|| A::Error::missing_field("mean"))?;
@@ -226,7 +222,11 @@ impl Serialize for Gaussian {
 impl<'de> Deserialize<'de> for Gaussian {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         deserializer
-            .deserialize_struct("Gaussian", GAUSSIAN_FIELDS, GaussianVisitor::<false>)?
+            .deserialize_struct(
+                "Gaussian",
+                GAUSSIAN_FIELDS,
+                GaussianVisitor(GAUSSIAN_FIELDS),
+            )?
             .gaussian("")
             .map_err(D::Error::custom)
     }
@@ -249,7 +249,7 @@ impl<'de> Deserialize<'de> for ComponentIn {
             .deserialize_struct(
                 "WeightedGaussian",
                 COMPONENT_FIELDS,
-                GaussianVisitor::<true>,
+                GaussianVisitor(COMPONENT_FIELDS),
             )
             .map(ComponentIn)
     }
@@ -284,6 +284,66 @@ impl Serialize for GaussianMixture {
             .collect();
         components.serialize(serializer)
     }
+}
+
+/// A Bernoulli component `{existence, mean, cov}` as read.
+struct BernoulliIn(GaussianRead);
+
+impl<'de> Deserialize<'de> for BernoulliIn {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        deserializer
+            .deserialize_struct(
+                "Bernoulli",
+                BERNOULLI_FIELDS,
+                GaussianVisitor(BERNOULLI_FIELDS),
+            )
+            .map(BernoulliIn)
+    }
+}
+
+/// `[{existence, mean, cov}, …]` as `(existence, N(mean, cov))` pairs, at most
+/// [`MAX_GAUSSIANS`] (module [`crate::serde_shapes::bernoullis`]); errors relative to the
+/// array (`[2].cov`, `has 10001 entries, …`). The existences are not checked here.
+pub(crate) fn read_bernoullis<'de, D: Deserializer<'de>>(
+    deserializer: D,
+) -> Result<Vec<(f64, Gaussian)>, D::Error> {
+    let read = Vec::<BernoulliIn>::deserialize(deserializer)?;
+    if read.len() > MAX_GAUSSIANS {
+        return Err(D::Error::custom(alloc::format!(
+            "has {} entries, at most {MAX_GAUSSIANS} are supported",
+            read.len()
+        )));
+    }
+    read.iter()
+        .enumerate()
+        .map(|(j, BernoulliIn(c))| {
+            let g = c.gaussian(&alloc::format!("[{j}]"));
+            g.map(|g| (c.weight, g)).map_err(D::Error::custom)
+        })
+        .collect()
+}
+
+/// `(existence, Gaussian)` pairs written as `[{existence, mean, cov}, …]`.
+pub(crate) fn write_bernoullis<S: Serializer>(
+    items: &[(f64, Gaussian)],
+    serializer: S,
+) -> Result<S::Ok, S::Error> {
+    #[derive(Serialize)]
+    struct BernoulliRepr {
+        existence: f64,
+        mean: Vec<f64>,
+        #[serde(with = "matrix")]
+        cov: DMatrix<f64>,
+    }
+    let items: Vec<BernoulliRepr> = items
+        .iter()
+        .map(|(r, g)| BernoulliRepr {
+            existence: *r,
+            mean: g.mean().as_slice().to_vec(),
+            cov: g.cov().clone(),
+        })
+        .collect();
+    items.serialize(serializer)
 }
 
 /// `[{weight, mean, cov}, …]`, at most [`MAX_GAUSSIANS`] components.

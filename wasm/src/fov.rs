@@ -8,13 +8,13 @@ use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, range_error, read, write};
-use crate::types::{self, Bernoulli, Grid, MultiObjectDensity, Region};
+use crate::types::{self, Grid, MultiObjectDensity, Region};
 use fisst::fov::{
     FOV_MASS_BUDGET_US, MAX_CARDINALITY_LEN, MAX_DENSITY_GRID_WORK, MAX_VARIANCE_MAP_WORK,
     MultiObjectDensity as CoreDensity, SceneOptions, fov_cardinality, fov_mass_work_us, grid_work,
     mixture_density_grid, placement_scene, variance_map,
 };
-use fisst::gaussian::GaussianMixture;
+use fisst::gaussian::{Gaussian as CoreGaussian, GaussianMixture};
 
 fn one() -> f64 {
     1.0
@@ -61,7 +61,9 @@ pub struct FovCardinalityResult {
 #[serde(rename_all = "camelCase")]
 pub struct FovVarianceMapOptions {
     /// The multi-Bernoulli (2D or more; the first two state components are positions).
-    pub multi_bernoulli: Vec<Bernoulli>,
+    #[serde(with = "fisst::serde_shapes::bernoullis")]
+    #[tsify(type = "Bernoulli[]")]
+    pub multi_bernoulli: Vec<(f64, CoreGaussian)>,
     /// FoV width and height, > 0 (an axis-aligned box centred on each grid point).
     pub fov_size: (f64, f64),
     /// The grid of FoV centres; components × cells at most 2e8.
@@ -135,9 +137,7 @@ pub fn fov_cardinality_js(
 ) -> JsResult<JsValue> {
     let o: FovCardinalityOptions = read(options, "options")?;
     let density = match o.rfs {
-        MultiObjectDensity::MultiBernoulli(c) => {
-            CoreDensity::MultiBernoulli(types::bernoullis(c, "options.rfs.multiBernoulli")?)
-        }
+        MultiObjectDensity::MultiBernoulli(c) => CoreDensity::MultiBernoulli(c),
         MultiObjectDensity::Poisson(m) => CoreDensity::Poisson(m),
         MultiObjectDensity::IidCluster(c) => {
             let cardinality = c.cardinality.0;
@@ -195,7 +195,7 @@ pub fn fov_variance_map(
     #[wasm_bindgen(unchecked_param_type = "FovVarianceMapOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: FovVarianceMapOptions = read(options, "options")?;
-    let comps = types::bernoullis(o.multi_bernoulli, "options.multiBernoulli")?;
+    let comps = o.multi_bernoulli;
     let (x, y) = o.grid.into_core("options.grid")?;
     if grid_work(comps.len(), x, y) > MAX_VARIANCE_MAP_WORK {
         return Err(range_error(format!(

@@ -101,7 +101,9 @@ pub struct WeightedGaussian {
 
 /// A Bernoulli component with a Gaussian density: the object exists with probability
 /// `existence` and then has density N(mean, cov).
-#[derive(Clone, Debug, Deserialize, Tsify)]
+// The TypeScript declaration only: the values are read by the core
+// (`fisst::serde_shapes::bernoullis`).
+#[derive(Clone, Debug, Tsify)]
 pub struct Bernoulli {
     /// The existence probability r ∈ [0, 1]: the probability that the object exists.
     pub existence: f64,
@@ -135,21 +137,6 @@ pub fn mixture(items: Vec<WeightedGaussian>, path: &str) -> JsResult<GaussianMix
         })
         .collect::<JsResult<Vec<_>>>()?;
     GaussianMixture::new(comps, path).or_throw()
-}
-
-/// `(existence, Gaussian)` pairs from Bernoulli components at `path`.
-pub fn bernoullis(items: Vec<Bernoulli>, path: &str) -> JsResult<Vec<(f64, CoreGaussian)>> {
-    check_gaussian_count(items.len(), path)?;
-    items
-        .into_iter()
-        .enumerate()
-        .map(|(i, c)| {
-            Ok((
-                c.existence,
-                core_gaussian(c.mean, c.cov, &format!("{path}[{i}]"))?,
-            ))
-        })
-        .collect()
 }
 
 /// A mixture component as results give it back: `cov` as nested rows. It can be passed back
@@ -297,7 +284,11 @@ pub struct IidCluster {
 #[serde(rename_all = "camelCase")]
 pub enum MultiObjectDensity {
     /// `{ multiBernoulli: Bernoulli[] }`: one Bernoulli per potential object.
-    MultiBernoulli(Vec<Bernoulli>),
+    MultiBernoulli(
+        #[serde(with = "fisst::serde_shapes::bernoullis")]
+        #[tsify(type = "Bernoulli[]")]
+        Vec<(f64, CoreGaussian)>,
+    ),
     /// `{ poisson: WeightedGaussian[] }`: the PHD (intensity) of a Poisson RFS.
     Poisson(#[tsify(type = "WeightedGaussian[]")] GaussianMixture),
     /// `{ iidCluster: { cardinality, density } }`: an i.i.d. cluster RFS.
