@@ -15,8 +15,9 @@ use crate::boundary::{JsResult, OrThrow, range_error, type_error};
 use fisst::gaussian::{Gaussian as CoreGaussian, GaussianMixture};
 use fisst::regions::Region as CoreRegion;
 
-/// At most this many Gaussians in one mixture or density argument.
-pub const MAX_GAUSSIANS: usize = 10_000;
+/// At most this many Gaussians in one mixture or density argument (the core's cap, which its
+/// own readers of mixtures and multi-Bernoullis apply).
+pub use fisst::serde_shapes::MAX_GAUSSIANS;
 /// At most this many polygon vertices.
 pub const MAX_VERTICES: usize = 1_000;
 
