@@ -11,6 +11,38 @@ use nalgebra::{DMatrix, DVector};
 use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
+/// At most this many Gaussians in one mixture read (a `GaussianMixture`, a
+/// `SpatialDensity`'s `mixture`): a longer array is an error naming it ("has 10001 entries, at
+/// most 10000 are supported").
+pub const MAX_GAUSSIANS: usize = 10_000;
+
+/// A multi-Bernoulli of Gaussians, `Vec<(f64, Gaussian)>` (existence, density), as
+/// `[{existence, mean, cov}, …]`: `cov` in any [`Covariance`] form, at most [`MAX_GAUSSIANS`]
+/// components; errors relative to the array (`[2].cov`, `[0].mean[1]`). Use it with
+/// `#[serde(with = "fisst::serde_shapes::bernoullis")]`.
+pub mod bernoullis {
+    use super::*;
+    use crate::gaussian::Gaussian;
+
+    /// Writes `[{existence, mean, cov}, …]`, `cov` as rows.
+    ///
+    /// # Errors
+    /// The serializer's.
+    pub fn serialize<S: Serializer>(v: &[(f64, Gaussian)], s: S) -> Result<S::Ok, S::Error> {
+        crate::serde_valid::write_bernoullis(v, s)
+    }
+
+    /// Reads `[{existence, mean, cov}, …]` (the existences are not checked).
+    ///
+    /// # Errors
+    /// The deserializer's; a type error (`invalid_type`) for a bare-number `cov` when the mean
+    /// has more than one entry; a custom error for more than [`MAX_GAUSSIANS`] components or a
+    /// covariance that does not fit its mean or is not positive definite.
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<(f64, Gaussian)>, D::Error> {
+        crate::serde_valid::read_bernoullis(d)
+    }
+}
+
 /// `DVector<f64>` as `[x, …]`.
 pub mod vector {
     use super::*;

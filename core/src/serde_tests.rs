@@ -42,6 +42,14 @@ fn rejected<T: DeserializeOwned + Debug>(json: &str) -> String {
     serde_json::from_str::<T>(json).unwrap_err().to_string()
 }
 
+/// A serde_json message without its " at line 1 column 9".
+fn without_position(message: String) -> String {
+    match message.rfind(" at line ") {
+        Some(i) => message[..i].into(),
+        None => message,
+    }
+}
+
 fn gaussian(mean: &[f64], cov: &[f64]) -> Gaussian {
     Gaussian::from_slices(mean, cov, "g").unwrap()
 }
@@ -107,18 +115,33 @@ fn gaussians_read_nested_flat_and_scalar_covariances() {
     assert_eq!(nested, flat);
     let scalar: Gaussian = serde_json::from_str(r#"{"mean":[1],"cov":4}"#).expect("1D");
     assert_eq!(scalar, gaussian(&[1.0], &[4.0]));
-    // `cov` of a 2D Gaussian | the message
+    // `cov` of a 2D Gaussian | the message when `mean` comes first (the covariance is
+    // checked as it is read, its errors relative to it) | when `cov` comes first
     for case in [
-        "4 | .cov must be a nested 2×2 array (a bare number is a 1D variance)",
-        "[1,0,0] | .cov has length 3, expected 2 rows or 4 row-major numbers",
-        "[[1,0]] | .cov has length 1, expected 2",
-        "[[1,0],[0]] | .cov[1] has length 1, expected 2",
-        "[[1,0],0] | .cov[1] must be a row (array of numbers) like the entries before it",
-        "[1,[0]] | .cov[1] must be a number like the entries before it",
+        "4 | invalid type: floating point `4.0`, expected a nested 2×2 array (a bare number is a 1D variance) \
+         | invalid type: floating point `4.0`, expected an object whose cov is a nested 2×2 array (a bare number is a 1D variance)",
+        "[1,0,0] | has length 3, expected 2 rows or 4 row-major numbers \
+         | .cov has length 3, expected 2 rows or 4 row-major numbers",
+        "[[1,0]] | has length 1, expected 2 | .cov has length 1, expected 2",
+        "[[1,0],[0]] | [1] has length 1, expected 2 | .cov[1] has length 1, expected 2",
+        "[[1,0],0] | [1] must be a row (array of numbers) like the entries before it \
+         | .cov[1] must be a row (array of numbers) like the entries before it",
+        "[1,[0]] | [1] must be a number like the entries before it \
+         | .cov[1] must be a number like the entries before it",
     ] {
-        let (cov, message) = case.split_once(" | ").unwrap();
+        let [cov, mean_first, cov_first] = [0, 1, 2].map(|i| case.split(" | ").nth(i).unwrap());
         let json = alloc::format!(r#"{{"mean":[0,0],"cov":{cov}}}"#);
-        assert_eq!(rejected::<Gaussian>(&json), message, "{json}");
+        assert_eq!(
+            without_position(rejected::<Gaussian>(&json)),
+            mean_first,
+            "{json}"
+        );
+        let json = alloc::format!(r#"{{"cov":{cov},"mean":[0,0]}}"#);
+        assert_eq!(
+            without_position(rejected::<Gaussian>(&json)),
+            cov_first,
+            "{json}"
+        );
     }
     let wrong = rejected::<Gaussian>(r#"{"mean":[0],"cov":"x"}"#);
     assert!(
@@ -392,6 +415,114 @@ fn estimators_and_bernoulli_results_round_trip() {
     assert!(
         rejected::<Costs>(r#"{"c00":0.0,"c01":-1.0,"c10":1.0,"c11":0.0,"c":1.0}"#)
             .starts_with(&expected)
+    );
+}
+
+/// A [`SpatialDensity`] is written and read as the user writes it: `{mean, cov}`,
+/// `{mixture: [...]}` or `{particles, weights}`, exactly one form.
+#[test]
+fn spatial_densities_read_one_of_three_forms() {
+    let g = SpatialDensity::gaussian_from_slices(&[0.5, 0.0], &[1.0, 0.0, 0.0, 1.0]).unwrap();
+    assert_eq!(
+        serde_json::to_string(&g).unwrap(),
+        r#"{"mean":[0.5,0.0],"cov":[[1.0,0.0],[0.0,1.0]]}"#
+    );
+    let one = gaussian(&[0.0], &[1.0]);
+    let mixture = GaussianMixture::new(vec![(1.0, one.clone()), (3.0, one)], "m").unwrap();
+    let json = serde_json::to_string(&SpatialDensity::mixture(&mixture).unwrap()).unwrap();
+    assert!(json.starts_with(r#"{"mixture":[{"weight":0.25,"#), "{json}");
+    let read: SpatialDensity =
+        serde_json::from_str(r#"{"particles":[[0],[1]]}"#).expect("weights optional");
+    assert_eq!(
+        serde_json::to_string(&read).unwrap(),
+        r#"{"particles":[[0.0],[1.0]],"weights":[0.5,0.5]}"#
+    );
+    let flat: SpatialDensity = serde_json::from_str(r#"{"cov":[1,0,0,1],"mean":[0.5,0]}"#).unwrap();
+    assert_eq!(flat, g);
+    // the density | the message (relative to the density: a binding that tracks paths puts
+    // its own in front)
+    for case in [
+        r#"{"mean":[0,0],"cov":1} | invalid type: floating point `1.0`, expected a nested 2×2 array (a bare number is a 1D variance)"#,
+        r#"{"mean":[0,0],"cov":[[1,2],[2,1]]} | .cov is not positive definite (smallest eigenvalue -1)"#,
+        r#"{"mean":[],"cov":[]} | .mean has length 0, expected 1"#,
+        r#"{"mean":[0]} | missing field `cov`"#,
+        r#"{"cov":1} | missing field `mean`"#,
+        r#"{"mixture":[]} | .mixture: a mixture needs at least one component"#,
+        r#"{"mixture":[{"weight":0,"mean":[0],"cov":1}]} | .mixture[].weight sum must be finite and > 0, got 0"#,
+        r#"{"mixture":[{"weight":1,"mean":[0],"cov":[[-1]]}]} | [0].cov is not positive definite (smallest eigenvalue -1)"#,
+        r#"{"mixture":[{"mean":[0],"cov":1}]} | missing field `weight`"#,
+        r#"{"particles":[]} | .particles: at least one particle is needed"#,
+        r#"{"particles":[[0],[0,1]]} | .particles[1] has length 2, expected 1"#,
+        r#"{"particles":[[0],[1]],"weights":[1]} | .weights has length 1, expected 2"#,
+        r#"{"particles":[[0],[1]],"weights":[0,0]} | .weights sum must be finite and > 0, got 0"#,
+        r#"{"mean":[0],"cov":1,"mixture":[]} | invalid type: more than one, expected exactly one of { mean, cov }, { mixture: [...] } or { particles: [...], weights }"#,
+        r#"{} | invalid type: none of them, expected exactly one of { mean, cov }, { mixture: [...] } or { particles: [...], weights }"#,
+        r#"{"mean":[0],"cov":1,"weights":[1]} | invalid type: weights without particles, expected exactly one of { mean, cov }, { mixture: [...] } or { particles: [...], weights }"#,
+        r#"{"mean":[0],"cov":1,"mixtur":[]} | unknown field `mixtur`, expected one of `mean`, `cov`, `mixture`, `particles`, `weights`"#,
+    ] {
+        let (json, message) = case.split_once(" | ").unwrap();
+        let got = without_position(rejected::<SpatialDensity>(json));
+        assert_eq!(got, message, "{json}");
+    }
+}
+
+/// A multi-Bernoulli of Gaussians through `serde_shapes::bernoullis`.
+#[test]
+fn bernoullis_read_existence_mean_cov() {
+    #[derive(serde::Serialize, serde::Deserialize, Debug)]
+    struct Mb {
+        #[serde(with = "crate::serde_shapes::bernoullis")]
+        mb: Vec<(f64, Gaussian)>,
+    }
+    let mb = Mb {
+        mb: vec![(0.5, gaussian(&[1.0, 2.0], &[2.0, 0.5, 0.5, 1.0]))],
+    };
+    let json = serde_json::to_string(&mb).unwrap();
+    assert_eq!(
+        json,
+        r#"{"mb":[{"existence":0.5,"mean":[1.0,2.0],"cov":[[2.0,0.5],[0.5,1.0]]}]}"#
+    );
+    let back: Mb = serde_json::from_str(&json).unwrap();
+    assert_eq!(back.mb, mb.mb);
+    let flat: Mb =
+        serde_json::from_str(r#"{"mb":[{"cov":[2,0.5,0.5,1],"mean":[1,2],"existence":0.5}]}"#)
+            .unwrap();
+    assert_eq!(flat.mb, mb.mb);
+    for case in [
+        r#"[{"existence":0.5,"mean":[0,0],"cov":1}] | invalid type: floating point `1.0`, expected a nested 2×2 array (a bare number is a 1D variance)"#,
+        r#"[{"existence":0.5,"mean":[0,0],"cov":[[1,2],[2,1]]}] | [0].cov is not positive definite (smallest eigenvalue -1)"#,
+        r#"[{"mean":[0],"cov":1}] | missing field `existence`"#,
+        r#"[{"existence":1,"weight":1,"mean":[0],"cov":1}] | unknown field `weight`, expected one of `existence`, `mean`, `cov`"#,
+    ] {
+        let (items, message) = case.split_once(" | ").unwrap();
+        let got = without_position(rejected::<Mb>(&alloc::format!(r#"{{"mb":{items}}}"#)));
+        assert_eq!(got, message, "{items}");
+    }
+    let component = r#"{"existence":1,"mean":[0],"cov":1}"#;
+    let many = alloc::format!(r#"{{"mb":[{}]}}"#, vec![component; 10_001].join(","));
+    assert_eq!(
+        without_position(rejected::<Mb>(&many)),
+        "has 10001 entries, at most 10000 are supported"
+    );
+}
+
+/// A mixture read has at most `MAX_GAUSSIANS` components.
+#[test]
+fn mixtures_read_at_most_max_gaussians_components() {
+    use crate::serde_shapes::MAX_GAUSSIANS;
+    let component = r#"{"weight":1,"mean":[0],"cov":1}"#;
+    let many = |n: usize| alloc::format!("[{}]", vec![component; n].join(","));
+    let m: GaussianMixture = serde_json::from_str(&many(MAX_GAUSSIANS)).unwrap();
+    assert_eq!(m.len(), MAX_GAUSSIANS);
+    assert_eq!(
+        without_position(rejected::<GaussianMixture>(&many(MAX_GAUSSIANS + 1))),
+        "has 10001 entries, at most 10000 are supported"
+    );
+    assert_eq!(
+        without_position(rejected::<GaussianMixture>(
+            r#"[{"weight":1,"mean":[0],"cov":1,"w":1}]"#
+        )),
+        "unknown field `w`, expected one of `weight`, `mean`, `cov`"
     );
 }
 

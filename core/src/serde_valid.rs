@@ -5,8 +5,8 @@
 //!
 //! | type | shape | constructor |
 //! |---|---|---|
-//! | [`Gaussian`] | `{mean, cov}`, `cov` any [`Covariance`] form (written as rows) | [`Gaussian::from_slices`] (`.mean`, `.cov`) |
-//! | [`GaussianMixture`] | `[{weight, mean, cov}, …]` | [`GaussianMixture::new`] (`[j].weight`, `[j].cov`) |
+//! | [`Gaussian`] | `{mean, cov}`, `cov` any [`Covariance`] form (written as rows; a bare number for n > 1 is `invalid_type` naming `cov`) | [`Gaussian::from_slices`] (`.mean`, `.cov`) |
+//! | [`GaussianMixture`] | `[{weight, mean, cov}, …]`, at most [`MAX_GAUSSIANS`] | [`GaussianMixture::new`] (`[j].weight`, `[j].cov`) |
 //! | [`LinearGaussianTransition`] | `{f, q}` | [`LinearGaussianTransition::new`] |
 //! | [`LinearGaussianLikelihood`] | `{h, r}` | [`LinearGaussianLikelihood::new`] |
 //! | [`Gospa`], [`Ospa`] | `{c, p, alpha}`, `{c, p}` | [`Gospa::new`], [`Ospa::new`] |
@@ -23,7 +23,7 @@
 //! | [`LinearGaussian`] | `{detection, gain, offset, noise_variance}` | [`LinearGaussian::new`] |
 //! | [`GaussianPrior`] | `{mean, cov}` (`cov` rows) | [`GaussianPrior::new`] |
 //! | [`LinearGaussianSensor`] | `{detection_probability, gain, offset, noise_cov}` (`gain`, `noise_cov` rows) | [`LinearGaussianSensor::new`] |
-//! | [`SpatialDensity`] | `{"Gaussian": gaussian}`, `{"Mixture": mixture}`, `{"Particles": particle set}` | [`SpatialDensity::gaussian`], [`SpatialDensity::mixture`], [`SpatialDensity::particles`] |
+//! | [`SpatialDensity`] | exactly one of `{mean, cov}`, `{mixture: [...]}`, `{particles, weights}` (`weights` optional; errors name `.mixture[2].cov`, `.particles[1]`) | [`SpatialDensity::gaussian`], [`SpatialDensity::mixture`], [`SpatialDensity::particles`] |
 //! | [`Region`] | `{"box": …}`, `{"polygon": …}`, `{"ball": …}`, `{"union": [regions]}`, `{"intersection": [regions]}`, `{"complement": region}` | [`Region::from`], [`Region::union`], … |
 //!
 //! Errors of the Gaussian types name the field relative to the value being read (`.cov`,
@@ -49,7 +49,7 @@ use crate::filters::{
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::metrics::{Gospa, Ospa};
 use crate::regions::{AxisBox, Ball, Node, Polygon, Region};
-use crate::serde_shapes::{Covariance, covariance_row_major, matrix};
+use crate::serde_shapes::{Covariance, MAX_GAUSSIANS, covariance_row_major, matrix};
 use crate::smc::MultiObjectLikelihood;
 use crate::splitting::SplitLibrary;
 
@@ -82,19 +82,130 @@ struct GaussianRepr {
     cov: DMatrix<f64>,
 }
 
-/// A Gaussian as read: the covariance in any of the [`Covariance`] forms.
-#[derive(Deserialize)]
-struct GaussianIn {
-    mean: Vec<f64>,
-    cov: Covariance,
+/// Reads a covariance for a mean of length n and checks it in place, so that a
+/// path-tracking deserializer names the covariance itself: a bare number for n ≠ 1 is a type
+/// error (`invalid_type`), a misfit of lengths a value error (`custom`, relative: `[1] has
+/// length 1, expected 2`).
+struct CovarianceSeed(usize);
+
+impl<'de> serde::de::DeserializeSeed<'de> for CovarianceSeed {
+    type Value = Vec<f64>;
+    fn deserialize<D: Deserializer<'de>>(self, deserializer: D) -> Result<Vec<f64>, D::Error> {
+        let cov = Covariance::deserialize(deserializer)?;
+        covariance_fit(cov, self.0, "", |x, n| {
+            D::Error::invalid_type(
+                serde::de::Unexpected::Float(x),
+                &alloc::format!("a nested {n}×{n} array (a bare number is a 1D variance)").as_str(),
+            )
+        })
+    }
 }
 
-/// N(mean, cov) from its read form; errors name the fields relative to the Gaussian
-/// (`.cov`, `.mean[1]`), which a path-tracking deserializer appends to its path.
-fn gaussian_in(g: GaussianIn, at: &str) -> Result<Gaussian, alloc::string::String> {
-    let cov = covariance_row_major(g.cov, g.mean.len(), &alloc::format!("{at}.cov"))
-        .map_err(|e| e.message)?;
-    Gaussian::from_slices(&g.mean, &cov, at).map_err(|e| e.to_string())
+/// `cov`'s n·n row-major entries ([`covariance_row_major`] at `at`); `wrong_type` makes the
+/// error for a bare number when n ≠ 1, any other misfit is a `custom` error (its message
+/// relative: a leading path `at` or none).
+fn covariance_fit<E: serde::de::Error>(
+    cov: Covariance,
+    n: usize,
+    at: &str,
+    wrong_type: impl FnOnce(f64, usize) -> E,
+) -> Result<Vec<f64>, E> {
+    let bare = match &cov {
+        crate::serde_shapes::ScalarOr::Scalar(x) => Some(*x),
+        _ => None,
+    };
+    covariance_row_major(cov, n, at).map_err(|e| match bare {
+        Some(x) if e.wrong_type => wrong_type(x, n),
+        _ => E::custom(e.message.trim_start()),
+    })
+}
+
+/// A covariance as read: checked against the mean when the mean came first, else as given.
+enum CovRead {
+    Checked(Vec<f64>),
+    Raw(Covariance),
+}
+
+/// `{mean, cov}` (a [`Gaussian`]) or `{weight, mean, cov}` (a mixture component) as read,
+/// the covariance row-major and fitting the mean.
+struct GaussianRead {
+    weight: f64,
+    mean: Vec<f64>,
+    cov: Vec<f64>,
+}
+
+const GAUSSIAN_FIELDS: &[&str] = &["mean", "cov"];
+const COMPONENT_FIELDS: &[&str] = &["weight", "mean", "cov"];
+const BERNOULLI_FIELDS: &[&str] = &["existence", "mean", "cov"];
+
+/// Reads [`GaussianRead`] with the keys `fields`: `mean`, `cov` and, when there are three, the
+/// weight first (`weight` of a mixture component, `existence` of a Bernoulli).
+struct GaussianVisitor(&'static [&'static str]);
+
+impl<'de> serde::de::Visitor<'de> for GaussianVisitor {
+    type Value = GaussianRead;
+    fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "an object {{ {} }}", self.0.join(", "))
+    }
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<GaussianRead, A::Error> {
+        let fields = self.0;
+        let weight_key = (fields.len() == 3).then(|| fields[0]);
+        let (mut weight, mut mean, mut cov) = (None, None::<Vec<f64>>, None);
+        while let Some(key) = map.next_key::<alloc::string::String>()? {
+            match key.as_str() {
+                k if Some(k) == weight_key => {
+                    if weight.is_some() {
+                        return Err(A::Error::duplicate_field(fields[0]));
+                    }
+                    weight = Some(map.next_value::<f64>()?);
+                }
+                "mean" => {
+                    if mean.is_some() {
+                        return Err(A::Error::duplicate_field("mean"));
+                    }
+                    mean = Some(map.next_value()?);
+                }
+                "cov" => {
+                    if cov.is_some() {
+                        return Err(A::Error::duplicate_field("cov"));
+                    }
+                    cov = Some(match &mean {
+                        Some(m) => CovRead::Checked(map.next_value_seed(CovarianceSeed(m.len()))?),
+                        None => CovRead::Raw(map.next_value()?),
+                    });
+                }
+                _ => return Err(A::Error::unknown_field(&key, fields)),
+            }
+        }
+        let weight = match (weight_key, weight) {
+            (Some(k), None) => return Err(A::Error::missing_field(k)),
+            (_, w) => w.unwrap_or(1.0),
+        };
+        let mean = mean.ok_or_else(|| A::Error::missing_field("mean"))?;
+        let cov = match cov.ok_or_else(|| A::Error::missing_field("cov"))? {
+            CovRead::Checked(c) => c,
+            // the covariance came before the mean: checked here, its errors naming `.cov`
+            CovRead::Raw(c) => covariance_fit(c, mean.len(), ".cov", |x, n| {
+                A::Error::invalid_type(
+                    serde::de::Unexpected::Float(x),
+                    &alloc::format!(
+                        "an object whose cov is a nested {n}×{n} array (a bare number is a 1D \
+                         variance)"
+                    )
+                    .as_str(),
+                )
+            })?,
+        };
+        Ok(GaussianRead { weight, mean, cov })
+    }
+}
+
+impl GaussianRead {
+    /// N(mean, cov); errors name the fields relative to the Gaussian at `at` (`.cov`,
+    /// `[2].mean[1]`), which a path-tracking deserializer appends to its path.
+    fn gaussian(&self, at: &str) -> Result<Gaussian, alloc::string::String> {
+        Gaussian::from_slices(&self.mean, &self.cov, at).map_err(|e| e.to_string())
+    }
 }
 
 impl Serialize for Gaussian {
@@ -107,9 +218,17 @@ impl Serialize for Gaussian {
     }
 }
 
+/// `{mean, cov}`, `cov` in any [`Covariance`] form.
 impl<'de> Deserialize<'de> for Gaussian {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        gaussian_in(GaussianIn::deserialize(deserializer)?, "").map_err(D::Error::custom)
+        deserializer
+            .deserialize_struct(
+                "Gaussian",
+                GAUSSIAN_FIELDS,
+                GaussianVisitor(GAUSSIAN_FIELDS),
+            )?
+            .gaussian("")
+            .map_err(D::Error::custom)
     }
 }
 
@@ -122,11 +241,34 @@ struct ComponentRepr {
 }
 
 /// A mixture component as read.
-#[derive(Deserialize)]
-struct ComponentIn {
-    weight: f64,
-    mean: Vec<f64>,
-    cov: Covariance,
+struct ComponentIn(GaussianRead);
+
+impl<'de> Deserialize<'de> for ComponentIn {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        deserializer
+            .deserialize_struct(
+                "WeightedGaussian",
+                COMPONENT_FIELDS,
+                GaussianVisitor(COMPONENT_FIELDS),
+            )
+            .map(ComponentIn)
+    }
+}
+
+/// The mixture of the components read; errors relative to the array (`[2].cov`), or naming
+/// the array itself (more than [`MAX_GAUSSIANS`]).
+fn mixture_in(read: Vec<ComponentIn>, at: &str) -> Result<GaussianMixture, alloc::string::String> {
+    if read.len() > MAX_GAUSSIANS {
+        return Err(alloc::format!(
+            "{at}has {} entries, at most {MAX_GAUSSIANS} are supported",
+            read.len()
+        ));
+    }
+    let mut components = Vec::with_capacity(read.len());
+    for (j, ComponentIn(c)) in read.iter().enumerate() {
+        components.push((c.weight, c.gaussian(&alloc::format!("{at}[{j}]"))?));
+    }
+    GaussianMixture::new(components, at).map_err(|e| e.to_string())
 }
 
 impl Serialize for GaussianMixture {
@@ -144,19 +286,70 @@ impl Serialize for GaussianMixture {
     }
 }
 
+/// A Bernoulli component `{existence, mean, cov}` as read.
+struct BernoulliIn(GaussianRead);
+
+impl<'de> Deserialize<'de> for BernoulliIn {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        deserializer
+            .deserialize_struct(
+                "Bernoulli",
+                BERNOULLI_FIELDS,
+                GaussianVisitor(BERNOULLI_FIELDS),
+            )
+            .map(BernoulliIn)
+    }
+}
+
+/// `[{existence, mean, cov}, …]` as `(existence, N(mean, cov))` pairs, at most
+/// [`MAX_GAUSSIANS`] (module [`crate::serde_shapes::bernoullis`]); errors relative to the
+/// array (`[2].cov`, `has 10001 entries, …`). The existences are not checked here.
+pub(crate) fn read_bernoullis<'de, D: Deserializer<'de>>(
+    deserializer: D,
+) -> Result<Vec<(f64, Gaussian)>, D::Error> {
+    let read = Vec::<BernoulliIn>::deserialize(deserializer)?;
+    if read.len() > MAX_GAUSSIANS {
+        return Err(D::Error::custom(alloc::format!(
+            "has {} entries, at most {MAX_GAUSSIANS} are supported",
+            read.len()
+        )));
+    }
+    read.iter()
+        .enumerate()
+        .map(|(j, BernoulliIn(c))| {
+            let g = c.gaussian(&alloc::format!("[{j}]"));
+            g.map(|g| (c.weight, g)).map_err(D::Error::custom)
+        })
+        .collect()
+}
+
+/// `(existence, Gaussian)` pairs written as `[{existence, mean, cov}, …]`.
+pub(crate) fn write_bernoullis<S: Serializer>(
+    items: &[(f64, Gaussian)],
+    serializer: S,
+) -> Result<S::Ok, S::Error> {
+    #[derive(Serialize)]
+    struct BernoulliRepr {
+        existence: f64,
+        mean: Vec<f64>,
+        #[serde(with = "matrix")]
+        cov: DMatrix<f64>,
+    }
+    let items: Vec<BernoulliRepr> = items
+        .iter()
+        .map(|(r, g)| BernoulliRepr {
+            existence: *r,
+            mean: g.mean().as_slice().to_vec(),
+            cov: g.cov().clone(),
+        })
+        .collect();
+    items.serialize(serializer)
+}
+
+/// `[{weight, mean, cov}, …]`, at most [`MAX_GAUSSIANS`] components.
 impl<'de> Deserialize<'de> for GaussianMixture {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let read = Vec::<ComponentIn>::deserialize(deserializer)?;
-        let mut components = Vec::with_capacity(read.len());
-        for (j, c) in read.into_iter().enumerate() {
-            let g = GaussianIn {
-                mean: c.mean,
-                cov: c.cov,
-            };
-            let g = gaussian_in(g, &alloc::format!("[{j}]")).map_err(D::Error::custom)?;
-            components.push((c.weight, g));
-        }
-        GaussianMixture::new(components, "").map_err(|e| D::Error::custom(e.to_string()))
+        mixture_in(Vec::<ComponentIn>::deserialize(deserializer)?, "").map_err(D::Error::custom)
     }
 }
 
@@ -872,13 +1065,19 @@ through_constructor!(
     |r| LinearGaussian::new(r.detection, r.gain, r.offset, r.noise_variance)
 );
 
-/// [`SpatialDensity`] as the argument of its constructor (Rust variant names).
-#[derive(Serialize, Deserialize)]
-#[serde(rename = "SpatialDensity")]
+/// [`SpatialDensity`] as written: one Gaussian `{mean, cov}`, `{mixture: [...]}` or
+/// `{particles, weights}`.
+#[derive(Serialize)]
+#[serde(untagged)]
 enum SpatialDensityRepr {
     Gaussian(Gaussian),
-    Mixture(GaussianMixture),
-    Particles(ParticleSet),
+    Mixture {
+        mixture: GaussianMixture,
+    },
+    Particles {
+        particles: Vec<Vec<f64>>,
+        weights: Vec<f64>,
+    },
 }
 
 impl Serialize for SpatialDensity {
@@ -886,7 +1085,10 @@ impl Serialize for SpatialDensity {
         use serde::ser::Error as _;
         let repr = match (self.kind(), self.as_gaussian(), self.as_particles()) {
             (DensityKind::Gaussian, Some(g), _) => SpatialDensityRepr::Gaussian(g.clone()),
-            (DensityKind::Particles, _, Some(p)) => SpatialDensityRepr::Particles(p.clone()),
+            (DensityKind::Particles, _, Some(p)) => SpatialDensityRepr::Particles {
+                particles: (0..p.len()).map(|i| p.point(i).to_vec()).collect(),
+                weights: p.weights().to_vec(),
+            },
             _ => {
                 let components = self.mixture_components().unwrap_or_default();
                 let owned = components
@@ -895,21 +1097,122 @@ impl Serialize for SpatialDensity {
                     .collect();
                 let mixture = GaussianMixture::new(owned, "density.mixture")
                     .map_err(|e| S::Error::custom(e.to_string()))?;
-                SpatialDensityRepr::Mixture(mixture)
+                SpatialDensityRepr::Mixture { mixture }
             }
         };
         repr.serialize(serializer)
     }
 }
 
+/// The keys of a [`SpatialDensity`], and its forms as its error messages name them.
+const DENSITY_FIELDS: &[&str] = &["mean", "cov", "mixture", "particles", "weights"];
+const DENSITY_FORMS: &str =
+    "exactly one of { mean, cov }, { mixture: [...] } or { particles: [...], weights }";
+
+/// A constructor's error about the density being read, named relative to it
+/// (`density.mixture[2].weight` → `.mixture[2].weight`, `sum of density.weights` →
+/// `.weights sum`).
+fn density_error(e: Error) -> alloc::string::String {
+    e.map_paths(|p| match p.strip_prefix("sum of density") {
+        Some(rest) => alloc::format!("{rest} sum"),
+        None => p.strip_prefix("density").unwrap_or(p).into(),
+    })
+    .to_string()
+}
+
+struct DensityVisitor;
+
+impl<'de> serde::de::Visitor<'de> for DensityVisitor {
+    type Value = SpatialDensity;
+    fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(DENSITY_FORMS)
+    }
+    fn visit_map<A: serde::de::MapAccess<'de>>(
+        self,
+        mut map: A,
+    ) -> Result<SpatialDensity, A::Error> {
+        let mut mean: Option<Vec<f64>> = None;
+        let mut cov: Option<CovRead> = None;
+        let mut mixture: Option<GaussianMixture> = None;
+        let mut particles: Option<Vec<Vec<f64>>> = None;
+        let mut weights: Option<Vec<f64>> = None;
+        while let Some(key) = map.next_key::<alloc::string::String>()? {
+            let seen = match key.as_str() {
+                "mean" => mean.replace(map.next_value()?).is_some(),
+                "cov" => {
+                    let read = match &mean {
+                        Some(m) => CovRead::Checked(map.next_value_seed(CovarianceSeed(m.len()))?),
+                        None => CovRead::Raw(map.next_value()?),
+                    };
+                    cov.replace(read).is_some()
+                }
+                "mixture" => mixture.replace(map.next_value()?).is_some(),
+                "particles" => particles.replace(map.next_value()?).is_some(),
+                "weights" => weights.replace(map.next_value()?).is_some(),
+                _ => return Err(A::Error::unknown_field(&key, DENSITY_FIELDS)),
+            };
+            if seen {
+                let field = DENSITY_FIELDS.iter().find(|f| **f == key);
+                return Err(A::Error::duplicate_field(field.copied().unwrap_or("?")));
+            }
+        }
+        let gaussian = mean.is_some() || cov.is_some();
+        let forms = usize::from(gaussian)
+            + usize::from(mixture.is_some())
+            + usize::from(particles.is_some());
+        if forms != 1 || (weights.is_some() && particles.is_none()) {
+            let given = match forms {
+                0 if weights.is_some() => "weights without particles",
+                0 => "none of them",
+                1 => "weights without particles",
+                _ => "more than one",
+            };
+            return Err(A::Error::invalid_type(
+                serde::de::Unexpected::Other(given),
+                &DENSITY_FORMS,
+            ));
+        }
+        let built = if let Some(m) = mixture {
+            SpatialDensity::mixture(&m).map_err(density_error)
+        } else if let Some(points) = particles {
+            ParticleSet::new(&points, weights.as_deref())
+                .map(SpatialDensity::particles)
+                .map_err(density_error)
+        } else {
+            let mean = mean.ok_or_else(|| A::Error::missing_field("mean"))?;
+            let cov = match cov.ok_or_else(|| A::Error::missing_field("cov"))? {
+                CovRead::Checked(c) => c,
+                CovRead::Raw(c) => covariance_fit(c, mean.len(), ".cov", |x, n| {
+                    A::Error::invalid_type(
+                        serde::de::Unexpected::Float(x),
+                        &alloc::format!(
+                            "an object whose cov is a nested {n}×{n} array (a bare number is a \
+                             1D variance)"
+                        )
+                        .as_str(),
+                    )
+                })?,
+            };
+            let read = GaussianRead {
+                weight: 1.0,
+                mean,
+                cov,
+            };
+            let g = read.gaussian("").map_err(A::Error::custom)?;
+            SpatialDensity::gaussian(g).map_err(density_error)
+        };
+        built.map_err(A::Error::custom)
+    }
+}
+
+/// Exactly one of `{mean, cov}` ([`SpatialDensity::gaussian`]), `{mixture: [...]}`
+/// ([`SpatialDensity::mixture`]) or `{particles, weights}` (`weights` optional, default
+/// equal; [`SpatialDensity::particles`]). Two forms at once, or none, is a type error
+/// (`invalid_type`); errors of the parts name them relative to the density (`.mixture[2].cov`,
+/// `.particles[1]`).
 impl<'de> Deserialize<'de> for SpatialDensity {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let built = match SpatialDensityRepr::deserialize(deserializer)? {
-            SpatialDensityRepr::Gaussian(g) => SpatialDensity::gaussian(g),
-            SpatialDensityRepr::Mixture(m) => SpatialDensity::mixture(&m),
-            SpatialDensityRepr::Particles(p) => Ok(SpatialDensity::particles(p)),
-        };
-        built.map_err(|e| D::Error::custom(e.to_string()))
+        deserializer.deserialize_struct("SpatialDensity", DENSITY_FIELDS, DensityVisitor)
     }
 }
 

@@ -6,70 +6,26 @@ use serde::{Deserialize, Serialize};
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{JsResult, OrThrow, read, type_error, write};
+use crate::boundary::{JsResult, OrThrow, read, write};
 use crate::names::Renamed;
-use crate::types::{self, Covariance, Numbers, Point, WeightedGaussian};
+use crate::types::Point;
 use fisst::bernoulli::{
-    self, ApplicationLoss, BernoulliEstimate, Costs, LossCurveOptions, MmucMethod, ParticleSet,
-    SpatialDensity, ThresholdCurveOptions,
+    self, ApplicationLoss, BernoulliEstimate, Costs, LossCurveOptions, MmucMethod, SpatialDensity,
+    ThresholdCurveOptions,
 };
-use fisst::gaussian::Gaussian as CoreGaussian;
 
-/// The spatial density of a Bernoulli: one Gaussian (any dimension, full covariance), a
-/// Gaussian mixture (weights ≥ 0 with a positive sum; normalised), or weighted particles
-/// (weights ≥ 0 with a positive sum, default equal; normalised). Exactly one form.
-#[derive(Deserialize, Tsify)]
-#[tsify(
-    type = "{ mean: Point; cov: Covariance } | { mixture: WeightedGaussian[] } | { particles: Point[]; weights?: Numbers }"
-)]
-pub struct BernoulliDensity {
-    mean: Option<Point>,
-    cov: Option<Covariance>,
-    mixture: Option<Vec<WeightedGaussian>>,
-    particles: Option<Vec<Point>>,
-    weights: Option<Numbers>,
-}
-
-const DENSITY_FORMS: &str = "{ mean, cov }, { mixture: [...] } or { particles: [...], weights }";
-
-impl BernoulliDensity {
-    /// The core density; errors name `path` (`options.density`, `options.components[2].density`).
-    fn into_core(self, path: &str) -> JsResult<SpatialDensity> {
-        let gaussian_keys = self.mean.is_some() || self.cov.is_some();
-        let forms = usize::from(gaussian_keys)
-            + usize::from(self.mixture.is_some())
-            + usize::from(self.particles.is_some());
-        if forms != 1 || (self.weights.is_some() && self.particles.is_none()) {
-            return Err(type_error(format!(
-                "{path} must be exactly one of {DENSITY_FORMS}"
-            )));
-        }
-        // The core names density errors `density…`; `within` puts them under `path`'s parent.
-        let parent = path
-            .strip_suffix("density")
-            .map_or(path, |p| p.trim_end_matches('.'));
-        if let Some(items) = self.mixture {
-            let m = types::mixture(items, &format!("{path}.mixture"))?;
-            return SpatialDensity::mixture(&m).or_throw_in(parent);
-        }
-        if let Some(points) = self.particles {
-            let pts: Vec<Vec<f64>> = points.into_iter().map(|p| p.0).collect();
-            let w = self.weights.map(|w| w.0);
-            let p = ParticleSet::new(&pts, w.as_deref()).or_throw_in(parent)?;
-            return Ok(SpatialDensity::particles(p));
-        }
-        let Some(mean) = self.mean else {
-            return Err(type_error(format!("{path}.mean is required")));
-        };
-        let Some(cov) = self.cov else {
-            return Err(type_error(format!("{path}.cov is required")));
-        };
-        let n = mean.0.len();
-        let cov = cov.row_major(n, &format!("{path}.cov"))?;
-        let g = CoreGaussian::from_slices(&mean.0, &cov, path).or_throw()?;
-        SpatialDensity::gaussian(g).or_throw_in(parent)
-    }
-}
+// The spatial density of a Bernoulli is the core's `SpatialDensity`, read by its own
+// deserializer (`{ mean, cov }`, `{ mixture }` or `{ particles, weights? }`, exactly one form;
+// errors name `.mixture[2].cov`, `.particles[1]` under the density's path).
+#[wasm_bindgen(typescript_custom_section)]
+const BERNOULLI_DENSITY: &str = r#"
+/**
+ * The spatial density of a Bernoulli: one Gaussian (any dimension, full covariance), a
+ * Gaussian mixture (weights ≥ 0 with a positive sum; normalised), or weighted particles
+ * (weights ≥ 0 with a positive sum, default equal; normalised). Exactly one form.
+ */
+export type BernoulliDensity = { mean: Point; cov: Covariance } | { mixture: WeightedGaussian[] } | { particles: Point[]; weights?: Numbers };
+"#;
 
 // The costs of the loss (7) are the core's `Costs`, read by its own deserializer ('mpe',
 // `{ mmol }` or the five costs; errors name `.c01`, `.mmol.asset` under `options.costs`).
@@ -117,7 +73,8 @@ pub struct BernoulliEstimateOptions {
     /// The spatial density of the object when it exists. The MMUC search takes a mixture of at most
     /// 100 components and at most 1500 particles in 2 or more dimensions (a RangeError naming the
     /// array beyond).
-    pub density: BernoulliDensity,
+    #[tsify(type = "BernoulliDensity")]
+    pub density: SpatialDensity,
     /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
     /// The costs of the loss (7).
@@ -154,7 +111,8 @@ pub struct BernoulliEstimateResult {
 #[derive(Deserialize, Tsify)]
 pub struct ProbabilityOutsideBallOptions {
     /// The spatial density of the object's state.
-    pub density: BernoulliDensity,
+    #[tsify(type = "BernoulliDensity")]
+    pub density: SpatialDensity,
     /// The ball's centre (the density's dimension).
     pub center: Point,
     /// The ball's radius, > 0, in state units.
@@ -168,7 +126,8 @@ pub struct MmucEstimateOptions {
     /// The spatial density of the object's state. The MMUC search takes a mixture of at most 100
     /// components and at most 1500 particles in 2 or more dimensions (a RangeError naming the array
     /// beyond).
-    pub density: BernoulliDensity,
+    #[tsify(type = "BernoulliDensity")]
+    pub density: SpatialDensity,
     /// The radius r0 > 0 of the ball whose miss probability q(a) is minimised, in state units.
     pub radius: f64,
 }
@@ -209,7 +168,8 @@ pub struct BernoulliComponent {
     pub existence: f64,
     /// The component's spatial density. The MMUC search takes a mixture of at most 100 components
     /// and at most 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
-    pub density: BernoulliDensity,
+    #[tsify(type = "BernoulliDensity")]
+    pub density: SpatialDensity,
 }
 
 /// Options of `multiBernoulliPointEstimate` (the loss (7) of Narykov, Üney & Ralph, "Optimal
@@ -259,7 +219,7 @@ pub fn bernoulli_estimate(
     #[wasm_bindgen(unchecked_param_type = "BernoulliEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: BernoulliEstimateOptions = read(options, "options")?;
-    let s = o.density.into_core("options.density")?;
+    let s = o.density;
     s.check_mmuc_size().or_throw_in("options")?;
     let loss = ApplicationLoss::new(o.costs, o.radius).or_throw_in("options")?;
     let e = bernoulli::estimate(o.existence, &s, &loss).or_throw_in("options")?;
@@ -277,7 +237,7 @@ pub fn probability_outside_ball(
     #[wasm_bindgen(unchecked_param_type = "ProbabilityOutsideBallOptions")] options: JsValue,
 ) -> JsResult<f64> {
     let o: ProbabilityOutsideBallOptions = read(options, "options")?;
-    let s = o.density.into_core("options.density")?;
+    let s = o.density;
     s.prob_outside_ball(&o.center.0, o.radius)
         .or_throw_in("options")
 }
@@ -302,7 +262,7 @@ pub fn mmuc_estimate(
     #[wasm_bindgen(unchecked_param_type = "MmucEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: MmucEstimateOptions = read(options, "options")?;
-    let s = o.density.into_core("options.density")?;
+    let s = o.density;
     s.check_mmuc_size().or_throw_in("options")?;
     let m = s.mmuc(o.radius).or_throw_in("options")?;
     write(&MmucEstimateResult {
@@ -338,7 +298,7 @@ pub fn multi_bernoulli_point_estimate(
     let mut comps = Vec::with_capacity(o.components.len());
     for (i, c) in o.components.into_iter().enumerate() {
         let path = format!("options.components[{i}]");
-        let s = c.density.into_core(&format!("{path}.density"))?;
+        let s = c.density;
         s.check_mmuc_size().or_throw_in(&path)?;
         comps.push((c.existence, s));
     }

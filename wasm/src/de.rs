@@ -175,6 +175,11 @@ impl de::Error for Error {
     }
 
     fn invalid_type(unexp: de::Unexpected<'_>, exp: &dyn de::Expected) -> Self {
+        // a number as JavaScript prints it (`got 1`, not serde's "floating point `1.0`")
+        let unexp = match unexp {
+            de::Unexpected::Float(x) => number_text(x),
+            other => other.to_string(),
+        };
         Self {
             class: ErrorClass::Type,
             message: std::format!("must be {exp}, got {unexp}"),
@@ -630,8 +635,10 @@ impl<'de> de::SeqAccess<'de> for Seq<'_> {
         };
         let i = self.next as usize;
         self.next += 1;
-        seed.deserialize(De::child(value, Path::Index(&self.path, i), self.depth))
+        let path = Path::Index(&self.path, i);
+        seed.deserialize(De::child(value, path, self.depth))
             .map(Some)
+            .map_err(|e| e.at(&path))
     }
 
     fn size_hint(&self) -> Option<usize> {
@@ -686,11 +693,11 @@ impl<'de> de::MapAccess<'de> for Entries<'_> {
         let Some((key, js, value)) = self.pending.take() else {
             return Err(de::Error::custom("a value was read before its key"));
         };
-        seed.deserialize(De::child(
-            Value::Js(value),
-            Path::Key(&self.path, js.unwrap_or(&key)),
-            self.depth,
-        ))
+        // an error the value's own `Deserialize` raises after reading it (a core type's check,
+        // "[1] has length 1, expected 2") is about the value: it gets the value's path
+        let path = Path::Key(&self.path, js.unwrap_or(&key));
+        seed.deserialize(De::child(Value::Js(value), path, self.depth))
+            .map_err(|e| e.at(&path))
     }
 
     fn size_hint(&self) -> Option<usize> {
@@ -732,7 +739,9 @@ impl<'de> de::VariantAccess<'de> for Variant<'_> {
     fn newtype_variant_seed<T: DeserializeSeed<'de>>(self, seed: T) -> Result<T::Value> {
         let path = Path::Key(&self.path, self.name);
         match self.payload {
-            Some(v) => seed.deserialize(De::child(Value::Js(v), path, self.depth)),
+            Some(v) => seed
+                .deserialize(De::child(Value::Js(v), path, self.depth))
+                .map_err(|e| e.at(&path)),
             None => Err(Error::type_error(
                 &self.path,
                 std::format!("must be an object {{ {}: … }}, not a string", self.name),

@@ -8,14 +8,13 @@ use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, range_error, read, write};
-use crate::types::{
-    self, Bernoulli, Grid, MultiObjectDensity, Region, WeightedGaussian, check_gaussian_count,
-};
+use crate::types::{self, Grid, MultiObjectDensity, Region};
 use fisst::fov::{
     FOV_MASS_BUDGET_US, MAX_CARDINALITY_LEN, MAX_DENSITY_GRID_WORK, MAX_VARIANCE_MAP_WORK,
     MultiObjectDensity as CoreDensity, SceneOptions, fov_cardinality, fov_mass_work_us, grid_work,
     mixture_density_grid, placement_scene, variance_map,
 };
+use fisst::gaussian::{Gaussian as CoreGaussian, GaussianMixture};
 
 fn one() -> f64 {
     1.0
@@ -62,7 +61,9 @@ pub struct FovCardinalityResult {
 #[serde(rename_all = "camelCase")]
 pub struct FovVarianceMapOptions {
     /// The multi-Bernoulli (2D or more; the first two state components are positions).
-    pub multi_bernoulli: Vec<Bernoulli>,
+    #[serde(with = "fisst::serde_shapes::bernoullis")]
+    #[tsify(type = "Bernoulli[]")]
+    pub multi_bernoulli: Vec<(f64, CoreGaussian)>,
     /// FoV width and height, > 0 (an axis-aligned box centred on each grid point).
     pub fov_size: (f64, f64),
     /// The grid of FoV centres; components × cells at most 2e8.
@@ -119,7 +120,8 @@ pub struct MixtureDensityGridOptions {
     /// The Gaussian mixture Σ weight · N(mean, cov) to evaluate; components of 3 or more dimensions
     /// use their first two (position) components. Its peak, Σ weight / √det(2π cov), must stay
     /// below the largest double (about 1.8e308; a RangeError naming the weight that passes it).
-    pub mixture: Vec<WeightedGaussian>,
+    #[tsify(type = "WeightedGaussian[]")]
+    pub mixture: GaussianMixture,
     /// The grid of positions at which to evaluate the density; components × cells at most 2.5e7.
     pub grid: Grid,
 }
@@ -135,12 +137,8 @@ pub fn fov_cardinality_js(
 ) -> JsResult<JsValue> {
     let o: FovCardinalityOptions = read(options, "options")?;
     let density = match o.rfs {
-        MultiObjectDensity::MultiBernoulli(c) => {
-            CoreDensity::MultiBernoulli(types::bernoullis(c, "options.rfs.multiBernoulli")?)
-        }
-        MultiObjectDensity::Poisson(m) => {
-            CoreDensity::Poisson(types::mixture(m, "options.rfs.poisson")?)
-        }
+        MultiObjectDensity::MultiBernoulli(c) => CoreDensity::MultiBernoulli(c),
+        MultiObjectDensity::Poisson(m) => CoreDensity::Poisson(m),
         MultiObjectDensity::IidCluster(c) => {
             let cardinality = c.cardinality.0;
             if cardinality.len() > MAX_CARDINALITY_LEN {
@@ -152,7 +150,7 @@ pub fn fov_cardinality_js(
             }
             CoreDensity::IidCluster {
                 cardinality,
-                density: types::mixture(c.density, "options.rfs.iidCluster.density")?,
+                density: c.density,
             }
         }
         MultiObjectDensity::Glmb(hyps) => {
@@ -163,17 +161,7 @@ pub fn fov_cardinality_js(
                     types::MAX_GAUSSIANS
                 )));
             }
-            let mut out = Vec::with_capacity(hyps.len());
-            for (h, hyp) in hyps.into_iter().enumerate() {
-                let gs = hyp
-                    .components
-                    .into_iter()
-                    .enumerate()
-                    .map(|(i, g)| g.into_core(&format!("options.rfs.glmb[{h}].components[{i}]")))
-                    .collect::<JsResult<Vec<_>>>()?;
-                out.push((hyp.weight, gs));
-            }
-            CoreDensity::Glmb(out)
+            CoreDensity::Glmb(hyps.into_iter().map(|h| (h.weight, h.components)).collect())
         }
     };
     let (fov, _) = o.fov.into_core("options.fov")?;
@@ -207,7 +195,7 @@ pub fn fov_variance_map(
     #[wasm_bindgen(unchecked_param_type = "FovVarianceMapOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: FovVarianceMapOptions = read(options, "options")?;
-    let comps = types::bernoullis(o.multi_bernoulli, "options.multiBernoulli")?;
+    let comps = o.multi_bernoulli;
     let (x, y) = o.grid.into_core("options.grid")?;
     if grid_work(comps.len(), x, y) > MAX_VARIANCE_MAP_WORK {
         return Err(range_error(format!(
@@ -266,8 +254,7 @@ pub fn mixture_density_grid_js(
     #[wasm_bindgen(unchecked_param_type = "MixtureDensityGridOptions")] options: JsValue,
 ) -> JsResult<Float64Array> {
     let o: MixtureDensityGridOptions = read(options, "options")?;
-    check_gaussian_count(o.mixture.len(), "options.mixture")?;
-    let mix = types::mixture(o.mixture, "options.mixture")?;
+    let mix = o.mixture;
     let (x, y) = o.grid.into_core("options.grid")?;
     if grid_work(mix.len(), x, y) > MAX_DENSITY_GRID_WORK {
         return Err(range_error(format!(

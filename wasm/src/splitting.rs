@@ -7,8 +7,9 @@ use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, check_range, range_error, read, write};
-use crate::types::{self, BoxRegion, MixtureComponent, Region, WeightedGaussian, mixture_out};
+use crate::types::{BoxRegion, MixtureComponent, Region, mixture_out};
 use fisst::Error;
+use fisst::gaussian::GaussianMixture;
 use fisst::mixture::{merge_close, prune, runnalls};
 use fisst::regions::Region as CoreRegion;
 use fisst::splitting::{
@@ -77,7 +78,8 @@ pub struct SplitLibraryResult {
 #[serde(rename_all = "camelCase")]
 pub struct SplitForRegionsOptions {
     /// The mixture to split: weights ≥ 0, means of length n, covariances n × n.
-    pub mixture: Vec<WeightedGaussian>,
+    #[tsify(type = "WeightedGaussian[]")]
+    pub mixture: GaussianMixture,
     /// One or more regions (at most 32) of dimension `positionDims`.
     pub regions: Vec<Region>,
     /// The number n_s of position components: the first n_s state components are the position
@@ -158,7 +160,8 @@ pub struct SplitForRegionsResult {
 #[serde(rename_all = "camelCase")]
 pub struct ReduceMixtureOptions {
     /// The mixture to reduce: at most 5000 components.
-    pub mixture: Vec<WeightedGaussian>,
+    #[tsify(type = "WeightedGaussian[]")]
+    pub mixture: GaussianMixture,
     /// Drop components lighter than this, renormalising the rest (default 0: keep all).
     #[serde(default)]
     pub prune_below: f64,
@@ -296,7 +299,7 @@ pub fn split_for_regions_js(
     #[wasm_bindgen(unchecked_param_type = "SplitForRegionsOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: SplitForRegionsOptions = read(options, "options")?;
-    let mixture = types::mixture(o.mixture, "options.mixture")?;
+    let mixture = o.mixture;
     if o.regions.is_empty() || o.regions.len() > MAX_REGIONS {
         return Err(range_error(format!(
             "options.regions must have 1 to {MAX_REGIONS} entries, got {}",
@@ -388,7 +391,7 @@ pub fn reduce_mixture_js(
     }
     let o: ReduceMixtureOptions = read(options, "options")?;
     check_reduce_input(o.mixture.len()).or_throw_rendered("options")?;
-    let mixture = types::mixture(o.mixture, "options.mixture")?;
+    let mixture = o.mixture;
     let max_components = o
         .max_components
         .map(|m| Error::check_range("max_components", m, 1, MAX_REDUCED_COMPONENTS))

@@ -15,8 +15,9 @@ use crate::boundary::{JsResult, OrThrow, range_error, type_error};
 use fisst::gaussian::{Gaussian as CoreGaussian, GaussianMixture};
 use fisst::regions::Region as CoreRegion;
 
-/// At most this many Gaussians in one mixture or density argument.
-pub const MAX_GAUSSIANS: usize = 10_000;
+/// At most this many Gaussians in one mixture or density argument (the core's cap, which its
+/// own readers of mixtures and multi-Bernoullis apply).
+pub use fisst::serde_shapes::MAX_GAUSSIANS;
 /// At most this many polygon vertices.
 pub const MAX_VERTICES: usize = 1_000;
 
@@ -101,7 +102,9 @@ pub struct WeightedGaussian {
 
 /// A Bernoulli component with a Gaussian density: the object exists with probability
 /// `existence` and then has density N(mean, cov).
-#[derive(Clone, Debug, Deserialize, Tsify)]
+// The TypeScript declaration only: the values are read by the core
+// (`fisst::serde_shapes::bernoullis`).
+#[derive(Clone, Debug, Tsify)]
 pub struct Bernoulli {
     /// The existence probability r ∈ [0, 1]: the probability that the object exists.
     pub existence: f64,
@@ -135,21 +138,6 @@ pub fn mixture(items: Vec<WeightedGaussian>, path: &str) -> JsResult<GaussianMix
         })
         .collect::<JsResult<Vec<_>>>()?;
     GaussianMixture::new(comps, path).or_throw()
-}
-
-/// `(existence, Gaussian)` pairs from Bernoulli components at `path`.
-pub fn bernoullis(items: Vec<Bernoulli>, path: &str) -> JsResult<Vec<(f64, CoreGaussian)>> {
-    check_gaussian_count(items.len(), path)?;
-    items
-        .into_iter()
-        .enumerate()
-        .map(|(i, c)| {
-            Ok((
-                c.existence,
-                core_gaussian(c.mean, c.cov, &format!("{path}[{i}]"))?,
-            ))
-        })
-        .collect()
 }
 
 /// A mixture component as results give it back: `cov` as nested rows. It can be passed back
@@ -271,7 +259,8 @@ pub struct GlmbHypothesis {
     /// The hypothesis weight (all weights sum to 1).
     pub weight: f64,
     /// The single-object densities of its labels, one Gaussian per object.
-    pub components: Vec<Gaussian>,
+    #[tsify(type = "Gaussian[]")]
+    pub components: Vec<CoreGaussian>,
 }
 
 /// An i.i.d. cluster density: a cardinality pmf and one single-object density.
@@ -281,7 +270,8 @@ pub struct IidCluster {
     /// most 20,001 entries).
     pub cardinality: Numbers,
     /// The single-object density as a mixture (weights sum to 1).
-    pub density: Vec<WeightedGaussian>,
+    #[tsify(type = "WeightedGaussian[]")]
+    pub density: GaussianMixture,
 }
 
 /// A multi-object density: exactly one key.
@@ -295,9 +285,13 @@ pub struct IidCluster {
 #[serde(rename_all = "camelCase")]
 pub enum MultiObjectDensity {
     /// `{ multiBernoulli: Bernoulli[] }`: one Bernoulli per potential object.
-    MultiBernoulli(Vec<Bernoulli>),
+    MultiBernoulli(
+        #[serde(with = "fisst::serde_shapes::bernoullis")]
+        #[tsify(type = "Bernoulli[]")]
+        Vec<(f64, CoreGaussian)>,
+    ),
     /// `{ poisson: WeightedGaussian[] }`: the PHD (intensity) of a Poisson RFS.
-    Poisson(Vec<WeightedGaussian>),
+    Poisson(#[tsify(type = "WeightedGaussian[]")] GaussianMixture),
     /// `{ iidCluster: { cardinality, density } }`: an i.i.d. cluster RFS.
     IidCluster(IidCluster),
     /// `{ glmb: GlmbHypothesis[] }`: a generalised labelled multi-Bernoulli (GLMB) density.
