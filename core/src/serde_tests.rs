@@ -163,10 +163,19 @@ fn filter_config_round_trips_and_omitted_fields_take_the_defaults() {
     assert_eq!(back.splitting, Splitting::default());
     assert_eq!(back.reduction, default_reduction());
     assert!(back.exclusions.is_empty() && back.likelihood.is_none());
-    value.as_object_mut().unwrap().remove("survival");
+    // survival, birth and position_dims take the npm package's defaults when omitted
+    for optional in ["survival", "birth", "position_dims"] {
+        value.as_object_mut().unwrap().remove(optional);
+    }
+    let back: BernoulliFilterOptions = serde_json::from_value(value.clone()).unwrap();
+    assert_eq!(back.survival, crate::filters::default_survival());
+    assert_eq!(back.birth, crate::filters::Birth::none());
+    assert_eq!(back.position_dims, crate::filters::default_position_dims());
+    // the models without a default stay required
+    value.as_object_mut().unwrap().remove("clutter");
     let missing = serde_json::from_value::<BernoulliFilterOptions>(value).unwrap_err();
     assert!(
-        missing.to_string().contains("missing field `survival`"),
+        missing.to_string().contains("missing field `clutter`"),
         "{missing}"
     );
     round_trip(&ParticleOptions::default());
