@@ -46,3 +46,28 @@ pub fn bernoulli_threshold_curve<'py>(
     let c = py.detach(|| o.curve()).map_err(to_py)?;
     result(py, &c)
 }
+
+/// q(a) of eq. (9) of paper 000: the probability that the object lies outside the ball of
+/// radius ``radius`` about ``center``, for a spatial ``density`` written as one of
+/// ``{"mean": m, "cov": P}`` (a Gaussian), ``{"mixture": [{"weight", "mean", "cov"}, ...]}``
+/// or ``{"particles": X, "weights": w}`` (weights optional, equal by default). Error-controlled
+/// quadrature for Gaussians (1e-10), exact for particles. Returns a float.
+#[pyfunction]
+#[pyo3(signature = (**options), text_signature = "(*, density, center, radius)")]
+pub fn probability_outside_ball(
+    py: Python<'_>,
+    options: Option<&Bound<'_, PyDict>>,
+) -> PyResult<f64> {
+    let o: OutsideBallOptions = from_kwargs(py, "probability_outside_ball", options)?;
+    let (density, center, radius) = (o.density, o.center, o.radius);
+    py.detach(|| density.prob_outside_ball(&center, radius))
+        .map_err(to_py)
+}
+
+/// The keyword arguments of [`probability_outside_ball`], read into the core's density.
+#[derive(serde::Deserialize)]
+struct OutsideBallOptions {
+    density: fisst::bernoulli::SpatialDensity,
+    center: Vec<f64>,
+    radius: f64,
+}

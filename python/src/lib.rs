@@ -11,6 +11,7 @@ mod control;
 mod convert;
 mod filters;
 mod metrics;
+mod mixture;
 mod multi_bernoulli;
 mod names;
 mod options;
@@ -50,6 +51,8 @@ fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
     )?)?;
     m.add_function(wrap_pyfunction!(bernoulli::bernoulli_loss_curve, m)?)?;
     m.add_function(wrap_pyfunction!(bernoulli::bernoulli_threshold_curve, m)?)?;
+    m.add_function(wrap_pyfunction!(bernoulli::probability_outside_ball, m)?)?;
+    m.add_function(wrap_pyfunction!(mixture::reduce_mixture, m)?)?;
     m.add_function(wrap_pyfunction!(bounds::jde_bound_no_clutter, m)?)?;
     m.add_function(wrap_pyfunction!(bounds::gaussian_fisher_information, m)?)?;
     m.add_function(wrap_pyfunction!(bounds::jde_sequential_bound, m)?)?;

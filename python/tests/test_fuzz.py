@@ -125,6 +125,14 @@ CALLS = {
     "gm_bernoulli_update": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
         {"existence": probability, "mixture": mixture, "detection": detection, "clutter": clutter},
         optional={"reports": st.lists(region, max_size=2), "position_dims": st.integers(0, 3)})),
+    "probability_outside_ball": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"density": st.one_of(st.fixed_dictionaries({"mean": st.lists(number, min_size=2, max_size=2), "cov": st.one_of(matrix2, number)}),
+                              st.fixed_dictionaries({"mixture": mixture}),
+                              st.fixed_dictionaries({"particles": st.lists(st.lists(number, min_size=2, max_size=2), max_size=4)}, optional={"weights": st.lists(number, max_size=4)}),
+                              junk),
+         "center": st.one_of(st.lists(number, min_size=2, max_size=2), junk), "radius": kw_number})),
+    "reduce_mixture": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"mixture": mixture}, optional={"prune_below": kw_number, "merge_distance": kw_number, "max_components": st.one_of(st.integers(-1, 5), junk)})),
 }
 
 assert set(CALLS) == {n for n in fisst.__all__ if callable(getattr(fisst, n)) and n != "Result"}, (

@@ -36,6 +36,8 @@ from ._fisst import (
     ospa,
     ospa_series,
     ParticleBernoulliFilter,
+    probability_outside_ball,
+    reduce_mixture,
     SensorControlRun,
     uospa,
 )
@@ -68,6 +70,8 @@ __all__ = [
     "ospa",
     "ospa_series",
     "ParticleBernoulliFilter",
+    "probability_outside_ball",
+    "reduce_mixture",
     "SensorControlRun",
     "uospa",
 ]

@@ -35,6 +35,8 @@ __all__ = [
     "ospa",
     "ospa_series",
     "ParticleBernoulliFilter",
+    "probability_outside_ball",
+    "reduce_mixture",
     "SensorControlRun",
     "uospa",
 ]
@@ -238,3 +240,12 @@ def gm_bernoulli_update(
     reduction: dict[str, Any] = ...,
     exclusions: Sequence[_Region] = [],
 ) -> Result: ...
+
+def probability_outside_ball(*, density: dict[str, Any], center: npt.ArrayLike, radius: float) -> float: ...
+def reduce_mixture(
+    *,
+    mixture: Sequence[dict[str, Any]],
+    prune_below: float = 0.0,
+    merge_distance: float | None = None,
+    max_components: int | None = None,
+) -> Any: ...

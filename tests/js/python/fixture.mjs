@@ -29,6 +29,10 @@ const calls = [
   ['gaussianFisherInformation', [{ priorVariance: 4, gain: 2, noiseVariance: 3 }]],
   ['jdeSequentialBound', [{ method: 'enumeration', priorInformation: 0.1, detectedInformation: 1, detectionProbability: 0.8, steps: 5 }]],
   ['jdeSequentialBound', [{ method: 'irf', priorInformation: 0.1, detectedInformation: 1, detectionProbability: 0.8, steps: 5 }]],
+  ['probabilityOutsideBall', [{ density: { mean: [0, 0], cov: [[1, 0.3], [0.3, 2]] }, center: [0.5, 0], radius: 1.5 }]],
+  ['probabilityOutsideBall', [{ density: { mixture: [{ weight: 0.3, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { weight: 0.7, mean: [2, 1], cov: [[0.5, 0], [0, 0.5]] }] }, center: [1, 0.5], radius: 1 }]],
+  ['probabilityOutsideBall', [{ density: { particles: [[0, 0], [1, 1], [3, 0]], weights: [0.2, 0.5, 0.3] }, center: [0.5, 0.5], radius: 1 }]],
+  ['reduceMixture', [{ mixture: [{ weight: 0.5, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { weight: 0.3, mean: [0.1, 0], cov: [[1, 0], [0, 1]] }, { weight: 1e-9, mean: [5, 5], cov: [[1, 0], [0, 1]] }, { weight: 0.2, mean: [4, 0], cov: [[2, 0], [0, 1]] }], pruneBelow: 1e-6, mergeDistance: 1, maxComponents: 1 }]],
   ['multiObjectLikelihood', [{ likelihoods: [[0.5, 0.1], [0.2, 0.3]], detectionProbability: 0.9, clutterRate: 1, clutterDensity: [0.1, 0.1] }]],
 ];
 
