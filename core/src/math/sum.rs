@@ -33,10 +33,15 @@ impl NeumaierSum {
         self.sum = t;
     }
 
-    /// The compensated total.
+    /// The compensated total; ±∞ when the running sum overflowed (the compensation of an
+    /// overflowed sum is ∞ − ∞ = NaN and means nothing).
     #[inline]
     pub fn total(&self) -> f64 {
-        self.sum + self.compensation
+        if self.sum.is_infinite() {
+            self.sum
+        } else {
+            self.sum + self.compensation
+        }
     }
 }
 
@@ -58,6 +63,17 @@ pub fn sum(values: impl IntoIterator<Item = f64>) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Fuzz seed 86144: the weights of a mixture split from a weight of f64::MAX summed to
+    /// NaN (the overflowed sum's compensation is ∞ − ∞); an overflowed sum is ±∞.
+    #[test]
+    fn an_overflowing_sum_is_infinite_not_nan() {
+        assert_eq!(sum([f64::MAX, f64::MAX]), f64::INFINITY);
+        assert_eq!(sum([f64::MAX, f64::MAX, -1.0, 2.0]), f64::INFINITY);
+        assert_eq!(sum([-f64::MAX, -f64::MAX]), f64::NEG_INFINITY);
+        assert!(sum([f64::INFINITY, f64::NEG_INFINITY]).is_nan());
+        assert_eq!(sum([f64::MAX, -f64::MAX, 1.0]), 1.0);
+    }
 
     #[test]
     fn recovers_what_naive_summation_loses() {

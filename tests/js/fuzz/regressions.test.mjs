@@ -239,3 +239,12 @@ test('fuzz #13: jdeMonteCarlo with a gain that overflows H P Hᵀ + R is a Range
   const ok = fisst.jdeMonteCarlo({ ...base, observation: { ...base.observation, gain: [[1e150]] } });
   noNaN(ok);
 });
+
+test('fuzz #14: splitForRegions of a mixture weighing f64::MAX gives an infinite outside weight, not NaN', () => {
+  // Found by `node fuzz/run.mjs --cases 1000000` (seed 86144): the split children's weights
+  // summed past the f64 range, and the compensated sum's correction was ∞ − ∞ = NaN. An
+  // overflowed sum is now ±∞ (core math::sum).
+  const r = fisst.splitForRegions({ mixture: [{ weight: 1.7976931348623157e+308, mean: [0, 0], cov: [[1, 0], [0, 1]] }], regions: [{ disc: { center: [1e+308, 0], radius: 1e-9 } }, { polygon: [[0.1, 0], [-0.04999999999999998, 0.08660254037844388], [-0.050000000000000044, -0.08660254037844385]] }], components: 3, gridPoints: 5 });
+  noNaN(r);
+  assert.equal(r.inside, 0);
+});
