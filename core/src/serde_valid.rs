@@ -126,6 +126,29 @@ enum CovRead {
     Raw(Covariance),
 }
 
+/// The mean and the row-major covariance of a Gaussian read from a map, both required; a
+/// covariance that came before the mean is checked against it here, its errors naming `.cov`.
+fn mean_and_cov<E: serde::de::Error>(
+    mean: Option<Vec<f64>>,
+    cov: Option<CovRead>,
+) -> Result<(Vec<f64>, Vec<f64>), E> {
+    let mean = mean.ok_or_else(|| E::missing_field("mean"))?;
+    let cov = match cov.ok_or_else(|| E::missing_field("cov"))? {
+        CovRead::Checked(c) => c,
+        CovRead::Raw(c) => covariance_fit(c, mean.len(), ".cov", |x, n| {
+            E::invalid_type(
+                serde::de::Unexpected::Float(x),
+                &alloc::format!(
+                    "an object whose cov is a nested {n}×{n} array (a bare number is a 1D \
+                     variance)"
+                )
+                .as_str(),
+            )
+        })?,
+    };
+    Ok((mean, cov))
+}
+
 /// `{mean, cov}` (a [`Gaussian`]) or `{weight, mean, cov}` (a mixture component) as read,
 /// the covariance row-major and fitting the mean.
 struct GaussianRead {
@@ -181,21 +204,7 @@ impl<'de> serde::de::Visitor<'de> for GaussianVisitor {
             (Some(k), None) => return Err(A::Error::missing_field(k)),
             (_, w) => w.unwrap_or(1.0),
         };
-        let mean = mean.ok_or_else(|| A::Error::missing_field("mean"))?;
-        let cov = match cov.ok_or_else(|| A::Error::missing_field("cov"))? {
-            CovRead::Checked(c) => c,
-            // the covariance came before the mean: checked here, its errors naming `.cov`
-            CovRead::Raw(c) => covariance_fit(c, mean.len(), ".cov", |x, n| {
-                A::Error::invalid_type(
-                    serde::de::Unexpected::Float(x),
-                    &alloc::format!(
-                        "an object whose cov is a nested {n}×{n} array (a bare number is a 1D \
-                         variance)"
-                    )
-                    .as_str(),
-                )
-            })?,
-        };
+        let (mean, cov) = mean_and_cov::<A::Error>(mean, cov)?;
         Ok(GaussianRead { weight, mean, cov })
     }
 }
@@ -1179,20 +1188,7 @@ impl<'de> serde::de::Visitor<'de> for DensityVisitor {
                 .map(SpatialDensity::particles)
                 .map_err(density_error)
         } else {
-            let mean = mean.ok_or_else(|| A::Error::missing_field("mean"))?;
-            let cov = match cov.ok_or_else(|| A::Error::missing_field("cov"))? {
-                CovRead::Checked(c) => c,
-                CovRead::Raw(c) => covariance_fit(c, mean.len(), ".cov", |x, n| {
-                    A::Error::invalid_type(
-                        serde::de::Unexpected::Float(x),
-                        &alloc::format!(
-                            "an object whose cov is a nested {n}×{n} array (a bare number is a \
-                             1D variance)"
-                        )
-                        .as_str(),
-                    )
-                })?,
-            };
+            let (mean, cov) = mean_and_cov::<A::Error>(mean, cov)?;
             let read = GaussianRead {
                 weight: 1.0,
                 mean,

@@ -413,13 +413,31 @@ pub(crate) fn mixture_outside(
     radius: f64,
     tol: f64,
 ) -> BallProbability {
+    mixture_outside_in(components, center, radius, tol, None)
+}
+
+/// [`mixture_outside`], drawing on a search's work `budget` if given (at least one unit per
+/// component; see [`GaussianBall::outside_within`]).
+pub(crate) fn mixture_outside_in(
+    components: &[(f64, GaussianBall)],
+    center: &[f64],
+    radius: f64,
+    tol: f64,
+    budget: Option<&core::cell::Cell<usize>>,
+) -> BallProbability {
     let mut value = NeumaierSum::new();
     let mut error = 0.0;
     for (w, g) in components {
         if *w == 0.0 {
             continue;
         }
-        let b = g.outside(center, radius, tol);
+        let b = match budget {
+            Some(budget) => {
+                budget.set(budget.get().saturating_sub(1));
+                g.outside_within(center, radius, tol, budget)
+            }
+            None => g.outside(center, radius, tol),
+        };
         value.add(w * b.outside);
         error += w * b.error;
     }

@@ -5,7 +5,9 @@ use alloc::vec::Vec;
 use core::cell::Cell;
 
 use crate::bernoulli::ball::{DEFAULT_TOLERANCE, GaussianBall, dist2};
-use crate::bernoulli::density::{ParticleSet, Repr, SpatialDensity, mixture_outside};
+use crate::bernoulli::density::{
+    ParticleSet, Repr, SpatialDensity, mixture_outside, mixture_outside_in,
+};
 use crate::bernoulli::loss::check_radius;
 use crate::error::Result;
 use crate::math::fns;
@@ -205,7 +207,8 @@ pub(crate) fn mixture_mmuc_within(
     let typical_sd = live.iter().map(|(w, g)| w * g.max_sd()).sum::<f64>();
     let step = 0.25 * (radius + typical_sd);
     let budget = Cell::new(search_budget);
-    let q_start = |a: &[f64]| mixture_outside_within(components, a, radius, 1e-8, &budget);
+    let q_start =
+        |a: &[f64]| mixture_outside_in(components, a, radius, 1e-8, Some(&budget)).outside;
 
     // Starts: every component mean, the mixture mean, promising midpoints.
     let mut starts: Vec<Vec<f64>> = Vec::new();
@@ -266,26 +269,6 @@ pub(crate) fn mixture_mmuc_within(
     let center = best.map_or_else(|| mean.to_vec(), |b| b.1);
     let spent = search_budget - budget.get();
     (finish(center, MmucMethod::MixtureSearch), spent)
-}
-
-/// Σ_j w_j q_j(a) to `tol` per component, drawing on the search's `budget` (at least one
-/// unit per component).
-fn mixture_outside_within(
-    components: &[(f64, GaussianBall)],
-    center: &[f64],
-    radius: f64,
-    tol: f64,
-    budget: &Cell<usize>,
-) -> f64 {
-    let mut value = NeumaierSum::new();
-    for (w, g) in components {
-        if *w == 0.0 {
-            continue;
-        }
-        budget.set(budget.get().saturating_sub(1));
-        value.add(w * g.outside_within(center, radius, tol, budget).outside);
-    }
-    value.total().clamp(0.0, 1.0)
 }
 
 /// Σ_j w_j q_j(a) and its gradient, drawing on the search's `budget` (at least one unit per
