@@ -9,20 +9,11 @@ use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
-use crate::convert::{result, to_py};
+use crate::convert::{result, seed_or_entropy, to_py};
 use crate::options::from_kwargs;
 use fisst::control::{
     CompareOptions, ControlOptions, ControlParticles, ControlRun, MultiObjectLikelihoodOptions,
 };
-
-/// The seed given, or fresh entropy from the operating system (reported back, so that the run
-/// can be reproduced).
-fn seed_or_entropy(seed: Option<u64>) -> PyResult<u64> {
-    match seed {
-        Some(s) => Ok(s),
-        None => fisst::math::rng::entropy_seed().map_err(to_py),
-    }
-}
 
 /// The multi-object likelihood g(Z|X) of eq. (20) of paper 004 for point detections with
 /// clutter, as a log: ``likelihoods[i][j] = g(z_j | x_i) >= 0`` (an ``(n, m)`` array),

@@ -168,3 +168,12 @@ pub fn result<'py, T: Serialize + ?Sized>(
 ) -> PyResult<Bound<'py, PyAny>> {
     crate::ser::to_python(py, value)
 }
+
+/// The seed given, or fresh entropy from the operating system (reported back by the caller,
+/// so that the run can be reproduced).
+pub fn seed_or_entropy(seed: Option<u64>) -> PyResult<u64> {
+    match seed {
+        Some(s) => Ok(s),
+        None => fisst::math::rng::entropy_seed().map_err(to_py),
+    }
+}

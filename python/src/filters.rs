@@ -12,7 +12,7 @@ use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 
-use crate::convert::{points, result, to_py};
+use crate::convert::{points, result, seed_or_entropy, to_py};
 use crate::options::{from_kwargs, from_value};
 use fisst::bernoulli::{ApplicationLoss, Costs};
 use fisst::filters::{
@@ -379,8 +379,7 @@ impl ParticleBernoulliFilter {
         let (particle, rest) = split(py, config, &PARTICLE_KEYS)?;
         let seed_given = particle.get_item("seed")?.is_some_and(|s| !s.is_none());
         if !seed_given {
-            let seed = fisst::math::rng::entropy_seed().map_err(to_py)?;
-            particle.set_item("seed", seed)?;
+            particle.set_item("seed", seed_or_entropy(None)?)?;
         }
         let particle_options: ParticleOptions =
             from_kwargs(py, "ParticleBernoulliFilter", Some(&particle))?;

@@ -4,7 +4,7 @@
 
 use pyo3::prelude::*;
 
-use crate::convert::{number, number_or, point_sets, points, result, to_py};
+use crate::convert::{Points, number, number_or, point_sets, points, result, to_py};
 use fisst::metrics::{Gospa, Ospa};
 
 /// GOSPA between two point sets (García-Fernández & Svensson, "Spooky effect in optimal OSPA
@@ -87,6 +87,20 @@ pub fn uospa<'py>(
     result(py, &report)
 }
 
+/// The point sets of a scenario, `truths[t]` and `estimates[t]`, with the step cap checked
+/// before reading them (reading 10^6 steps alone takes seconds) and after.
+fn series_sets(
+    truths: &Bound<'_, PyAny>,
+    estimates: &Bound<'_, PyAny>,
+) -> PyResult<(Vec<Points>, Vec<Points>)> {
+    if let Ok(steps) = truths.len() {
+        fisst::metrics::check_series_steps(steps).map_err(to_py)?;
+    }
+    let t = point_sets(truths, "truths")?;
+    fisst::metrics::check_series_steps(t.len()).map_err(to_py)?;
+    Ok((t, point_sets(estimates, "estimates")?))
+}
+
 /// GOSPA over a whole scenario in one call: ``truths[t]`` and ``estimates[t]`` are the point
 /// sets (``(n, d)`` arrays) at step t. Returns a ``Result`` (``GospaSeries``): per-step
 /// ``distance`` (and, for ``alpha == 2``, ``localisation``, ``missed``, ``false_targets``)
@@ -108,17 +122,9 @@ pub fn gospa_series<'py>(
         number_or(alpha, "alpha", 2.0)?,
     );
     let metric = Gospa::new(c, p, alpha).map_err(to_py)?;
-    if let Ok(steps) = truths.len() {
-        // before reading them: reading 10^6 steps alone takes seconds
-        fisst::metrics::check_series_steps(steps).map_err(to_py)?;
-    }
-    let (t, e) = (
-        point_sets(truths, "truths")?,
-        point_sets(estimates, "estimates")?,
-    );
+    let (t, e) = series_sets(truths, estimates)?;
     let t: Vec<Vec<&[f64]>> = t.iter().map(|p| p.rows()).collect();
     let e: Vec<Vec<&[f64]>> = e.iter().map(|p| p.rows()).collect();
-    fisst::metrics::check_series_steps(t.len()).map_err(to_py)?;
     let s = py.detach(|| metric.series(&t, &e)).map_err(to_py)?;
     result(py, &s)
 }
@@ -137,17 +143,9 @@ pub fn ospa_series<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let (c, p) = (number(c, "c")?, number_or(p, "p", 2.0)?);
     let metric = Ospa::new(c, p).map_err(to_py)?;
-    if let Ok(steps) = truths.len() {
-        // before reading them: reading 10^6 steps alone takes seconds
-        fisst::metrics::check_series_steps(steps).map_err(to_py)?;
-    }
-    let (t, e) = (
-        point_sets(truths, "truths")?,
-        point_sets(estimates, "estimates")?,
-    );
+    let (t, e) = series_sets(truths, estimates)?;
     let t: Vec<Vec<&[f64]>> = t.iter().map(|p| p.rows()).collect();
     let e: Vec<Vec<&[f64]>> = e.iter().map(|p| p.rows()).collect();
-    fisst::metrics::check_series_steps(t.len()).map_err(to_py)?;
     let s = py.detach(|| metric.series(&t, &e)).map_err(to_py)?;
     result(py, &s)
 }
