@@ -41,8 +41,8 @@ pub fn multi_object_likelihood<'py>(
 ///
 /// ``SensorControlRun(*, scheme, seed=None, particles=750, future_scans=200, alpha=0.5,
 /// steps=40, start=[0, 0], max_objects=4)``: ``seed`` omitted draws one from the operating
-/// system (read it back as ``run.seed``). ``particles × future_scans × 2^max(max_objects − 4,
-/// 0)`` is at most 300,000 per step. ``run.step()`` processes the next step and returns a
+/// system (read it back as ``run.seed``). ``particles × future_scans × w`` is at most 300,000
+/// per step, with ``w = 1`` up to four ``max_objects`` and ``2^(max_objects − 3)`` past four. ``run.step()`` processes the next step and returns a
 /// ``Result`` (``StepOutcome``: ``k``, ``sensor``, ``measurements``, ``action``, ``rewards``,
 /// ``estimate``, ``ospa``); after ``steps`` steps it raises ``ValueError``.
 ///

@@ -284,9 +284,10 @@ test('why 7: a ParticleBernoulliFilter update past 2·10^7 likelihood evaluation
   }
 });
 
-test('why 7: a SensorControlRun past N·M·2^max(n_max − 4, 0) = 300,000 names options.futureScans', () => {
+test('why 7: a SensorControlRun past N·M·w(n_max) = 300,000 (w = 1 up to four objects, 2^(n_max − 3) past) names options.futureScans', () => {
   throwsNaming(() => new fisst.SensorControlRun({ scheme: 'renyi', seed: 1, particles: 20_000, futureScans: 16 }), RangeError, /^options\.futureScans: .* must be at most 300000, got 320000/);
-  throwsNaming(() => new fisst.SensorControlRun({ scheme: 'renyi', seed: 1, particles: 1000, futureScans: 19, maxObjects: 8 }), RangeError, /^options\.futureScans: .* must be at most 300000, got 304000/);
+  throwsNaming(() => new fisst.SensorControlRun({ scheme: 'renyi', seed: 1, particles: 1000, futureScans: 10, maxObjects: 8 }), RangeError, /^options\.futureScans: particles · futureScans · \(maxObjects ≤ 4 \? 1 : 2\^\(maxObjects − 3\)\) must be at most 300000, got 320000$/);
+  throwsNaming(() => new fisst.SensorControlRun({ scheme: 'renyi', seed: 1, particles: 1500, futureScans: 51, maxObjects: 5 }), RangeError, /^options\.futureScans: .* must be at most 300000, got 306000$/);
 });
 
 test('why 1: gmBernoulliUpdate with more position dimensions than the state names both fields', () => {

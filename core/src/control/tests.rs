@@ -287,7 +287,8 @@ fn alg1_step_after_the_last_leaves_the_run_unchanged() {
 #[test]
 fn alg1_work_caps_name_the_field_and_the_range() {
     use super::case_study::{
-        MAX_FUTURE_SCANS, MAX_MAX_OBJECTS, MAX_PARTICLES, MAX_STEPS, MAX_WORK,
+        MAX_FUTURE_SCANS, MAX_MAX_OBJECTS, MAX_PARTICLES, MAX_STEPS, MAX_WORK, WORK_MEASURE,
+        work_weight,
     };
     let mut base = ControlOptions::paper(Scheme::Random, 1);
     (base.particles, base.future_scans) = (1, 1);
@@ -315,7 +316,7 @@ fn alg1_work_caps_name_the_field_and_the_range() {
     (c.particles, c.future_scans) = (2000, 151);
     let over = Error::OverBudget {
         what: "future_scans".into(),
-        measure: "particles · future_scans · 2^max(max_objects − 4, 0)",
+        measure: WORK_MEASURE,
         work: 302_000,
         limit: "300000",
         at_most: 150,
@@ -329,19 +330,30 @@ fn alg1_work_caps_name_the_field_and_the_range() {
     (c.particles, c.future_scans) = (2000, MAX_WORK / 2000);
     assert!(c.check_limits().is_ok());
     assert_eq!(c.validate().unwrap_err().field(), "alpha");
-    // Past four objects each one doubles the work: n_max = 8 allows 1/16 of the scans.
+    // Five objects weigh 4 (a unit costs 2.6 times as much as at four), each one past five
+    // doubles it: n_max = 8 allows 1/32 of the scans.
+    assert_eq!(
+        (1..=8).map(work_weight).collect::<Vec<_>>(),
+        [1, 1, 1, 1, 4, 8, 16, 32]
+    );
+    assert_eq!(work_weight(usize::MAX), usize::MAX);
+    c.max_objects = 5;
+    (c.particles, c.future_scans) = (1500, 51);
+    assert_eq!(c.check_limits().unwrap_err().field(), "future_scans");
+    c.future_scans = 50;
+    assert!(c.check_limits().is_ok());
     c.max_objects = 8;
-    (c.particles, c.future_scans) = (1000, 19);
+    (c.particles, c.future_scans) = (1000, 10);
     assert_eq!(
         c.check_limits(),
         Err(Error::OverBudget {
             what: "future_scans".into(),
-            measure: "particles · future_scans · 2^max(max_objects − 4, 0)",
-            work: 304_000,
+            measure: WORK_MEASURE,
+            work: 320_000,
             limit: "300000",
-            at_most: 18,
+            at_most: 9,
         })
     );
-    c.future_scans = 18;
+    c.future_scans = 9;
     assert!(c.check_limits().is_ok());
 }

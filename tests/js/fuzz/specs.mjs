@@ -810,7 +810,8 @@ export const largeCases = [
   { label: 'airportScenario: 2000 steps (cap)', name: 'airportScenario', args: () => [{ seed: 1, steps: 2000 }] },
   // sensor control (compareSchemes is a batch call: left out)
   { label: 'SensorControlRun: 20,000 particles × 15 future scans (3·10^5 cap), renyi', name: 'SensorControlRun', args: () => [{ scheme: 'renyi', seed: 1, particles: 20_000, futureScans: 15 }] },
-  { label: 'SensorControlRun: 1500 particles × 100 future scans, 5 objects (3·10^5 cap), renyi', name: 'SensorControlRun', args: () => [{ scheme: 'renyi', seed: 1, particles: 1500, futureScans: 100, maxObjects: 5 }] },
+  { label: 'SensorControlRun: 1500 particles × 50 future scans, 5 objects (weight 4: 3·10^5 cap), renyi', name: 'SensorControlRun', args: () => [{ scheme: 'renyi', seed: 1, particles: 1500, futureScans: 50, maxObjects: 5 }] },
+  { label: 'SensorControlRun: 1000 particles × 9 future scans, 8 objects (weight 32: 3·10^5 cap), renyi', name: 'SensorControlRun', args: () => [{ scheme: 'renyi', seed: 1, particles: 1000, futureScans: 9, maxObjects: 8 }] },
   { label: 'SensorControlRun: paper size (defaults), pent', name: 'SensorControlRun', args: () => [{ scheme: 'pent', seed: 1 }] },
   { label: 'SensorControlRun: 1000 steps (cap), 8 objects (cap), random', name: 'SensorControlRun', args: () => [{ scheme: 'random', seed: 1, steps: 1000, maxObjects: 8, particles: 10, futureScans: 1 }] },
 ];
