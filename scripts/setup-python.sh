@@ -2,7 +2,8 @@
 # The Python virtual environment of the project, `.venv` (git-ignored), with what building and
 # testing the Python package needs, from PyPI; skips whatever is already there.
 #   scripts/setup-python.sh           maturin, numpy, pytest, hypothesis, pandas, mypy, stonesoup
-#                                     1.9.1 (the interoperability tests) and matplotlib
+#                                     1.9.1 (the interoperability tests), matplotlib, and
+#                                     dask[distributed] and pyarrow (fisst.campaign)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -16,7 +17,8 @@ if [ ! -x .venv/bin/python ]; then
 fi
 need=()
 for spec in "maturin>=1.8,<2:maturin" "numpy>=1.23:numpy" "pytest>=8:pytest" "hypothesis>=6:hypothesis" \
-            "pandas>=2:pandas" "mypy>=1.10:mypy" "stonesoup==1.9.1:stonesoup" "matplotlib>=3.7:matplotlib"; do
+            "pandas>=2:pandas" "mypy>=1.10:mypy" "stonesoup==1.9.1:stonesoup" "matplotlib>=3.7:matplotlib" \
+            "dask[distributed]>=2024.1:distributed" "pyarrow>=14:pyarrow"; do
   module=${spec##*:}
   .venv/bin/python -c "import $module" 2>/dev/null || need+=("${spec%:*}")
 done

@@ -7,6 +7,7 @@ use pyo3::prelude::*;
 
 mod bernoulli;
 mod bounds;
+mod campaign;
 mod control;
 mod convert;
 mod filters;
@@ -65,5 +66,9 @@ fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(control::multi_object_likelihood, m)?)?;
     m.add_class::<control::SensorControlRun>()?;
     m.add_function(wrap_pyfunction!(control::compare_schemes, m)?)?;
+    // fisst.campaign's compiled half (private names)
+    m.add_function(wrap_pyfunction!(campaign::_campaign_run_seeds, m)?)?;
+    m.add_function(wrap_pyfunction!(campaign::_campaign_control_check, m)?)?;
+    m.add_function(wrap_pyfunction!(campaign::_campaign_control_run, m)?)?;
     Ok(())
 }
