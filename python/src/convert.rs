@@ -89,6 +89,40 @@ impl Points {
     }
 }
 
+/// A function of point sets generic over the point type, so that [`with_points`] can call it
+/// with fixed-size points.
+pub trait OnPoints {
+    /// What the function returns.
+    type Output;
+    /// Calls the function with `sets` (each a point set), all of one point type.
+    fn call<P: AsRef<[f64]> + Sync>(self, sets: &[Vec<P>]) -> Self::Output;
+}
+
+/// Calls `f` with the point sets `sets` as `[f64; 2]` or `[f64; 3]` points when every
+/// non-empty set has that dimension, else as slices. The core's metrics are generic over the
+/// point type: with a dimension the compiler knows, the distance loop is unrolled, which makes
+/// `gospa` at n = 1,000 on the sparse scene about as fast as the native call on `[f64; 2]`
+/// points (the same arithmetic in the same order: the same bits).
+pub fn with_points<F: OnPoints>(sets: &[&Points], f: F) -> F::Output {
+    let mut dims = sets.iter().filter(|p| p.n > 0).map(|p| p.d);
+    let d = dims.next();
+    let one = d.is_some_and(|d| dims.all(|e| e == d));
+    fn fixed<const D: usize>(p: &Points) -> Vec<[f64; D]> {
+        if p.n == 0 {
+            return Vec::new();
+        }
+        p.flat
+            .chunks_exact(D)
+            .map(|c| core::array::from_fn(|i| c[i]))
+            .collect()
+    }
+    match (one, d) {
+        (true, Some(2)) => f.call(&sets.iter().map(|p| fixed::<2>(p)).collect::<Vec<_>>()),
+        (true, Some(3)) => f.call(&sets.iter().map(|p| fixed::<3>(p)).collect::<Vec<_>>()),
+        _ => f.call(&sets.iter().map(|p| p.rows()).collect::<Vec<_>>()),
+    }
+}
+
 /// A shape as Python writes it: `(2,)`, `(3, 2)`.
 fn shape(dims: &[usize]) -> String {
     match dims {

@@ -4,8 +4,50 @@
 
 use pyo3::prelude::*;
 
-use crate::convert::{Points, number, number_or, point_sets, points, result, to_py};
-use fisst::metrics::{Gospa, Ospa};
+use crate::convert::{
+    OnPoints, Points, number, number_or, point_sets, points, result, to_py, with_points,
+};
+use fisst::metrics::{Gospa, GospaReport, GospaSeries, Ospa, OspaDecomposition, OspaSeries};
+
+/// The core's metric calls on a truth and an estimate set (`sets[0]`, `sets[1]`), or on the
+/// truths and estimates of a scenario (`sets[..steps]`, `sets[steps..]`), through
+/// [`with_points`].
+enum Call<'a> {
+    GospaReport(&'a Gospa),
+    OspaDecompose(&'a Ospa),
+    GospaSeries(&'a Gospa, usize),
+    OspaSeries(&'a Ospa, usize),
+}
+
+/// What a [`Call`] returns.
+enum Out {
+    GospaReport(GospaReport),
+    OspaDecomposition(OspaDecomposition),
+    GospaSeries(GospaSeries),
+    OspaSeries(OspaSeries),
+}
+
+impl OnPoints for Call<'_> {
+    type Output = fisst::Result<Out>;
+    fn call<P: AsRef<[f64]> + Sync>(self, sets: &[Vec<P>]) -> Self::Output {
+        Ok(match self {
+            Call::GospaReport(m) => Out::GospaReport(m.report(&sets[0], &sets[1])?),
+            Call::OspaDecompose(m) => Out::OspaDecomposition(m.decompose(&sets[0], &sets[1])?),
+            Call::GospaSeries(m, n) => Out::GospaSeries(m.series(&sets[..n], &sets[n..])?),
+            Call::OspaSeries(m, n) => Out::OspaSeries(m.series(&sets[..n], &sets[n..])?),
+        })
+    }
+}
+
+/// Runs `call` on `sets` with the GIL released and converts its result.
+fn run<'py>(py: Python<'py>, sets: &[&Points], call: Call<'_>) -> PyResult<Bound<'py, PyAny>> {
+    match py.detach(|| with_points(sets, call)).map_err(to_py)? {
+        Out::GospaReport(r) => result(py, &r),
+        Out::OspaDecomposition(r) => result(py, &r),
+        Out::GospaSeries(r) => result(py, &r),
+        Out::OspaSeries(r) => result(py, &r),
+    }
+}
 
 /// GOSPA between two point sets (García-Fernández & Svensson, "Spooky effect in optimal OSPA
 /// estimation and how GOSPA solves it", paper 003, Def. 2 and Prop. 3).
@@ -38,10 +80,8 @@ pub fn gospa<'py>(
         number_or(alpha, "alpha", 2.0)?,
     );
     let (t, e) = (points(truth, "truth")?, points(estimate, "estimate")?);
-    let (t, e) = (t.rows(), e.rows());
     let metric = Gospa::new(c, p, alpha).map_err(to_py)?;
-    let report = py.detach(|| metric.report(&t, &e)).map_err(to_py)?;
-    result(py, &report)
+    run(py, &[&t, &e], Call::GospaReport(&metric))
 }
 
 /// OSPA between two point sets with its rooted localisation and cardinality parts (Schuhmacher,
@@ -63,10 +103,8 @@ pub fn ospa<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let (c, p) = (number(c, "c")?, number_or(p, "p", 2.0)?);
     let (t, e) = (points(truth, "truth")?, points(estimate, "estimate")?);
-    let (t, e) = (t.rows(), e.rows());
     let metric = Ospa::new(c, p).map_err(to_py)?;
-    let d = py.detach(|| metric.decompose(&t, &e)).map_err(to_py)?;
-    result(py, &d)
+    run(py, &[&t, &e], Call::OspaDecompose(&metric))
 }
 
 /// UOSPA, GOSPA with alpha = 1 (paper 003). Returns a ``Result`` with ``distance``.
@@ -81,10 +119,8 @@ pub fn uospa<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let (c, p) = (number(c, "c")?, number_or(p, "p", 2.0)?);
     let (t, e) = (points(truth, "truth")?, points(estimate, "estimate")?);
-    let (t, e) = (t.rows(), e.rows());
     let metric = Gospa::uospa(c, p).map_err(to_py)?;
-    let report = py.detach(|| metric.report(&t, &e)).map_err(to_py)?;
-    result(py, &report)
+    run(py, &[&t, &e], Call::GospaReport(&metric))
 }
 
 /// The point sets of a scenario, `truths[t]` and `estimates[t]`, with the step cap checked
@@ -123,10 +159,8 @@ pub fn gospa_series<'py>(
     );
     let metric = Gospa::new(c, p, alpha).map_err(to_py)?;
     let (t, e) = series_sets(truths, estimates)?;
-    let t: Vec<Vec<&[f64]>> = t.iter().map(|p| p.rows()).collect();
-    let e: Vec<Vec<&[f64]>> = e.iter().map(|p| p.rows()).collect();
-    let s = py.detach(|| metric.series(&t, &e)).map_err(to_py)?;
-    result(py, &s)
+    let sets: Vec<&Points> = t.iter().chain(&e).collect();
+    run(py, &sets, Call::GospaSeries(&metric, t.len()))
 }
 
 /// OSPA with its localisation and cardinality parts over a whole scenario in one call (eqs.
@@ -144,10 +178,8 @@ pub fn ospa_series<'py>(
     let (c, p) = (number(c, "c")?, number_or(p, "p", 2.0)?);
     let metric = Ospa::new(c, p).map_err(to_py)?;
     let (t, e) = series_sets(truths, estimates)?;
-    let t: Vec<Vec<&[f64]>> = t.iter().map(|p| p.rows()).collect();
-    let e: Vec<Vec<&[f64]>> = e.iter().map(|p| p.rows()).collect();
-    let s = py.detach(|| metric.series(&t, &e)).map_err(to_py)?;
-    result(py, &s)
+    let sets: Vec<&Points> = t.iter().chain(&e).collect();
+    run(py, &sets, Call::OspaSeries(&metric, t.len()))
 }
 
 /// Exact rectangular linear assignment: ``cost`` is an ``(r, k)`` array of finite costs.
