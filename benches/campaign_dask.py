@@ -83,7 +83,7 @@ def main() -> None:
           f"M = {args.future_scans}, seed {args.seed}; fisst {fisst.__version__}, {os.cpu_count()} cores")
     t_native, text = native(args)
     with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
-                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+                                  dashboard_address=None, scheduler_kwargs={"dashboard_address": ":0"}) as cluster, distributed.Client(cluster) as client:
         t_one, one = timed(client, args)
     t_two, two = timed(None, args)
     with tempfile.TemporaryDirectory() as tmp:

@@ -70,5 +70,9 @@ fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(campaign::_campaign_run_seeds, m)?)?;
     m.add_function(wrap_pyfunction!(campaign::_campaign_control_check, m)?)?;
     m.add_function(wrap_pyfunction!(campaign::_campaign_control_run, m)?)?;
+    m.add_function(wrap_pyfunction!(campaign::_campaign_airport_check, m)?)?;
+    m.add_function(wrap_pyfunction!(campaign::_campaign_airport_run, m)?)?;
+    m.add_function(wrap_pyfunction!(campaign::_campaign_bounds_check, m)?)?;
+    m.add_function(wrap_pyfunction!(campaign::_campaign_bounds_run, m)?)?;
     Ok(())
 }

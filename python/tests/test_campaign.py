@@ -69,7 +69,7 @@ def test_the_same_table_serially_on_threads_on_processes_and_on_a_scheduler(tmp_
     pd.testing.assert_frame_equal(threads.table, reference.table, check_exact=True)
     # a local cluster of processes
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+                                  dashboard_address=None, scheduler_kwargs={"dashboard_address": ":0"}) as cluster, distributed.Client(cluster) as client:
         processes = fc.run("control", runs=4, seed=7, client=client, progress=False, **SMALL)
     pd.testing.assert_frame_equal(processes.table, reference.table, check_exact=True)
     # `dask scheduler` and two `dask worker` programs on loopback, by address
@@ -152,7 +152,7 @@ def test_a_different_set_up_in_the_same_out_is_an_error(tmp_path):
 @pytest.mark.parametrize(
     "kwargs, error, message",
     [
-        (dict(experiment="contrl"), ValueError, r"^experiment must be one of 'control', got 'contrl' \(did you mean 'control'\?\)"),
+        (dict(experiment="contrl"), ValueError, r"^experiment must be one of 'control', 'airport', 'bounds', got 'contrl' \(did you mean 'control'\?\)"),
         (dict(experiment=3), TypeError, r"^experiment must be a str"),
         (dict(runs=0), ValueError, r"^runs must be in \[1, 1000000\], got 0"),
         (dict(runs=-5), ValueError, r"^runs must be in"),
@@ -223,3 +223,66 @@ def test_the_plot_is_fig3_and_the_command_line_writes_it(tmp_path):
     bad = subprocess.run([sys.executable, "-m", "fisst.campaign", "control", "--runs", "2", "--partcles", "3"],
                          capture_output=True, text=True, timeout=120)
     assert bad.returncode == 2 and "unknown setting '--partcles'" in bad.stderr
+
+
+def without_timing(c):
+    return c.table.drop(columns=list(fc.EXPERIMENTS[c.experiment].timing))
+
+
+def test_airport_runs_both_filters_the_same_on_threads_and_serially():
+    small = dict(steps=20, particles=400)
+    a = fc.run("airport", runs=4, seed=5, client="serial", progress=False, **small)
+    b = fc.run("airport", runs=4, seed=5, progress=False, **small)
+    pd.testing.assert_frame_equal(without_timing(a), without_timing(b), check_exact=True)
+    t = a.table
+    assert list(t.columns) == ["run", "run_seed", "filter", "step", "existence", "position_error", "position_rss",
+                               "nees", "covered", "seconds"]
+    assert len(t) == 4 * 2 * 20 and set(t["filter"]) == {"gm", "particle"}
+    assert t["existence"].between(0, 1).all() and (t["position_rss"] > 0).all() and (t["seconds"] >= 0).all()
+    # Fig. 7a: the truth inside the 3σ ellipse nearly always (the paper test holds ≥ 0.95 over
+    # 24 runs of 60 steps)
+    assert t[t["filter"] == "gm"]["covered"].mean() >= 0.85
+    # the GM filter does not depend on the particle filter's settings
+    c = fc.run("airport", runs=4, seed=5, client="serial", progress=False, steps=20, particles=300, mcmc_moves=0)
+    gm = lambda x: without_timing(x)[x.table["filter"] == "gm"].reset_index(drop=True)  # noqa: E731
+    pd.testing.assert_frame_equal(gm(a), gm(c), check_exact=True)
+    assert not without_timing(a).equals(without_timing(c))
+    s = a.summary()
+    assert set(s["quantity"]) == {"existence", "position_error", "position_rss", "covered", "seconds"}
+    assert len(a.plot().axes) == 4
+
+
+def test_bounds_monte_carlo_attains_the_bound_31():
+    """Theorem 1 of paper 002: MAP detection with the posterior mean (and the cheaper rule on
+    Z = ∅) attains the bound (31): over 20 runs × 2,000 draws the mean squared error is within
+    4.5 pooled standard errors of it at every grid point."""
+    b = fc.run("bounds", runs=20, seed=3, progress=False)
+    serial_b = fc.run("bounds", runs=20, seed=3, client="serial", progress=False)
+    pd.testing.assert_frame_equal(b.table, serial_b.table, check_exact=True)
+    g = b.table.groupby(["detection_probability", "existence"])
+    mse, bound = g["mse"].mean(), g["bound"].first()
+    pooled = np.sqrt(g["mse_se"].apply(lambda s: (s**2).sum())) / g.size()
+    z = ((mse - bound) / pooled).to_numpy()
+    assert len(z) == 36 and np.all(np.abs(z) < 4.5), z
+    s = b.summary()
+    assert set(s["quantity"]) == {"mse", "bound", "map_bound"}
+    assert (s[s["quantity"] == "bound"]["standard_error"] == 0).all()
+    assert len(b.plot().axes) == 1
+
+
+@pytest.mark.parametrize(
+    "experiment, settings, error, message",
+    [
+        ("airport", dict(steps=0), ValueError, r"^steps"),
+        ("airport", dict(particles=0), ValueError, r"^particles"),
+        ("airport", dict(step=3), TypeError, r"unexpected setting 'step' for 'airport' \(did you mean 'steps'\?\)"),
+        ("bounds", dict(posterior_variance=30.0), ValueError, r"^posterior_variance"),
+        ("bounds", dict(existence=[]), ValueError, r"^existence"),
+        ("bounds", dict(existence=[0.5, 1.5]), ValueError, r"^existence"),
+        ("bounds", dict(samples=1), ValueError, r"^samples"),
+        ("bounds", dict(empty_rule="sometimes"), TypeError, r"^empty_rule: unknown variant"),
+    ],
+)
+def test_bad_airport_and_bounds_settings_name_the_setting(experiment, settings, error, message):
+    with pytest.raises(error, match=message):
+        fc.run(experiment, runs=1, seed=1, client="serial", progress=False, **settings)

@@ -15,10 +15,24 @@ of threads (the default), on a local cluster of processes, or on a cluster (a
 finished run is written at once (one Parquet part per run, atomically), and a campaign run
 again with the same ``out`` and settings computes only the runs that are not there yet.
 
-Experiments: ``"control"`` (Fig. 3 of paper 004, Ristic & Vo: every sensor-control scheme on
-the same run seeds; settings as ``fisst.compare_schemes``: ``steps=40``,
-``schemes=["renyi", "fisher", "pent", "random"]``, ``particles=750``, ``future_scans=200``,
-``alpha=0.5``, ``start=[0, 0]``, ``max_objects=4``).
+Experiments (``EXPERIMENTS[name].defaults`` lists the settings and their defaults):
+
+- ``"control"``: Fig. 3 of paper 004 (Ristic & Vo): every sensor-control scheme on the same run
+  seed; rows (scheme, step) with the OSPA distance and its localisation and cardinality parts.
+  Settings as ``fisst.compare_schemes``: ``steps=40``, ``schemes=["renyi", "fisher", "pent",
+  "random"]``, ``particles=750``, ``future_scans=200``, ``alpha=0.5``, ``start=[0, 0]``,
+  ``max_objects=4``.
+- ``"airport"``: Section V-C of paper 001 (LeGrand & Ferrari): the seeded airport scenario, the
+  GM and the particle Bernoulli filters on the same reports; rows (filter, step) with the
+  existence, the position error, the covariance RSS, the squared Mahalanobis distance ``nees``,
+  ``covered`` (inside the 3σ ellipse) and ``seconds`` (wall time of the step: the one column
+  that is not the same between two campaigns). Settings ``steps=60``, ``particles=5000``,
+  ``mcmc_moves=1``.
+- ``"bounds"``: paper 002 (Rezaeian & Vo): the optimal joint detector-estimator's mean squared
+  error by Monte Carlo against the bound (31) it attains, over a grid of ``existence`` and
+  ``detection_probability`` (Fig. 2's system: ``prior_variance=25``,
+  ``posterior_variance=1``, ``false_alarm_error=25``, ``miss_error=25``), ``samples=2000``
+  draws per grid point and run, ``empty_rule="optimal"``.
 
 From a shell: ``python -m fisst.campaign control --runs 200 --seed 1 --scheduler tcp://host:8786
 --out study/`` prints the summary and writes ``study/figure.png``.
@@ -99,6 +113,8 @@ def summarise(table: pd.DataFrame, experiment: Experiment) -> pd.DataFrame:
     for group, frame in table.groupby(keys, sort=False):
         group = group if isinstance(group, tuple) else (group,)
         n = len(frame)
+        for quantity in experiment.constants:
+            rows.append((*group, quantity, float(frame[quantity].iloc[0]), 0.0, n))
         for quantity in experiment.values:
             x = frame[quantity].to_numpy(dtype=np.float64)
             # as compare_schemes sums: in run order (a cumulative sum is sequential)
@@ -197,9 +213,11 @@ class _Dask:
             ) from None
         self.own: list[Any] = []
         if client is None:
+            # no dashboard; the scheduler's HTTP routes on a free port (not 8787, which another
+            # cluster on the machine may hold)
             cluster = distributed.LocalCluster(
                 n_workers=1, threads_per_worker=os.cpu_count() or 1, processes=False,
-                dashboard_address=None,
+                dashboard_address=None, scheduler_kwargs={"dashboard_address": ":0"},
             )
             self.own.append(cluster)
             client = distributed.Client(cluster)

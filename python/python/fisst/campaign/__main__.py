@@ -25,6 +25,8 @@ def _value(text: str, default: Any) -> Any:
         return int(text)
     if isinstance(default, float):
         return float(text)
+    if isinstance(default, str):
+        return text
     return json.loads(text)
 
 
