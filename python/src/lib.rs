@@ -10,6 +10,7 @@ mod bounds;
 mod control;
 mod convert;
 mod filters;
+mod fov;
 mod metrics;
 mod mixture;
 mod multi_bernoulli;
@@ -65,5 +66,10 @@ fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(control::multi_object_likelihood, m)?)?;
     m.add_class::<control::SensorControlRun>()?;
     m.add_function(wrap_pyfunction!(control::compare_schemes, m)?)?;
+    // Field of view (paper 001, Sections VI–VII)
+    m.add_function(wrap_pyfunction!(fov::fov_cardinality, m)?)?;
+    m.add_function(wrap_pyfunction!(fov::fov_variance_map, m)?)?;
+    m.add_function(wrap_pyfunction!(fov::placement_scene, m)?)?;
+    m.add_function(wrap_pyfunction!(fov::mixture_density_grid, m)?)?;
     Ok(())
 }
