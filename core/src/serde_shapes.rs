@@ -13,8 +13,8 @@ use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 /// At most this many Gaussians in one mixture read (a `GaussianMixture`, a
 /// `SpatialDensity`'s `mixture`): a longer array is an error naming it ("has 10001 entries, at
-/// most 10000 are supported").
-pub const MAX_GAUSSIANS: usize = 10_000;
+/// most 10000 are supported"). The one cap of [`crate::gaussian::MAX_GAUSSIANS`].
+pub use crate::gaussian::MAX_GAUSSIANS;
 
 /// A multi-Bernoulli of Gaussians, `Vec<(f64, Gaussian)>` (existence, density), as
 /// `[{existence, mean, cov}, …]`: `cov` in any [`Covariance`] form, at most [`MAX_GAUSSIANS`]

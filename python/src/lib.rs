@@ -11,6 +11,7 @@ mod campaign;
 mod control;
 mod convert;
 mod filters;
+mod fov;
 mod metrics;
 mod mixture;
 mod multi_bernoulli;
@@ -74,5 +75,10 @@ fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(campaign::_campaign_airport_run, m)?)?;
     m.add_function(wrap_pyfunction!(campaign::_campaign_bounds_check, m)?)?;
     m.add_function(wrap_pyfunction!(campaign::_campaign_bounds_run, m)?)?;
+    // Field of view (paper 001, Sections VI–VII)
+    m.add_function(wrap_pyfunction!(fov::fov_cardinality, m)?)?;
+    m.add_function(wrap_pyfunction!(fov::fov_variance_map, m)?)?;
+    m.add_function(wrap_pyfunction!(fov::placement_scene, m)?)?;
+    m.add_function(wrap_pyfunction!(fov::mixture_density_grid, m)?)?;
     Ok(())
 }

@@ -5,7 +5,7 @@
 
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyMapping, PyString, PyTuple};
 use serde::de::DeserializeOwned;
 
 use crate::names::rule;
@@ -127,8 +127,8 @@ fn rust_name<'a>(parent: &str, key: &'a str) -> &'a str {
 }
 
 /// `value` as plain Python data that pythonize reads: numpy arrays and pandas objects as
-/// (nested) lists, numpy scalars as Python numbers, tuples as lists, dict keys in the core's
-/// names (`F` → `f` under `transition`). `name` is the key holding `value` (for the renames).
+/// (nested) lists, other mappings (a `fisst.Result`) as dicts, numpy scalars as Python
+/// numbers, tuples as lists, dict keys in the core's names (`F` → `f` under `transition`). `name` is the key holding `value` (for the renames).
 fn plain<'py>(value: &Bound<'py, PyAny>, path: &str, name: &str) -> PyResult<Bound<'py, PyAny>> {
     let py = value.py();
     if value.is_none()
@@ -178,6 +178,16 @@ fn plain<'py>(value: &Bound<'py, PyAny>, path: &str, name: &str) -> PyResult<Bou
             .map(|(i, v)| plain(&v, &format!("{path}[{i}]"), name))
             .collect::<PyResult<Vec<_>>>()?;
         return Ok(PyList::new(py, items)?.into_any());
+    }
+    // any other mapping (a `fisst.Result` given back, e.g. `placement_scene().multi_bernoulli`
+    // into `fov_variance_map`): as a dict, its numpy arrays as lists
+    if let Ok(m) = value.cast::<PyMapping>() {
+        let d = PyDict::new(py);
+        for item in m.items()?.iter() {
+            let (k, v): (Bound<'py, PyAny>, Bound<'py, PyAny>) = item.extract()?;
+            d.set_item(k, v)?;
+        }
+        return plain(d.as_any(), path, name);
     }
     // numpy arrays and scalars, pandas objects: through `tolist()` / `item()`
     if value.hasattr("to_numpy")? {

@@ -52,6 +52,13 @@ filter_config = st.fixed_dictionaries(
     optional={"survival": probability, "position_dims": st.integers(0, 3), "exclusions": st.lists(region, max_size=2)})
 
 
+gaussian = st.fixed_dictionaries({"mean": st.one_of(st.lists(number, min_size=2, max_size=2), junk), "cov": st.one_of(matrix2, number)})
+bernoullis = st.one_of(st.lists(st.fixed_dictionaries({"existence": probability, "mean": st.one_of(st.lists(number, min_size=2, max_size=3), junk),
+                                                       "cov": st.one_of(matrix2, number)}), max_size=4), junk)
+axis = st.one_of(st.tuples(number, number, st.one_of(st.integers(-1, 6), st.sampled_from([0.5, 4097, 1e300, float("nan")]))), junk)
+grid = st.one_of(st.fixed_dictionaries({"x": axis, "y": axis}), junk)
+
+
 def maybe(strategy):
     """A keyword that is sometimes omitted (None here means: leave it out)."""
     return st.one_of(st.none(), strategy)
@@ -133,6 +140,18 @@ CALLS = {
          "center": st.one_of(st.lists(number, min_size=2, max_size=2), junk), "radius": kw_number})),
     "reduce_mixture": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
         {"mixture": mixture}, optional={"prune_below": kw_number, "merge_distance": kw_number, "max_components": st.one_of(st.integers(-1, 5), junk)})),
+    "fov_cardinality": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"rfs": st.one_of(st.fixed_dictionaries({"multi_bernoulli": bernoullis}), st.fixed_dictionaries({"poisson": mixture}),
+                          st.fixed_dictionaries({"iid_cluster": st.fixed_dictionaries({"cardinality": st.one_of(st.lists(probability, max_size=4), junk), "density": mixture})}),
+                          st.fixed_dictionaries({"glmb": st.lists(st.fixed_dictionaries({"weight": number, "components": st.lists(gaussian, max_size=2)}), max_size=3)}), junk),
+         "fov": st.one_of(region, st.fixed_dictionaries({"polygon": st.fixed_dictionaries({"vertices": st.lists(st.lists(number, min_size=2, max_size=2), max_size=5)})}))},
+        optional={"detection_probability": st.one_of(probability, junk)})),
+    "fov_variance_map": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"multi_bernoulli": bernoullis, "fov_size": st.one_of(st.lists(number, min_size=2, max_size=2), junk), "grid": grid})),
+    "placement_scene": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {}, optional={"count": st.one_of(st.integers(-1, 50), junk), "seed": st.one_of(st.integers(-1, 2**60), junk), "extent": kw_number,
+                      "sigma": st.one_of(st.lists(number, min_size=2, max_size=2), junk)})),
+    "mixture_density_grid": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries({"mixture": mixture, "grid": grid})),
 }
 
 assert set(CALLS) == {n for n in fisst.__all__ if callable(getattr(fisst, n)) and n != "Result"}, (

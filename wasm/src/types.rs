@@ -299,43 +299,17 @@ pub enum MultiObjectDensity {
 }
 
 /// A grid axis `[min, max, count]`: `count` points from `min` to `max` (like linspace).
-#[derive(Clone, Copy, Debug, Deserialize, Tsify)]
+// The TypeScript declaration only: the values are read by the core (`fisst::fov::Grid`).
+#[derive(Clone, Copy, Debug, Tsify)]
 #[tsify(type = "[number, number, number]")]
 pub struct Axis(pub f64, pub f64, pub f64);
 
-impl Axis {
-    /// The core axis, with `count` an integer in [1, 4096]; errors name `path`.
-    pub fn into_core(self, path: &str) -> JsResult<fisst::fov::GridAxis> {
-        let Axis(min, max, count) = self;
-        let cap = fisst::fov::MAX_GRID_AXIS as f64;
-        if count.fract() != 0.0 || !(1.0..=cap).contains(&count) {
-            return Err(range_error(format!(
-                "{path}[2] must be an integer count in [1, {cap}], got {count}"
-            )));
-        }
-        Ok(fisst::fov::GridAxis {
-            min,
-            max,
-            count: count as usize,
-        })
-    }
-}
-
 /// A 2D grid of positions: one axis `[min, max, count]` per coordinate.
-#[derive(Clone, Copy, Debug, Deserialize, Tsify)]
+// The TypeScript declaration only: the values are read by the core (`fisst::fov::Grid`).
+#[derive(Clone, Copy, Debug, Tsify)]
 pub struct Grid {
     /// The x axis `[min, max, count]`, `count` in [1, 4096].
     pub x: Axis,
     /// The y axis `[min, max, count]`, `count` in [1, 4096].
     pub y: Axis,
-}
-
-impl Grid {
-    /// Both core axes; errors name `path` (`options.grid`).
-    pub fn into_core(self, path: &str) -> JsResult<(fisst::fov::GridAxis, fisst::fov::GridAxis)> {
-        Ok((
-            self.x.into_core(&format!("{path}.x"))?,
-            self.y.into_core(&format!("{path}.y"))?,
-        ))
-    }
 }

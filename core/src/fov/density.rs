@@ -15,8 +15,16 @@ use super::pmf::{self, FovCardinality, GlmbHypothesis};
 
 /// A multi-object density whose single-object densities are Gaussians or Gaussian mixtures
 /// (eq. (7) of `001_…`).
+///
+/// Its serde form (feature `serde`) has exactly one key: `{"poisson": [{weight, mean, cov}, …]}`,
+/// `{"iid_cluster": {cardinality, density}}`, `{"multi_bernoulli": [{existence, mean, cov}, …]}`
+/// or `{"glmb": [{weight, components: [{mean, cov}, …]}, …]}`.
 #[derive(Clone, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "snake_case")
+)]
 pub enum MultiObjectDensity {
     /// Poisson RFS (76) with PHD D(x) = Σ_i w_i N(x; m_i, P_i); N_X = Σ_i w_i.
     Poisson(GaussianMixture),
@@ -29,10 +37,16 @@ pub enum MultiObjectDensity {
         density: GaussianMixture,
     },
     /// Multi-Bernoulli RFS (87): (existence r⁽ⁱ⁾, density p⁽ⁱ⁾) per component.
-    MultiBernoulli(Vec<(f64, Gaussian)>),
+    MultiBernoulli(
+        #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::bernoullis"))]
+        Vec<(f64, Gaussian)>,
+    ),
     /// GLMB (91): one entry per hypothesis (ξ, I): its weight w⁽ξ⁾(I) and the densities
     /// p⁽ξ,ℓ⁾ of its labels ℓ ∈ I.
-    Glmb(Vec<(f64, Vec<Gaussian>)>),
+    Glmb(
+        #[cfg_attr(feature = "serde", serde(with = "super::options::glmb_hypotheses"))]
+        Vec<(f64, Vec<Gaussian>)>,
+    ),
 }
 
 /// [`fov_cardinality`]'s result.
@@ -54,14 +68,14 @@ fn masses<'a>(
 ) -> Result<Vec<f64>> {
     let gaussians: Vec<(String, &Gaussian)> = gaussians.collect();
     // When no component has the FoV's dimension, the likelier mistake is the FoV (a 3-D box over
-    // 2-D objects): name its field first and the mean it disagrees with (in the JavaScript names
+    // 2-D objects): name its field first and the mean it disagrees with (in the Rust names
     // these errors use). A single odd component is blamed itself, by the mass below.
     if let Some((name, g)) = gaussians.first()
         && gaussians.iter().all(|(_, g)| g.dim() < fov.dim())
     {
         let (field, dim) = crate::filters::validate::region_dim_field(fov);
         return Err(Error::shapes(
-            alloc::format!("fov.{}", field.replace("ball.", "disc.")),
+            alloc::format!("fov.{field}"),
             Shape::Length(dim),
             alloc::format!("{name}.mean"),
             Shape::Length(g.dim()),
@@ -136,9 +150,9 @@ fn renamed(e: Error, prefix: &str, from: &str) -> Error {
 /// [`pmf::multi_bernoulli`] with r_S⁽ⁱ⁾ = p_D r⁽ⁱ⁾ ⟨1_S, p⁽ⁱ⁾⟩; GLMB (92) → [`pmf::glmb`].
 /// The masses come from [`Region::gaussian_mass`] (see there for their accuracy).
 ///
-/// Error messages use the JavaScript field names (`rfs.multiBernoulli[3].existence`,
-/// `rfs.poisson[1].mean`, `rfs.iidCluster.cardinality[2]`, `rfs.glmb[0].weight`,
-/// `detectionProbability`).
+/// Error messages use the Rust field names (`rfs.multi_bernoulli[3].existence`,
+/// `rfs.poisson[1].mean`, `rfs.iid_cluster.cardinality[2]`, `rfs.glmb[0].weight`,
+/// `detection_probability`).
 ///
 /// # Errors
 /// [`Error::InvalidProbability`] for p_D or an existence outside [0, 1];
@@ -166,7 +180,7 @@ pub fn fov_cardinality(
     fov: &Region,
     detection_prob: f64,
 ) -> Result<FovCount> {
-    let pd = check_probability(|| "detectionProbability".into(), detection_prob)?;
+    let pd = check_probability(|| "detection_probability".into(), detection_prob)?;
     match density {
         MultiObjectDensity::Poisson(phd) => {
             let mass_in_fov = masses(
@@ -195,7 +209,7 @@ pub fn fov_cardinality(
         } => {
             let total = weights_sum_to_one(
                 density.components().iter().map(|(w, _)| *w),
-                "rfs.iidCluster.density",
+                "rfs.iid_cluster.density",
             )?;
             let mass_in_fov = masses(
                 fov,
@@ -203,7 +217,7 @@ pub fn fov_cardinality(
                     .components()
                     .iter()
                     .enumerate()
-                    .map(|(i, (_, g))| (alloc::format!("rfs.iidCluster.density[{i}]"), g)),
+                    .map(|(i, (_, g))| (alloc::format!("rfs.iid_cluster.density[{i}]"), g)),
             )?;
             let q = pd
                 * sum(density
@@ -212,7 +226,7 @@ pub fn fov_cardinality(
                     .zip(&mass_in_fov)
                     .map(|((w, _), m)| w / total * m));
             let cardinality = pmf::iid_cluster(cardinality, q.clamp(0.0, 1.0))
-                .map_err(|e| renamed(e, "rfs.iidCluster.cardinality", "cardinality"))?;
+                .map_err(|e| renamed(e, "rfs.iid_cluster.cardinality", "cardinality"))?;
             Ok(FovCount {
                 cardinality,
                 mass_in_fov,
@@ -220,14 +234,14 @@ pub fn fov_cardinality(
         }
         MultiObjectDensity::MultiBernoulli(components) => {
             for (i, (r, _)) in components.iter().enumerate() {
-                check_probability(|| alloc::format!("rfs.multiBernoulli[{i}].existence"), *r)?;
+                check_probability(|| alloc::format!("rfs.multi_bernoulli[{i}].existence"), *r)?;
             }
             let mass_in_fov = masses(
                 fov,
                 components
                     .iter()
                     .enumerate()
-                    .map(|(i, (_, g))| (alloc::format!("rfs.multiBernoulli[{i}]"), g)),
+                    .map(|(i, (_, g))| (alloc::format!("rfs.multi_bernoulli[{i}]"), g)),
             )?;
             let inside: Vec<f64> = components
                 .iter()

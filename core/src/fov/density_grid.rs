@@ -94,7 +94,7 @@ fn check_peak(mixture: &GaussianMixture) -> Result<()> {
 /// w_j = r⁽ʲ⁾ this is its PHD (99), the heat map of Fig. 9.
 ///
 /// # Errors
-/// Using the JavaScript field names: [`Error::DimensionMismatch`] naming `mixture[j].mean`
+/// Using the Rust field names: [`Error::DimensionMismatch`] naming `mixture[j].mean`
 /// for a component of fewer than 2 dimensions; [`Error::InvalidParameter`] naming
 /// `grid.x[0…2]` / `grid.y[0…2]` (min finite, max finite and ≥ min, count in [1, 4096]);
 /// [`Error::Unsupported`] naming `grid` for more than [`MAX_GRID_CELLS`] positions;

@@ -31,11 +31,13 @@
 //! | [`fov_cardinality`] | (72)–(73) with the masses ⟨1_S, p⟩ | `front_door_names_fields`, `placement::tests::every_mass_matches_the_direct_bivariate_rectangle` |
 //! | [`variance_map`] | Section VII, Fig. 10 | `placement::tests::fig10_variance_map_matches_the_pmf_and_finds_the_maximum`, `paper_001_fov::fig10_the_maximum_is_the_variance_of_the_pmf_there`, `paper_001_fov::fig10_no_grid_cell_exceeds_the_maximum`, `paper_001_fov::fig10_a_finer_search_gains_no_more_than_the_grid_step_allows`, `paper_001_fov::fig10_most_uncertain_is_not_most_populated`, `paper_001_fov::fig10_monte_carlo_of_the_rfs_matches_the_pmf_at_the_optimum` |
 //! | [`fov_mass_work_us`], [`grid_work`] and their budgets | the cost of the masses of (72)–(73) and of the Section VII grids | `budget::tests::eq72_work_counts_every_mass_at_the_region_cost` |
-//! | [`placement_scene`], [`mixture_density_grid`] | Figs 9–10, the PHD (99) | `scene::tests::scenes_follow_the_recipe`, `scene::tests::default_scene_is_pinned`, `density_grid::tests::sums_the_components_and_marginalises`, `paper_001_fov::fig9_the_phd_integrates_to_the_expected_counts`, `paper_001_fov::fig9_the_optimal_boundary_splits_components` |
+//! | [`FovCardinalityOptions`], [`FovVarianceMapOptions`], [`MixtureDensityGridOptions`], [`Grid`] | the calls above with their caps and budgets | `options::tests::eq72_run_is_fov_cardinality_flattened`, `options::tests::eq72_caps_name_the_rust_fields`, `options::tests::eq72_the_mass_budget_names_rfs`, `options::tests::fig10_grid_axes_and_work_caps` |
+//! | [`placement_scene`], [`PlacementScene`], [`mixture_density_grid`] | Figs 9–10, the PHD (99) | `scene::tests::scenes_follow_the_recipe`, `scene::tests::default_scene_is_pinned`, `density_grid::tests::sums_the_components_and_marginalises`, `paper_001_fov::fig9_the_phd_integrates_to_the_expected_counts`, `paper_001_fov::fig9_the_optimal_boundary_splits_components` |
 
 mod budget;
 mod density;
 mod density_grid;
+mod options;
 mod placement;
 pub mod pmf;
 pub mod scene;
@@ -46,12 +48,16 @@ pub use budget::{
 };
 pub use density::{FovCount, MultiObjectDensity, fov_cardinality};
 pub use density_grid::mixture_density_grid;
+pub use options::{
+    DEFAULT_DETECTION_PROBABILITY, FovCardinalityOptions, FovCardinalityResult,
+    FovVarianceMapOptions, FovVarianceMapResult, Grid, MAX_VERTICES, MixtureDensityGridOptions,
+};
 pub use placement::{GridAxis, MAX_GRID_AXIS, MAX_GRID_CELLS, VarianceMap, variance_map};
 pub use pmf::{
     FovCardinality, GlmbHypothesis, glmb, iid_cluster, multi_bernoulli, multi_bernoulli_dft,
     multi_bernoulli_enumerated, poisson,
 };
-pub use scene::{MAX_SCENE_COUNT, SceneOptions, placement_scene};
+pub use scene::{MAX_SCENE_COUNT, PlacementScene, SceneComponent, SceneOptions, placement_scene};
 
 #[cfg(test)]
 mod tests;

@@ -426,10 +426,10 @@ fn check_components(components: &[(f64, Gaussian)]) -> Result<Vec<Component>> {
         .iter()
         .enumerate()
         .map(|(i, (r, g))| {
-            check_probability(|| alloc::format!("multiBernoulli[{i}].existence"), *r)?;
+            check_probability(|| alloc::format!("multi_bernoulli[{i}].existence"), *r)?;
             if g.dim() < 2 {
                 return Err(Error::dimension(
-                    alloc::format!("multiBernoulli[{i}].mean"),
+                    alloc::format!("multi_bernoulli[{i}].mean"),
                     2,
                     g.dim(),
                 ));
@@ -443,7 +443,7 @@ fn check_size(fov_size: [f64; 2]) -> Result<()> {
     for (k, &v) in fov_size.iter().enumerate() {
         if !(v.is_finite() && v > 0.0) {
             return Err(Error::parameter(
-                alloc::format!("fovSize[{k}]"),
+                alloc::format!("fov_size[{k}]"),
                 v,
                 "finite and > 0",
             ));
@@ -505,10 +505,10 @@ fn direct_mass(comp: &Component, cx: f64, cy: f64, size: [f64; 2]) -> f64 {
 /// by that much (an added error ≤ 4ε · size · density).
 ///
 /// # Errors
-/// Using the JavaScript field names: [`Error::InvalidProbability`] naming
-/// `multiBernoulli[i].existence`; [`Error::DimensionMismatch`] naming `multiBernoulli[i].mean`
+/// Using the Rust field names: [`Error::InvalidProbability`] naming
+/// `multi_bernoulli[i].existence`; [`Error::DimensionMismatch`] naming `multi_bernoulli[i].mean`
 /// for a Gaussian of fewer than 2 components; [`Error::InvalidParameter`] naming
-/// `fovSize[k]` (must be finite and > 0) or `grid.x[0…2]` / `grid.y[0…2]`;
+/// `fov_size[k]` (must be finite and > 0) or `grid.x[0…2]` / `grid.y[0…2]`;
 /// [`Error::Unsupported`] naming `grid` for more than [`MAX_GRID_CELLS`] cells.
 ///
 /// # Examples
@@ -813,9 +813,9 @@ mod tests {
             count: 3,
         };
         let e = variance_map(&[(1.2, g.clone())], [1.0, 1.0], ax, ax).unwrap_err();
-        assert_eq!(e.field(), "multiBernoulli[0].existence");
+        assert_eq!(e.field(), "multi_bernoulli[0].existence");
         let e = variance_map(&[(0.5, g.clone())], [1.0, 0.0], ax, ax).unwrap_err();
-        assert_eq!(e.field(), "fovSize[1]");
+        assert_eq!(e.field(), "fov_size[1]");
         let bad = GridAxis {
             min: 1.0,
             max: 0.0,
@@ -832,7 +832,7 @@ mod tests {
         assert_eq!(e.field(), "grid.x[2]");
         let g1 = Gaussian::from_slices(&[0.0], &[1.0], "p").unwrap();
         let e = variance_map(&[(0.5, g), (0.5, g1)], [1.0, 1.0], ax, ax).unwrap_err();
-        assert_eq!(e.field(), "multiBernoulli[1].mean");
+        assert_eq!(e.field(), "multi_bernoulli[1].mean");
         let m = variance_map(&[], [1.0, 1.0], ax, ax).unwrap();
         assert_eq!(m.max, 0.0);
         assert_eq!(m.argmax_index, [0, 0]);

@@ -111,10 +111,52 @@ pub fn placement_scene(options: &SceneOptions) -> Result<Vec<(f64, Gaussian)>> {
         let (a2, b2) = (a * a, b * b);
         let off = c * s * (a2 - b2);
         let cov = [c * c * a2 + s * s * b2, off, off, s * s * a2 + c * c * b2];
-        let name = alloc::format!("multiBernoulli[{i}]");
+        let name = alloc::format!("multi_bernoulli[{i}]");
         out.push((r, Gaussian::from_slices(&[mx, my], &cov, &name)?));
     }
     Ok(out)
+}
+
+/// One Bernoulli component of a [`PlacementScene`]: existence, 2D mean and 2 × 2 covariance.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SceneComponent {
+    /// The existence probability r ∈ [0.35, 1).
+    pub existence: f64,
+    /// The mean position `[x, y]`.
+    pub mean: [f64; 2],
+    /// The position covariance `[[a, b], [b, c]]`, symmetric positive definite.
+    pub cov: [[f64; 2]; 2],
+}
+
+/// A seeded multi-Bernoulli scene of Section VII of `001_…` (Figs 9–10) as the bindings give it:
+/// `multi_bernoulli` is `[{existence, mean, cov}, …]`, ready to pass back as a multi-Bernoulli.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct PlacementScene {
+    /// The components, one per potential object.
+    pub multi_bernoulli: Vec<SceneComponent>,
+}
+
+impl SceneOptions {
+    /// [`placement_scene`] of these options as a [`PlacementScene`].
+    ///
+    /// # Errors
+    /// Those of [`placement_scene`].
+    pub fn scene(&self) -> Result<PlacementScene> {
+        let multi_bernoulli = placement_scene(self)?
+            .iter()
+            .map(|(r, g)| {
+                let (m, p) = (g.mean(), g.cov());
+                SceneComponent {
+                    existence: *r,
+                    mean: [m[0], m[1]],
+                    cov: [[p[(0, 0)], p[(0, 1)]], [p[(1, 0)], p[(1, 1)]]],
+                }
+            })
+            .collect();
+        Ok(PlacementScene { multi_bernoulli })
+    }
 }
 
 #[cfg(test)]
@@ -147,6 +189,25 @@ mod tests {
             ],
         ),
     ];
+
+    #[test]
+    fn fig9_scene_is_placement_scene_as_rows() {
+        let o = SceneOptions {
+            count: 7,
+            ..SceneOptions::default()
+        };
+        let rows = o.scene().unwrap();
+        let raw = placement_scene(&o).unwrap();
+        assert_eq!(rows.multi_bernoulli.len(), 7);
+        for (c, (r, g)) in rows.multi_bernoulli.iter().zip(&raw) {
+            assert_eq!(c.existence, *r);
+            assert_eq!(c.mean, [g.mean()[0], g.mean()[1]]);
+            assert_eq!(c.cov[0][1], g.cov()[(0, 1)]);
+            assert_eq!(c.cov[1][1], g.cov()[(1, 1)]);
+        }
+        let e = SceneOptions { extent: -1.0, ..o }.scene().unwrap_err();
+        assert_eq!(e.field(), "extent");
+    }
 
     #[test]
     fn default_scene_is_pinned() {

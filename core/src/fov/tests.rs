@@ -323,9 +323,9 @@ fn eq88_multi_bernoulli_matches_the_simulation() {
     let mut bad = comps.clone();
     bad[3].0 = 1.5;
     let e = fov_cardinality(&MultiObjectDensity::MultiBernoulli(bad), &fov, 1.0).unwrap_err();
-    assert_eq!(e.field(), "rfs.multiBernoulli[3].existence");
+    assert_eq!(e.field(), "rfs.multi_bernoulli[3].existence");
     let e = fov_cardinality(&MultiObjectDensity::MultiBernoulli(comps), &fov, 1.1).unwrap_err();
-    assert_eq!(e.field(), "detectionProbability");
+    assert_eq!(e.field(), "detection_probability");
 }
 
 #[test]
@@ -396,7 +396,7 @@ fn front_door_names_fields() {
         1.0,
     )
     .unwrap_err();
-    assert_eq!(e.field(), "rfs.multiBernoulli[1].mean");
+    assert_eq!(e.field(), "rfs.multi_bernoulli[1].mean");
     let phd = GaussianMixture::new(vec![(1.0, gs[0].clone()), (2.0, one_d)], "rfs.poisson");
     // a mixture of mixed dimensions is already rejected when it is built
     assert_eq!(phd.unwrap_err().field(), "rfs.poisson[1].mean");
@@ -410,7 +410,7 @@ fn front_door_names_fields() {
         1.0,
     )
     .unwrap_err();
-    assert_eq!(e.field(), "rfs.iidCluster.density");
+    assert_eq!(e.field(), "rfs.iid_cluster.density");
     let density = GaussianMixture::new(vec![(1.0, gs[0].clone())], "d").unwrap();
     let e = fov_cardinality(
         &MultiObjectDensity::IidCluster {
@@ -421,7 +421,7 @@ fn front_door_names_fields() {
         1.0,
     )
     .unwrap_err();
-    assert_eq!(e.field(), "rfs.iidCluster.cardinality[1]");
+    assert_eq!(e.field(), "rfs.iid_cluster.cardinality[1]");
 }
 
 /// Issue 26 (point 7): a FoV box whose corner has both coordinates near the largest double
@@ -453,12 +453,12 @@ fn eq75_a_fov_of_more_dimensions_names_its_own_field() {
     let e = fov_cardinality(&mb, &fov, 1.0).unwrap_err();
     assert_eq!(
         e.to_string(),
-        "fov.box.min has length 3 but rfs.multiBernoulli[0].mean has length 2"
+        "fov.box.min has length 3 but rfs.multi_bernoulli[0].mean has length 2"
     );
     let ball = Region::ball(&[0.0, 0.0, 0.0], 1.0, "fov").unwrap();
     let e = fov_cardinality(&mb, &ball, 1.0).unwrap_err();
     assert!(
-        e.to_string().starts_with("fov.disc.center has length 3"),
+        e.to_string().starts_with("fov.ball.center has length 3"),
         "{e}"
     );
 }

@@ -13,6 +13,8 @@ __all__ = [
     "bernoulli_loss_curve",
     "bernoulli_threshold_curve",
     "compare_schemes",
+    "fov_cardinality",
+    "fov_variance_map",
     "gaussian_fisher_information",
     "gm_bernoulli_predict",
     "gm_bernoulli_update",
@@ -29,12 +31,14 @@ __all__ = [
     "mb_identical_component_counts",
     "mb_mean_square_error",
     "mb_optimal_estimate",
+    "mixture_density_grid",
     "multi_bernoulli_cardinality",
     "multi_bernoulli_leave_one_out",
     "multi_object_likelihood",
     "ospa",
     "ospa_series",
     "ParticleBernoulliFilter",
+    "placement_scene",
     "probability_outside_ball",
     "reduce_mixture",
     "SensorControlRun",
@@ -265,3 +269,32 @@ def reduce_mixture(
     merge_distance: float | None = None,
     max_components: int | None = None,
 ) -> Any: ...
+
+# Field of view (paper 001, Sections VI–VII)
+_GridAxis: TypeAlias = tuple[float, float, float] | Sequence[float]
+_Grid: TypeAlias = dict[str, _GridAxis]
+
+def fov_cardinality(
+    *, rfs: dict[str, Any], fov: _Region, detection_probability: float = 1.0
+) -> Result:
+    """The pmf of the number of objects in the field of view ``fov`` (paper 001, Props 1–4,
+    eqs. (72)–(92)): a ``Result`` with ``pmf`` (float64 array), ``mean``, ``variance`` and
+    ``mass_in_fov`` (float64 array)."""
+
+def fov_variance_map(
+    *, multi_bernoulli: Sequence[Mapping[str, Any]], fov_size: Sequence[float], grid: _Grid
+) -> Result:
+    """The FoV-count variance over a grid of FoV centres (paper 001, Section VII, Fig. 10): a
+    ``Result`` with ``variance`` (float64 array of shape ``(ny, nx)``, y the row index),
+    ``argmax`` (``[x, y]``) and ``max``."""
+
+def placement_scene(
+    *, count: int = 100, seed: int = 1, extent: float = 3.0, sigma: Sequence[float] = (0.1, 0.5)
+) -> Result:
+    """A seeded multi-Bernoulli scene (paper 001, Section VII, Figs 9–10): a ``Result`` with
+    ``multi_bernoulli``, a list of ``Result`` with ``existence``, ``mean`` (shape ``(2,)``) and
+    ``cov`` (shape ``(2, 2)``)."""
+
+def mixture_density_grid(*, mixture: Sequence[Mapping[str, Any]], grid: _Grid) -> npt.NDArray[np.float64]:
+    """A Gaussian mixture's density over a grid (paper 001, the PHD (99) of Fig. 9): a float64
+    array of shape ``(ny, nx)``, ``[j, i]`` at (x_i, y_j)."""

@@ -4,6 +4,9 @@
 //   node tests/js/python/fixture.mjs > out.json
 import * as fisst from 'fisst';
 
+// a placement scene as plain data (the arguments are written out as JSON)
+const placementSceneFor = (o) => fisst.placementScene(o).multiBernoulli;
+
 const calls = [
   ['gospa', [[[0, 0], [10, 0]], [[0, 1]], { c: 2 }]],
   ['gospa', [[[0, 0], [1, 2], [3, 1]], [[0.5, 0], [3, 1.5]], { c: 2, p: 1, alpha: 2 }]],
@@ -34,6 +37,13 @@ const calls = [
   ['probabilityOutsideBall', [{ density: { particles: [[0, 0], [1, 1], [3, 0]], weights: [0.2, 0.5, 0.3] }, center: [0.5, 0.5], radius: 1 }]],
   ['reduceMixture', [{ mixture: [{ weight: 0.5, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { weight: 0.3, mean: [0.1, 0], cov: [[1, 0], [0, 1]] }, { weight: 1e-9, mean: [5, 5], cov: [[1, 0], [0, 1]] }, { weight: 0.2, mean: [4, 0], cov: [[2, 0], [0, 1]] }], pruneBelow: 1e-6, mergeDistance: 1, maxComponents: 1 }]],
   ['multiObjectLikelihood', [{ likelihoods: [[0.5, 0.1], [0.2, 0.3]], detectionProbability: 0.9, clutterRate: 1, clutterDensity: [0.1, 0.1] }]],
+  ['fovCardinality', [{ rfs: { multiBernoulli: [{ existence: 0.5, mean: [0, 0], cov: [[1, 0.2], [0.2, 0.5]] }, { existence: 0.9, mean: [2, 1], cov: [[0.3, 0], [0, 0.3]] }] }, fov: { box: { min: [-1, -1], max: [2, 1.5] } }, detectionProbability: 0.9 }]],
+  ['fovCardinality', [{ rfs: { poisson: [{ weight: 2, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { weight: 0.5, mean: [3, 0], cov: [[0.5, 0], [0, 0.5]] }] }, fov: { disc: { center: [0.5, 0], radius: 1.5 } } }]],
+  ['fovCardinality', [{ rfs: { iidCluster: { cardinality: [0.1, 0.3, 0.6], density: [{ weight: 1, mean: [0, 0], cov: [[1, 0], [0, 1]] }] } }, fov: { polygon: [[-1, -1], [2, -1], [0, 2]] } }]],
+  ['fovCardinality', [{ rfs: { glmb: [{ weight: 0.4, components: [{ mean: [0, 0], cov: [[1, 0], [0, 1]] }] }, { weight: 0.6, components: [{ mean: [0, 0], cov: [[1, 0], [0, 1]] }, { mean: [1, 1], cov: [[0.5, 0], [0, 0.5]] }] }] }, fov: { union: [{ box: { min: [-1, -1], max: [0, 0] } }, { complement: { disc: { center: [0, 0], radius: 2 } } }] } }]],
+  ['fovVarianceMap', [{ multiBernoulli: placementSceneFor({ count: 8, seed: 3 }), fovSize: [1, 1.5], grid: { x: [-3, 3, 7], y: [-2, 2, 5] } }]],
+  ['placementScene', [{ count: 5, seed: 9, extent: 2, sigma: [0.2, 0.4] }]],
+  ['mixtureDensityGrid', [{ mixture: [{ weight: 0.7, mean: [0, 0], cov: [[1, 0.3], [0.3, 0.8]] }, { weight: 1.2, mean: [1, -1], cov: [[0.5, -0.1], [-0.1, 0.4]] }], grid: { x: [-2, 2, 6], y: [-1, 1, 4] } }]],
 ];
 
 const out = calls.map(([fn, args]) => ({ fn, args, result: fisst[fn](...args) }));
