@@ -581,3 +581,42 @@ fn loss_curve_options_read_with_the_threshold_optional_and_the_curve_round_trips
             .contains("miss_probability")
     );
 }
+
+/// The Bernoulli estimators' options and results (paper 000): the options read the density and
+/// costs in their written forms, a report writes `estimate: null` when nothing is declared, and
+/// the MMUC method is kebab case.
+#[test]
+fn bernoulli_estimate_options_and_reports_round_trip() {
+    use crate::bernoulli::{
+        BernoulliEstimateOptions, MmucOptions, MultiBernoulliPointOptions, MultiBernoulliReport,
+    };
+    let o: BernoulliEstimateOptions = serde_json::from_str(
+        r#"{"existence": 0.3, "density": {"mean": [0.0], "cov": 4.0}, "radius": 1.0, "costs": "mpe"}"#,
+    )
+    .unwrap();
+    round_trip(&o);
+    let r = o.estimate().unwrap();
+    assert!(!r.declare);
+    let json = round_trip(&r);
+    assert!(json.contains(r#""estimate":null"#), "{json}");
+    assert!(json.contains(r#""miss_probability":"#), "{json}");
+    let m: MmucOptions = serde_json::from_str(
+        r#"{"density": {"mean": [1.0, 2.0], "cov": [[1.0, 0.0], [0.0, 1.0]]}, "radius": 0.5}"#,
+    )
+    .unwrap();
+    let json = round_trip(&m.estimate().unwrap());
+    assert!(json.contains(r#""method":"gaussian-mean""#), "{json}");
+    let mb: MultiBernoulliPointOptions = serde_json::from_str(
+        r#"{"components": [{"existence": 0.9, "density": {"particles": [[0.0], [0.1]]}}], "radius": 1.0, "costs": {"mmol": {"asset": 0.9, "countermeasure": 0.1}}}"#,
+    )
+    .unwrap();
+    let r: MultiBernoulliReport = mb.estimate().unwrap();
+    assert_eq!(r.reported, vec![0]);
+    round_trip(&r);
+    assert!(
+        rejected::<BernoulliEstimateOptions>(
+            r#"{"existence": 0.3, "radius": 1.0, "costs": "mpe"}"#
+        )
+        .contains("missing field `density`")
+    );
+}

@@ -65,5 +65,12 @@ fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(control::multi_object_likelihood, m)?)?;
     m.add_class::<control::SensorControlRun>()?;
     m.add_function(wrap_pyfunction!(control::compare_schemes, m)?)?;
+    // paper 000's point estimates (bernoulli_estimate, mmuc_estimate, multi_bernoulli_point_estimate)
+    m.add_function(wrap_pyfunction!(bernoulli::bernoulli_estimate, m)?)?;
+    m.add_function(wrap_pyfunction!(bernoulli::mmuc_estimate, m)?)?;
+    m.add_function(wrap_pyfunction!(
+        bernoulli::multi_bernoulli_point_estimate,
+        m
+    )?)?;
     Ok(())
 }

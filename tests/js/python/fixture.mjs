@@ -34,6 +34,13 @@ const calls = [
   ['probabilityOutsideBall', [{ density: { particles: [[0, 0], [1, 1], [3, 0]], weights: [0.2, 0.5, 0.3] }, center: [0.5, 0.5], radius: 1 }]],
   ['reduceMixture', [{ mixture: [{ weight: 0.5, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { weight: 0.3, mean: [0.1, 0], cov: [[1, 0], [0, 1]] }, { weight: 1e-9, mean: [5, 5], cov: [[1, 0], [0, 1]] }, { weight: 0.2, mean: [4, 0], cov: [[2, 0], [0, 1]] }], pruneBelow: 1e-6, mergeDistance: 1, maxComponents: 1 }]],
   ['multiObjectLikelihood', [{ likelihoods: [[0.5, 0.1], [0.2, 0.3]], detectionProbability: 0.9, clutterRate: 1, clutterDensity: [0.1, 0.1] }]],
+  // paper 000's point estimates (bernoulli_estimate, mmuc_estimate, multi_bernoulli_point_estimate)
+  ['bernoulliEstimate', [{ existence: 0.7, density: { mixture: [{ weight: 0.5, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { weight: 0.5, mean: [2, 0], cov: [[1, 0], [0, 1]] }] }, radius: 1, costs: 'mpe' }]],
+  ['bernoulliEstimate', [{ existence: 0.55, density: { mean: [0], cov: 1 }, radius: 1, costs: 'mpe' }]],
+  ['bernoulliEstimate', [{ existence: 0.2, density: { particles: [[0, 0], [1, 1], [3, 0]], weights: [0.2, 0.5, 0.3] }, radius: 1, costs: { mmol: { asset: 0.9, countermeasure: 0.1 } } }]],
+  ['mmucEstimate', [{ density: { mixture: [{ weight: 0.3, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { weight: 0.7, mean: [2, 1], cov: [[0.5, 0], [0, 0.5]] }] }, radius: 1 }]],
+  ['mmucEstimate', [{ density: { particles: [[0, 0], [0.5, 0.2], [3, 0], [3.2, 0.1]] }, radius: 1 }]],
+  ['multiBernoulliPointEstimate', [{ components: [{ existence: 0.9, density: { mean: [0, 0], cov: [[0.2, 0], [0, 0.2]] } }, { existence: 0.55, density: { mean: [5, 5], cov: [[4, 0], [0, 4]] } }, { existence: 0.7, density: { particles: [[9, 9]] } }], radius: 1, costs: { c00: 0, c01: 1, c10: 1, c11: 0, c: 1 } }]],
 ];
 
 const out = calls.map(([fn, args]) => ({ fn, args, result: fisst[fn](...args) }));
