@@ -620,3 +620,37 @@ fn bernoulli_estimate_options_and_reports_round_trip() {
         .contains("missing field `density`")
     );
 }
+
+/// `jde_bound`'s report (paper 002) is written as the bindings return it: named terms,
+/// `"HPE"`/`"LPE"`, kebab-case methods, and no `seed`/`components` when absent.
+#[test]
+fn jde_bound_report_is_written_with_named_terms_and_methods() {
+    use crate::bounds::{
+        JdeBoundReport, JdeModel, JdeObservation, JdeOptions, JdePrior, jde_bound,
+    };
+    let o = JdeOptions::new(
+        JdeModel::I,
+        0.6,
+        JdePrior::Scalar(Density1::gaussian(1.0, 4.0).unwrap()),
+        JdeObservation::Scalar(
+            LinearGaussian::new(bounds::Detection::constant(0.8).unwrap(), 2.0, 0.5, 1.5).unwrap(),
+        ),
+        6.0,
+        9.0,
+    );
+    let r = JdeBoundReport::from(&jde_bound(&o, || unreachable!()).unwrap());
+    let json = round_trip(&r);
+    for part in [
+        r#""name":"estimation""#,
+        r#""name":"falseTarget""#,
+        r#""method":"quadrature""#,
+        r#""existence_threshold":"#,
+    ] {
+        assert!(json.contains(part), "{part} not in {json}");
+    }
+    assert!(json.contains(r#""phase":"HPE""#) || json.contains(r#""phase":"LPE""#));
+    assert!(
+        !json.contains("seed") && !json.contains("components"),
+        "{json}"
+    );
+}
