@@ -406,7 +406,14 @@ impl Gen<'_> {
                     let GenericArgument::Type(inner) = &a.args[0] else {
                         unreachable!()
                     };
-                    (self.ty(inner, fs.with.as_deref()), true)
+                    match fs.with.as_deref() {
+                        // `serde_shapes::nullable`: always written, null for `None`
+                        Some(w) if w.ends_with("nullable") => (
+                            format!("{} | null", self.ty(inner, None)),
+                            fs.default || container.default,
+                        ),
+                        with => (self.ty(inner, with), true),
+                    }
                 }
                 t => (
                     self.ty(t, fs.with.as_deref()),

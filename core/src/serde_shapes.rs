@@ -166,6 +166,31 @@ pub mod numbers {
     }
 }
 
+/// An `Option<T>` that is always written: the value, or null for `None` (a required field
+/// that may be null, where a plain `Option` field is optional); the module marks the field
+/// for the bindings' type generators (`T | null`).
+pub mod nullable {
+    use super::*;
+
+    /// Writes the value, or null for `None`.
+    ///
+    /// # Errors
+    /// The serializer's.
+    pub fn serialize<T: Serialize, S: Serializer>(v: &Option<T>, s: S) -> Result<S::Ok, S::Error> {
+        v.serialize(s)
+    }
+
+    /// Reads the value, or `None` from null.
+    ///
+    /// # Errors
+    /// The deserializer's.
+    pub fn deserialize<'de, T: Deserialize<'de>, D: Deserializer<'de>>(
+        d: D,
+    ) -> Result<Option<T>, D::Error> {
+        Option::deserialize(d)
+    }
+}
+
 /// `Vec<u8>` as bytes: a typed array (`Uint8Array`) where the format has one, else an array
 /// of numbers.
 pub mod bytes {

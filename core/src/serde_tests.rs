@@ -581,3 +581,76 @@ fn loss_curve_options_read_with_the_threshold_optional_and_the_curve_round_trips
             .contains("miss_probability")
     );
 }
+
+/// The Bernoulli estimators' options and results (paper 000): the options read the density and
+/// costs in their written forms, a report writes `estimate: null` when nothing is declared, and
+/// the MMUC method is kebab case.
+#[test]
+fn bernoulli_estimate_options_and_reports_round_trip() {
+    use crate::bernoulli::{
+        BernoulliEstimateOptions, MmucOptions, MultiBernoulliPointOptions, MultiBernoulliReport,
+    };
+    let o: BernoulliEstimateOptions = serde_json::from_str(
+        r#"{"existence": 0.3, "density": {"mean": [0.0], "cov": 4.0}, "radius": 1.0, "costs": "mpe"}"#,
+    )
+    .unwrap();
+    round_trip(&o);
+    let r = o.estimate().unwrap();
+    assert!(!r.declare);
+    let json = round_trip(&r);
+    assert!(json.contains(r#""estimate":null"#), "{json}");
+    assert!(json.contains(r#""miss_probability":"#), "{json}");
+    let m: MmucOptions = serde_json::from_str(
+        r#"{"density": {"mean": [1.0, 2.0], "cov": [[1.0, 0.0], [0.0, 1.0]]}, "radius": 0.5}"#,
+    )
+    .unwrap();
+    let json = round_trip(&m.estimate().unwrap());
+    assert!(json.contains(r#""method":"gaussian-mean""#), "{json}");
+    let mb: MultiBernoulliPointOptions = serde_json::from_str(
+        r#"{"components": [{"existence": 0.9, "density": {"particles": [[0.0], [0.1]]}}], "radius": 1.0, "costs": {"mmol": {"asset": 0.9, "countermeasure": 0.1}}}"#,
+    )
+    .unwrap();
+    let r: MultiBernoulliReport = mb.estimate().unwrap();
+    assert_eq!(r.reported, vec![0]);
+    round_trip(&r);
+    assert!(
+        rejected::<BernoulliEstimateOptions>(
+            r#"{"existence": 0.3, "radius": 1.0, "costs": "mpe"}"#
+        )
+        .contains("missing field `density`")
+    );
+}
+
+/// `jde_bound`'s report (paper 002) is written as the bindings return it: named terms,
+/// `"HPE"`/`"LPE"`, kebab-case methods, and no `seed`/`components` when absent.
+#[test]
+fn jde_bound_report_is_written_with_named_terms_and_methods() {
+    use crate::bounds::{
+        JdeBoundReport, JdeModel, JdeObservation, JdeOptions, JdePrior, jde_bound,
+    };
+    let o = JdeOptions::new(
+        JdeModel::I,
+        0.6,
+        JdePrior::Scalar(Density1::gaussian(1.0, 4.0).unwrap()),
+        JdeObservation::Scalar(
+            LinearGaussian::new(bounds::Detection::constant(0.8).unwrap(), 2.0, 0.5, 1.5).unwrap(),
+        ),
+        6.0,
+        9.0,
+    );
+    let r = JdeBoundReport::from(&jde_bound(&o, || unreachable!()).unwrap());
+    let json = round_trip(&r);
+    for part in [
+        r#""name":"estimation""#,
+        r#""name":"falseTarget""#,
+        r#""method":"quadrature""#,
+        r#""existence_threshold":"#,
+    ] {
+        assert!(json.contains(part), "{part} not in {json}");
+    }
+    assert!(json.contains(r#""phase":"HPE""#) || json.contains(r#""phase":"LPE""#));
+    assert!(
+        !json.contains("seed") && !json.contains("components"),
+        "{json}"
+    );
+}

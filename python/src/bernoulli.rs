@@ -7,7 +7,10 @@ use pyo3::types::PyDict;
 
 use crate::convert::{result, to_py};
 use crate::options::from_kwargs;
-use fisst::bernoulli::{self, LossCurveOptions, ThresholdCurveOptions};
+use fisst::bernoulli::{
+    self, BernoulliEstimateOptions, LossCurveOptions, MmucOptions, MultiBernoulliPointOptions,
+    ThresholdCurveOptions,
+};
 
 /// Fig. 2 of paper 000: the expected losses against the existence probability p at each of
 /// ``existences``, for a point whose miss probability is ``miss_probability`` and the
@@ -70,4 +73,63 @@ struct OutsideBallOptions {
     density: fisst::bernoulli::SpatialDensity,
     center: Vec<f64>,
     radius: f64,
+}
+
+/// Theorem III.3 of paper 000: the Bayes-optimal point estimate of a Bernoulli with
+/// existence probability ``existence`` and spatial ``density`` (as in
+/// ``probability_outside_ball``) under the loss (7) with tolerance ``radius`` r0 and ``costs``
+/// (as in ``bernoulli_loss_curve``): report the MMUC point a* (12) when p is beyond the
+/// threshold Γ (11), else nothing (ties report nothing). Returns a ``Result``
+/// (``BernoulliReport``: ``declare``, ``estimate`` (None when not declared), ``mmuc``,
+/// ``threshold``, ``miss_probability``, ``expected_loss_empty`` (14),
+/// ``expected_loss_singleton`` (13)).
+#[pyfunction]
+#[pyo3(
+    signature = (**options),
+    text_signature = "(*, existence, density, radius, costs)"
+)]
+pub fn bernoulli_estimate<'py>(
+    py: Python<'py>,
+    options: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let o: BernoulliEstimateOptions = from_kwargs(py, "bernoulli_estimate", options)?;
+    let r = py.detach(|| o.estimate()).map_err(to_py)?;
+    result(py, &r)
+}
+
+/// The MMUC estimate a* = argmin_a q(a) of eq. (12) of paper 000: the centre of the ball of
+/// radius ``radius`` most likely to hold an object with spatial ``density`` (as in
+/// ``probability_outside_ball``; at most 100 mixture components, at most 1500 particles in 2
+/// or more dimensions). Returns a ``Result`` (``MmucEstimate``: ``center``,
+/// ``miss_probability`` q(a*), ``method``: ``"gaussian-mean"``, ``"shared-mean"``,
+/// ``"mixture-search"``, ``"particles-exact"`` or ``"particles-heuristic"``).
+#[pyfunction]
+#[pyo3(signature = (**options), text_signature = "(*, density, radius)")]
+pub fn mmuc_estimate<'py>(
+    py: Python<'py>,
+    options: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let o: MmucOptions = from_kwargs(py, "mmuc_estimate", options)?;
+    let r = py.detach(|| o.estimate()).map_err(to_py)?;
+    result(py, &r)
+}
+
+/// Theorem III.3 of paper 000 applied to each component of a multi-Bernoulli, each decided
+/// alone: ``components`` a list of ``{"existence": r, "density": s}`` (at most 10,000), with
+/// the loss (7)'s ``radius`` and ``costs`` (as in ``bernoulli_estimate``). Returns a
+/// ``Result`` (``MultiBernoulliReport``: ``reported``, the indices of the declared
+/// components; ``estimates``, their points a*; ``components``, each one's
+/// ``bernoulli_estimate`` result).
+#[pyfunction]
+#[pyo3(
+    signature = (**options),
+    text_signature = "(*, components, radius, costs)"
+)]
+pub fn multi_bernoulli_point_estimate<'py>(
+    py: Python<'py>,
+    options: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let o: MultiBernoulliPointOptions = from_kwargs(py, "multi_bernoulli_point_estimate", options)?;
+    let r = py.detach(|| o.estimate()).map_err(to_py)?;
+    result(py, &r)
 }

@@ -80,5 +80,12 @@ fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fov::fov_variance_map, m)?)?;
     m.add_function(wrap_pyfunction!(fov::placement_scene, m)?)?;
     m.add_function(wrap_pyfunction!(fov::mixture_density_grid, m)?)?;
+    // paper 000's point estimates (bernoulli_estimate, mmuc_estimate, multi_bernoulli_point_estimate)
+    m.add_function(wrap_pyfunction!(bernoulli::bernoulli_estimate, m)?)?;
+    m.add_function(wrap_pyfunction!(bernoulli::mmuc_estimate, m)?)?;
+    m.add_function(wrap_pyfunction!(
+        bernoulli::multi_bernoulli_point_estimate,
+        m
+    )?)?;
     Ok(())
 }

@@ -64,6 +64,12 @@ def maybe(strategy):
     return st.one_of(st.none(), strategy)
 
 
+spatial_density = st.one_of(
+    st.fixed_dictionaries({"mean": st.lists(number, min_size=2, max_size=2), "cov": st.one_of(matrix2, number)}),
+    st.fixed_dictionaries({"mixture": mixture}),
+    st.fixed_dictionaries({"particles": st.lists(st.lists(number, min_size=2, max_size=2), max_size=4)}, optional={"weights": st.lists(number, max_size=4)}),
+    junk)
+
 CALLS = {
     "gospa": st.tuples(points, points, st.fixed_dictionaries({"c": kw_number}, optional={"p": kw_number, "alpha": kw_number})),
     "ospa": st.tuples(points, points, st.fixed_dictionaries({"c": kw_number}, optional={"p": kw_number})),
@@ -152,6 +158,14 @@ CALLS = {
         {}, optional={"count": st.one_of(st.integers(-1, 50), junk), "seed": st.one_of(st.integers(-1, 2**60), junk), "extent": kw_number,
                       "sigma": st.one_of(st.lists(number, min_size=2, max_size=2), junk)})),
     "mixture_density_grid": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries({"mixture": mixture, "grid": grid})),
+    # paper 000's point estimates (bernoulli_estimate, mmuc_estimate, multi_bernoulli_point_estimate)
+    "bernoulli_estimate": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"existence": probability, "density": spatial_density, "radius": kw_number, "costs": costs})),
+    "mmuc_estimate": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"density": spatial_density, "radius": kw_number})),
+    "multi_bernoulli_point_estimate": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"components": st.one_of(st.lists(st.fixed_dictionaries({"existence": probability, "density": spatial_density}), max_size=3), junk),
+         "radius": kw_number, "costs": costs})),
 }
 
 assert set(CALLS) == {n for n in fisst.__all__ if callable(getattr(fisst, n)) and n != "Result"}, (

@@ -2,7 +2,7 @@
 //! estimation with applications", paper 000): the estimate of Theorem III.3, q(a), the MMUC
 //! estimate and the threshold curves of Fig. 3.
 
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
@@ -10,8 +10,8 @@ use crate::boundary::{JsResult, OrThrow, read, write};
 use crate::names::Renamed;
 use crate::types::Point;
 use fisst::bernoulli::{
-    self, ApplicationLoss, BernoulliEstimate, Costs, LossCurveOptions, MmucMethod, SpatialDensity,
-    ThresholdCurveOptions,
+    self, BernoulliEstimateOptions, LossCurveOptions, MmucOptions, MultiBernoulliPointOptions,
+    SpatialDensity, ThresholdCurveOptions,
 };
 
 // The spatial density of a Bernoulli is the core's `SpatialDensity`, read by its own
@@ -62,50 +62,37 @@ export type BernoulliLossCurveResult = LossCurve;
  * Options of `bernoulliThresholdCurve`: the core's `ThresholdCurveOptions`.
  */
 export type BernoulliThresholdCurveOptions = ThresholdCurveOptions;
+/**
+ * The core's `SpatialDensity`: `BernoulliDensity`.
+ */
+export type SpatialDensity = BernoulliDensity;
+/**
+ * Options of `mmucEstimate`: the core's `MmucOptions`.
+ */
+export type MmucEstimateOptions = MmucOptions;
+/**
+ * Result of `mmucEstimate`: the core's `MmucEstimate`.
+ */
+export type MmucEstimateResult = MmucEstimate;
+/**
+ * Options of `multiBernoulliPointEstimate`: the core's `MultiBernoulliPointOptions`.
+ */
+export type MultiBernoulliPointEstimateOptions = MultiBernoulliPointOptions;
+/**
+ * Result of `multiBernoulliPointEstimate`: the core's `MultiBernoulliReport`.
+ */
+export type MultiBernoulliPointEstimateResult = MultiBernoulliReport;
 "#;
 
-/// Options of `bernoulliEstimate` (the loss (7) and Theorem III.3 of Narykov, Üney & Ralph,
-/// "Optimal Bernoulli point estimation with applications" (paper 000)).
-#[derive(Deserialize, Tsify)]
-pub struct BernoulliEstimateOptions {
-    /// The existence probability p ∈ [0, 1]: the probability that the object exists.
-    pub existence: f64,
-    /// The spatial density of the object when it exists. The MMUC search takes a mixture of at most
-    /// 100 components and at most 1500 particles in 2 or more dimensions (a RangeError naming the
-    /// array beyond).
-    #[tsify(type = "BernoulliDensity")]
-    pub density: SpatialDensity,
-    /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
-    pub radius: f64,
-    /// The costs of the loss (7).
-    #[tsify(type = "BernoulliCosts")]
-    pub costs: Costs,
-}
-
-/// Result of `bernoulliEstimate`: the Bayes-optimal estimate of Theorem III.3 of Narykov, Üney &
-/// Ralph, "Optimal Bernoulli point estimation with applications" (paper 000).
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct BernoulliEstimateResult {
-    /// Whether to report the object: the optimal decision (ties p = Γ report nothing).
-    pub declare: bool,
-    /// The reported point estimate: `mmuc` when `declare` is true, else null.
-    #[tsify(type = "number[] | null")]
-    pub estimate: Option<Vec<f64>>,
-    /// The MMUC point a* (12): the centre of the radius-r0 ball most likely to hold the object.
-    pub mmuc: Vec<f64>,
-    /// The existence threshold Γ of eq. (11) (p > Γ reports for every cost matrix with c11 + c·q <
-    /// c01 + c10 − c00, which includes MPE and MMOL; ±Infinity when the decision does not depend on
-    /// p).
-    pub threshold: f64,
-    /// The miss probability q(a*) ∈ [0, 1]: the probability that the object, if it exists, lies
-    /// outside the radius-r0 ball about a*.
-    pub miss_probability: f64,
-    /// The expected loss ρ_∅ (14) of reporting nothing.
-    pub expected_loss_empty: f64,
-    /// The expected loss ρ_{a*} (13) of reporting the single point a*.
-    pub expected_loss_singleton: f64,
-}
+// The result of `bernoulliEstimate` is the core's `BernoulliReport` (also the filters'
+// `report`), under the contract's name.
+#[wasm_bindgen(typescript_custom_section)]
+const REPORT: &str = r#"
+/**
+ * Result of `bernoulliEstimate`: the core's `BernoulliReport`.
+ */
+export type BernoulliEstimateResult = BernoulliReport;
+"#;
 
 /// Options of `probabilityOutsideBall`: a density and a ball.
 #[derive(Deserialize, Tsify)]
@@ -119,95 +106,6 @@ pub struct ProbabilityOutsideBallOptions {
     pub radius: f64,
 }
 
-/// Options of `mmucEstimate`: the MMUC (minimum mean uniform cost) point a* (12) of
-/// Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with applications" (paper 000).
-#[derive(Deserialize, Tsify)]
-pub struct MmucEstimateOptions {
-    /// The spatial density of the object's state. The MMUC search takes a mixture of at most 100
-    /// components and at most 1500 particles in 2 or more dimensions (a RangeError naming the array
-    /// beyond).
-    #[tsify(type = "BernoulliDensity")]
-    pub density: SpatialDensity,
-    /// The radius r0 > 0 of the ball whose miss probability q(a) is minimised, in state units.
-    pub radius: f64,
-}
-
-/// How the MMUC point was found.
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "kebab-case")]
-pub enum MmucMethodName {
-    /// `'gaussian-mean'`: a Gaussian's mean (exact).
-    GaussianMean,
-    /// `'shared-mean'`: the common mean of a mixture (exact).
-    SharedMean,
-    /// `'mixture-search'`: a multi-start local search over a mixture.
-    MixtureSearch,
-    /// `'particles-exact'`: an exhaustive search over the particles.
-    ParticlesExact,
-    /// `'particles-heuristic'`: a heuristic search over many particles.
-    ParticlesHeuristic,
-}
-
-/// Result of `mmucEstimate`: the MMUC point a* (12) and its miss probability.
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct MmucEstimateResult {
-    /// The MMUC point a*: the centre of the radius-r0 ball most likely to hold the object.
-    pub center: Vec<f64>,
-    /// The miss probability q(a*) ∈ [0, 1]: the probability that the object lies outside the
-    /// radius-r0 ball about a*.
-    pub miss_probability: f64,
-    /// How a* was found (exact or heuristic).
-    pub method: MmucMethodName,
-}
-
-/// One component of `multiBernoulliPointEstimate`.
-#[derive(Deserialize, Tsify)]
-pub struct BernoulliComponent {
-    /// The existence probability r ∈ [0, 1] of this component.
-    pub existence: f64,
-    /// The component's spatial density. The MMUC search takes a mixture of at most 100 components
-    /// and at most 1500 particles in 2 or more dimensions (a RangeError naming the array beyond).
-    #[tsify(type = "BernoulliDensity")]
-    pub density: SpatialDensity,
-}
-
-/// Options of `multiBernoulliPointEstimate` (the loss (7) of Narykov, Üney & Ralph, "Optimal
-/// Bernoulli point estimation with applications" (paper 000)).
-#[derive(Deserialize, Tsify)]
-pub struct MultiBernoulliPointEstimateOptions {
-    /// The Bernoulli components, each decided alone (at most 10,000).
-    pub components: Vec<BernoulliComponent>,
-    /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
-    pub radius: f64,
-    /// The costs of the loss (7).
-    #[tsify(type = "BernoulliCosts")]
-    pub costs: Costs,
-}
-
-/// Result of `multiBernoulliPointEstimate`: the reported components and their estimates.
-#[derive(Serialize, Tsify)]
-pub struct MultiBernoulliPointEstimateResult {
-    /// Indices of the declared components, increasing.
-    pub reported: Vec<usize>,
-    /// The point estimates a* of the reported components, in the order of `reported`.
-    pub estimates: Vec<Vec<f64>>,
-    /// The full Theorem III.3 result of each component, in the order of `components`.
-    pub components: Vec<BernoulliEstimateResult>,
-}
-
-pub(crate) fn estimate_out(e: &BernoulliEstimate) -> BernoulliEstimateResult {
-    BernoulliEstimateResult {
-        declare: e.declare,
-        estimate: e.estimate.clone(),
-        mmuc: e.mmuc.center.clone(),
-        threshold: e.threshold.gamma,
-        miss_probability: e.mmuc.miss_probability,
-        expected_loss_empty: e.expected_loss_empty,
-        expected_loss_singleton: e.expected_loss_singleton,
-    }
-}
-
 /// The Bayes-optimal point estimate of a Bernoulli (Theorem III.3 of Narykov, Üney & Ralph,
 /// "Optimal Bernoulli point estimation with applications", paper 000): report the MMUC point a*
 /// (12) when the existence probability exceeds Γ (11), else nothing. Options `{ existence, density,
@@ -219,11 +117,7 @@ pub fn bernoulli_estimate(
     #[wasm_bindgen(unchecked_param_type = "BernoulliEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: BernoulliEstimateOptions = read(options, "options")?;
-    let s = o.density;
-    s.check_mmuc_size().or_throw_in("options")?;
-    let loss = ApplicationLoss::new(o.costs, o.radius).or_throw_in("options")?;
-    let e = bernoulli::estimate(o.existence, &s, &loss).or_throw_in("options")?;
-    write(&estimate_out(&e))
+    write(&Renamed::new(&o.estimate().or_throw_rendered("options")?))
 }
 
 /// q(center) = P(‖x − center‖ > radius) for x drawn from `density`: exact in 1D, to 1e-10
@@ -261,21 +155,8 @@ pub fn bernoulli_threshold_curve(
 pub fn mmuc_estimate(
     #[wasm_bindgen(unchecked_param_type = "MmucEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let o: MmucEstimateOptions = read(options, "options")?;
-    let s = o.density;
-    s.check_mmuc_size().or_throw_in("options")?;
-    let m = s.mmuc(o.radius).or_throw_in("options")?;
-    write(&MmucEstimateResult {
-        center: m.center,
-        miss_probability: m.miss_probability,
-        method: match m.method {
-            MmucMethod::GaussianMean => MmucMethodName::GaussianMean,
-            MmucMethod::SharedMean => MmucMethodName::SharedMean,
-            MmucMethod::MixtureSearch => MmucMethodName::MixtureSearch,
-            MmucMethod::ParticlesExact => MmucMethodName::ParticlesExact,
-            MmucMethod::ParticlesHeuristic => MmucMethodName::ParticlesHeuristic,
-        },
-    })
+    let o: MmucOptions = read(options, "options")?;
+    write(&Renamed::new(&o.estimate().or_throw_rendered("options")?))
 }
 
 /// Theorem III.3 of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with applications"
@@ -293,22 +174,8 @@ pub fn mmuc_estimate(
 pub fn multi_bernoulli_point_estimate(
     #[wasm_bindgen(unchecked_param_type = "MultiBernoulliPointEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let o: MultiBernoulliPointEstimateOptions = read(options, "options")?;
-    bernoulli::check_multi_bernoulli_count(o.components.len()).or_throw_in("options")?;
-    let mut comps = Vec::with_capacity(o.components.len());
-    for (i, c) in o.components.into_iter().enumerate() {
-        let path = format!("options.components[{i}]");
-        let s = c.density;
-        s.check_mmuc_size().or_throw_in(&path)?;
-        comps.push((c.existence, s));
-    }
-    let loss = ApplicationLoss::new(o.costs, o.radius).or_throw_in("options")?;
-    let m = bernoulli::multi_bernoulli_estimate(&comps, &loss).or_throw_in("options")?;
-    write(&MultiBernoulliPointEstimateResult {
-        reported: m.reported.clone(),
-        estimates: m.points().into_iter().map(<[f64]>::to_vec).collect(),
-        components: m.components.iter().map(estimate_out).collect(),
-    })
+    let o: MultiBernoulliPointOptions = read(options, "options")?;
+    write(&Renamed::new(&o.estimate().or_throw_rendered("options")?))
 }
 
 /// The expected losses against p for Fig. 2: ρ_∅ (14), ρ_{a*} (13), and the loss of the rule

@@ -9,7 +9,6 @@ use serde::{Deserialize, Serialize};
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::bernoulli::{BernoulliEstimateResult, estimate_out};
 use crate::boundary::{
     JsResult, OrThrow, core_error, core_error_rendered, range_error, read, render_path,
     seed_or_entropy, type_error, write,
@@ -570,7 +569,8 @@ pub struct FilterEstimateResult {
     /// Bernoulli point estimation with applications" (paper 000)) on the position marginal; null
     /// without a loss.
     #[tsify(type = "BernoulliEstimateResult | null")]
-    pub report: Option<BernoulliEstimateResult>,
+    #[serde(serialize_with = "renamed_report")]
+    pub report: Option<fisst::bernoulli::BernoulliReport>,
 }
 
 // `radius` and `costs` go together (`FilterEstimateOptions`), and with them `report` is never
@@ -644,8 +644,19 @@ fn estimate_result(e: FilterEstimate) -> FilterEstimateResult {
         existence: e.existence,
         mean: e.mean,
         cov: e.cov,
-        report: e.report.as_ref().map(estimate_out),
+        report: e
+            .report
+            .as_ref()
+            .map(fisst::bernoulli::BernoulliReport::from),
     }
+}
+
+/// Writes the core's `BernoulliReport` under its JavaScript names (null for `None`).
+fn renamed_report<S: serde::Serializer>(
+    report: &Option<fisst::bernoulli::BernoulliReport>,
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    serde::Serialize::serialize(&report.as_ref().map(crate::names::Renamed::new), s)
 }
 
 /// The GM Bernoulli filter (Algorithm 3 of LeGrand & Ferrari, "Split Happens! Imprecise and

@@ -2,7 +2,7 @@
 //! error bounds for joint detection and estimation of paper 002 (Rezaeian & Vo, "Error bounds
 //! for joint detection and estimation of a single object with random finite set observation").
 
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
@@ -464,130 +464,15 @@ pub struct JdeBoundOptions {
     pub quadrature_cardinality: Option<usize>,
 }
 
-/// One summand of the bound (17) or (23).
-#[derive(Serialize, Tsify)]
-pub struct BoundTerm {
-    /// Which summand: the estimation error, the undetected target, the missed detection or the
-    /// false target.
-    #[tsify(type = "'estimation' | 'undetected' | 'missed' | 'falseTarget'")]
-    pub name: &'static str,
-    /// The summand's value (a squared error, ≥ 0).
-    pub value: f64,
-}
-
-/// The n-point part of Theorem 2 of Rezaeian & Vo, "Error bounds for joint detection and estimation
-/// of a single object with random finite set observation" (paper 002) (model I: only n = 1).
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct CardinalityTerm {
-    /// The number of observed points n = |Z|.
-    pub n: usize,
-    /// The probability C_{n−1} of n − 1 clutter points.
-    pub probability: f64,
-    /// The mass w_n (20)/(25) of p_n on the MAP region, in [0, 1].
-    pub w: f64,
-    /// The inverse information J'_n⁻¹ (with the 1/w_n² of (20)/(25)); for a vector state its trace.
-    pub inverse_information: f64,
-    /// The probability that the detector rejects n clutter-only points.
-    pub clutter_null: f64,
-    /// `'quadrature'`, `'monte-carlo'` or (a vector state without false observations)
-    /// `'closed-form'`.
-    #[tsify(type = "'quadrature' | 'monte-carlo' | 'closed-form'")]
-    pub method: &'static str,
-    /// The error estimate of `inverseInformation` (Monte Carlo: one standard error).
-    pub error: f64,
-}
-
-/// The bound (63)/(64) on the mean-square error σ_i² of one coordinate x_i of a vector
-/// state, with the component metric e_i (e_i(∅, {x'}) = e_0/√l, e_i({x}, ∅) = e_1/√l).
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct JdeComponentBound {
-    /// The lower bound on E e_i²: the smaller of `hpe` and `lpe`.
-    pub bound: f64,
-    /// This coordinate's rule on Z = ∅ (each coordinate may pick its own).
-    #[tsify(type = "'HPE' | 'LPE'")]
-    pub phase: &'static str,
-    /// The existence threshold r* of this coordinate (72): e_0²/(e_0² + (1 − P̄o)(e_1² − l
-    /// σ_{e,i}²)) without false observations (may exceed 1; `Infinity` when HPE never wins).
-    pub existence_threshold: f64,
-    /// The summands of (63)/(64) for this coordinate, named as the top-level `terms`.
-    pub terms: Vec<BoundTerm>,
-    /// The error estimate of `bound` (quadrature, one Monte Carlo standard error).
-    pub error: f64,
-    /// The HPE bound of this coordinate: the estimator declares {x*} on Z = ∅.
-    pub hpe: f64,
-    /// The LPE bound of this coordinate: the estimator declares ∅ on Z = ∅.
-    pub lpe: f64,
-    /// The estimation term of this coordinate: [J'_1⁻¹]_ii (63), or Σ_n C_n [J'_{1+n}⁻¹]_ii (64).
-    pub inverse_information: f64,
-    /// The prior mean x*_i of this coordinate (P_o is constant, so f_d' = f).
-    pub undetected_mean: f64,
-    /// The prior variance σ_{e,i}² = P_ii of this coordinate.
-    pub undetected_variance: f64,
-}
-
-/// Result of `jdeBound`: the bound of Theorem 1 or 2 of Rezaeian & Vo, "Error bounds for joint
-/// detection and estimation of a single object with random finite set observation" (paper 002),
-/// with its parts.
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct JdeBoundResult {
-    /// The lower bound on E e²(X, X̂(Z)) (a valid one only when `regular`); for a vector
-    /// state with the Euclidean metric, one rule on Z = ∅ for the whole state (≥ the sum of
-    /// `components[i].bound`, which may each pick their own rule).
-    pub bound: f64,
-    /// The rule on Z = ∅ of the bound's estimator: `'HPE'` declares {x*}, `'LPE'` declares ∅.
-    #[tsify(type = "'HPE' | 'LPE'")]
-    pub phase: &'static str,
-    /// The existence threshold r* (18)/(24) above which HPE wins (may exceed 1; `Infinity` when HPE
-    /// never wins).
-    pub existence_threshold: f64,
-    /// The summands of (17)/(23) in order: estimation, undetected, missed, falseTarget.
-    pub terms: Vec<BoundTerm>,
-    /// The error estimate of `bound` (quadrature, one Monte Carlo standard error).
-    pub error: f64,
-    /// The HPE bound: the estimator declares {x*} on Z = ∅.
-    pub hpe: f64,
-    /// The LPE bound: the estimator declares ∅ on Z = ∅.
-    pub lpe: f64,
-    /// The mean detection probability P̄_o (14) = ∫ P_o(x) f(x) dx, in [0, 1].
-    pub mean_detection: f64,
-    /// The mean x* of f_d', an undetected target's state (a vector state: of its first coordinate;
-    /// see `components[i].undetectedMean`).
-    pub undetected_mean: f64,
-    /// The variance σ_e² (16) of an undetected target's state, the variance of f_d' (a vector
-    /// state: tr P).
-    pub undetected_variance: f64,
-    /// The probability that a target-free observation is declared empty, Pr(Z ≠ ∅, declared ∅ |
-    /// X = ∅): η1 (model I) or η2 (model II).
-    pub eta: f64,
-    /// The MAP region of one-point observations, `[low, high]` intervals (a vector state:
-    /// of the measurement line; empty when the gain has more than one row, where there are
-    /// no false observations and every measurement is kept).
-    pub region: Vec<(f64, f64)>,
-    /// The n-point parts of Theorem 2, one per cardinality n = |Z| (model I: only n = 1).
-    pub cardinalities: Vec<CardinalityTerm>,
-    /// Whether the bound is regular: false when f·P_o does not vanish at the prior's support ends
-    /// (uniform, tables ending above 0): the information inequality's regularity fails, the
-    /// estimation term may not be a bound.
-    pub regular: bool,
-    /// The Monte Carlo seed used (model II with clutter only).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub seed: Option<u64>,
-    /// A `multivariateGaussian` prior only: the bound of each coordinate x_i, i = 0 … l − 1
-    /// ((63)/(64), (70)–(72)).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub components: Option<Vec<JdeComponentBound>>,
-    /// A `multivariateGaussian` prior only: J'_1⁻¹ (model I), or Σ_n C_n J'_{1+n}⁻¹
-    /// (model II), l rows of l numbers, whose diagonal enters `components[i]`'s estimation
-    /// term (without false observations, (P⁻¹ + HᵀR⁻¹H)⁻¹, the posterior covariance).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    #[tsify(optional)]
-    pub inverse_information_matrix: Option<Vec<Vec<f64>>>,
-}
+// `jdeBound` returns the core's own `fisst::bounds::JdeBoundReport` (its TypeScript is
+// generated by build.rs from the core's source) under the contract's name.
+#[wasm_bindgen(typescript_custom_section)]
+const JDE_BOUND_RESULT: &str = r#"
+/**
+ * Result of `jdeBound`: the core's `JdeBoundReport`.
+ */
+export type JdeBoundResult = JdeBoundReport;
+"#;
 
 // The false observations typed with their model (`falseAlarm` with model I, `clutter` with
 // model II; the other combination throws a `TypeError`), and an overload: a
@@ -670,25 +555,7 @@ pub fn jde_bound(
     };
     let out = bounds::jde_bound(&options, fisst::math::rng::entropy_seed)
         .map_err(|e| jde_error(e, &options.prior))?;
-    let mut result = result(&out.bound, out.seed);
-    result.components = out.components.map(|c| {
-        c.iter()
-            .map(|c| JdeComponentBound {
-                bound: c.assembled.bound,
-                phase: phase_name(c.assembled.phase),
-                existence_threshold: c.assembled.existence_threshold,
-                terms: terms(&c.assembled.terms),
-                error: c.error,
-                hpe: c.assembled.hpe,
-                lpe: c.assembled.lpe,
-                inverse_information: c.inverse_information,
-                undetected_mean: c.undetected_mean,
-                undetected_variance: c.undetected_variance,
-            })
-            .collect()
-    });
-    result.inverse_information_matrix = out.inverse_information;
-    write(&result)
+    write(&Renamed::new(&bounds::JdeBoundReport::from(&out)))
 }
 
 /// A [`bounds::jde_bound`] error in this binding's words: the model mix-ups are
@@ -722,64 +589,6 @@ fn wrong_model(clutter: bool) -> JsValue {
     } else {
         "options.falseAlarm is for model 'I' (use clutter with model 'II')"
     })
-}
-
-fn phase_name(p: bounds::Phase) -> &'static str {
-    match p {
-        bounds::Phase::Hpe => "HPE",
-        bounds::Phase::Lpe => "LPE",
-    }
-}
-
-/// The summands of (17)/(23) in the contract's order and names.
-fn terms(t: &bounds::Terms) -> Vec<BoundTerm> {
-    [
-        ("estimation", t.estimation),
-        ("undetected", t.undetected),
-        ("missed", t.missed),
-        ("falseTarget", t.false_target),
-    ]
-    .map(|(name, value)| BoundTerm { name, value })
-    .into()
-}
-
-fn result(b: &bounds::JdeBound, seed: Option<u64>) -> JdeBoundResult {
-    let a = &b.assembled;
-    JdeBoundResult {
-        bound: a.bound,
-        phase: phase_name(a.phase),
-        existence_threshold: a.existence_threshold,
-        terms: terms(&a.terms),
-        error: b.error,
-        hpe: a.hpe,
-        lpe: a.lpe,
-        mean_detection: b.mean_detection,
-        undetected_mean: b.undetected_mean,
-        undetected_variance: b.undetected_variance,
-        eta: b.eta,
-        region: b.region.clone(),
-        cardinalities: b
-            .cardinalities
-            .iter()
-            .map(|c| CardinalityTerm {
-                n: c.n,
-                probability: c.probability,
-                w: c.w,
-                inverse_information: c.inverse_information,
-                clutter_null: c.clutter_null,
-                method: match c.method {
-                    bounds::Method::Quadrature => "quadrature",
-                    bounds::Method::MonteCarlo => "monte-carlo",
-                    bounds::Method::ClosedForm => "closed-form",
-                },
-                error: c.error,
-            })
-            .collect(),
-        regular: b.regular,
-        seed,
-        components: None,
-        inverse_information_matrix: None,
-    }
 }
 
 /// Example 2 of Rezaeian & Vo, "Error bounds for joint detection and estimation of a single object

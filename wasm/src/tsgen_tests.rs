@@ -146,6 +146,8 @@ pub struct Inputs {
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::bytes"))]
     pub decisions: Vec<u8>,
     pub method: Method,
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::nullable"))]
+    pub estimate: Option<Vec<f64>>,
 }
 "#;
 
@@ -161,6 +163,8 @@ fn kebab_case_variants_and_the_number_shapes_of_serde_shapes() {
         "    lnPeak?: number[] | Float64Array;",
         "    truths: (number[] | Float64Array)[][];",
         "    decisions: Uint8Array;",
+        // a nullable Option is always present, null for None
+        "    estimate: number[] | null;",
         "    | \"mam\"",
         "    | \"map-cardinality\"",
     ] {

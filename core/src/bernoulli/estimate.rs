@@ -156,10 +156,18 @@ pub fn multi_bernoulli_estimate(
     loss: &ApplicationLoss,
 ) -> Result<MultiBernoulliEstimate> {
     check_multi_bernoulli_count(components.len())?;
+    decide_each(components.iter().map(|(p, s)| (*p, s)), loss)
+}
+
+/// Theorem III.3 on each `(r_i, s_i)`, in order (the loop of [`multi_bernoulli_estimate`]).
+fn decide_each<'a>(
+    components: impl ExactSizeIterator<Item = (f64, &'a SpatialDensity)>,
+    loss: &ApplicationLoss,
+) -> Result<MultiBernoulliEstimate> {
     let mut out = Vec::with_capacity(components.len());
     let mut reported = Vec::new();
-    for (i, (p, s)) in components.iter().enumerate() {
-        let p = check_probability(|| alloc::format!("components[{i}].existence"), *p)?;
+    for (i, (p, s)) in components.enumerate() {
+        let p = check_probability(|| alloc::format!("components[{i}].existence"), p)?;
         let mmuc = s.mmuc(loss.radius())?;
         let e = decide(p, mmuc, loss.costs())?;
         if e.declare {
@@ -171,4 +179,148 @@ pub fn multi_bernoulli_estimate(
         components: out,
         reported,
     })
+}
+
+/// The options of [`BernoulliEstimateOptions::estimate`]: one Bernoulli (existence p and
+/// spatial density s) and the loss (7) of `000_…` (radius r0 and costs).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct BernoulliEstimateOptions {
+    /// The existence probability p ∈ [0, 1]: the probability that the object exists.
+    pub existence: f64,
+    /// The spatial density of the object when it exists. The MMUC search takes a mixture of
+    /// at most [`MAX_MMUC_COMPONENTS`](super::MAX_MMUC_COMPONENTS) components and at most
+    /// [`MAX_MMUC_PARTICLES`](super::MAX_MMUC_PARTICLES) particles in 2 or more dimensions.
+    pub density: SpatialDensity,
+    /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
+    pub radius: f64,
+    /// The costs of the loss (7).
+    pub costs: Costs,
+}
+
+impl BernoulliEstimateOptions {
+    /// Theorem III.3 of `000_…` ([`estimate`]) on these options, within the MMUC search's
+    /// size caps, as a [`BernoulliReport`].
+    ///
+    /// # Errors
+    /// [`Error::Count`] naming `density.mixture` or `density.particles` beyond the caps of
+    /// [`SpatialDensity::check_mmuc_size`]; as [`ApplicationLoss::new`] (`radius`); as
+    /// [`estimate`] (`existence`).
+    pub fn estimate(&self) -> Result<BernoulliReport> {
+        self.density.check_mmuc_size()?;
+        let loss = ApplicationLoss::new(self.costs, self.radius)?;
+        estimate(self.existence, &self.density, &loss).map(|e| BernoulliReport::from(&e))
+    }
+}
+
+/// A [`BernoulliEstimate`] flattened to what a caller reads (Theorem III.3 of `000_…`):
+/// the decision, the point, a* and q(a*), Γ (11) and the two expected losses (13)–(14).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct BernoulliReport {
+    /// Whether to report the object: the optimal decision (10) (ties p = Γ report nothing).
+    pub declare: bool,
+    /// The reported point estimate: `mmuc` when `declare` is true, else null.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::nullable"))]
+    pub estimate: Option<Vec<f64>>,
+    /// The MMUC point a* (12): the centre of the radius-r0 ball most likely to hold the object.
+    pub mmuc: Vec<f64>,
+    /// The existence threshold Γ of eq. (11) (p > Γ reports for every cost matrix with c11 +
+    /// c·q < c01 + c10 − c00, which includes MPE and MMOL; ±Infinity when the decision does
+    /// not depend on p).
+    pub threshold: f64,
+    /// The miss probability q(a*) ∈ [0, 1]: the probability that the object, if it exists,
+    /// lies outside the radius-r0 ball about a*.
+    pub miss_probability: f64,
+    /// The expected loss ρ_∅ (14) of reporting nothing.
+    pub expected_loss_empty: f64,
+    /// The expected loss ρ_{a*} (13) of reporting the single point a*.
+    pub expected_loss_singleton: f64,
+}
+
+impl From<&BernoulliEstimate> for BernoulliReport {
+    fn from(e: &BernoulliEstimate) -> Self {
+        BernoulliReport {
+            declare: e.declare,
+            estimate: e.estimate.clone(),
+            mmuc: e.mmuc.center.clone(),
+            threshold: e.threshold.gamma,
+            miss_probability: e.mmuc.miss_probability,
+            expected_loss_empty: e.expected_loss_empty,
+            expected_loss_singleton: e.expected_loss_singleton,
+        }
+    }
+}
+
+/// One Bernoulli component of [`MultiBernoulliPointOptions`].
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct BernoulliComponent {
+    /// The existence probability r ∈ [0, 1] of this component.
+    pub existence: f64,
+    /// The component's spatial density (the MMUC search's size caps apply, as in
+    /// [`BernoulliEstimateOptions::density`]).
+    pub density: SpatialDensity,
+}
+
+/// The options of [`MultiBernoulliPointOptions::estimate`]: the components of a
+/// multi-Bernoulli and the loss (7) of `000_…`.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct MultiBernoulliPointOptions {
+    /// The Bernoulli components, each decided alone (at most
+    /// [`MAX_MULTI_BERNOULLI_COMPONENTS`]).
+    pub components: Vec<BernoulliComponent>,
+    /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
+    pub radius: f64,
+    /// The costs of the loss (7).
+    pub costs: Costs,
+}
+
+impl MultiBernoulliPointOptions {
+    /// Theorem III.3 of `000_…` on each component ([`multi_bernoulli_estimate`]), within the
+    /// MMUC search's size caps, as a [`MultiBernoulliReport`].
+    ///
+    /// # Errors
+    /// [`Error::Count`] naming `components` beyond [`MAX_MULTI_BERNOULLI_COMPONENTS`], or
+    /// `components[i].density.mixture` / `components[i].density.particles` beyond the caps of
+    /// [`SpatialDensity::check_mmuc_size`]; as [`ApplicationLoss::new`] (`radius`); as
+    /// [`multi_bernoulli_estimate`] (`components[i].existence`).
+    pub fn estimate(&self) -> Result<MultiBernoulliReport> {
+        check_multi_bernoulli_count(self.components.len())?;
+        for (i, c) in self.components.iter().enumerate() {
+            c.density
+                .check_mmuc_size()
+                .map_err(|e| e.within(&alloc::format!("components[{i}]")))?;
+        }
+        let loss = ApplicationLoss::new(self.costs, self.radius)?;
+        let m = decide_each(
+            self.components.iter().map(|c| (c.existence, &c.density)),
+            &loss,
+        )?;
+        Ok(MultiBernoulliReport::from(&m))
+    }
+}
+
+/// A [`MultiBernoulliEstimate`] flattened to what a caller reads: the reported indices, their
+/// points, and each component's [`BernoulliReport`].
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct MultiBernoulliReport {
+    /// Indices of the declared components, increasing.
+    pub reported: Vec<usize>,
+    /// The point estimates a* of the reported components, in the order of `reported`.
+    pub estimates: Vec<Vec<f64>>,
+    /// The full Theorem III.3 result of each component, in the order of the components.
+    pub components: Vec<BernoulliReport>,
+}
+
+impl From<&MultiBernoulliEstimate> for MultiBernoulliReport {
+    fn from(m: &MultiBernoulliEstimate) -> Self {
+        MultiBernoulliReport {
+            reported: m.reported.clone(),
+            estimates: m.points().into_iter().map(<[f64]>::to_vec).collect(),
+            components: m.components.iter().map(BernoulliReport::from).collect(),
+        }
+    }
 }

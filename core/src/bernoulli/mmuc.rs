@@ -15,9 +15,10 @@ use crate::math::geometry::{self, circumcentre, smallest_enclosing_ball};
 use crate::math::optimise::{BfgsOptions, Minimum, bfgs};
 use crate::math::sum::NeumaierSum;
 
-/// How [`SpatialDensity::mmuc`] found a*.
+/// How [`SpatialDensity::mmuc`] found a* (written in kebab case: `"gaussian-mean"`, …).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]
 pub enum MmucMethod {
     /// The mean of a Gaussian: exact by Sherman's theorem (a symmetric unimodal density and
     /// a symmetric convex set: the ball holds the most mass when centred at the mean).
@@ -61,6 +62,58 @@ pub const MAX_MMUC_COMPONENTS: usize = 100;
 /// and the 3D search every close subset (1500 particles all within 2 r0: about 1 s in Node).
 /// 1D particles (a sort and a sweep) have no cap.
 pub const MAX_MMUC_PARTICLES: usize = 1_500;
+
+/// The options of [`MmucOptions::estimate`]: a spatial density and the radius r0 of the
+/// ball of eq. (12) of `000_…`.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct MmucOptions {
+    /// The spatial density of the object's state (the size caps of
+    /// [`SpatialDensity::check_mmuc_size`] apply).
+    pub density: SpatialDensity,
+    /// The radius r0 > 0 of the ball whose miss probability q(a) is minimised, in state units.
+    pub radius: f64,
+}
+
+impl MmucOptions {
+    /// The MMUC estimate a* = argmin_a q(a) (eq. (12) of `000_…`) of `density`
+    /// ([`SpatialDensity::mmuc`]), within the search's size caps.
+    ///
+    /// # Errors
+    /// [`Error::Count`](crate::Error::Count) naming `density.mixture` or `density.particles`
+    /// beyond the caps of [`SpatialDensity::check_mmuc_size`]; as [`SpatialDensity::mmuc`]
+    /// (`radius`).
+    pub fn estimate(&self) -> Result<MmucEstimate> {
+        self.density.check_mmuc_size()?;
+        self.density
+            .mmuc(self.radius)
+            .map(|m| MmucEstimate::from(&m))
+    }
+}
+
+/// The MMUC point a* (12) of `000_…`, its miss probability and how it was found: a [`Mmuc`]
+/// without the quadrature's error estimate.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct MmucEstimate {
+    /// The MMUC point a*: the centre of the radius-r0 ball most likely to hold the object.
+    pub center: Vec<f64>,
+    /// The miss probability q(a*) ∈ [0, 1]: the probability that the object lies outside the
+    /// radius-r0 ball about a*.
+    pub miss_probability: f64,
+    /// How a* was found (exact or heuristic).
+    pub method: MmucMethod,
+}
+
+impl From<&Mmuc> for MmucEstimate {
+    fn from(m: &Mmuc) -> Self {
+        MmucEstimate {
+            center: m.center.clone(),
+            miss_probability: m.miss_probability,
+            method: m.method,
+        }
+    }
+}
 
 impl SpatialDensity {
     /// `Ok` if [`SpatialDensity::mmuc`] on this density stays within its size caps: at most

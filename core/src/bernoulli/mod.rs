@@ -58,14 +58,18 @@ pub use ball::{BallProbability, DEFAULT_TOLERANCE};
 pub use chi_square::chi_square_sf;
 pub use density::{DensityKind, MIN_TOLERANCE, ParticleSet, SpatialDensity};
 pub use estimate::{
-    BernoulliEstimate, MAX_MULTI_BERNOULLI_COMPONENTS, MultiBernoulliEstimate,
-    check_multi_bernoulli_count, estimate, multi_bernoulli_estimate,
+    BernoulliComponent, BernoulliEstimate, BernoulliEstimateOptions, BernoulliReport,
+    MAX_MULTI_BERNOULLI_COMPONENTS, MultiBernoulliEstimate, MultiBernoulliPointOptions,
+    MultiBernoulliReport, check_multi_bernoulli_count, estimate, multi_bernoulli_estimate,
 };
 pub use isotropic::{
     MAX_ISOTROPIC_DIM, ThresholdCurveOptions, isotropic_miss_probability, isotropic_threshold_curve,
 };
 pub use loss::{ApplicationLoss, Costs};
-pub use mmuc::{MAX_MMUC_COMPONENTS, MAX_MMUC_PARTICLES, MMUC_SEARCH_BUDGET, Mmuc, MmucMethod};
+pub use mmuc::{
+    MAX_MMUC_COMPONENTS, MAX_MMUC_PARTICLES, MMUC_SEARCH_BUDGET, Mmuc, MmucEstimate, MmucMethod,
+    MmucOptions,
+};
 pub use threshold::{
     Direction, LossCurve, LossCurveOptions, Threshold, expected_loss_empty,
     expected_loss_singleton, loss_curve, threshold,

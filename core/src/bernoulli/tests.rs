@@ -1403,3 +1403,116 @@ fn mmuc_search_cut_short_returns_a_start_with_q_in_full() {
         "the first start, the first component's mean"
     );
 }
+
+/// The options types of the bindings: the same numbers as [`estimate`], [`SpatialDensity::mmuc`]
+/// and [`multi_bernoulli_estimate`], flattened, and their validation naming the Rust path.
+#[test]
+fn options_types_flatten_the_estimates_and_name_the_field() {
+    let s = gaussian(&[1.0, -2.0], &[1.0, 0.3, 0.3, 0.5]);
+    let o = BernoulliEstimateOptions {
+        existence: 0.7,
+        density: s.clone(),
+        radius: 1.0,
+        costs: Costs::mpe(),
+    };
+    let full = estimate(0.7, &s, &loss(Costs::mpe(), 1.0)).unwrap();
+    let r = o.estimate().unwrap();
+    assert_eq!(r, BernoulliReport::from(&full));
+    assert_eq!(
+        (r.declare, r.estimate.as_deref(), &r.mmuc[..]),
+        (
+            full.declare,
+            full.estimate.as_deref(),
+            &full.mmuc.center[..]
+        )
+    );
+    assert_eq!(r.threshold.to_bits(), full.threshold.gamma.to_bits());
+    assert_eq!(r.miss_probability, full.mmuc.miss_probability);
+    let bad = |o: BernoulliEstimateOptions| {
+        alloc::string::String::from(o.estimate().unwrap_err().field())
+    };
+    assert_eq!(
+        bad(BernoulliEstimateOptions {
+            existence: 1.5,
+            ..o.clone()
+        }),
+        "existence"
+    );
+    assert_eq!(
+        bad(BernoulliEstimateOptions {
+            radius: 0.0,
+            ..o.clone()
+        }),
+        "radius"
+    );
+    // the MMUC search's size cap, before anything else
+    let points: Vec<[f64; 2]> = (0..=MAX_MMUC_PARTICLES).map(|i| [i as f64, 0.0]).collect();
+    let many = SpatialDensity::particles(ParticleSet::new(&points, None).unwrap());
+    assert_eq!(
+        bad(BernoulliEstimateOptions {
+            existence: 1.5,
+            density: many.clone(),
+            ..o.clone()
+        }),
+        "density.particles"
+    );
+
+    let m = MmucOptions {
+        density: s.clone(),
+        radius: 1.0,
+    };
+    let mm = s.mmuc(1.0).unwrap();
+    assert_eq!(
+        m.estimate().unwrap(),
+        MmucEstimate {
+            center: mm.center.clone(),
+            miss_probability: mm.miss_probability,
+            method: MmucMethod::GaussianMean
+        }
+    );
+    let m_bad = MmucOptions {
+        density: many.clone(),
+        radius: 1.0,
+    };
+    assert_eq!(m_bad.estimate().unwrap_err().field(), "density.particles");
+
+    let comps = vec![
+        BernoulliComponent {
+            existence: 0.9,
+            density: s.clone(),
+        },
+        BernoulliComponent {
+            existence: 0.2,
+            density: gaussian(&[4.0, 4.0], &[1.0, 0.0, 0.0, 1.0]),
+        },
+    ];
+    let mb = MultiBernoulliPointOptions {
+        components: comps.clone(),
+        radius: 1.0,
+        costs: Costs::mpe(),
+    };
+    let pairs: Vec<(f64, SpatialDensity)> = comps
+        .iter()
+        .map(|c| (c.existence, c.density.clone()))
+        .collect();
+    let full = multi_bernoulli_estimate(&pairs, &loss(Costs::mpe(), 1.0)).unwrap();
+    let r = mb.estimate().unwrap();
+    assert_eq!(r, MultiBernoulliReport::from(&full));
+    assert_eq!(r.reported, vec![0]);
+    assert_eq!(r.estimates, vec![full.components[0].mmuc.center.clone()]);
+    let mut capped = mb.clone();
+    capped.components[1].density = many;
+    assert_eq!(
+        capped.estimate().unwrap_err().field(),
+        "components[1].density.particles"
+    );
+    let mut improbable = mb.clone();
+    improbable.components[1].existence = -0.1;
+    assert_eq!(
+        improbable.estimate().unwrap_err().field(),
+        "components[1].existence"
+    );
+    let mut far = mb;
+    far.radius = f64::NAN;
+    assert_eq!(far.estimate().unwrap_err().field(), "radius");
+}

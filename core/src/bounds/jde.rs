@@ -13,9 +13,9 @@
 use alloc::vec::Vec;
 
 use crate::bounds::{
-    ComponentBound, Density1, GaussianPrior, JdeBound, LinearGaussian, LinearGaussianSensor,
-    ModelI, ModelII, TheoremOptions, VectorMeasurement, VectorModel, poisson_pmf, theorem1,
-    theorem2, vector_bound,
+    Cardinality, ComponentBound, Density1, GaussianPrior, JdeBound, LinearGaussian,
+    LinearGaussianSensor, Method, ModelI, ModelII, Phase, Terms, TheoremOptions, VectorMeasurement,
+    VectorModel, poisson_pmf, theorem1, theorem2, vector_bound,
 };
 use crate::error::{Error, Result};
 
@@ -367,3 +367,224 @@ fn monte_carlo_settings(
 #[cfg(test)]
 #[path = "jde_tests.rs"]
 mod tests;
+
+/// One summand of the bound (17) or (23) of paper 002, named.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct BoundTerm {
+    /// Which summand: the estimation error, the undetected target, the missed detection or
+    /// the false target.
+    pub name: TermName,
+    /// The summand's value (a squared error, ≥ 0).
+    pub value: f64,
+}
+
+/// The summands of (17)/(23) of paper 002 ([`Terms`]), in the paper's order; written
+/// `"estimation"`, `"undetected"`, `"missed"`, `"falseTarget"`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "camelCase"))]
+pub enum TermName {
+    /// r P̄_o J'_1⁻¹ (17), or r P̄_o Σ_n C_n J'_{1+n}⁻¹ (23).
+    Estimation,
+    /// r (1 − P̄_o)(1 − μ) σ_e²: an undetected target estimated by x*.
+    Undetected,
+    /// r (μ (1 − P̄_o) + P̄_o − P̄_o w) e_1²: a target declared absent.
+    Missed,
+    /// (1 − r)(1 − μ') e_0²: a target declared where none exists.
+    FalseTarget,
+}
+
+impl BoundTerm {
+    /// The four summands of `t` in the paper's order.
+    pub fn all(t: &Terms) -> Vec<BoundTerm> {
+        [
+            (TermName::Estimation, t.estimation),
+            (TermName::Undetected, t.undetected),
+            (TermName::Missed, t.missed),
+            (TermName::FalseTarget, t.false_target),
+        ]
+        .map(|(name, value)| BoundTerm { name, value })
+        .into()
+    }
+}
+
+/// The n-point part of Theorem 2 of paper 002 (model I: only n = 1), as [`JdeBoundReport`]
+/// gives it: a [`Cardinality`] without the error estimates of `w` and `clutter_null`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct CardinalityTerm {
+    /// The number of observed points n = |Z|.
+    pub n: usize,
+    /// The probability C_{n−1} of n − 1 clutter points.
+    pub probability: f64,
+    /// The mass w_n (20)/(25) of p_n on the MAP region, in [0, 1].
+    pub w: f64,
+    /// The inverse information J'_n⁻¹ (with the 1/w_n² of (20)/(25)); for a vector state its
+    /// trace.
+    pub inverse_information: f64,
+    /// The probability that the detector rejects n clutter-only points.
+    pub clutter_null: f64,
+    /// `'quadrature'`, `'monte-carlo'` or (a vector state without false observations)
+    /// `'closed-form'`.
+    pub method: Method,
+    /// The error estimate of `inverse_information` (Monte Carlo: one standard error).
+    pub error: f64,
+}
+
+impl From<&Cardinality> for CardinalityTerm {
+    fn from(c: &Cardinality) -> Self {
+        CardinalityTerm {
+            n: c.n,
+            probability: c.probability,
+            w: c.w,
+            inverse_information: c.inverse_information,
+            clutter_null: c.clutter_null,
+            method: c.method,
+            error: c.error,
+        }
+    }
+}
+
+/// The bound (63)/(64) of paper 002 on the mean-square error σ_i² of one coordinate x_i of
+/// a vector state, with the component metric e_i (e_i(∅, {x'}) = e_0/√l, e_i({x}, ∅) =
+/// e_1/√l): a [`ComponentBound`] flattened.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct JdeComponentBound {
+    /// The lower bound on E e_i²: the smaller of `hpe` and `lpe`.
+    pub bound: f64,
+    /// This coordinate's rule on Z = ∅ (each coordinate may pick its own).
+    pub phase: Phase,
+    /// The existence threshold r* of this coordinate (72): e_0²/(e_0² + (1 − P̄o)(e_1² − l
+    /// σ_{e,i}²)) without false observations (may exceed 1; `Infinity` when HPE never wins).
+    pub existence_threshold: f64,
+    /// The summands of (63)/(64) for this coordinate, named as the top-level `terms`.
+    pub terms: Vec<BoundTerm>,
+    /// The error estimate of `bound` (quadrature, one Monte Carlo standard error).
+    pub error: f64,
+    /// The HPE bound of this coordinate: the estimator declares {x*} on Z = ∅.
+    pub hpe: f64,
+    /// The LPE bound of this coordinate: the estimator declares ∅ on Z = ∅.
+    pub lpe: f64,
+    /// The estimation term of this coordinate: [J'_1⁻¹]_ii (63), or Σ_n C_n [J'_{1+n}⁻¹]_ii
+    /// (64).
+    pub inverse_information: f64,
+    /// The prior mean x*_i of this coordinate (P_o is constant, so f_d' = f).
+    pub undetected_mean: f64,
+    /// The prior variance σ_{e,i}² = P_ii of this coordinate.
+    pub undetected_variance: f64,
+}
+
+impl From<&ComponentBound> for JdeComponentBound {
+    fn from(c: &ComponentBound) -> Self {
+        let a = &c.assembled;
+        JdeComponentBound {
+            bound: a.bound,
+            phase: a.phase,
+            existence_threshold: a.existence_threshold,
+            terms: BoundTerm::all(&a.terms),
+            error: c.error,
+            hpe: a.hpe,
+            lpe: a.lpe,
+            inverse_information: c.inverse_information,
+            undetected_mean: c.undetected_mean,
+            undetected_variance: c.undetected_variance,
+        }
+    }
+}
+
+/// The bound of Theorem 1 or 2 of paper 002 with its parts, flattened from a
+/// [`JdeBoundOutcome`] (what the bindings' `jdeBound` / `jde_bound` return).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct JdeBoundReport {
+    /// The lower bound on E e²(X, X̂(Z)) (a valid one only when `regular`); for a vector
+    /// state with the Euclidean metric, one rule on Z = ∅ for the whole state (≥ the sum of
+    /// `components[i].bound`, which may each pick their own rule).
+    pub bound: f64,
+    /// The rule on Z = ∅ of the bound's estimator: `'HPE'` declares {x*}, `'LPE'` declares ∅.
+    pub phase: Phase,
+    /// The existence threshold r* (18)/(24) above which HPE wins (may exceed 1; `Infinity`
+    /// when HPE never wins).
+    pub existence_threshold: f64,
+    /// The summands of (17)/(23) in order: estimation, undetected, missed, falseTarget.
+    pub terms: Vec<BoundTerm>,
+    /// The error estimate of `bound` (quadrature, one Monte Carlo standard error).
+    pub error: f64,
+    /// The HPE bound: the estimator declares {x*} on Z = ∅.
+    pub hpe: f64,
+    /// The LPE bound: the estimator declares ∅ on Z = ∅.
+    pub lpe: f64,
+    /// The mean detection probability P̄_o (14) = ∫ P_o(x) f(x) dx, in [0, 1].
+    pub mean_detection: f64,
+    /// The mean x* of f_d', an undetected target's state (a vector state: of its first
+    /// coordinate; see `components[i].undetected_mean`).
+    pub undetected_mean: f64,
+    /// The variance σ_e² (16) of an undetected target's state, the variance of f_d' (a
+    /// vector state: tr P).
+    pub undetected_variance: f64,
+    /// The probability that a target-free observation is declared empty, Pr(Z ≠ ∅, declared
+    /// ∅ | X = ∅): η1 (model I) or η2 (model II).
+    pub eta: f64,
+    /// The MAP region of one-point observations, `[low, high]` intervals (a vector state: of
+    /// the measurement line; empty when the gain has more than one row, where there are no
+    /// false observations and every measurement is kept).
+    pub region: Vec<(f64, f64)>,
+    /// The n-point parts of Theorem 2, one per cardinality n = |Z| (model I: only n = 1).
+    pub cardinalities: Vec<CardinalityTerm>,
+    /// Whether the bound is regular: false when f·P_o does not vanish at the prior's support
+    /// ends (uniform, tables ending above 0): the information inequality's regularity fails,
+    /// the estimation term may not be a bound.
+    pub regular: bool,
+    /// The Monte Carlo seed used (model II with clutter only).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub seed: Option<u64>,
+    /// A vector state only: the bound of each coordinate x_i, i = 0 … l − 1 ((63)/(64),
+    /// (70)–(72)).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub components: Option<Vec<JdeComponentBound>>,
+    /// A vector state only: J'_1⁻¹ (model I), or Σ_n C_n J'_{1+n}⁻¹ (model II), l rows of
+    /// l numbers, whose diagonal enters `components[i]`'s estimation term (without false
+    /// observations, (P⁻¹ + HᵀR⁻¹H)⁻¹, the posterior covariance).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub inverse_information_matrix: Option<Vec<Vec<f64>>>,
+}
+
+impl From<&JdeBoundOutcome> for JdeBoundReport {
+    fn from(o: &JdeBoundOutcome) -> Self {
+        let b = &o.bound;
+        let a = &b.assembled;
+        JdeBoundReport {
+            bound: a.bound,
+            phase: a.phase,
+            existence_threshold: a.existence_threshold,
+            terms: BoundTerm::all(&a.terms),
+            error: b.error,
+            hpe: a.hpe,
+            lpe: a.lpe,
+            mean_detection: b.mean_detection,
+            undetected_mean: b.undetected_mean,
+            undetected_variance: b.undetected_variance,
+            eta: b.eta,
+            region: b.region.clone(),
+            cardinalities: b.cardinalities.iter().map(CardinalityTerm::from).collect(),
+            regular: b.regular,
+            seed: o.seed,
+            components: o
+                .components
+                .as_ref()
+                .map(|c| c.iter().map(JdeComponentBound::from).collect()),
+            inverse_information_matrix: o.inverse_information.clone(),
+        }
+    }
+}

@@ -368,3 +368,71 @@ fn thm1_thm2_models_and_empty_rules_read_their_names() {
     assert_eq!(serde_json::to_string(&EmptyRule::Map).unwrap(), r#""map""#);
     assert!(serde_json::from_str::<EmptyRule>(r#""hpe""#).is_err());
 }
+
+/// The flattened report (what the bindings return) holds the outcome's numbers unchanged:
+/// the assembled bound, the four named terms in the paper's order, each cardinality, the
+/// seed, and for a vector state each coordinate and J'⁻¹.
+#[test]
+fn report_flattens_the_outcome_of_theorems_1_and_2() {
+    let o = JdeOptions {
+        clutter: Some(unit_clutter(0.5)),
+        samples: Some(200),
+        seed: Some(3),
+        ..scalar(JdeModel::II)
+    };
+    let out = jde_bound(&o, no_entropy).unwrap();
+    let r = JdeBoundReport::from(&out);
+    let a = &out.bound.assembled;
+    assert_eq!(
+        (r.bound, r.phase, r.existence_threshold, r.hpe, r.lpe),
+        (a.bound, a.phase, a.existence_threshold, a.hpe, a.lpe)
+    );
+    let names = r.terms.iter().map(|t| t.name).collect::<Vec<_>>();
+    assert_eq!(
+        names,
+        [
+            TermName::Estimation,
+            TermName::Undetected,
+            TermName::Missed,
+            TermName::FalseTarget
+        ]
+    );
+    let values = r.terms.iter().map(|t| t.value).collect::<Vec<_>>();
+    assert_eq!(
+        values,
+        [
+            a.terms.estimation,
+            a.terms.undetected,
+            a.terms.missed,
+            a.terms.false_target
+        ]
+    );
+    assert_eq!(r.cardinalities.len(), out.bound.cardinalities.len());
+    for (c, k) in r.cardinalities.iter().zip(&out.bound.cardinalities) {
+        assert_eq!(
+            (c.n, c.w, c.inverse_information, c.method, c.error),
+            (k.n, k.w, k.inverse_information, k.method, k.error)
+        );
+    }
+    assert!(
+        r.cardinalities
+            .iter()
+            .any(|c| c.method == Method::MonteCarlo)
+    );
+    assert_eq!(
+        (r.seed, r.error, r.regular),
+        (Some(3), out.bound.error, true)
+    );
+    assert_eq!((r.components, r.inverse_information_matrix), (None, None));
+
+    let v = jde_bound(&vector_of_one(JdeModel::I), no_entropy).unwrap();
+    let r = JdeBoundReport::from(&v);
+    let comps = v.components.as_ref().unwrap();
+    let rc = r.components.as_ref().unwrap();
+    assert_eq!(rc.len(), comps.len());
+    assert_eq!(rc[0].bound, comps[0].assembled.bound);
+    assert_eq!(rc[0].inverse_information, comps[0].inverse_information);
+    assert_eq!(rc[0].terms.len(), 4);
+    assert_eq!(r.inverse_information_matrix, v.inverse_information);
+    assert_eq!(r.seed, None);
+}

@@ -77,8 +77,9 @@ pub use example2::{
 };
 mod jde;
 pub use jde::{
-    Clutter, FalseAlarm, JdeBoundOutcome, JdeModel, JdeObservation, JdeOptions, JdePrior, MAX_DIMS,
-    MAX_SAMPLE_POINTS, MAX_SAMPLES, MIN_SAMPLES, WRONG_MODEL, jde_bound,
+    BoundTerm, CardinalityTerm, Clutter, FalseAlarm, JdeBoundOutcome, JdeBoundReport,
+    JdeComponentBound, JdeModel, JdeObservation, JdeOptions, JdePrior, MAX_DIMS, MAX_SAMPLE_POINTS,
+    MAX_SAMPLES, MIN_SAMPLES, TermName, WRONG_MODEL, jde_bound,
 };
 mod vector;
 pub use vector::{

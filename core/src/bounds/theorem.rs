@@ -50,9 +50,11 @@ impl Default for TheoremOptions {
     }
 }
 
-/// How a term of the bound was integrated.
+/// How a term of the bound was integrated (written `"quadrature"`, `"monte-carlo"`,
+/// `"closed-form"`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]
 pub enum Method {
     /// Adaptive Gauss–Kronrod quadrature.
     Quadrature,

@@ -10,6 +10,7 @@ __version__: str
 __all__ = [
     "Result",
     "__version__",
+    "bernoulli_estimate",
     "bernoulli_loss_curve",
     "bernoulli_threshold_curve",
     "compare_schemes",
@@ -29,8 +30,10 @@ __all__ = [
     "mb_identical_component_counts",
     "mb_mean_square_error",
     "mb_optimal_estimate",
+    "mmuc_estimate",
     "multi_bernoulli_cardinality",
     "multi_bernoulli_leave_one_out",
+    "multi_bernoulli_point_estimate",
     "multi_object_likelihood",
     "ospa",
     "ospa_series",
@@ -294,3 +297,10 @@ def placement_scene(
 def mixture_density_grid(*, mixture: Sequence[Mapping[str, Any]], grid: _Grid) -> npt.NDArray[np.float64]:
     """A Gaussian mixture's density over a grid (paper 001, the PHD (99) of Fig. 9): a float64
     array of shape ``(ny, nx)``, ``[j, i]`` at (x_i, y_j)."""
+
+# paper 000's point estimates (bernoulli_estimate, mmuc_estimate, multi_bernoulli_point_estimate)
+def bernoulli_estimate(*, existence: float, density: dict[str, Any], radius: float, costs: _Costs) -> Result: ...
+def mmuc_estimate(*, density: dict[str, Any], radius: float) -> Result: ...
+def multi_bernoulli_point_estimate(
+    *, components: Sequence[dict[str, Any]], radius: float, costs: _Costs
+) -> Result: ...

@@ -44,6 +44,13 @@ const calls = [
   ['fovVarianceMap', [{ multiBernoulli: placementSceneFor({ count: 8, seed: 3 }), fovSize: [1, 1.5], grid: { x: [-3, 3, 7], y: [-2, 2, 5] } }]],
   ['placementScene', [{ count: 5, seed: 9, extent: 2, sigma: [0.2, 0.4] }]],
   ['mixtureDensityGrid', [{ mixture: [{ weight: 0.7, mean: [0, 0], cov: [[1, 0.3], [0.3, 0.8]] }, { weight: 1.2, mean: [1, -1], cov: [[0.5, -0.1], [-0.1, 0.4]] }], grid: { x: [-2, 2, 6], y: [-1, 1, 4] } }]],
+  // paper 000's point estimates (bernoulli_estimate, mmuc_estimate, multi_bernoulli_point_estimate)
+  ['bernoulliEstimate', [{ existence: 0.7, density: { mixture: [{ weight: 0.5, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { weight: 0.5, mean: [2, 0], cov: [[1, 0], [0, 1]] }] }, radius: 1, costs: 'mpe' }]],
+  ['bernoulliEstimate', [{ existence: 0.55, density: { mean: [0], cov: 1 }, radius: 1, costs: 'mpe' }]],
+  ['bernoulliEstimate', [{ existence: 0.2, density: { particles: [[0, 0], [1, 1], [3, 0]], weights: [0.2, 0.5, 0.3] }, radius: 1, costs: { mmol: { asset: 0.9, countermeasure: 0.1 } } }]],
+  ['mmucEstimate', [{ density: { mixture: [{ weight: 0.3, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { weight: 0.7, mean: [2, 1], cov: [[0.5, 0], [0, 0.5]] }] }, radius: 1 }]],
+  ['mmucEstimate', [{ density: { particles: [[0, 0], [0.5, 0.2], [3, 0], [3.2, 0.1]] }, radius: 1 }]],
+  ['multiBernoulliPointEstimate', [{ components: [{ existence: 0.9, density: { mean: [0, 0], cov: [[0.2, 0], [0, 0.2]] } }, { existence: 0.55, density: { mean: [5, 5], cov: [[4, 0], [0, 4]] } }, { existence: 0.7, density: { particles: [[9, 9]] } }], radius: 1, costs: { c00: 0, c01: 1, c10: 1, c11: 0, c: 1 } }]],
 ];
 
 const out = calls.map(([fn, args]) => ({ fn, args, result: fisst[fn](...args) }));
