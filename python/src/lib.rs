@@ -17,6 +17,7 @@ mod names;
 mod options;
 mod result;
 mod ser;
+mod splitting;
 
 /// The compiled part of the Python package `fisst` (import `fisst`, not this module).
 #[pymodule]
@@ -65,5 +66,13 @@ fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(control::multi_object_likelihood, m)?)?;
     m.add_class::<control::SensorControlRun>()?;
     m.add_function(wrap_pyfunction!(control::compare_schemes, m)?)?;
+    // splitting and the worked examples of paper 001
+    m.add_function(wrap_pyfunction!(splitting::split_library, m)?)?;
+    m.add_function(wrap_pyfunction!(splitting::split_for_regions, m)?)?;
+    m.add_function(wrap_pyfunction!(
+        splitting::negative_information_scenario,
+        m
+    )?)?;
+    m.add_function(wrap_pyfunction!(splitting::airport_scenario, m)?)?;
     Ok(())
 }

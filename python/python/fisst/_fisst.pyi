@@ -1,7 +1,7 @@
 """Type stubs of the compiled module ``fisst._fisst`` (checked by ``python -m mypy.stubtest fisst``)."""
 
 from collections.abc import Callable, Iterator, Mapping, Sequence
-from typing import Any, TypeAlias, final
+from typing import Any, Literal, TypeAlias, final
 
 import numpy as np
 import numpy.typing as npt
@@ -10,6 +10,7 @@ __version__: str
 __all__ = [
     "Result",
     "__version__",
+    "airport_scenario",
     "bernoulli_loss_curve",
     "bernoulli_threshold_curve",
     "compare_schemes",
@@ -32,12 +33,15 @@ __all__ = [
     "multi_bernoulli_cardinality",
     "multi_bernoulli_leave_one_out",
     "multi_object_likelihood",
+    "negative_information_scenario",
     "ospa",
     "ospa_series",
     "ParticleBernoulliFilter",
     "probability_outside_ball",
     "reduce_mixture",
     "SensorControlRun",
+    "split_for_regions",
+    "split_library",
     "uospa",
 ]
 
@@ -249,3 +253,22 @@ def reduce_mixture(
     merge_distance: float | None = None,
     max_components: int | None = None,
 ) -> Any: ...
+
+# splitting and the worked examples of paper 001
+def split_library(*, components: int, lambda_: float, spacing: Literal["equal", "free"] = "equal") -> Result: ...
+def split_for_regions(
+    *,
+    mixture: Sequence[dict[str, Any]],
+    regions: Sequence[_Region],
+    position_dims: int = 2,
+    min_weight: float = 0.01,
+    components: int = 3,
+    lambda_: float = 0.001,
+    spacing: Literal["equal", "free"] = "equal",
+    grid_bound: float = 2.0,
+    grid_points: int = 15,
+    max_depth: int = 16,
+    max_components: int = 10000,
+) -> Result: ...
+def negative_information_scenario(*, step: int | None = None) -> Result: ...
+def airport_scenario(*, seed: int | None = None, steps: int = 60) -> Result: ...

@@ -33,6 +33,13 @@ const calls = [
   ['probabilityOutsideBall', [{ density: { mixture: [{ weight: 0.3, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { weight: 0.7, mean: [2, 1], cov: [[0.5, 0], [0, 0.5]] }] }, center: [1, 0.5], radius: 1 }]],
   ['probabilityOutsideBall', [{ density: { particles: [[0, 0], [1, 1], [3, 0]], weights: [0.2, 0.5, 0.3] }, center: [0.5, 0.5], radius: 1 }]],
   ['reduceMixture', [{ mixture: [{ weight: 0.5, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { weight: 0.3, mean: [0.1, 0], cov: [[1, 0], [0, 1]] }, { weight: 1e-9, mean: [5, 5], cov: [[1, 0], [0, 1]] }, { weight: 0.2, mean: [4, 0], cov: [[2, 0], [0, 1]] }], pruneBelow: 1e-6, mergeDistance: 1, maxComponents: 1 }]],
+  ['splitLibrary', [{ components: 4, lambda: 0.001 }]],
+  ['splitLibrary', [{ components: 5, lambda: 0.01, spacing: 'free' }]],
+  ['splitForRegions', [{ mixture: [{ weight: 0.6, mean: [0, 0], cov: [[1, 0.3], [0.3, 2]] }, { weight: 0.4, mean: [2, 1], cov: [[0.5, 0], [0, 0.5]] }], regions: [{ box: { min: [0.5, -1], max: [3, 2] } }, { disc: { center: [0, 0], radius: 1 } }], gridBound: 3, components: 4 }]],
+  ['splitForRegions', [{ mixture: [{ weight: 1, mean: [0, 0], cov: [[1, 0], [0, 1]] }], regions: [{ polygon: [[0, 0], [2, 0], [0, 2]] }], maxComponents: 5 }]],
+  ['negativeInformationScenario', []],
+  ['negativeInformationScenario', [{ step: 2 }]],
+  ['airportScenario', [{ seed: 7, steps: 5 }]],
   ['multiObjectLikelihood', [{ likelihoods: [[0.5, 0.1], [0.2, 0.3]], detectionProbability: 0.9, clutterRate: 1, clutterDensity: [0.1, 0.1] }]],
 ];
 
