@@ -74,7 +74,7 @@ def test_airport_scenario_is_seeded_and_its_config_drives_a_filter():
         (lambda: fisst.split_for_regions(mixture=UNIT, regions=[]), ValueError, "regions must have 1 to 32 entries, got 0"),
         (lambda: fisst.split_for_regions(mixture=[{"weight": 1, "mean": [0, 0], "cov": [[1, 2], [2, 1]]}], regions=[HALF]), ValueError, "mixture[0].cov"),
         (lambda: fisst.split_for_regions(mixture=UNIT, regions=[{"box": {"min": [1, 1], "max": [-1, -1]}}]), ValueError, "regions[0]"),
-        (lambda: fisst.split_for_regions(mixture=UNIT, regions=[HALF], grid_points=200), ValueError, "grid_points: "),
+        (lambda: fisst.split_for_regions(mixture=UNIT, regions=[HALF], grid_points=200), ValueError, "grid_points^position_dims: collocation points per component = 40000 exceeds 20000 (at most 141)"),
         (lambda: fisst.split_for_regions(mixture=UNIT, regions=[HALF], grid_points=141, max_components=50000), ValueError, "max_components: "),
         (lambda: fisst.negative_information_scenario(step=4), ValueError, "step must be an integer in [1, 3], got 4"),
         (lambda: fisst.airport_scenario(seed=1, steps=2001), ValueError, "steps must be an integer in [0, 2000], got 2001"),

@@ -190,8 +190,9 @@ impl SplitForRegionsOptions {
     ///
     /// # Errors
     /// [`Error::Count`] naming `regions`; [`Error::OutOfRange`] naming the first integer knob
-    /// out of range; [`Error::OverBudget`] naming `grid_points` (the grid) or
-    /// `max_components` (the work).
+    /// out of range; [`Error::OverBudget`] naming `grid_points^position_dims` (the grid; its
+    /// `at_most` is the largest `grid_points` at this `position_dims`) or `max_components`
+    /// (the work).
     pub fn validate(&self) -> Result<()> {
         Error::check_count("regions", "entries", self.regions.len(), 1, MAX_REGIONS)?;
         check_bounded_split(self.components, &self.split_options())?;
@@ -199,11 +200,12 @@ impl SplitForRegionsOptions {
             let work = (0..self.position_dims)
                 .try_fold(1usize, |acc, _| acc.checked_mul(self.grid_points))
                 .unwrap_or(usize::MAX);
+            // both fields in the path: either may be the one to lower
             Error::OverBudget {
-                what: "grid_points".into(),
-                measure: "grid_points^position_dims collocation points",
+                what: "grid_points^position_dims".into(),
+                measure: "collocation points per component",
                 work,
-                limit: "20000 per component; lower grid_points or position_dims",
+                limit: "20000",
                 at_most: max_grid_points(self.position_dims),
             }
         })?;
@@ -212,10 +214,10 @@ impl SplitForRegionsOptions {
             let per_component = work / self.max_components as f64;
             return Err(Error::OverBudget {
                 what: "max_components".into(),
-                measure: "max_components × grid_points^position_dims × regions inclusion tests \
-                          (worst case)",
+                measure: "inclusion tests in the worst case (components × grid points × \
+                          regions)",
                 work: work as usize,
-                limit: "5e8; lower max_components, grid_points or the number of regions",
+                limit: "5e8; lower the most components, the grid points or the number of regions",
                 at_most: (SPLIT_WORK_BUDGET / per_component) as usize,
             });
         }
@@ -498,7 +500,7 @@ mod tests {
         o.components = 3;
         o.grid_points = 200; // 200² = 40000 > 20000
         let e = o.validate().unwrap_err();
-        assert_eq!(e.field(), "grid_points");
+        assert_eq!(e.field(), "grid_points^position_dims");
         assert!(e.to_string().contains("(at most 141)"), "{e}");
         o.grid_points = 141; // 141² = 19881; 50000 × 19881 × 1 ≈ 9.9e8 > 5e8
         o.max_components = 50_000;
