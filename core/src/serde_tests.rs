@@ -654,3 +654,92 @@ fn jde_bound_report_is_written_with_named_terms_and_methods() {
         "{json}"
     );
 }
+
+#[test]
+fn split_requests_read_their_defaults_and_write_the_flat_shapes() {
+    use crate::splitting::{
+        NegativeInformationOptions, NegativeInformationReport, NegativeInformationResult, Spacing,
+        SplitForRegionsOptions, SplitLibraryOptions, SplitLibraryReport,
+    };
+    let lib: SplitLibraryOptions =
+        serde_json::from_str(r#"{"components":4,"lambda_":0.001}"#).unwrap();
+    assert_eq!(lib.spacing, Spacing::Equal);
+    let free: SplitLibraryOptions =
+        serde_json::from_str(r#"{"components":4,"lambda_":0.001,"spacing":"free"}"#).unwrap();
+    assert_eq!(free.spacing, Spacing::Free);
+    let json = serde_json::to_value(SplitLibraryReport::from(&lib.library().unwrap())).unwrap();
+    let keys: Vec<&str> = json
+        .as_object()
+        .unwrap()
+        .keys()
+        .map(|k| k.as_str())
+        .collect();
+    assert_eq!(keys, ["means", "objective", "sigma", "variance", "weights"]);
+
+    let o: SplitForRegionsOptions = serde_json::from_str(
+        r#"{"mixture":[{"weight":1,"mean":[0,0],"cov":[[1,0],[0,1]]}],
+            "regions":[{"box":{"min":[0,0],"max":[1,1]}},{"ball":{"center":[0,0],"radius":1}}]}"#,
+    )
+    .unwrap();
+    let d = SplitForRegionsOptions::new(o.mixture.clone(), o.regions.clone());
+    assert_eq!(
+        (
+            o.position_dims,
+            o.min_weight,
+            o.components,
+            o.lambda_,
+            o.spacing
+        ),
+        (
+            d.position_dims,
+            d.min_weight,
+            d.components,
+            d.lambda_,
+            d.spacing
+        )
+    );
+    assert_eq!(
+        (o.grid_bound, o.grid_points, o.max_depth, o.max_components),
+        (d.grid_bound, d.grid_points, d.max_depth, d.max_components)
+    );
+
+    let none: NegativeInformationOptions = serde_json::from_str("{}").unwrap();
+    assert_eq!(none.step, None);
+    let report = NegativeInformationReport::fig5().unwrap();
+    let one = NegativeInformationOptions { step: Some(1) }
+        .select(&report)
+        .unwrap();
+    let NegativeInformationResult::Step(s) = &one else {
+        panic!("{one:?}")
+    };
+    let json = serde_json::to_value(&one).unwrap();
+    assert_eq!(json["depth"], s.depth);
+    assert_eq!(json["split"].as_array().unwrap().len(), s.split.len());
+    let whole = serde_json::to_value(&report).unwrap();
+    assert_eq!(
+        whole["fov"],
+        serde_json::json!({"box": {"min": [-1.5, -1.5], "max": [1.5, 1.5]}})
+    );
+}
+
+#[test]
+fn airport_report_is_the_scenario_with_its_filter_config_and_seed() {
+    use crate::filters::{default_mcmc_moves, default_particles};
+    use crate::sim::airport::AirportScenarioReport;
+    let r = AirportScenarioReport::new(7, 3).unwrap();
+    let sc = airport_scenario(7, 3).unwrap();
+    assert_eq!((r.seed, r.config.seed), (7, 7));
+    assert_eq!(
+        (r.config.particles, r.config.mcmc_moves),
+        (default_particles(), default_mcmc_moves())
+    );
+    assert_eq!(r.truth, sc.truth);
+    assert_eq!(r.concourse, Region::from(sc.concourse));
+    let json = serde_json::to_value(&r).unwrap();
+    assert_eq!(
+        json["concourse"],
+        serde_json::json!({"box": {"min": [0.0, 0.0], "max": [300.0, 30.0]}})
+    );
+    assert_eq!(json["config"]["clutter"]["density"], 0.1);
+    assert!(AirportScenarioReport::new(7, 2001).is_err());
+}

@@ -19,6 +19,7 @@ mod names;
 mod options;
 mod result;
 mod ser;
+mod splitting;
 
 /// The compiled part of the Python package `fisst` (import `fisst`, not this module).
 #[pymodule]
@@ -87,5 +88,13 @@ fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
         bernoulli::multi_bernoulli_point_estimate,
         m
     )?)?;
+    // splitting and the worked examples of paper 001
+    m.add_function(wrap_pyfunction!(splitting::split_library, m)?)?;
+    m.add_function(wrap_pyfunction!(splitting::split_for_regions, m)?)?;
+    m.add_function(wrap_pyfunction!(
+        splitting::negative_information_scenario,
+        m
+    )?)?;
+    m.add_function(wrap_pyfunction!(splitting::airport_scenario, m)?)?;
     Ok(())
 }

@@ -71,8 +71,11 @@ fn read<T: DeserializeOwned>(plain: &Bound<'_, PyAny>, function: &str, root: &st
                     },
                 ));
             }
+            // a message that continues the path (a mixture's `[2].cov …`) joins it
             let at = if path.is_empty() {
                 String::new()
+            } else if message.starts_with('[') || message.starts_with('.') {
+                path.clone()
             } else {
                 format!("{path}: ")
             };

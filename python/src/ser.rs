@@ -174,13 +174,18 @@ pub fn to_python<'py, T: Serialize + ?Sized>(
     py: Python<'py>,
     value: &T,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let v = value.serialize(Serializer { py }).map_err(|e| e.0)?;
+    let v = value
+        .serialize(Serializer { py, field: "" })
+        .map_err(|e| e.0)?;
     v.into_py(py)
 }
 
 #[derive(Clone, Copy)]
 struct Serializer<'py> {
     py: Python<'py>,
+    /// The struct field whose value this serializes ("" elsewhere): a struct under it names
+    /// its fields by [`crate::names::rule::EXCEPTIONS`] (`transition.f` is `F`).
+    field: &'static str,
 }
 
 struct Seq<'py> {
@@ -196,6 +201,8 @@ struct Map<'py> {
 
 struct Struct<'py> {
     py: Python<'py>,
+    /// The field this struct is the value of (see [`Serializer::field`]).
+    parent: &'static str,
     name: &'static str,
     dict: Bound<'py, PyDict>,
     /// For a struct variant: the variant's name (the result is `{variant: Result}`).
@@ -341,6 +348,7 @@ impl<'py> ser::Serializer for Serializer<'py> {
     fn serialize_struct(self, name: &'static str, _: usize) -> Result<Struct<'py>> {
         Ok(Struct {
             py: self.py,
+            parent: self.field,
             name,
             dict: PyDict::new(self.py),
             variant: None,
@@ -355,6 +363,7 @@ impl<'py> ser::Serializer for Serializer<'py> {
     ) -> Result<Struct<'py>> {
         Ok(Struct {
             py: self.py,
+            parent: self.field,
             name,
             dict: PyDict::new(self.py),
             variant: Some(variant),
@@ -366,8 +375,10 @@ impl<'py> ser::SerializeSeq for Seq<'py> {
     type Ok = Value<'py>;
     type Error = Error;
     fn serialize_element<T: ?Sized + Serialize>(&mut self, value: &T) -> Result<()> {
-        self.items
-            .push(value.serialize(Serializer { py: self.py })?);
+        self.items.push(value.serialize(Serializer {
+            py: self.py,
+            field: "",
+        })?);
         Ok(())
     }
     fn end(self) -> Result<Value<'py>> {
@@ -417,8 +428,11 @@ impl<'py> ser::SerializeMap for Map<'py> {
     type Error = Error;
     fn serialize_key<T: ?Sized + Serialize>(&mut self, key: &T) -> Result<()> {
         self.key = Some(
-            key.serialize(Serializer { py: self.py })?
-                .into_py(self.py)?,
+            key.serialize(Serializer {
+                py: self.py,
+                field: "",
+            })?
+            .into_py(self.py)?,
         );
         Ok(())
     }
@@ -428,7 +442,10 @@ impl<'py> ser::SerializeMap for Map<'py> {
             .take()
             .ok_or_else(|| Error(PyValueError::new_err("a map value without a key")))?;
         let value = value
-            .serialize(Serializer { py: self.py })?
+            .serialize(Serializer {
+                py: self.py,
+                field: "",
+            })?
             .into_py(self.py)?;
         self.dict.set_item(key, value)?;
         Ok(())
@@ -447,9 +464,16 @@ impl<'py> ser::SerializeStruct for Struct<'py> {
         value: &T,
     ) -> Result<()> {
         let value = value
-            .serialize(Serializer { py: self.py })?
+            .serialize(Serializer {
+                py: self.py,
+                field: key,
+            })?
             .into_py(self.py)?;
-        self.dict.set_item(key, value)?;
+        let name = crate::names::rule::EXCEPTIONS
+            .iter()
+            .find(|(p, f, _)| *p == self.parent && *f == key)
+            .map_or(key, |(_, _, py_name)| py_name);
+        self.dict.set_item(name, value)?;
         Ok(())
     }
     fn end(self) -> Result<Value<'py>> {

@@ -166,6 +166,21 @@ CALLS = {
     "multi_bernoulli_point_estimate": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
         {"components": st.one_of(st.lists(st.fixed_dictionaries({"existence": probability, "density": spatial_density}), max_size=3), junk),
          "radius": kw_number, "costs": costs})),
+    # splitting and the worked examples of paper 001
+    "split_library": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"components": st.one_of(st.integers(0, 6), st.sampled_from([16, 17, 2**64]), junk), "lambda_": kw_number},
+        optional={"spacing": st.sampled_from(["equal", "free", "Equal", 3])})),
+    "split_for_regions": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {"mixture": mixture, "regions": st.one_of(st.lists(region, max_size=3), junk)},
+        optional={"position_dims": st.integers(-1, 9), "min_weight": kw_number, "components": st.integers(0, 5),
+                  "lambda_": st.one_of(st.sampled_from([0.001, 0.01]), junk), "spacing": st.sampled_from(["equal", "free", "x"]),
+                  "grid_bound": kw_number, "grid_points": st.one_of(st.integers(-1, 9), st.sampled_from([200, 10**6])),
+                  "max_depth": st.integers(-1, 6), "max_components": st.one_of(st.integers(-1, 200), st.sampled_from([50_001, 2**64]))})),
+    "negative_information_scenario": st.tuples(st.just(None), st.just(None), st.one_of(
+        st.just({}), st.fixed_dictionaries({"step": st.one_of(st.none(), st.integers(-1, 5), junk)}), st.just({"steps": 1}))),
+    "airport_scenario": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
+        {}, optional={"seed": st.one_of(st.integers(0, 99), st.sampled_from([-1, 2**64]), junk),
+                      "steps": st.one_of(st.integers(-1, 4), st.sampled_from([2000, 2001, 2**64]), junk)})),
 }
 
 assert set(CALLS) == {n for n in fisst.__all__ if callable(getattr(fisst, n)) and n != "Result"}, (

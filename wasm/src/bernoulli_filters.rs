@@ -1,7 +1,6 @@
 //! Bernoulli filters (LeGrand & Ferrari, "Split Happens!", paper 001, Section V): `gmBernoulliPredict`, `gmBernoulliUpdate`, the
 //! classes `GmBernoulliFilter` and `ParticleBernoulliFilter`, and `airportScenario`.
 
-use std::boxed::Box;
 use std::format;
 use std::vec::Vec;
 
@@ -14,19 +13,17 @@ use crate::boundary::{
     seed_or_entropy, type_error, write,
 };
 use crate::names::Renamed;
-use crate::types::{
-    self, BoxRegion, DiscRegion, MixtureComponent, Point, Region, WeightedGaussian,
-};
+use crate::types::{self, MixtureComponent, Point, Region, WeightedGaussian};
 use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
-    self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, ClutterDensity,
-    ConfigShapes, Detection, EstimateOptions, FilterEstimate, GmBernoulli,
-    LinearGaussianLikelihood, LinearGaussianTransition, ParticleOptions, PredictOptions, Splitting,
-    SplittingOptions, UpdateInfo, UpdateOptions,
+    self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, ConfigShapes,
+    Detection, EstimateOptions, FilterEstimate, GmBernoulli, LinearGaussianLikelihood,
+    LinearGaussianTransition, ParticleOptions, PredictOptions, Splitting, SplittingOptions,
+    UpdateInfo, UpdateOptions,
 };
 use fisst::mixture::ReductionOptions;
 use fisst::regions::Region as CoreRegion;
-use fisst::sim::airport::{AirportScenarioOptions, Anchor, TruthPoint};
+use fisst::sim::airport::{AirportScenarioOptions, AirportScenarioReport, Anchor, TruthPoint};
 
 /// The mean lengths of the components of a mixture as given.
 fn mean_lengths(items: &[WeightedGaussian]) -> Vec<usize> {
@@ -836,8 +833,11 @@ impl ParticleBernoulliFilterJs {
     }
 }
 
+// The declarations of `airportScenario`'s result (TypeScript only: the value is the core's
+// `AirportScenarioReport`, written under the contract's names).
 /// The filter configuration of the example, ready for both classes (a `BernoulliFilterConfig`).
-#[derive(Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only
+#[derive(Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct AirportConfig {
     /// The initial existence probability r_{0|0} ∈ [0, 1].
@@ -867,7 +867,8 @@ pub struct AirportConfig {
 }
 
 /// Object birth of the example.
-#[derive(Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only
+#[derive(Tsify)]
 pub struct AirportBirth {
     /// The birth probability p_b ∈ [0, 1]: the probability that a person appears in one step.
     pub probability: f64,
@@ -876,7 +877,8 @@ pub struct AirportBirth {
 }
 
 /// Detection of the example.
-#[derive(Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only
+#[derive(Tsify)]
 pub struct AirportDetection {
     /// The detection probability p_D ∈ [0, 1] inside the field of view.
     pub probability: f64,
@@ -885,7 +887,8 @@ pub struct AirportDetection {
 }
 
 /// Clutter (false reports) of the example.
-#[derive(Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only
+#[derive(Tsify)]
 pub struct AirportClutter {
     /// The clutter rate λ_c ≥ 0: the mean number of false reports per scan.
     pub rate: f64,
@@ -896,7 +899,8 @@ pub struct AirportClutter {
 /// Result of `airportScenario`: the airport example of LeGrand & Ferrari, "Split Happens! Imprecise
 /// and negative information in Gaussian mixture random finite set filtering" (paper 001), Section
 /// V-C.
-#[derive(Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only
+#[derive(Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct AirportScenarioResult {
     /// The ten anchors, in report-index order.
@@ -926,19 +930,6 @@ pub struct AirportScenarioResult {
     pub seed: u64,
 }
 
-fn rows_of<M: std::ops::Index<(usize, usize), Output = f64>>(m: &M, n: usize) -> Vec<Vec<f64>> {
-    (0..n)
-        .map(|i| (0..n).map(|j| m[(i, j)]).collect())
-        .collect()
-}
-
-fn box_region(b: &fisst::regions::AxisBox) -> Region {
-    Region::Box(BoxRegion {
-        min: b.min().to_vec(),
-        max: b.max().to_vec(),
-    })
-}
-
 /// The airport example of LeGrand & Ferrari, "Split Happens! Imprecise and negative information in
 /// Gaussian mixture random finite set filtering" (paper 001), Section V-C (Figs. 6–8): a seeded
 /// walk through a concourse with ten anchors and four exclusion rectangles, and the reports.
@@ -955,62 +946,6 @@ pub fn airport_scenario(
         Some(options) => read(options, "options")?,
     };
     let seed = seed_or_entropy(o.seed)?;
-    let sc = fisst::sim::airport::airport_scenario(seed, o.steps).or_throw_rendered("options")?;
-    let fov = Region::Union(
-        sc.anchors
-            .iter()
-            .map(|a| {
-                Region::Disc(DiscRegion {
-                    center: a.position.to_vec(),
-                    radius: a.radius,
-                })
-            })
-            .collect(),
-    );
-    let mut exclusions: Vec<Region> = sc.exclusion_boxes.iter().map(box_region).collect();
-    exclusions.push(Region::Complement(Box::new(box_region(&sc.concourse))));
-    let c = &sc.config;
-    let density = match &c.clutter.density {
-        ClutterDensity::Constant(d) => *d,
-        _ => 0.1,
-    };
-    let config = AirportConfig {
-        existence: c.existence,
-        mixture: types::mixture_out(&c.mixture),
-        transition: Transition {
-            f: rows_of(c.transition.f(), c.transition.dim()),
-            q: rows_of(c.transition.q(), c.transition.dim()),
-        },
-        survival: c.survival,
-        birth: AirportBirth {
-            probability: c.birth.probability,
-            mixture: types::mixture_out(&c.birth.mixture),
-        },
-        position_dims: c.position_dims,
-        detection: AirportDetection {
-            probability: c.detection.probability,
-            fov: fov.clone(),
-        },
-        clutter: AirportClutter {
-            rate: c.clutter.rate,
-            density,
-        },
-        exclusions: exclusions.clone(),
-        particles: core_filters::default_particles(),
-        mcmc_moves: core_filters::default_mcmc_moves(),
-        seed,
-    };
-    write(&AirportScenarioResult {
-        anchors: sc.anchors.clone(),
-        exclusions,
-        concourse: box_region(&sc.concourse),
-        fov,
-        dt: sc.dt,
-        config,
-        truth: sc.truth.clone(),
-        reports: sc.reports.clone(),
-        true_reports: sc.true_reports.clone(),
-        in_fov: sc.in_fov.clone(),
-        seed,
-    })
+    let report = AirportScenarioReport::new(seed, o.steps).or_throw_rendered("options")?;
+    write(&Renamed::new(&report))
 }

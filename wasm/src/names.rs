@@ -176,6 +176,12 @@ impl<S: Serializer> Serializer for Rename<S> {
         value: &T,
     ) -> Result<S::Ok, S::Error> {
         let parent = self.parent;
+        // a variant holding a value is written as a one-key object: its key takes the
+        // contract's name too (the core's `ball` region is `disc`)
+        let variant = rule::ANY_PARENT
+            .iter()
+            .find(|(rust, _)| *rust == variant)
+            .map_or(variant, |(_, js)| js);
         self.inner
             .serialize_newtype_variant(name, index, variant, &Renamed { value, parent })
     }
@@ -389,6 +395,16 @@ mod tests {
         let text = json(value);
         let keys: Vec<&str> = text.split('"').skip(1).step_by(2).collect();
         keys.join(",")
+    }
+
+    #[test]
+    fn renamed_writes_a_core_ball_region_as_a_disc() {
+        let disc = fisst::regions::Region::ball(&[1.0, 2.0], 3.0, "r").unwrap();
+        let both = fisst::regions::Region::union(vec![disc.clone(), disc], "r").unwrap();
+        assert_eq!(
+            json(&both),
+            r#"{"union":[{"disc":{"center":[1.0,2.0],"radius":3.0}},{"disc":{"center":[1.0,2.0],"radius":3.0}}]}"#
+        );
     }
 
     #[test]

@@ -10,7 +10,7 @@ use nalgebra::{DMatrix, DVector};
 use crate::error::{Error, Result};
 use crate::filters::{
     BernoulliFilterOptions, Birth, Clutter, ClutterDensity, Detection, LinearGaussianTransition,
-    Splitting, default_reduction,
+    Splitting, default_mcmc_moves, default_particles, default_reduction,
 };
 use crate::gaussian::{Gaussian, GaussianMixture, normal};
 use crate::math::fns;
@@ -451,5 +451,106 @@ impl AirportScenario {
             .iter()
             .filter_map(|&a| self.anchors[a].disc().ok())
             .collect()
+    }
+}
+
+/// The filter configuration of the airport example as a caller passes it to either filter
+/// (`GmBernoulliFilter`, `ParticleBernoulliFilter`): [`AirportScenario::config`]'s model
+/// (Section V-C of `001_…`) with the particle filter's size, moves and seed.
+#[derive(Clone, Debug)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct AirportFilterConfig {
+    /// The initial existence probability r_{0|0} ∈ [0, 1].
+    pub existence: f64,
+    /// The initial spatial density p_{0|0}, a Gaussian mixture.
+    pub mixture: GaussianMixture,
+    /// The motion model (70)–(71): transition matrix F and process noise covariance Q.
+    pub transition: LinearGaussianTransition,
+    /// The survival probability p_S ∈ [0, 1]: the probability that the person stays one more
+    /// step.
+    pub survival: f64,
+    /// Object birth: the birth probability p_b and birth density b(x).
+    pub birth: Birth,
+    /// The number n_s of position components: 2 (x, y).
+    pub position_dims: usize,
+    /// Detection: detection probability p_D = 0.9 inside the field of view S.
+    pub detection: Detection,
+    /// Clutter: rate λ_c = 0.25 false reports per scan, density c̃ = 1/10 (one of ten
+    /// anchors).
+    pub clutter: Clutter,
+    /// The exclusion regions the person cannot occupy.
+    pub exclusions: Vec<Region>,
+    /// Particle filter: the number of particles N ([`default_particles`]).
+    pub particles: usize,
+    /// Particle filter: MCMC moves per update ([`default_mcmc_moves`]).
+    pub mcmc_moves: usize,
+    /// The scenario's seed, for the particle filter.
+    pub seed: u64,
+}
+
+/// The airport example of Section V-C of `001_…` (Figs. 6–8) as a result
+/// (`airportScenario`): [`AirportScenario`] with the concourse as a region, the filter
+/// configuration ready for both filters, and the seed.
+#[derive(Clone, Debug)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct AirportScenarioReport {
+    /// The ten anchors, in report-index order.
+    pub anchors: Vec<Anchor>,
+    /// The exclusion regions (four rectangles, then the exterior of the concourse).
+    pub exclusions: Vec<Region>,
+    /// The concourse, a box [0, 300] × [0, 30].
+    pub concourse: Region,
+    /// The field of view S: the union of the anchors' association discs.
+    pub fov: Region,
+    /// The report interval T = 15 s.
+    pub dt: f64,
+    /// The configuration of both filters.
+    pub config: AirportFilterConfig,
+    /// The person's true state at each report time.
+    pub truth: Vec<TruthPoint>,
+    /// The reported anchor indices per step.
+    pub reports: Vec<Vec<usize>>,
+    /// The anchor of the true report per step (`None`: missed).
+    pub true_reports: Vec<Option<usize>>,
+    /// Whether the person was in S per step.
+    pub in_fov: Vec<bool>,
+    /// The seed used.
+    pub seed: u64,
+}
+
+impl AirportScenarioReport {
+    /// [`airport_scenario`]`(seed, steps)` as a report.
+    ///
+    /// # Errors
+    /// Those of [`airport_scenario`] (`steps` above [`MAX_AIRPORT_STEPS`]).
+    pub fn new(seed: u64, steps: usize) -> Result<Self> {
+        let sc = airport_scenario(seed, steps)?;
+        let c = sc.config;
+        Ok(Self {
+            anchors: sc.anchors,
+            exclusions: sc.exclusions,
+            concourse: Region::from(sc.concourse),
+            fov: sc.fov,
+            dt: sc.dt,
+            config: AirportFilterConfig {
+                existence: c.existence,
+                mixture: c.mixture,
+                transition: c.transition,
+                survival: c.survival,
+                birth: c.birth,
+                position_dims: c.position_dims,
+                detection: c.detection,
+                clutter: c.clutter,
+                exclusions: c.exclusions,
+                particles: default_particles(),
+                mcmc_moves: default_mcmc_moves(),
+                seed,
+            },
+            truth: sc.truth,
+            reports: sc.reports,
+            true_reports: sc.true_reports,
+            in_fov: sc.in_fov,
+            seed,
+        })
     }
 }

@@ -11,7 +11,11 @@ use crate::math::sum::sum;
 
 /// How the means of an optimised split are constrained.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "lowercase")
+)]
 pub enum Spacing {
     /// Symmetric, equally spaced means m̃_j = δ (j − (R − 1)/2): the family of Table I of
     /// `001_…` (its outer/inner mean ratio is exactly 3 for R = 4). Parameters: σ̃, δ and

@@ -68,6 +68,7 @@ mod objective;
 mod optimise;
 mod partition;
 mod recursive;
+mod request;
 mod variance_preserving;
 
 pub use budget::{
@@ -88,6 +89,11 @@ pub use partition::{Partition, PartitionAccuracy, partition, partition_accuracy}
 pub use recursive::{
     MAX_DEPTH_LIMIT, MAX_GRID_POINTS, SplitOptions, SplitOutcome, SplitStop, defaults,
     split_for_region, split_for_regions,
+};
+pub use request::{
+    NegativeInformationOptions, NegativeInformationReport, NegativeInformationResult,
+    NegativeInformationStepReport, SplitForRegionsOptions, SplitForRegionsReport,
+    SplitLibraryOptions, SplitLibraryReport, split_for_regions_report,
 };
 #[cfg(test)]
 pub(crate) use variance_preserving::optimise as variance_preserving_optimise;

@@ -114,7 +114,11 @@ pub mod defaults {
 
 /// Which cap stopped the recursion early.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "camelCase")
+)]
 pub enum SplitStop {
     /// A component still straddled a boundary at [`SplitOptions::max_depth`].
     MaxDepth,

@@ -12,6 +12,7 @@ from ._fisst import (
     Result,
     __version__,
     bernoulli_estimate,
+    airport_scenario,
     bernoulli_loss_curve,
     bernoulli_threshold_curve,
     compare_schemes,
@@ -39,6 +40,7 @@ from ._fisst import (
     multi_bernoulli_leave_one_out,
     multi_bernoulli_point_estimate,
     multi_object_likelihood,
+    negative_information_scenario,
     ospa,
     ospa_series,
     ParticleBernoulliFilter,
@@ -46,6 +48,8 @@ from ._fisst import (
     probability_outside_ball,
     reduce_mixture,
     SensorControlRun,
+    split_for_regions,
+    split_library,
     uospa,
 )
 
@@ -53,6 +57,7 @@ __all__ = [
     "Result",
     "__version__",
     "bernoulli_estimate",
+    "airport_scenario",
     "bernoulli_loss_curve",
     "bernoulli_threshold_curve",
     "compare_schemes",
@@ -80,6 +85,7 @@ __all__ = [
     "multi_bernoulli_leave_one_out",
     "multi_bernoulli_point_estimate",
     "multi_object_likelihood",
+    "negative_information_scenario",
     "ospa",
     "ospa_series",
     "ParticleBernoulliFilter",
@@ -87,5 +93,7 @@ __all__ = [
     "probability_outside_ball",
     "reduce_mixture",
     "SensorControlRun",
+    "split_for_regions",
+    "split_library",
     "uospa",
 ]

@@ -1,7 +1,7 @@
 """Type stubs of the compiled module ``fisst._fisst`` (checked by ``python -m mypy.stubtest fisst``)."""
 
 from collections.abc import Callable, Iterator, Mapping, Sequence
-from typing import Any, TypeAlias, final
+from typing import Any, Literal, TypeAlias, final
 
 import numpy as np
 import numpy.typing as npt
@@ -11,6 +11,8 @@ __all__ = [
     "Result",
     "__version__",
     "bernoulli_estimate",
+
+    "airport_scenario",
     "bernoulli_loss_curve",
     "bernoulli_threshold_curve",
     "compare_schemes",
@@ -38,6 +40,7 @@ __all__ = [
     "multi_bernoulli_leave_one_out",
     "multi_bernoulli_point_estimate",
     "multi_object_likelihood",
+    "negative_information_scenario",
     "ospa",
     "ospa_series",
     "ParticleBernoulliFilter",
@@ -45,6 +48,8 @@ __all__ = [
     "probability_outside_ball",
     "reduce_mixture",
     "SensorControlRun",
+    "split_for_regions",
+    "split_library",
     "uospa",
     "_campaign_airport_check",
     "_campaign_airport_run",
@@ -308,3 +313,22 @@ def mmuc_estimate(*, density: dict[str, Any], radius: float) -> Result: ...
 def multi_bernoulli_point_estimate(
     *, components: Sequence[dict[str, Any]], radius: float, costs: _Costs
 ) -> Result: ...
+
+# splitting and the worked examples of paper 001
+def split_library(*, components: int, lambda_: float, spacing: Literal["equal", "free"] = "equal") -> Result: ...
+def split_for_regions(
+    *,
+    mixture: Sequence[dict[str, Any]],
+    regions: Sequence[_Region],
+    position_dims: int = 2,
+    min_weight: float = 0.01,
+    components: int = 3,
+    lambda_: float = 0.001,
+    spacing: Literal["equal", "free"] = "equal",
+    grid_bound: float = 2.0,
+    grid_points: int = 15,
+    max_depth: int = 16,
+    max_components: int = 10000,
+) -> Result: ...
+def negative_information_scenario(*, step: int | None = None) -> Result: ...
+def airport_scenario(*, seed: int | None = None, steps: int = 60) -> Result: ...
