@@ -11,8 +11,8 @@ docstring (``help(fisst.gospa)``).
 from ._fisst import (
     Result,
     __version__,
-    bernoulli_estimate,
     airport_scenario,
+    bernoulli_estimate,
     bernoulli_loss_curve,
     bernoulli_threshold_curve,
     compare_schemes,
@@ -56,8 +56,8 @@ from ._fisst import (
 __all__ = [
     "Result",
     "__version__",
-    "bernoulli_estimate",
     "airport_scenario",
+    "bernoulli_estimate",
     "bernoulli_loss_curve",
     "bernoulli_threshold_curve",
     "compare_schemes",
