@@ -201,7 +201,9 @@ struct GmState {
 /// Bernoulli (r, p(x)) and its models. ``GmBernoulliFilter(*, existence, mixture, transition,
 /// survival, birth, position_dims, detection, clutter, likelihood=None, splitting=...,
 /// reduction=..., exclusions=[])``, the core's ``BernoulliFilterOptions`` (Rust names; the
-/// transition ``{"F", "Q"}``, the likelihood ``{"H", "R"}``).
+/// transition ``{"F", "Q"}``, the likelihood ``{"H", "R"}``). The particle filter's keys
+/// (``particles``, ``birth_particles``, ``mcmc_moves``, ``seed``) are read and ignored, so that
+/// one configuration makes both filters: ``GmBernoulliFilter(**airport_scenario().config)``.
 ///
 /// ``predict()`` applies (40)–(49); ``update(reports)`` the imprecise update for a list of
 /// region reports (``[]`` is an empty scan: the non-detection update, never skipped), and
@@ -222,7 +224,17 @@ impl GmBernoulliFilter {
     #[new]
     #[pyo3(signature = (**config))]
     fn new(py: Python<'_>, config: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
-        let options: BernoulliFilterOptions = from_kwargs(py, "GmBernoulliFilter", config)?;
+        // The particle filter's keys of a configuration shared by both filters (as
+        // `airport_scenario().config`): read as ParticleBernoulliFilter reads them, so that a
+        // wrong kind of value is still an error, then ignored, as the npm package does.
+        let (particle, rest) = split(py, config, &PARTICLE_KEYS)?;
+        if !particle.is_empty() {
+            if particle.get_item("seed")?.is_none_or(|s| s.is_none()) {
+                particle.set_item("seed", 0)?;
+            }
+            let _: ParticleOptions = from_kwargs(py, "GmBernoulliFilter", Some(&particle))?;
+        }
+        let options: BernoulliFilterOptions = from_kwargs(py, "GmBernoulliFilter", Some(&rest))?;
         let filter = CoreGm::new(options.clone()).map_err(to_py)?;
         Ok(Self {
             inner: Mutex::new(GmState {

@@ -286,3 +286,29 @@ def test_bounds_monte_carlo_attains_the_bound_31():
 def test_bad_airport_and_bounds_settings_name_the_setting(experiment, settings, error, message):
     with pytest.raises(error, match=message):
         fc.run(experiment, runs=1, seed=1, client="serial", progress=False, **settings)
+
+
+def test_an_airport_run_is_the_public_filters_on_airport_scenario():
+    """A campaign's airport run is what a user gets from the public API: the scenario of the run
+    seed, GmBernoulliFilter and ParticleBernoulliFilter made from its one config (the particle
+    keys ignored by the GM filter, as in the npm package), updated with each step's reports."""
+    seed = fc.run_seeds(9, 1)[0]
+    steps, particles = 12, 300
+    sc = fisst.airport_scenario(seed=seed, steps=steps)
+    config = {**dict(sc.config), "particles": particles}
+    gm, pf = fisst.GmBernoulliFilter(**config), fisst.ParticleBernoulliFilter(**config)
+    rows = {"gm": [], "particle": []}
+    for k in range(steps):
+        reports = [{"ball": {"center": sc.anchors[a].position, "radius": sc.anchors[a].radius}} for a in sc.reports[k]]
+        for name, f in (("gm", gm), ("particle", pf)):
+            f.predict()
+            f.update(reports)
+            e = f.estimate()
+            rows[name].append((e.existence, float(np.hypot(*(sc.truth[k].state[:2] - e.mean[:2])))))
+    c = fc.run("airport", runs=1, seed=9, client="serial", progress=False, steps=steps, particles=particles)
+    for name in ("gm", "particle"):
+        t = c.table[c.table["filter"] == name]
+        assert t["existence"].tolist() == [r[0] for r in rows[name]]
+        np.testing.assert_allclose(t["position_error"], [r[1] for r in rows[name]], rtol=1e-12)
+    with pytest.raises(TypeError, match=r"particles"):
+        fisst.GmBernoulliFilter(**{**dict(sc.config), "particles": "many"})
