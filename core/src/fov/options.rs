@@ -170,7 +170,7 @@ pub struct Grid {
 }
 
 fn axis([min, max, count]: [f64; 3], name: &str) -> Result<GridAxis> {
-    if count.fract() != 0.0 || !(1.0..=MAX_GRID_AXIS as f64).contains(&count) {
+    if libm::trunc(count) != count || !(1.0..=MAX_GRID_AXIS as f64).contains(&count) {
         return Err(Error::parameter(
             alloc::format!("{name}[2]"),
             count,
