@@ -5,6 +5,13 @@
 
 use pyo3::prelude::*;
 
+/// mimalloc as the extension's allocator: allocation does not change a result, but glibc's
+/// malloc in a host process that has freed large blocks (a SciPy or numpy call before) maps
+/// and unmaps a metric's working memory on every call (GOSPA at n = 1,000 took 234 µs
+/// instead of 159 µs for the next twenty calls after SciPy's).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 mod bernoulli;
 mod bounds;
 mod campaign;
