@@ -30,8 +30,23 @@ def _value(text: str, default: Any) -> Any:
     return json.loads(text)
 
 
+def _shown(value: Any) -> str:
+    """A default as it is written on the command line."""
+    if isinstance(value, list):
+        return ",".join(_shown(v) for v in value)
+    return f"{value:g}" if isinstance(value, float) else str(value)
+
+
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m fisst.campaign", description=__doc__)
+    settings_help = "\n".join(
+        f"  {name}: " + " ".join(f"--{k.replace('_', '-')} {_shown(v)}" for k, v in e.defaults.items())
+        for name, e in EXPERIMENTS.items()
+    )
+    parser = argparse.ArgumentParser(
+        prog="python -m fisst.campaign", description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog="settings and their defaults (lists comma-separated):\n" + settings_help,
+    )
     parser.add_argument("experiment", choices=sorted(EXPERIMENTS))
     parser.add_argument("--runs", type=int, required=True)
     parser.add_argument("--seed", type=int, default=1)
