@@ -147,7 +147,9 @@ pub fn _campaign_airport_run<'py>(
         EstimateOptions, FilterEstimate, GmBernoulliFilter, ParticleBernoulliFilter,
     };
     let o: AirportSettings = from_kwargs(py, "run", options)?;
-    o.check().map_err(to_py)?;
+    // the run's own filters check the particle settings: no throw-away filter per task
+    fisst::Error::check_range("steps", o.steps, 1, fisst::sim::airport::MAX_AIRPORT_STEPS)
+        .map_err(to_py)?;
     let steps = o.steps;
     let flat = py
         .detach(|| -> fisst::Result<Vec<f64>> {
