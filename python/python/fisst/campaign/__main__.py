@@ -39,7 +39,8 @@ def _shown(value: Any) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     settings_help = "\n".join(
-        f"  {name}: " + " ".join(f"--{k.replace('_', '-')} {_shown(v)}" for k, v in e.defaults.items())
+        f"  {name} ({e.title}):\n    "
+        + " ".join(f"--{k.replace('_', '-')} {_shown(v)}" for k, v in e.defaults.items())
         for name, e in EXPERIMENTS.items()
     )
     parser = argparse.ArgumentParser(

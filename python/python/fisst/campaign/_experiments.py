@@ -22,7 +22,6 @@ class Experiment:
     """One kind of campaign: its settings' defaults, its check, its one-run task and how its
     runs are summarised and drawn."""
 
-    name: str
     title: str
     defaults: Settings
     check: Callable[[Settings], None]
@@ -259,7 +258,6 @@ def bounds_plot(summary: pd.DataFrame, settings: Settings, runs: int, ax: Any = 
 
 EXPERIMENTS: dict[str, Experiment] = {
     "control": Experiment(
-        name="control",
         title="Fig. 3 of paper 004: sensor-control schemes, OSPA error per step",
         defaults=CONTROL_DEFAULTS,
         check=control_check,
@@ -269,7 +267,6 @@ EXPERIMENTS: dict[str, Experiment] = {
         plot=control_plot,
     ),
     "airport": Experiment(
-        name="airport",
         title="Section V-C of paper 001: both Bernoulli filters on the airport reports",
         defaults=AIRPORT_DEFAULTS,
         check=airport_check,
@@ -280,8 +277,7 @@ EXPERIMENTS: dict[str, Experiment] = {
         timing=("seconds",),
     ),
     "bounds": Experiment(
-        name="bounds",
-        title="Paper 002: the optimal detector-estimator's MSE against the bound (31)",
+        title="paper 002: the optimal detector-estimator's MSE against the bound (31)",
         defaults=BOUNDS_DEFAULTS,
         check=bounds_check,
         task=bounds_task,

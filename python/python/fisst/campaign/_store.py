@@ -5,6 +5,7 @@ a part is either whole or absent whatever stops the campaign."""
 
 from __future__ import annotations
 
+import io
 import json
 import os
 import re
@@ -86,12 +87,9 @@ def write_atomically(path: Path, data: bytes) -> None:
 
 def write_part(out: Path, run: int, frame: pd.DataFrame) -> None:
     """Writes the rows of run ``run`` as its part file, atomically."""
-    path = part_path(out, run)
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    frame.to_parquet(tmp, index=False)
-    with open(tmp, "rb") as f:
-        os.fsync(f.fileno())
-    os.replace(tmp, path)
+    buffer = io.BytesIO()
+    frame.to_parquet(buffer, index=False)
+    write_atomically(part_path(out, run), buffer.getvalue())
 
 
 def read_parts(out: Path, runs: Sequence[int]) -> list[pd.DataFrame]:
