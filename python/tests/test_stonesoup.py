@@ -157,3 +157,35 @@ def test_conversions():
     assert sum(len(v[0]) for v in grouped.values()) == len(states)
     with pytest.raises(TypeError, match=r"objects\[0\] must be a State"):
         fs.extract_states([1])
+
+
+def naive_by_time(objects):
+    """The grouping points_by_time gives, by a plain loop over the states."""
+    out = {}
+    for i, obj in enumerate(objects):
+        states = list(obj.last_timestamp_generator()) if isinstance(obj, (Track, GroundTruthPath)) else [obj]
+        for s in states:
+            pts, ids = out.setdefault(s.timestamp, ([], []))
+            pts.append(np.asarray(s.state_vector, dtype=float).ravel())
+            ids.append(i)
+    return out
+
+
+@pytest.mark.parametrize("shuffle", [False, True])
+def test_points_by_time_flat_states_and_mixed_objects(shuffle):
+    rng = np.random.default_rng(11)
+    truths, tracks = scenario(steps=12, objects=4)
+    flat = [s for path in truths for s in path]
+    if shuffle:
+        flat = [flat[i] for i in rng.permutation(len(flat))]
+    mixed = [*tracks, *flat[:5]]  # sequences of states and single states together
+    for objects in (flat, mixed):
+        got, want = fs.points_by_time(objects), naive_by_time(objects)
+        assert list(got) == list(want)  # timestamps in order of first appearance
+        for t, (pts, ids) in got.items():
+            np.testing.assert_array_equal(pts, np.array(want[t][0]))
+            np.testing.assert_array_equal(ids, want[t][1])
+    states, ids = fs.extract_states(flat)
+    assert states == flat and ids == list(range(len(flat)))
+    with pytest.raises(TypeError, match=r"objects\[1\] must be a State"):
+        fs.extract_states([flat[0], "not a state"])

@@ -25,6 +25,7 @@ Differences, on purpose:
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
+from operator import attrgetter, itemgetter
 from typing import Any
 
 import numpy as np
@@ -61,19 +62,23 @@ def extract_states(objects: Iterable[Any]) -> tuple[list[Any], list[int]]:
     """The states of ``objects`` (tracks, ground-truth paths or single states) and, for each,
     the index of the object it came from: the last state at each timestamp of a track or path,
     as Stone Soup's own metric generators take them."""
+    elements = list(objects)
+    types = set(map(type, elements))
+    kinds: dict[type, bool] = {}  # per type: a sequence of states (True) or one state (False)
+    for element_type in types:
+        if issubclass(element_type, StateMutableSequence) and not issubclass(element_type, State):
+            kinds[element_type] = True
+        elif issubclass(element_type, State):
+            kinds[element_type] = False
+    if len(kinds) == len(types) and not any(kinds.values()):
+        # single states only (a flat list of states): no Python loop per element
+        return elements, list(range(len(elements)))
     states: list[Any] = []
     ids: list[int] = []
-    kinds: dict[type, bool] = {}  # per type: a sequence of states (True) or one state (False)
-    for i, element in enumerate(list(objects)):
+    for i, element in enumerate(elements):
         kind = kinds.get(type(element))
         if kind is None:
-            if isinstance(element, StateMutableSequence) and not isinstance(element, State):
-                kind = True
-            elif isinstance(element, State):
-                kind = False
-            else:
-                raise TypeError(f"objects[{i}] must be a State, a Track or a GroundTruthPath, got {type(element).__name__}")
-            kinds[type(element)] = kind
+            raise TypeError(f"objects[{i}] must be a State, a Track or a GroundTruthPath, got {type(element).__name__}")
         if kind:
             got = list(element.last_timestamp_generator())
             states.extend(got)
@@ -89,16 +94,16 @@ def _reader(states: Sequence[Any], name: str) -> list[Any]:
     instance dict under the property's ``_property_name``; reading it there skips the
     descriptor call (a third of the time of a 60,000-state scenario). Any other case (a
     property with a getter, mixed types) goes through ``getattr``."""
-    types = {type(s) for s in states}
+    types = set(map(type, states))
     if len(types) == 1:
         prop = getattr(next(iter(types)), name, None)
         key = getattr(prop, "_property_name", None)
         if isinstance(prop, Property) and getattr(prop, "_getter", None) is None and key:
             try:
-                return [s.__dict__[key] for s in states]
-            except (KeyError, AttributeError):
+                return list(map(itemgetter(key), map(vars, states)))
+            except (KeyError, TypeError):
                 pass
-    return [getattr(s, name) for s in states]
+    return list(map(attrgetter(name), states))
 
 
 def _vectors(states: Sequence[Any]) -> np.ndarray:
@@ -106,7 +111,7 @@ def _vectors(states: Sequence[Any]) -> np.ndarray:
     does) as one ``(n, d)`` float64 array."""
     if not states:
         return np.empty((0, 0))
-    if any(hasattr(t, "mean") for t in {type(s) for s in states}):
+    if any(hasattr(t, "mean") for t in set(map(type, states))):
         columns = [getattr(s, "mean", s.state_vector) for s in states]
     else:
         columns = _reader(states, "state_vector")
@@ -138,16 +143,21 @@ def points_by_time(
     if not states:
         return {}
     points = state_points(states, mapping)
-    # one code per distinct timestamp, in order of first appearance; a stable sort by code
-    # groups the states without a Python loop per group
-    index: dict[Any, int] = {}
-    codes = np.fromiter((index.setdefault(t, len(index)) for t in _reader(states, "timestamp")), dtype=np.intp, count=len(states))
-    order = np.argsort(codes, kind="stable")
-    bounds = np.cumsum(np.bincount(codes, minlength=len(index)))[:-1]
+    # one code per distinct timestamp, in order of first appearance; the states in order of
+    # their codes (as given when already grouped, else one stable sort), then one slice (a view)
+    # per timestamp: no Python loop over the states and no copy per group
+    stamps = _reader(states, "timestamp")
+    index = {t: i for i, t in enumerate(dict.fromkeys(stamps))}
+    codes = np.fromiter(map(index.__getitem__, stamps), dtype=np.intp, count=len(states))
     id_array = np.asarray(ids, dtype=np.int64)
+    if np.any(codes[1:] < codes[:-1]):
+        order = np.argsort(codes, kind="stable")
+        points, id_array = points[order], id_array[order]
+    counts = np.bincount(codes, minlength=len(index))
+    ends = np.cumsum(counts)
     return {
-        t: (points[group], id_array[group])
-        for t, group in zip(index, np.split(order, bounds))
+        t: (points[start:end], id_array[start:end])
+        for t, start, end in zip(index, (ends - counts).tolist(), ends.tolist())
     }
 
 
