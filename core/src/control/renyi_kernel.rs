@@ -438,7 +438,12 @@ impl GroupScratch {
                 *fq = ko - 0.5 * v * v;
             }
             for x in row.iter_mut() {
-                *x = if *x < cut { 0.0 } else { exp(*x) };
+                // `math::exp::exp`: libm's bits, inline and vectorisable.
+                *x = if *x < cut {
+                    0.0
+                } else {
+                    crate::math::exp::exp(*x)
+                };
             }
         }
         likelihoods.scaled_likelihoods(g.n, lin_c, f, &mut self.out[..count]);

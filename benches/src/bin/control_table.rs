@@ -1,0 +1,64 @@
+//! Every sensor-control step a user waits for (issue 29, goal 2; paper 004, Algorithm 1 with
+//! the Rényi reward (17) at the paper's size, N = 750, M = 200, 17 actions): the first `steps`
+//! steps of each seed in `seeds`, each step timed on its own, on one thread.
+//!
+//! `RAYON_NUM_THREADS=1 target/release/control_table [first_seed=1] [last_seed=10] [steps=12]`
+//!
+//! Prints one row per seed (ms per step), the worst and the mean step, the load average, and a
+//! checksum of every step's rewards and action (FNV-1a over their bits) to show that a change
+//! left the numbers as they were. `benches/control_node.mjs table` prints the same table
+//! through the npm package in Node. For instruction counts of one step add
+//! `valgrind --tool=callgrind --toggle-collect='*timed_step*'` and a single seed with the step
+//! (`control_table 1 1 4` counts steps 1–4 of seed 1).
+use fisst::control::{ControlOptions, ControlRun, Scheme, StepOutcome};
+use std::hint::black_box;
+use std::time::Instant;
+
+#[inline(never)]
+fn timed_step(run: &mut ControlRun) -> StepOutcome {
+    black_box(run.step().unwrap())
+}
+
+fn fnv(hash: &mut u64, bits: u64) {
+    for byte in bits.to_le_bytes() {
+        *hash ^= byte as u64;
+        *hash = hash.wrapping_mul(0x100_0000_01b3);
+    }
+}
+
+fn main() {
+    let args: Vec<u64> = std::env::args()
+        .skip(1)
+        .map(|a| a.parse().expect("integer arguments"))
+        .collect();
+    let get = |i: usize, d: u64| args.get(i).copied().unwrap_or(d);
+    let (first, last, steps) = (get(0, 1), get(1, 10), get(2, 12) as usize);
+    let mut hash = 0xcbf2_9ce4_8422_2325u64;
+    let mut all = Vec::new();
+    println!("paper 004, Renyi scheme, N = 750, M = 200: ms per step (one thread)");
+    for seed in first..=last {
+        let mut run = ControlRun::new(ControlOptions::paper(Scheme::Renyi, 1000), seed).unwrap();
+        let mut row = Vec::with_capacity(steps);
+        for _ in 0..steps {
+            let t = Instant::now();
+            let out = timed_step(&mut run);
+            row.push(t.elapsed().as_secs_f64() * 1e3);
+            for r in &out.rewards {
+                fnv(&mut hash, r.to_bits());
+            }
+            fnv(&mut hash, out.action.index as u64);
+        }
+        let cells: Vec<String> = row.iter().map(|ms| format!("{ms:6.1}")).collect();
+        println!("seed {seed:>2}: {}", cells.join(" "));
+        all.extend(row);
+    }
+    let worst = all.iter().cloned().fold(0.0, f64::max);
+    let mean = all.iter().sum::<f64>() / all.len() as f64;
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    println!(
+        "worst {worst:.1} ms, mean {mean:.1} ms over {} steps; load average {}",
+        all.len(),
+        load.split_whitespace().next().unwrap_or("?")
+    );
+    println!("checksum of rewards and actions: {hash:016x}");
+}
