@@ -1,19 +1,79 @@
-// One sensor-control step of paper 004 in Node (the npm package, single-threaded wasm), at the
-// paper's size (N = 750, M = 200, 17 actions), after 5 warm-up steps: compare with the native
-// criterion bench `cargo bench --bench control` (`control_step/<scheme>`).
+// Sensor control of paper 004 in Node (the npm package, single-threaded wasm), at the paper's
+// size (N = 750, M = 200, 17 actions).
+//
 //   node benches/control_node.mjs [scheme=renyi] [timedSteps=5]
+//     one step after 5 warm-up steps of seed 3: compare with the native criterion bench
+//     `cargo bench --bench control` (`control_step/<scheme>`);
+//   node benches/control_node.mjs table [firstSeed=1] [lastSeed=10] [steps=12]
+//     every step a user waits for (issue 29, goal 2): the first `steps` steps of each seed,
+//     each timed on its own (the first seed's run is repeated once untimed as the warm-up), the
+//     same table as the native `RAYON_NUM_THREADS=1 target/release/control_table` with the same
+//     checksum of rewards and actions (FNV-1a over their bits), so the two runs can be compared
+//     row by row.
+import * as os from 'node:os';
 import * as fisst from '../wasm/pkg/node.js';
 
-const scheme = process.argv[2] ?? 'renyi';
-const timed = Number(process.argv[3] ?? 5);
-const run = new fisst.SensorControlRun({ seed: 3, scheme, particles: 750, futureScans: 200, steps: 1000 });
-for (let k = 0; k < 5; k++) run.step();
-const times = [];
-for (let k = 0; k < timed; k++) {
-  const t0 = process.hrtime.bigint();
-  run.step();
-  times.push(Number(process.hrtime.bigint() - t0) / 1e6);
+function fnv(hash, value) {
+  const bytes = new Uint8Array(new Float64Array([value]).buffer);
+  for (const b of bytes) {
+    hash ^= BigInt(b);
+    hash = BigInt.asUintN(64, hash * 0x100000001b3n);
+  }
+  return hash;
 }
-run.free();
-times.sort((a, b) => a - b);
-console.log(`${scheme}: median ${times[Math.floor(times.length / 2)].toFixed(1)} ms per step over ${timed} steps (min ${times[0].toFixed(1)} ms)`);
+
+function fnvInt(hash, n) {
+  const bytes = new Uint8Array(new BigUint64Array([BigInt(n)]).buffer);
+  for (const b of bytes) {
+    hash ^= BigInt(b);
+    hash = BigInt.asUintN(64, hash * 0x100000001b3n);
+  }
+  return hash;
+}
+
+function table(first, last, steps) {
+  const options = (seed) => ({ seed, scheme: 'renyi', particles: 750, futureScans: 200, steps: 1000 });
+  const warm = new fisst.SensorControlRun(options(first));
+  for (let k = 0; k < steps; k++) warm.step();
+  warm.free();
+  let hash = 0xcbf29ce484222325n;
+  const all = [];
+  console.log('paper 004, Renyi scheme, N = 750, M = 200: ms per step (Node, wasm, one thread)');
+  for (let seed = first; seed <= last; seed++) {
+    const run = new fisst.SensorControlRun(options(seed));
+    const row = [];
+    for (let k = 0; k < steps; k++) {
+      const t0 = process.hrtime.bigint();
+      const out = run.step();
+      row.push(Number(process.hrtime.bigint() - t0) / 1e6);
+      for (const r of out.rewards) hash = fnv(hash, r);
+      hash = fnvInt(hash, out.action.index);
+    }
+    run.free();
+    console.log(`seed ${String(seed).padStart(2)}: ${row.map((ms) => ms.toFixed(1).padStart(6)).join(' ')}`);
+    all.push(...row);
+  }
+  const worst = Math.max(...all);
+  const mean = all.reduce((a, b) => a + b, 0) / all.length;
+  console.log(`worst ${worst.toFixed(1)} ms, mean ${mean.toFixed(1)} ms over ${all.length} steps; load average ${os.loadavg()[0].toFixed(2)}`);
+  console.log(`checksum of rewards and actions: ${hash.toString(16).padStart(16, '0')}`);
+}
+
+if (process.argv[2] === 'table') {
+  const arg = (i, d) => Number(process.argv[i] ?? d);
+  table(arg(3, 1), arg(4, 10), arg(5, 12));
+} else {
+  const scheme = process.argv[2] ?? 'renyi';
+  const timed = Number(process.argv[3] ?? 5);
+  const run = new fisst.SensorControlRun({ seed: 3, scheme, particles: 750, futureScans: 200, steps: 1000 });
+  for (let k = 0; k < 5; k++) run.step();
+  const times = [];
+  for (let k = 0; k < timed; k++) {
+    const t0 = process.hrtime.bigint();
+    run.step();
+    times.push(Number(process.hrtime.bigint() - t0) / 1e6);
+  }
+  run.free();
+  times.sort((a, b) => a - b);
+  console.log(`${scheme}: median ${times[Math.floor(times.length / 2)].toFixed(1)} ms per step over ${timed} steps (min ${times[0].toFixed(1)} ms)`);
+}
