@@ -37,6 +37,7 @@ function table(first, last, steps) {
   for (let k = 0; k < steps; k++) warm.step();
   warm.free();
   let hash = 0xcbf29ce484222325n;
+  let actionsHash = hash;
   const all = [];
   console.log('paper 004, Renyi scheme, N = 750, M = 200: ms per step (Node, wasm, one thread)');
   for (let seed = first; seed <= last; seed++) {
@@ -48,6 +49,7 @@ function table(first, last, steps) {
       row.push(Number(process.hrtime.bigint() - t0) / 1e6);
       for (const r of out.rewards) hash = fnv(hash, r);
       hash = fnvInt(hash, out.action.index);
+      actionsHash = fnvInt(actionsHash, out.action.index);
     }
     run.free();
     console.log(`seed ${String(seed).padStart(2)}: ${row.map((ms) => ms.toFixed(1).padStart(6)).join(' ')}`);
@@ -56,7 +58,7 @@ function table(first, last, steps) {
   const worst = Math.max(...all);
   const mean = all.reduce((a, b) => a + b, 0) / all.length;
   console.log(`worst ${worst.toFixed(1)} ms, mean ${mean.toFixed(1)} ms over ${all.length} steps; load average ${os.loadavg()[0].toFixed(2)}`);
-  console.log(`checksum of rewards and actions: ${hash.toString(16).padStart(16, '0')}`);
+  console.log(`checksum of rewards and actions: ${hash.toString(16).padStart(16, '0')}; of the actions: ${actionsHash.toString(16).padStart(16, '0')}`);
 }
 
 if (process.argv[2] === 'table') {

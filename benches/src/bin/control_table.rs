@@ -5,11 +5,21 @@
 //! `RAYON_NUM_THREADS=1 target/release/control_table [first_seed=1] [last_seed=10] [steps=12]`
 //!
 //! Prints one row per seed (ms per step), the worst and the mean step, the load average, and a
-//! checksum of every step's rewards and action (FNV-1a over their bits) to show that a change
+//! checksum of every step's rewards and action and one of the actions alone (FNV-1a over their bits) to show that a change
 //! left the numbers as they were. `benches/control_node.mjs table` prints the same table
 //! through the npm package in Node. For instruction counts of one step add
 //! `valgrind --tool=callgrind --toggle-collect='*timed_step*'` and a single seed with the step
 //! (`control_table 1 1 4` counts steps 1–4 of seed 1).
+//!
+//! Measured (issue 29, 2026-12-04, load average 5–6 from three builds): seeds 1–10, steps
+//! 1–12, one native thread: worst 402–476 ms (seed 1, step 4), mean 91–124 ms; seed 1's first
+//! four steps are 18.2e9 instructions (callgrind), 40 % in the subset sum over matchings
+//! (`smc::matchings`), 27 % in the kernel's exps (perf, line tables). Two inline exps were
+//! tried in the kernel and measured no faster (so not kept): fdlibm's steps with selects
+//! (libm's bits: 18.9e9 Ir) and a degree-13 Taylor polynomial without division (≤ 0.87 ulp,
+//! the actions of all 120 steps unchanged: 17.7e9 Ir, 18.4e9 with the range test hoisted);
+//! rustc leaves the kernel's exp loop scalar (no `mulpd`) though the same loop alone
+//! vectorises.
 use fisst::control::{ControlOptions, ControlRun, Scheme, StepOutcome};
 use std::hint::black_box;
 use std::time::Instant;
@@ -34,6 +44,7 @@ fn main() {
     let get = |i: usize, d: u64| args.get(i).copied().unwrap_or(d);
     let (first, last, steps) = (get(0, 1), get(1, 10), get(2, 12) as usize);
     let mut hash = 0xcbf2_9ce4_8422_2325u64;
+    let mut actions_hash = hash;
     let mut all = Vec::new();
     println!("paper 004, Renyi scheme, N = 750, M = 200: ms per step (one thread)");
     for seed in first..=last {
@@ -47,6 +58,7 @@ fn main() {
                 fnv(&mut hash, r.to_bits());
             }
             fnv(&mut hash, out.action.index as u64);
+            fnv(&mut actions_hash, out.action.index as u64);
         }
         let cells: Vec<String> = row.iter().map(|ms| format!("{ms:6.1}")).collect();
         println!("seed {seed:>2}: {}", cells.join(" "));
@@ -60,5 +72,5 @@ fn main() {
         all.len(),
         load.split_whitespace().next().unwrap_or("?")
     );
-    println!("checksum of rewards and actions: {hash:016x}");
+    println!("checksum of rewards and actions: {hash:016x}; of the actions: {actions_hash:016x}");
 }

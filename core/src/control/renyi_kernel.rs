@@ -438,12 +438,7 @@ impl GroupScratch {
                 *fq = ko - 0.5 * v * v;
             }
             for x in row.iter_mut() {
-                // `math::exp::exp`: libm's bits, inline and vectorisable.
-                *x = if *x < cut {
-                    0.0
-                } else {
-                    crate::math::exp::exp(*x)
-                };
+                *x = if *x < cut { 0.0 } else { exp(*x) };
             }
         }
         likelihoods.scaled_likelihoods(g.n, lin_c, f, &mut self.out[..count]);

@@ -3,7 +3,6 @@
 //! and its samplers.
 
 pub mod assignment;
-pub mod exp;
 pub mod fns;
 pub mod geometry;
 pub mod log_sum;
