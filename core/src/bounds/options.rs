@@ -131,6 +131,98 @@ impl PriorOptions {
     }
 }
 
+/// The detection probability P_o(x) as written: a number (a constant) or
+/// `{"table": {x, probability}}` (linear interpolation, held constant beyond the end knots).
+/// It is checked when the observation is built ([`Detection::constant`],
+/// [`Detection::table`]), after the checks of its kind (a Gaussian vector prior and Example 2
+/// take a constant only).
+#[derive(Clone, Debug, PartialEq)]
+pub enum DetectionOptions {
+    /// A constant P_o ∈ [0, 1].
+    Constant(f64),
+    /// A table of P_o at the knots `x` (strictly increasing, 2 to 10,000).
+    Table {
+        /// The knots.
+        x: Vec<f64>,
+        /// P_o ∈ [0, 1] at each knot.
+        probability: Vec<f64>,
+    },
+}
+
+/// `{x, probability}`, the table of a [`DetectionOptions::Table`].
+#[derive(Serialize, Deserialize)]
+struct DetectionTable {
+    x: Vec<f64>,
+    probability: Vec<f64>,
+}
+
+/// `{"table": {x, probability}}`.
+#[derive(Serialize, Deserialize)]
+struct DetectionTableWrapper {
+    table: DetectionTable,
+}
+
+impl Serialize for DetectionOptions {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            DetectionOptions::Constant(p) => s.serialize_f64(*p),
+            DetectionOptions::Table { x, probability } => DetectionTableWrapper {
+                table: DetectionTable {
+                    x: x.clone(),
+                    probability: probability.clone(),
+                },
+            }
+            .serialize(s),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for DetectionOptions {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        use serde::de::{MapAccess, Visitor, value::MapAccessDeserializer};
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = DetectionOptions;
+            fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                f.write_str("a probability or { table: { x, probability } }")
+            }
+            fn visit_f64<E: serde::de::Error>(self, p: f64) -> Result<Self::Value, E> {
+                Ok(DetectionOptions::Constant(p))
+            }
+            // self-describing formats other than JavaScript's (JSON, Python) give integers
+            fn visit_i64<E: serde::de::Error>(self, p: i64) -> Result<Self::Value, E> {
+                Ok(DetectionOptions::Constant(p as f64))
+            }
+            fn visit_u64<E: serde::de::Error>(self, p: u64) -> Result<Self::Value, E> {
+                Ok(DetectionOptions::Constant(p as f64))
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Self::Value, A::Error> {
+                let w = DetectionTableWrapper::deserialize(MapAccessDeserializer::new(map))?;
+                Ok(DetectionOptions::Table {
+                    x: w.table.x,
+                    probability: w.table.probability,
+                })
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+impl DetectionOptions {
+    /// The checked [`Detection`]; errors name `detection_probability` or
+    /// `detection_probability.table.x[i]`, `….probability[i]` (relative to the observation).
+    ///
+    /// # Errors
+    /// [`Detection::constant`]'s or [`Detection::table`]'s.
+    pub fn detection(&self) -> Result<Detection> {
+        match self {
+            DetectionOptions::Constant(p) => Detection::constant(*p),
+            DetectionOptions::Table { x, probability } => Detection::table(x, probability)
+                .map_err(|e| e.within("detection_probability.table")),
+        }
+    }
+}
+
 /// The observation: P_o(x) and g(z|x) = N(z; gain·x + offset, noise_variance) for a 1D prior,
 /// or g(z|x) = N(z; H x + b, R) with H = `gain` (m rows of l numbers) and R = `noise_cov`
 /// (or, for m = 1, `noise_variance`) for a Gaussian vector prior (Section V).
@@ -138,7 +230,7 @@ impl PriorOptions {
 pub struct ObservationOptions {
     /// The detection probability P_o(x): a number in [0, 1] or `{"table": {x, probability}}`
     /// (a Gaussian vector prior takes a constant only).
-    pub detection_probability: Detection,
+    pub detection_probability: DetectionOptions,
     /// The gain a, a finite number (default 1); with a Gaussian vector prior H, m rows of l
     /// finite numbers (1 ≤ m ≤ 64; a number is H = [[a]] when l = 1). False alarms or clutter
     /// need m = 1: their densities are on the measurement line.
@@ -220,15 +312,15 @@ impl ObservationOptions {
                 vec![text("is required")],
             ));
         };
-        LinearGaussian::new(self.detection_probability, gain, offset, noise)
+        LinearGaussian::new(self.detection_probability.detection()?, gain, offset, noise)
     }
 
     /// The constant P_o this observation needs with a Gaussian vector prior or Example 2;
     /// `for_what` ends the error's sentence.
     fn constant_detection(&self, for_what: Vec<Phrase>) -> Result<f64> {
         match self.detection_probability {
-            Detection::Constant(p) => Ok(p),
-            Detection::Table { .. } => {
+            DetectionOptions::Constant(p) => Ok(p),
+            DetectionOptions::Table { .. } => {
                 let mut problem = vec![text("must be a number (a constant P_o) ")];
                 problem.extend(for_what);
                 Err(Error::form("detection_probability", true, problem))

@@ -73,7 +73,7 @@ fn eq13_a_scalar_prior_takes_numbers() {
     match ok.into_core().unwrap().observation {
         JdeObservation::Scalar(g) => assert_eq!(
             g,
-            LinearGaussian::new(Detection::Constant(0.9), 2.0, 1.0, 3.0).unwrap()
+            LinearGaussian::new(Detection::constant(0.9).unwrap(), 2.0, 1.0, 3.0).unwrap()
         ),
         JdeObservation::Vector(_) => panic!("a 1D prior has a scalar observation"),
     }
@@ -197,6 +197,28 @@ fn eq63_a_vector_prior_takes_rows_and_noise_cov() {
         assert_eq!(e.is_wrong_kind(), wrong_kind, "{e}");
         assert_eq!(e.to_string(), message);
     }
+    // the kind comes first: a bad table is still "a constant only" with a vector prior
+    let e = vector_with(
+        r#"{"detection_probability": {"table": {"x": [1, 0], "probability": [0.5, 0.9]}}, "gain": [[1, 0]]}"#,
+    )
+    .into_core()
+    .unwrap_err();
+    assert!(e.is_wrong_kind());
+    assert_eq!(e.field(), "observation.detection_probability");
+    // and with a 1D prior the table's own error names its knot
+    let e = scalar_with(
+        r#"{"detection_probability": {"table": {"x": [1, 0], "probability": [0.5, 0.9]}}, "noise_variance": 1}"#,
+    )
+    .into_core()
+    .unwrap_err();
+    assert_eq!(e.field(), "observation.detection_probability.table.x[1]");
+    let e = scalar_with(r#"{"detection_probability": 1.5, "noise_variance": 1}"#)
+        .into_core()
+        .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "observation.detection_probability must be a probability in [0, 1], got 1.5"
+    );
     let e = vector_with(r#"{"detection_probability": 0.8, "gain": [], "noise_variance": 1}"#)
         .into_core()
         .unwrap_err();
