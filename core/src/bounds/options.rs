@@ -232,7 +232,7 @@ pub struct ObservationOptions {
     /// (a Gaussian vector prior takes a constant only).
     pub detection_probability: DetectionOptions,
     /// The gain a, a finite number (default 1); with a Gaussian vector prior H, m rows of l
-    /// finite numbers (1 ≤ m ≤ 64; a number is H = [[a]] when l = 1). False alarms or clutter
+    /// finite numbers (1 ≤ m ≤ 64; a number is H = `[[a]]` when l = 1). False alarms or clutter
     /// need m = 1: their densities are on the measurement line.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gain: Option<ScalarOr<Vec<f64>>>,
