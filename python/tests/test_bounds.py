@@ -4,6 +4,8 @@ package's numbers for the same inputs, the defaults, the seed, numpy inputs, and
 name the argument (TypeError for a wrong kind of value, ValueError for a bad value)."""
 
 import pickle
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -155,3 +157,24 @@ def test_help_cites_the_paper():
     for f in (fisst.jde_bound, fisst.jde_monte_carlo):
         assert "paper 002" in f.__doc__
     assert "(63)" in fisst.jde_bound.__doc__ and "(11)" in fisst.jde_monte_carlo.__doc__
+
+
+def test_the_monte_carlo_releases_the_gil():
+    # while one thread runs 5·10^6 simulated scenes (GIL released), the main thread keeps
+    # running Python code, and the result is the same as in the main thread
+    done = threading.Event()
+    out = []
+
+    def work():
+        out.append(fisst.jde_monte_carlo(**SCALAR, samples=5_000_000, seed=1))
+        done.set()
+
+    t = threading.Thread(target=work)
+    t.start()
+    ticks = 0
+    while not done.is_set():
+        ticks += 1
+        time.sleep(0)
+    t.join()
+    assert ticks > 10, ticks
+    assert out[0] == fisst.jde_monte_carlo(**SCALAR, samples=5_000_000, seed=1)
