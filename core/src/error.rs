@@ -5,6 +5,7 @@
 //! so a Rust user and a JavaScript user read the same sentence.
 
 use alloc::string::String;
+use alloc::vec::Vec;
 use core::fmt;
 
 /// What went wrong, and where.
@@ -123,6 +124,46 @@ pub enum Error {
         /// True when positive semidefinite was required (a noise covariance Q).
         semidefinite: bool,
     },
+    /// A value in a form that does not fit the other options: a matrix where a 1D prior takes
+    /// a number, two alternatives both given, a required alternative missing, rows of the
+    /// wrong length. `problem` continues the sentence after the field, naming other fields by
+    /// [`Phrase::Path`] and [`Phrase::Name`] so that each binding renders them in its own
+    /// names ([`Error::map_paths`], [`Error::map_names`]).
+    Form {
+        /// The field, e.g. `observation.gain`.
+        what: String,
+        /// The rest of the sentence, e.g. "must be a number with a 1D prior".
+        problem: Vec<Phrase>,
+        /// A wrong kind of value (a `TypeError` in the bindings), not a wrong value.
+        wrong_kind: bool,
+    },
+}
+
+/// A piece of an [`Error::Form`]'s sentence.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Phrase {
+    /// Words, as they are.
+    Text(String),
+    /// Another field's full path (from the same root as the error's field), e.g.
+    /// `observation.noise_cov`: mapped with the field by [`Error::map_paths`].
+    Path(String),
+    /// A field's bare name, e.g. `noise_variance`: mapped by [`Error::map_names`] only.
+    Name(String),
+}
+
+impl Phrase {
+    /// [`Phrase::Text`].
+    pub fn text(s: impl Into<String>) -> Self {
+        Phrase::Text(s.into())
+    }
+    /// [`Phrase::Path`].
+    pub fn path(s: impl Into<String>) -> Self {
+        Phrase::Path(s.into())
+    }
+    /// [`Phrase::Name`].
+    pub fn name(s: impl Into<String>) -> Self {
+        Phrase::Name(s.into())
+    }
 }
 
 /// The shape of a field, as [`Error::ShapeMismatch`] says it.
@@ -256,13 +297,58 @@ impl Error {
         }
     }
 
+    /// An [`Error::Form`]: `what` in a form that does not fit, said by `problem`; a type
+    /// error when `wrong_kind`.
+    pub fn form(what: impl Into<String>, wrong_kind: bool, problem: Vec<Phrase>) -> Self {
+        Error::Form {
+            what: what.into(),
+            problem,
+            wrong_kind,
+        }
+    }
+
+    /// Whether this error is about the kind of a value (a `TypeError` in the bindings: an
+    /// [`Error::Form`] with `wrong_kind`) rather than its value.
+    pub fn is_wrong_kind(&self) -> bool {
+        matches!(
+            self,
+            Error::Form {
+                wrong_kind: true,
+                ..
+            }
+        )
+    }
+
     /// The same error with every field path it names mapped by `rename` (the field and, for
-    /// [`Error::ShapeMismatch`], the field it disagrees with).
+    /// [`Error::ShapeMismatch`], the field it disagrees with; for [`Error::Form`], the
+    /// [`Phrase::Path`]s).
     pub fn map_paths(mut self, mut rename: impl FnMut(&str) -> String) -> Self {
-        if let Error::ShapeMismatch { other, .. } = &mut self {
-            *other = rename(other);
+        match &mut self {
+            Error::ShapeMismatch { other, .. } => *other = rename(other),
+            Error::Form { problem, .. } => {
+                for p in problem.iter_mut() {
+                    if let Phrase::Path(path) = p {
+                        *path = rename(path);
+                    }
+                }
+            }
+            _ => {}
         }
         self.map_field(rename)
+    }
+
+    /// The same error with the bare field names of an [`Error::Form`]'s sentence
+    /// ([`Phrase::Name`]) mapped by `rename`: how a binding shows them in its own names
+    /// (`noise_variance` → `noiseVariance`). Other errors are unchanged.
+    pub fn map_names(mut self, mut rename: impl FnMut(&str) -> String) -> Self {
+        if let Error::Form { problem, .. } = &mut self {
+            for p in problem.iter_mut() {
+                if let Phrase::Name(name) = p {
+                    *name = rename(name);
+                }
+            }
+        }
+        self
     }
 
     /// The same error with the path of the field it disagrees with mapped by `rename` (only
@@ -297,6 +383,7 @@ impl Error {
             | Error::ShapeMismatch { what, .. }
             | Error::NotSymmetric { what, .. }
             | Error::NotDefinite { what, .. }
+            | Error::Form { what, .. }
             | Error::Unsupported { what, .. } => *what = rename(what),
         }
         self
@@ -333,6 +420,7 @@ impl Error {
             | Error::ShapeMismatch { what, .. }
             | Error::NotSymmetric { what, .. }
             | Error::NotDefinite { what, .. }
+            | Error::Form { what, .. }
             | Error::Count { what, .. } => what,
         }
     }
@@ -418,6 +506,23 @@ impl fmt::Display for Error {
                     f,
                     "{what} is not positive {semi}definite (smallest eigenvalue {smallest_eigenvalue})"
                 )
+            }
+            Error::Form { what, problem, .. } => {
+                // a sentence about a part of the field ("[1] has length …") continues its path
+                let joined = match problem.first() {
+                    Some(Phrase::Text(t)) => t.starts_with(['[', '.']),
+                    _ => false,
+                };
+                f.write_str(what)?;
+                if !joined {
+                    f.write_str(" ")?;
+                }
+                for p in problem {
+                    match p {
+                        Phrase::Text(s) | Phrase::Path(s) | Phrase::Name(s) => f.write_str(s)?,
+                    }
+                }
+                Ok(())
             }
         }
     }
@@ -524,6 +629,41 @@ mod tests {
             e.to_string(),
             "q is not positive semidefinite (smallest eigenvalue -0.25)"
         );
+    }
+
+    #[test]
+    fn form_names_other_fields_so_bindings_can_rename_them() {
+        let e = Error::form(
+            "observation.noise_variance",
+            true,
+            alloc::vec![
+                Phrase::text("and "),
+                Phrase::path("observation.noise_cov"),
+                Phrase::text(" are alternatives (use "),
+                Phrase::name("noise_cov"),
+                Phrase::text(")"),
+            ],
+        );
+        assert!(e.is_wrong_kind());
+        assert_eq!(
+            e.to_string(),
+            "observation.noise_variance and observation.noise_cov are alternatives (use noise_cov)"
+        );
+        let upper = |s: &str| s.to_uppercase();
+        let e = e
+            .within("options")
+            .map_paths(upper)
+            .map_names(|s| s.replace('_', "-"));
+        assert_eq!(
+            e.to_string(),
+            "OPTIONS.OBSERVATION.NOISE_VARIANCE and OPTIONS.OBSERVATION.NOISE_COV are alternatives (use noise-cov)"
+        );
+        let e = Error::form("gain[1]", false, alloc::vec![Phrase::text("has length 1")]);
+        assert!(!e.is_wrong_kind());
+        assert_eq!(e.to_string(), "gain[1] has length 1");
+        let e = Error::form("cov", false, alloc::vec![Phrase::text("[1] has length 1")]);
+        assert_eq!(e.to_string(), "cov[1] has length 1");
+        assert!(!Error::range("samples", 1, 2, 3).is_wrong_kind());
     }
 
     #[test]

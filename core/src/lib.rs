@@ -94,4 +94,4 @@ pub mod sim;
 pub mod smc;
 pub mod splitting;
 
-pub use error::{Error, Result};
+pub use error::{Error, Phrase, Result};

@@ -1,7 +1,9 @@
-//! The closed-form bounds on joint detection and estimation (paper 002, "error bounds for
-//! joint detection and estimation"): `jde_bound_no_clutter` (eq. (31)),
-//! `gaussian_fisher_information`, `jde_sequential_bound` (eqs. (35), (37)), `jde_example2`
-//! and `jde_example2_regularity` (Example 2), on the core's own `fisst::bounds` types.
+//! The bounds on joint detection and estimation (paper 002, Rezaeian & Vo, "Error bounds for
+//! joint detection and estimation of a single object with random finite set observation"):
+//! `jde_bound_no_clutter` (eq. (31)), `gaussian_fisher_information`, `jde_sequential_bound`
+//! (eqs. (35), (37)), `jde_bound` (Theorems 1 and 2, (63)–(72)), `jde_monte_carlo` (the risk
+//! (11) of the optimal joint detector-estimator), `jde_example2` and `jde_example2_regularity`
+//! (Example 2), on the core's own `fisst::bounds` types.
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -86,5 +88,77 @@ pub fn jde_example2<'py>(
 #[pyfunction]
 pub fn jde_example2_regularity(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
     let r = py.detach(bounds::example2_regularity);
+    result(py, &r)
+}
+
+/// Theorems 1 and 2 of paper 002 (Rezaeian & Vo): the lower bound on the risk E e²(X, X̂(Z))
+/// (11) of joint detection and estimation of a single object, for ``model`` ``"I"`` (a
+/// Bernoulli observation with false alarms, (13); Theorem 1, (14)–(21)) or ``"II"`` (Poisson
+/// clutter, (22); Theorem 2, (22)–(26)), and for a state in R^l their vector extensions
+/// (63)–(72).
+///
+/// Keyword arguments (as the npm package's ``jdeBound`` options, in snake_case):
+/// ``existence`` r ∈ [0, 1]; ``prior`` f, a dict of one kind: ``{"gaussian": {"mean",
+/// "variance"}}``, ``{"uniform": {"low", "high"}}``, ``{"mixture": [{"weight", "mean",
+/// "variance"}, …]}``, ``{"table": {"x", "density"}}`` or ``{"multivariate_gaussian":
+/// {"mean", "cov"}}``; ``observation`` ``{"detection_probability", "gain", "offset",
+/// "noise_variance", "noise_cov"}`` (P_o a number or ``{"table": {"x", "probability"}}``;
+/// with a vector prior ``gain`` is H, m rows of l numbers, and ``noise_cov`` R);
+/// ``false_alarm`` ``{"probability", "density"}`` (model I: q, ψ) or ``clutter`` ``{"rate",
+/// "density"}`` (model II: λ, v/λ); ``false_alarm_error`` e0² and ``miss_error`` e1²;
+/// optional ``dims``, ``tolerance`` (1e-10), ``samples`` (20,000 per cardinality of
+/// Theorem 2's Monte Carlo, samples × Σ n ≤ 10⁷), ``seed`` (omitted: fresh entropy,
+/// reported as ``seed``) and ``quadrature_cardinality`` (1 or 2). Returns a ``Result`` with
+/// ``bound``, ``phase`` (``"HPE"``/``"LPE"``), ``existence_threshold``, ``terms``,
+/// ``error``, ``hpe``, ``lpe``, … and for a vector state ``components`` and
+/// ``inverse_information_matrix``. A wrong kind of value (rows as a 1D prior's gain,
+/// ``clutter`` with model I) is a ``TypeError``, a bad value a ``ValueError``, each naming
+/// the argument. The GIL is released while it computes.
+#[pyfunction]
+#[pyo3(
+    signature = (**options),
+    text_signature = "(*, model, existence, prior, observation, false_alarm_error, miss_error, false_alarm=None, clutter=None, dims=None, tolerance=None, samples=None, seed=None, quadrature_cardinality=None)"
+)]
+pub fn jde_bound<'py>(
+    py: Python<'py>,
+    options: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let o: bounds::JdeBoundOptions = from_kwargs(py, "jde_bound", options)?;
+    let r = py
+        .detach(|| o.run(fisst::math::rng::entropy_seed))
+        .map_err(to_py)?;
+    result(py, &r)
+}
+
+/// The seeded Monte Carlo of the optimal joint detector-estimator of paper 002 (Rezaeian &
+/// Vo): MAP detection (39)/(40), the posterior mean, and on Z = ∅ the rule ``empty_rule``
+/// (``"optimal"``: HPE/LPE (46); ``"map"``: Section IV-A; ``"declare"``; ``"reject"``),
+/// simulated to give the risk E e² (11) that ``jde_bound`` bounds, with its standard error
+/// and parts, over ``scans`` scans of one target (Section III-E).
+///
+/// Keyword arguments (as the npm package's ``jdeMonteCarlo`` options, in snake_case): ``model``
+/// ``"I"`` or ``"II"``, ``existence``, ``prior`` (``{"gaussian": {"mean", "variance"}}``,
+/// ``{"multivariate_gaussian": {"mean", "cov"}}`` or ``"example2"``, Example 2 (32)),
+/// ``observation`` (a constant ``detection_probability`` and, for a Gaussian prior, the
+/// linear-Gaussian ``gain``/``offset``/``noise_variance``/``noise_cov`` as in
+/// ``jde_bound``), ``false_alarm`` or ``clutter``, ``false_alarm_error``, ``miss_error``,
+/// and optional ``empty_rule``, ``scans`` (1), ``samples`` (20,000; samples × scans × (1 +
+/// ⌈q or λ⌉) ≤ 10⁷) and ``seed`` (omitted: fresh entropy, reported as ``seed``). The same
+/// seed gives the npm package's numbers bit for bit. Returns a ``Result`` (``mse``, ``se``,
+/// the false-alarm, miss and estimation parts, per coordinate and per scan). The GIL is
+/// released while it runs.
+#[pyfunction]
+#[pyo3(
+    signature = (**options),
+    text_signature = "(*, model, existence, prior, observation, false_alarm_error, miss_error, false_alarm=None, clutter=None, empty_rule=None, scans=None, samples=None, seed=None)"
+)]
+pub fn jde_monte_carlo<'py>(
+    py: Python<'py>,
+    options: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let o: bounds::JdeMonteCarloRequest = from_kwargs(py, "jde_monte_carlo", options)?;
+    let r = py
+        .detach(|| o.run(fisst::math::rng::entropy_seed))
+        .map_err(to_py)?;
     result(py, &r)
 }

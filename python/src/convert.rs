@@ -11,9 +11,16 @@ use serde::Serialize;
 /// The Python exception for a core error: a `ValueError` whose message starts with the path
 /// of the offending argument in Python's names (the core's Rust names, with the matrix names
 /// `F`, `Q`, `H`, `R` in their papers' capitals), as numpy does for a wrong length, shape or
-/// value.
+/// value; a `TypeError` for a value of the wrong kind for the other arguments
+/// ([`fisst::Error::is_wrong_kind`]: rows where a 1D prior takes a number, two alternatives
+/// both given).
 pub fn to_py(e: fisst::Error) -> PyErr {
-    PyValueError::new_err(e.map_paths(crate::names::render_path).to_string())
+    let e = e.map_paths(crate::names::render_path);
+    if e.is_wrong_kind() {
+        PyTypeError::new_err(e.to_string())
+    } else {
+        PyValueError::new_err(e.to_string())
+    }
 }
 
 /// A point set read from Python: an `(n, d)` array-like of numbers (a numpy array of any

@@ -68,6 +68,8 @@ fn _fisst(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(bounds::jde_sequential_bound, m)?)?;
     m.add_function(wrap_pyfunction!(bounds::jde_example2, m)?)?;
     m.add_function(wrap_pyfunction!(bounds::jde_example2_regularity, m)?)?;
+    m.add_function(wrap_pyfunction!(bounds::jde_bound, m)?)?;
+    m.add_function(wrap_pyfunction!(bounds::jde_monte_carlo, m)?)?;
     m.add_class::<filters::GmBernoulliFilter>()?;
     m.add_class::<filters::ParticleBernoulliFilter>()?;
     m.add_function(wrap_pyfunction!(filters::gm_bernoulli_predict, m)?)?;

@@ -53,6 +53,45 @@ filter_config = st.fixed_dictionaries(
 
 
 gaussian = st.fixed_dictionaries({"mean": st.one_of(st.lists(number, min_size=2, max_size=2), junk), "cov": st.one_of(matrix2, number)})
+
+# paper 002's jde_bound and jde_monte_carlo (as tests/js/fuzz/specs.mjs): small Monte Carlo sizes
+# (samples 100–400, seeded) so that a call stays well under a second; the values around them
+# valid, extreme or of the wrong kind
+jde_model = st.sampled_from(["I", "II", "III"])
+jde_density = st.one_of(
+    st.fixed_dictionaries({"gaussian": st.fixed_dictionaries({"mean": st.floats(-5, 5), "variance": st.one_of(st.floats(0.01, 25), st.sampled_from(EXTREMES))})}),
+    st.sampled_from([{"uniform": {"low": -2, "high": 2}}, {"uniform": {"low": 0, "high": 1}}, {"table": {"x": [-2, 0, 2], "density": [0, 1, 0]}},
+                     {"mixture": [{"weight": 0.5, "mean": 0, "variance": 1}, {"weight": 0.5, "mean": 2, "variance": 0.5}]}]),
+    junk)
+jde_vector_prior = st.fixed_dictionaries({"multivariate_gaussian": st.one_of(
+    st.fixed_dictionaries({"mean": st.lists(st.floats(-5, 5), min_size=2, max_size=2), "cov": st.one_of(st.just([[1.0, 0.2], [0.2, 2.0]]), matrix2, number)}),
+    st.fixed_dictionaries({"mean": st.lists(st.floats(-5, 5), min_size=1, max_size=1), "cov": st.one_of(st.floats(0.01, 25), number)}),
+    junk)})
+jde_detection = st.one_of(probability, st.just({"table": {"x": [-3, 3], "probability": [0.3, 0.9]}}), junk)
+jde_observation = st.one_of(st.fixed_dictionaries(
+    {"detection_probability": jde_detection},
+    optional={"gain": st.one_of(st.floats(-3, 3), st.lists(st.lists(st.floats(-3, 3), min_size=2, max_size=2), min_size=1, max_size=2), st.just([[1.0]]), number, junk),
+              "offset": st.one_of(st.floats(-2, 2), st.lists(st.floats(-2, 2), min_size=1, max_size=2), junk),
+              "noise_variance": st.one_of(st.floats(0.01, 10), kw_number),
+              "noise_cov": st.one_of(st.just([[1.0]]), st.just([[1.0, 0.0], [0.0, 1.0]]), matrix2, number, junk)}), junk)
+jde_false = st.one_of(st.none(), st.fixed_dictionaries({"probability": probability, "density": jde_density}),
+                      st.fixed_dictionaries({"rate": st.one_of(st.floats(0, 2), kw_number), "density": jde_density}))
+
+
+def jde_options(prior, extra):
+    return st.tuples(jde_model, probability, prior, jde_observation, jde_false, st.floats(0, 100), kw_number, extra).map(
+        lambda t: {"model": t[0], "existence": t[1], "prior": t[2], "observation": t[3], "false_alarm_error": t[5], "miss_error": t[6],
+                   **({} if t[4] is None else {"false_alarm" if "probability" in t[4] else "clutter": t[4]}), **t[7]})
+
+
+jde_bound_extra = st.fixed_dictionaries({}, optional={
+    "samples": st.one_of(st.integers(100, 400), st.sampled_from([0, 99, 10**6 + 1])), "seed": st.integers(0, 99),
+    "dims": st.one_of(st.integers(0, 3), junk), "tolerance": st.one_of(st.sampled_from([1e-6, 1e-15, 0.2]), junk),
+    "quadrature_cardinality": st.one_of(st.integers(0, 3), junk)}).map(lambda d: {"samples": 200, "seed": 1, **d})
+jde_mc_extra = st.fixed_dictionaries({}, optional={
+    "samples": st.one_of(st.integers(2, 400), st.sampled_from([0, 1, 10**7 + 1])), "seed": st.one_of(st.integers(0, 99), st.sampled_from([-1, 2**64])),
+    "scans": st.one_of(st.integers(0, 3), junk), "empty_rule": st.sampled_from(["optimal", "map", "declare", "reject", "hpe"])}).map(
+        lambda d: {"samples": 200, "seed": 1, **d})
 bernoullis = st.one_of(st.lists(st.fixed_dictionaries({"existence": probability, "mean": st.one_of(st.lists(number, min_size=2, max_size=3), junk),
                                                        "cov": st.one_of(matrix2, number)}), max_size=4), junk)
 axis = st.one_of(st.tuples(number, number, st.one_of(st.integers(-1, 6), st.sampled_from([0.5, 4097, 1e300, float("nan")]))), junk)
@@ -116,6 +155,11 @@ CALLS = {
         {"existence": probability, "detection_probability": probability, "false_alarm_probability": probability,
          "false_alarm_error": kw_number}, optional={"miss_error": kw_number})),
     "jde_example2_regularity": st.tuples(st.just(None), st.just(None), st.one_of(st.just({}), st.just({"x": 1}))),
+    "jde_bound": st.tuples(st.just(None), st.just(None), st.one_of(
+        jde_options(jde_density, jde_bound_extra), jde_options(jde_vector_prior, jde_bound_extra), st.just({"model": "I"}))),
+    "jde_monte_carlo": st.tuples(st.just(None), st.just(None), st.one_of(
+        jde_options(st.one_of(jde_density, st.just("example2"), st.just("x")), jde_mc_extra),
+        jde_options(jde_vector_prior, jde_mc_extra), st.just({"model": "I", "sample": 10}))),
     "multi_object_likelihood": st.tuples(st.just(None), st.just(None), st.fixed_dictionaries(
         {"likelihoods": st.one_of(st.lists(st.lists(st.one_of(st.floats(0, 2), st.sampled_from(EXTREMES)), min_size=2, max_size=2), max_size=5), junk),
          "detection_probability": probability, "clutter_rate": kw_number,

@@ -59,10 +59,20 @@ pub fn core_error(e: fisst::Error) -> JsValue {
     range_error(e.to_string())
 }
 
-/// The JS exception for a `fisst` error whose field is a Rust path under `prefix`: a
-/// `RangeError` naming the path in this binding's names ([`crate::names::render_path`]).
+/// The JS exception for a `fisst` error whose field is a Rust path under `prefix`, naming the
+/// path (and the other fields its sentence names) in this binding's names
+/// ([`crate::names::render_path`]): a `TypeError` for a value of the wrong kind
+/// ([`fisst::Error::is_wrong_kind`]), else a `RangeError`.
 pub fn core_error_rendered(e: fisst::Error, prefix: &str) -> JsValue {
-    core_error(e.within(prefix).map_paths(crate::names::render_path))
+    let e = e
+        .within(prefix)
+        .map_paths(crate::names::render_path)
+        .map_names(crate::names::render_path);
+    if e.is_wrong_kind() {
+        type_error(e.to_string())
+    } else {
+        core_error(e)
+    }
 }
 
 /// `?`-friendly conversion of `fisst` results.

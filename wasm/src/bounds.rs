@@ -2,7 +2,6 @@
 //! error bounds for joint detection and estimation of paper 002 (Rezaeian & Vo, "Error bounds
 //! for joint detection and estimation of a single object with random finite set observation").
 
-use serde::Deserialize;
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
@@ -109,9 +108,15 @@ const DENSITY_TYPES: &str = r#"
 export type DensityShape = Density1;
 "#;
 
+// The option shapes below are TypeScript declarations only (their names and doc comments are
+// the package's contract): `jdeBound` and `jdeMonteCarlo` read the core's
+// `bounds::JdeBoundOptions` and `bounds::JdeMonteCarloRequest`, which check the options
+// together and name their errors by Rust path; `boundary` renders those in JavaScript names.
+
 /// A tabulated detection probability P_o(x): linear interpolation, held constant beyond the end
 /// knots.
-#[derive(Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the core reads the values
+#[derive(Tsify)]
 pub struct DetectionTableShape {
     /// The knots x, strictly increasing (2 to 10,000).
     pub x: Numbers,
@@ -119,14 +124,9 @@ pub struct DetectionTableShape {
     pub probability: Numbers,
 }
 
-/// `{ table: { x, probability } }`.
-#[derive(Deserialize)]
-struct DetectionTableWrapper {
-    table: DetectionTableShape,
-}
-
 /// The detection probability P_o(x): a number in [0, 1] (constant) or `{ table: { x,
 /// probability } }`.
+#[allow(dead_code)] // a TypeScript declaration only: the core reads the values
 #[derive(Tsify)]
 #[tsify(type = "number | { table: DetectionTableShape }")]
 pub enum DetectionShape {
@@ -134,31 +134,6 @@ pub enum DetectionShape {
     Constant(f64),
     /// `{ table: { x, probability } }`: a tabulated detection probability.
     Table(DetectionTableShape),
-}
-
-impl<'de> Deserialize<'de> for DetectionShape {
-    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> serde::de::Visitor<'de> for V {
-            type Value = DetectionShape;
-            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str("a probability or { table: { x, probability } }")
-            }
-            fn visit_f64<E: serde::de::Error>(self, x: f64) -> Result<Self::Value, E> {
-                Ok(DetectionShape::Constant(x))
-            }
-            fn visit_map<A: serde::de::MapAccess<'de>>(
-                self,
-                map: A,
-            ) -> Result<Self::Value, A::Error> {
-                let w = DetectionTableWrapper::deserialize(
-                    serde::de::value::MapAccessDeserializer::new(map),
-                )?;
-                Ok(DetectionShape::Table(w.table))
-            }
-        }
-        d.deserialize_any(V)
-    }
 }
 
 // The gain and offset of g are "a number or an array" (the core's `ScalarOr`), under the
@@ -176,15 +151,11 @@ export type GainShape = number | (number[] | Float64Array)[];
 export type OffsetShape = number | number[] | Float64Array;
 "#;
 
-/// The gain a, or the measurement matrix H row by row.
-type GainShape = ScalarOr<Vec<f64>>;
-/// The offset b, or one number per measurement coordinate.
-type OffsetShape = ScalarOr<f64>;
-
 /// The observation: P_o(x) and g(z|x) = N(z; gain·x + offset, noiseVariance) for a 1D prior,
 /// or g(z|x) = N(z; H x + b, R) with H = `gain` (m rows of l numbers) and R = `noiseCov`
 /// (or, for m = 1, `noiseVariance`) for a `multivariateGaussian` prior.
-#[derive(Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the core reads the values
+#[derive(Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct ObservationShape {
     /// The detection probability P_o(x): a number in [0, 1] or `{ table: { x, probability } }` (a
@@ -194,11 +165,11 @@ pub struct ObservationShape {
     /// finite numbers (1 ≤ m ≤ 64; a number is H = [[a]] when l = 1). False alarms or
     /// clutter need m = 1: their densities are on the measurement line.
     #[tsify(optional, type = "GainShape")]
-    pub gain: Option<GainShape>,
+    pub gain: Option<ScalarOr<Vec<f64>>>,
     /// The offset b (default 0): a number, or with a `multivariateGaussian` prior m numbers (a
     /// number serves m = 1).
     #[tsify(optional, type = "OffsetShape")]
-    pub offset: Option<OffsetShape>,
+    pub offset: Option<ScalarOr<f64>>,
     /// The measurement noise variance σ_v² > 0 of a one-coordinate measurement (required with a 1D
     /// prior; with a `multivariateGaussian` prior give it or `noiseCov`, and only for m = 1).
     #[tsify(optional)]
@@ -209,122 +180,9 @@ pub struct ObservationShape {
     pub noise_cov: Option<Covariance>,
 }
 
-impl ObservationShape {
-    fn into_core(self, path: &str) -> JsResult<bounds::LinearGaussian> {
-        let gain = match self.gain.unwrap_or(ScalarOr::Scalar(1.0)) {
-            ScalarOr::Scalar(a) => a,
-            ScalarOr::Array(_) => {
-                return Err(crate::boundary::type_error(format!(
-                    "{path}.gain must be a number with a 1D prior (gain rows are H for a multivariateGaussian prior)"
-                )));
-            }
-        };
-        let offset = match self.offset.unwrap_or(ScalarOr::Scalar(0.0)) {
-            ScalarOr::Scalar(b) => b,
-            ScalarOr::Array(_) => {
-                return Err(crate::boundary::type_error(format!(
-                    "{path}.offset must be a number with a 1D prior"
-                )));
-            }
-        };
-        if self.noise_cov.is_some() {
-            return Err(crate::boundary::type_error(format!(
-                "{path}.noiseCov is for a multivariateGaussian prior (use noiseVariance with a 1D prior)"
-            )));
-        }
-        let Some(noise) = self.noise_variance else {
-            return Err(crate::boundary::type_error(format!(
-                "{path}.noiseVariance is required"
-            )));
-        };
-        let det = match self.detection_probability {
-            DetectionShape::Constant(p) => bounds::Detection::constant(p).or_throw_rendered(path),
-            DetectionShape::Table(t) => bounds::Detection::table(&t.x.0, &t.probability.0)
-                .or_throw_rendered(&format!("{path}.detectionProbability.table")),
-        }?;
-        bounds::LinearGaussian::new(det, gain, offset, noise).or_throw_rendered(path)
-    }
-
-    /// The sensor of a state in R^`dims`.
-    fn into_sensor(self, dims: usize, path: &str) -> JsResult<bounds::LinearGaussianSensor> {
-        let detection = match self.detection_probability {
-            DetectionShape::Constant(p) => p,
-            DetectionShape::Table(_) => {
-                return Err(crate::boundary::type_error(format!(
-                    "{path}.detectionProbability must be a number (a constant P_o) with a multivariateGaussian prior"
-                )));
-            }
-        };
-        let rows = match self.gain.unwrap_or(ScalarOr::Scalar(1.0)) {
-            ScalarOr::Scalar(a) if dims == 1 => vec![vec![a]],
-            ScalarOr::Scalar(_) => {
-                return Err(crate::boundary::type_error(format!(
-                    "{path}.gain must be H, m rows of {dims} numbers, for a state in R^{dims}"
-                )));
-            }
-            ScalarOr::Array(rows) => rows,
-        };
-        let m = rows.len();
-        bounds::check_measurement_dims(m).or_throw_rendered(path)?;
-        for (i, r) in rows.iter().enumerate() {
-            if r.len() != dims {
-                return Err(crate::boundary::range_error(format!(
-                    "{path}.gain[{i}] has length {}, expected {dims} (the state dimension)",
-                    r.len()
-                )));
-            }
-        }
-        let offset = match self.offset.unwrap_or(ScalarOr::Scalar(0.0)) {
-            ScalarOr::Scalar(b) if m == 1 => vec![b],
-            ScalarOr::Scalar(0.0) => vec![0.0; m],
-            ScalarOr::Scalar(_) => {
-                return Err(crate::boundary::type_error(format!(
-                    "{path}.offset must be {m} numbers (gain has {m} rows)"
-                )));
-            }
-            ScalarOr::Array(v) => {
-                if v.len() != m {
-                    return Err(crate::boundary::range_error(format!(
-                        "{path}.offset has length {}, expected {m} (gain has {m} rows)",
-                        v.len()
-                    )));
-                }
-                v
-            }
-        };
-        let noise = match (self.noise_variance, self.noise_cov) {
-            (Some(_), Some(_)) => {
-                return Err(crate::boundary::type_error(format!(
-                    "{path}.noiseVariance and {path}.noiseCov are alternatives: give one"
-                )));
-            }
-            (None, None) => {
-                return Err(crate::boundary::type_error(format!(
-                    "{path}.noiseCov is required (or noiseVariance when gain has one row)"
-                )));
-            }
-            (Some(v), None) => {
-                if m != 1 {
-                    return Err(crate::boundary::type_error(format!(
-                        "{path}.noiseVariance serves a gain of one row; gain has {m} rows: give noiseCov ({m} × {m})"
-                    )));
-                }
-                if v <= 0.0 {
-                    return Err(crate::boundary::range_error(format!(
-                        "{path}.noiseVariance must be > 0, got {v}"
-                    )));
-                }
-                vec![v]
-            }
-            (None, Some(c)) => c.row_major(m, &format!("{path}.noiseCov"))?,
-        };
-        bounds::LinearGaussianSensor::new(detection, &rows.concat(), dims, &offset, &noise)
-            .or_throw_rendered(path)
-    }
-}
-
 /// Model I's false observations: probability q and density ψ.
-#[derive(Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the core reads the values
+#[derive(Tsify)]
 pub struct FalseAlarmShape {
     /// The false alarm probability q ∈ [0, 1]: the probability of one false observation.
     pub probability: f64,
@@ -334,7 +192,8 @@ pub struct FalseAlarmShape {
 }
 
 /// Model II's Poisson clutter: rate λ and the density of its points (v = λ · density).
-#[derive(Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the core reads the values
+#[derive(Tsify)]
 pub struct ClutterShape {
     /// The clutter rate λ ≥ 0: the mean number of clutter points (at most 1000).
     pub rate: f64,
@@ -363,6 +222,7 @@ export type EmptyRuleShape = EmptyRule;
 /// 64), `cov` l rows of l numbers (or l·l row-major numbers; a bare number when l = 1),
 /// symmetric positive definite. The observation then has a constant P_o, gain rows H and
 /// `noiseCov`.
+#[allow(dead_code)] // a TypeScript declaration only: the core reads the values
 #[derive(Tsify)]
 #[tsify(type = "DensityShape | { multivariateGaussian: Gaussian }")]
 pub enum PriorShape {
@@ -372,47 +232,10 @@ pub enum PriorShape {
     MultivariateGaussian(Gaussian),
 }
 
-impl bounds::DensityOr for PriorShape {
-    const KINDS: &'static [&'static str] = &[
-        "gaussian",
-        "uniform",
-        "mixture",
-        "table",
-        "multivariateGaussian",
-    ];
-    fn density(d: bounds::Density1) -> Self {
-        PriorShape::Density(d)
-    }
-    fn other<'de, V: serde::de::VariantAccess<'de>>(_: &str, v: V) -> Result<Self, V::Error> {
-        v.newtype_variant().map(PriorShape::MultivariateGaussian)
-    }
-}
-
-impl<'de> Deserialize<'de> for PriorShape {
-    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        bounds::deserialize_density_or(d)
-    }
-}
-
-impl PriorShape {
-    fn into_core(self, path: &str) -> JsResult<bounds::JdePrior> {
-        match self {
-            PriorShape::Density(d) => Ok(bounds::JdePrior::Scalar(d)),
-            PriorShape::MultivariateGaussian(g) => {
-                let p = format!("{path}.multivariateGaussian");
-                let l = bounds::check_state_dims(g.mean.0.len()).or_throw_rendered(&p)?;
-                let cov = g.cov.row_major(l, &format!("{p}.cov"))?;
-                bounds::GaussianPrior::new(&g.mean.0, &cov)
-                    .or_throw_rendered(&p)
-                    .map(bounds::JdePrior::Vector)
-            }
-        }
-    }
-}
-
 /// Options of `jdeBound` (Theorems 1 and 2 of Rezaeian & Vo, "Error bounds for joint detection and
 /// estimation of a single object with random finite set observation" (paper 002)).
-#[derive(Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the core reads the values
+#[derive(Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct JdeBoundOptions {
     /// The measurement model: `'I'` (false alarms) or `'II'` (Poisson clutter).
@@ -514,58 +337,17 @@ export function jdeBound(options: JdeBoundModelOptions & { prior: { multivariate
 pub fn jde_bound(
     #[wasm_bindgen(unchecked_param_type = "JdeBoundModelOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let o: JdeBoundOptions = read(options, "options")?;
-    let prior = o.prior.into_core("options.prior")?;
-    let observation = match &prior {
-        bounds::JdePrior::Scalar(_) => {
-            bounds::JdeObservation::Scalar(o.observation.into_core("options.observation")?)
-        }
-        bounds::JdePrior::Vector(g) => bounds::JdeObservation::Vector(
-            o.observation.into_sensor(g.dims(), "options.observation")?,
-        ),
-    };
-    let false_alarm = match o.false_alarm {
-        Some(f) => Some(bounds::FalseAlarm {
-            probability: f.probability,
-            density: f.density,
-        }),
-        None => None,
-    };
-    let clutter = match o.clutter {
-        Some(c) => Some(bounds::Clutter {
-            rate: c.rate,
-            density: c.density,
-        }),
-        None => None,
-    };
-    let options = bounds::JdeOptions {
-        model: o.model,
-        existence: o.existence,
-        prior,
-        observation,
-        false_alarm,
-        clutter,
-        false_alarm_error: o.false_alarm_error,
-        miss_error: o.miss_error,
-        dims: o.dims,
-        tolerance: o.tolerance,
-        samples: o.samples,
-        seed: o.seed,
-        quadrature_cardinality: o.quadrature_cardinality,
-    };
+    let o: bounds::JdeBoundOptions = read(options, "options")?;
+    let options = o.into_core().or_throw_rendered("options")?;
     let out = bounds::jde_bound(&options, fisst::math::rng::entropy_seed)
         .map_err(|e| jde_error(e, &options.prior))?;
     write(&Renamed::new(&bounds::JdeBoundReport::from(&out)))
 }
 
-/// A [`bounds::jde_bound`] error in this binding's words: the model mix-ups are
-/// `TypeError`s, a `dims` that is not the prior's says what the prior is, and the rest name
-/// their path under `options` in camelCase.
+/// A [`bounds::jde_bound`] error in this binding's words: a `dims` that is not the prior's
+/// says what the prior is, and the rest name their path under `options` in camelCase.
 fn jde_error(e: fisst::Error, prior: &bounds::JdePrior) -> JsValue {
     match &e {
-        fisst::Error::Unsupported { what, reason } if *reason == bounds::WRONG_MODEL => {
-            wrong_model(what == "clutter")
-        }
         fisst::Error::DimensionMismatch {
             what,
             expected,
@@ -580,15 +362,6 @@ fn jde_error(e: fisst::Error, prior: &bounds::JdePrior) -> JsValue {
         }),
         _ => crate::boundary::core_error_rendered(e, "options"),
     }
-}
-
-/// The `TypeError` of `clutter` given with model I (`clutter`) or `falseAlarm` with model II.
-fn wrong_model(clutter: bool) -> JsValue {
-    crate::boundary::type_error(if clutter {
-        "options.clutter is for model 'II' (use falseAlarm with model 'I')"
-    } else {
-        "options.falseAlarm is for model 'I' (use clutter with model 'II')"
-    })
 }
 
 /// Example 2 of Rezaeian & Vo, "Error bounds for joint detection and estimation of a single object
@@ -619,6 +392,7 @@ pub fn jde_example2_regularity() -> JsResult<JsValue> {
 /// { mean, cov } }` (a linear-Gaussian `observation`), or `'example2'` (Example 2 (32): f and
 /// g fixed, `observation.detectionProbability` a constant P_o; f(x) = 2x(eˣ − 1) on [0, 1]
 /// with g(z|x) = x e^{xz}/(eˣ − 1)).
+#[allow(dead_code)] // a TypeScript declaration only: the core reads the values
 #[derive(Tsify)]
 #[tsify(
     type = "Extract<DensityShape, { gaussian: unknown }> | { multivariateGaussian: Gaussian } | \"example2\""
@@ -632,30 +406,10 @@ pub enum MonteCarloPriorShape {
     Example2,
 }
 
-impl bounds::DensityOr for MonteCarloPriorShape {
-    const KINDS: &'static [&'static str] = &["gaussian", "multivariateGaussian", "example2"];
-    fn density(d: bounds::Density1) -> Self {
-        MonteCarloPriorShape::Gaussian(d)
-    }
-    fn other<'de, V: serde::de::VariantAccess<'de>>(kind: &str, v: V) -> Result<Self, V::Error> {
-        if kind == "example2" {
-            v.unit_variant().map(|()| MonteCarloPriorShape::Example2)
-        } else {
-            v.newtype_variant()
-                .map(MonteCarloPriorShape::MultivariateGaussian)
-        }
-    }
-}
-
-impl<'de> Deserialize<'de> for MonteCarloPriorShape {
-    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        bounds::deserialize_density_or(d)
-    }
-}
-
 /// Options of `jdeMonteCarlo`: the problem of `jdeBound` (Gaussian priors and Example 2), the
 /// rule on Z = ∅, the number of scans and the Monte Carlo's size and seed.
-#[derive(Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the core reads the values
+#[derive(Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct JdeMonteCarloOptions {
     /// The measurement model, `'I'` or `'II'`.
@@ -716,88 +470,9 @@ export type JdeMonteCarloResult = JdeMonteCarlo;
 pub fn jde_monte_carlo(
     #[wasm_bindgen(unchecked_param_type = "JdeMonteCarloModelOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let o: JdeMonteCarloOptions = read(options, "options")?;
-    let defaults = bounds::JdeMonteCarloOptions::default();
-    let (flat, false_density, clutter_density);
-    let measurement = match (o.model, o.false_alarm, o.clutter) {
-        (bounds::JdeModel::I, _, Some(_)) => return Err(wrong_model(true)),
-        (bounds::JdeModel::II, Some(_), _) => return Err(wrong_model(false)),
-        (bounds::JdeModel::I, Some(f), None) => {
-            false_density = f.density;
-            bounds::VectorMeasurement::I {
-                false_alarm_probability: f.probability,
-                false_alarm_density: &false_density,
-            }
-        }
-        (bounds::JdeModel::II, None, Some(c)) => {
-            clutter_density = c.density;
-            bounds::VectorMeasurement::II {
-                clutter_rate: c.rate,
-                clutter_density: &clutter_density,
-            }
-        }
-        (_, None, None) => {
-            flat = bounds::UnitUniform;
-            bounds::VectorMeasurement::I {
-                false_alarm_probability: 0.0,
-                false_alarm_density: &flat,
-            }
-        }
-    };
-    let path = "options.prior";
-    let (prior, sensor);
-    let system = match o.prior {
-        MonteCarloPriorShape::Example2 => match o.observation.detection_probability {
-            DetectionShape::Constant(p) => bounds::SimulatedSystem::Example2 {
-                detection_probability: p,
-            },
-            DetectionShape::Table(_) => {
-                return Err(crate::boundary::type_error(
-                    "options.observation.detectionProbability must be a number (a constant P_o) for 'example2'",
-                ));
-            }
-        },
-        shape => {
-            prior = match shape {
-                MonteCarloPriorShape::Gaussian(bounds::Density1::Gaussian { mean, variance }) => {
-                    bounds::GaussianPrior::new(&[mean], &[variance]).or_throw_rendered(path)?
-                }
-                MonteCarloPriorShape::Gaussian(_) => unreachable!("only 'gaussian' is read"),
-                MonteCarloPriorShape::MultivariateGaussian(g) => {
-                    match PriorShape::MultivariateGaussian(g).into_core(path)? {
-                        bounds::JdePrior::Vector(v) => v,
-                        bounds::JdePrior::Scalar(_) => {
-                            unreachable!("a multivariateGaussian is a vector")
-                        }
-                    }
-                }
-                MonteCarloPriorShape::Example2 => unreachable!("matched above"),
-            };
-            sensor = o
-                .observation
-                .into_sensor(prior.dims(), "options.observation")?;
-            bounds::SimulatedSystem::LinearGaussian {
-                prior: &prior,
-                sensor: &sensor,
-            }
-        }
-    };
-    let seed = crate::boundary::seed_or_entropy(o.seed)?;
-    let out = bounds::jde_monte_carlo(
-        &bounds::MonteCarloModel {
-            existence: o.existence,
-            system,
-            measurement,
-            false_alarm_error: o.false_alarm_error,
-            miss_error: o.miss_error,
-        },
-        &bounds::JdeMonteCarloOptions {
-            samples: o.samples.unwrap_or(defaults.samples),
-            seed,
-            empty_rule: o.empty_rule.unwrap_or(defaults.empty_rule),
-            scans: o.scans.unwrap_or(defaults.scans),
-        },
-    )
-    .or_throw_rendered("options")?;
+    let o: bounds::JdeMonteCarloRequest = read(options, "options")?;
+    let out = o
+        .run(fisst::math::rng::entropy_seed)
+        .or_throw_rendered("options")?;
     write(&Renamed::new(&out))
 }

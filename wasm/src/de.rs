@@ -490,11 +490,20 @@ impl<'a> De<'a> {
     }
 
     /// The variant named by a string, or by the one key of an object (with its payload).
+    /// The names are the variants' JavaScript names (`multivariateGaussian` for the Rust
+    /// `multivariate_gaussian`, [`js_name`]); serde is given the Rust one.
     #[inline(never)]
     fn variant(&self, variants: &'static [&'static str]) -> Result<Variant<'a>> {
         let depth = self.deeper()?;
+        let js_names: Vec<&'static str> = variants.iter().map(|v| js_name("", v)).collect();
+        let rust_name = |js: &str| {
+            js_names
+                .iter()
+                .position(|n| *n == js)
+                .map(|i| (variants[i], js_names[i]))
+        };
         let listed = || {
-            variants
+            js_names
                 .iter()
                 .map(|v| std::format!("'{v}'"))
                 .collect::<Vec<_>>()
@@ -504,7 +513,7 @@ impl<'a> De<'a> {
             return Err(self.wrong_type(&std::format!("one of {}", listed())));
         };
         if let Some(s) = v.as_string() {
-            let Some(name) = variants.iter().find(|n| **n == s) else {
+            let Some((name, js)) = rust_name(&s) else {
                 let shown: String = s.chars().take(40).collect();
                 return Err(Error::range_error(
                     &self.path,
@@ -513,6 +522,7 @@ impl<'a> De<'a> {
             };
             return Ok(Variant {
                 name,
+                js,
                 payload: None,
                 path: self.path,
                 depth,
@@ -533,7 +543,7 @@ impl<'a> De<'a> {
                 &self.path,
                 std::format!(
                     "must have exactly one of the keys {} (found {}{})",
-                    variants.join(", "),
+                    js_names.join(", "),
                     found.len(),
                     if found.is_empty() {
                         String::new()
@@ -543,11 +553,12 @@ impl<'a> De<'a> {
                 ),
             ));
         };
-        let Some(name) = variants.iter().find(|n| *n == key) else {
-            return Err(unknown_key(&self.path, key, variants));
+        let Some((name, js)) = rust_name(key) else {
+            return Err(unknown_key(&self.path, key, &js_names));
         };
         Ok(Variant {
             name,
+            js,
             payload: Some(payload.clone()),
             path: self.path,
             depth,
@@ -707,7 +718,10 @@ impl<'de> de::MapAccess<'de> for Entries<'_> {
 
 /// `EnumAccess` for a string (a unit variant) or a one-key object (`{ box: { … } }`).
 struct Variant<'a> {
+    /// The Rust name, given to serde.
     name: &'static str,
+    /// The JavaScript name, in paths and messages.
+    js: &'static str,
     payload: Option<JsValue>,
     path: Path<'a>,
     depth: usize,
@@ -731,26 +745,26 @@ impl<'de> de::VariantAccess<'de> for Variant<'_> {
             None => Ok(()),
             Some(_) => Err(Error::type_error(
                 &self.path,
-                std::format!("must be the string '{}', not an object", self.name),
+                std::format!("must be the string '{}', not an object", self.js),
             )),
         }
     }
 
     fn newtype_variant_seed<T: DeserializeSeed<'de>>(self, seed: T) -> Result<T::Value> {
-        let path = Path::Key(&self.path, self.name);
+        let path = Path::Key(&self.path, self.js);
         match self.payload {
             Some(v) => seed
                 .deserialize(De::child(Value::Js(v), path, self.depth))
                 .map_err(|e| e.at(&path)),
             None => Err(Error::type_error(
                 &self.path,
-                std::format!("must be an object {{ {}: … }}, not a string", self.name),
+                std::format!("must be an object {{ {}: … }}, not a string", self.js),
             )),
         }
     }
 
     fn tuple_variant<V: Visitor<'de>>(self, len: usize, visitor: V) -> Result<V::Value> {
-        let path = Path::Key(&self.path, self.name);
+        let path = Path::Key(&self.path, self.js);
         match self.payload {
             Some(v) => de::Deserializer::deserialize_tuple(
                 De::child(Value::Js(v), path, self.depth),
@@ -759,7 +773,7 @@ impl<'de> de::VariantAccess<'de> for Variant<'_> {
             ),
             None => Err(Error::type_error(
                 &self.path,
-                std::format!("must be an object {{ {}: [...] }}, not a string", self.name),
+                std::format!("must be an object {{ {}: [...] }}, not a string", self.js),
             )),
         }
     }
@@ -769,7 +783,7 @@ impl<'de> de::VariantAccess<'de> for Variant<'_> {
         fields: &'static [&'static str],
         visitor: V,
     ) -> Result<V::Value> {
-        let path = Path::Key(&self.path, self.name);
+        let path = Path::Key(&self.path, self.js);
         match self.payload {
             Some(v) => de::Deserializer::deserialize_struct(
                 De::child(Value::Js(v), path, self.depth),
@@ -779,10 +793,7 @@ impl<'de> de::VariantAccess<'de> for Variant<'_> {
             ),
             None => Err(Error::type_error(
                 &self.path,
-                std::format!(
-                    "must be an object {{ {}: {{ … }} }}, not a string",
-                    self.name
-                ),
+                std::format!("must be an object {{ {}: {{ … }} }}, not a string", self.js),
             )),
         }
     }

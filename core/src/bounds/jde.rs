@@ -17,7 +17,7 @@ use crate::bounds::{
     LinearGaussianSensor, Method, ModelI, ModelII, Phase, Terms, TheoremOptions, VectorMeasurement,
     VectorModel, poisson_pmf, theorem1, theorem2, vector_bound,
 };
-use crate::error::{Error, Result};
+use crate::error::{Error, Phrase, Result};
 
 /// At most this many state coordinates l (and measurement coordinates m).
 pub const MAX_DIMS: usize = 64;
@@ -28,10 +28,6 @@ pub const MIN_SAMPLES: usize = 100;
 pub const MAX_SAMPLES: usize = 1_000_000;
 /// Theorem 2's Monte Carlo work cap: samples × Σ n over the sampled cardinalities n.
 pub const MAX_SAMPLE_POINTS: usize = 10_000_000;
-
-/// The reason of the [`Error::Unsupported`] naming `clutter` with model I or `false_alarm`
-/// with model II.
-pub const WRONG_MODEL: &str = "belongs to the other measurement model";
 
 /// The measurement model: I (13), a Bernoulli observation with false alarms (Theorem 1), or
 /// II (22), Poisson clutter (Theorem 2). Serialised as `"I"` or `"II"`.
@@ -65,6 +61,7 @@ pub enum JdeObservation {
 
 /// Model I's false observations: probability q and density ψ.
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FalseAlarm {
     /// The false alarm probability q ∈ [0, 1]: the probability of one false observation.
     pub probability: f64,
@@ -74,6 +71,7 @@ pub struct FalseAlarm {
 
 /// Model II's Poisson clutter: rate λ and the density of its points (v = λ · density).
 #[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Clutter {
     /// The clutter rate λ ≥ 0: the mean number of clutter points.
     pub rate: f64,
@@ -176,8 +174,8 @@ enum FalseObservations {
 /// # Errors
 /// [`Error::OutOfRange`] naming `dims`, `quadrature_cardinality` or `samples`;
 /// [`Error::DimensionMismatch`] naming `dims` when it is not the prior's dimension (1 for a
-/// scalar prior); [`Error::Unsupported`] naming `clutter` with model I or `false_alarm` with
-/// model II (reason [`WRONG_MODEL`]), or `observation` when its kind is not the prior's;
+/// scalar prior); [`Error::Form`] ([`wrong_model`]) naming `clutter` with model I or `false_alarm` with
+/// model II; [`Error::Unsupported`] naming `observation` when its kind is not the prior's;
 /// [`Error::OverBudget`] naming `samples` when samples × Σ n exceeds 10^7; `entropy`'s
 /// error; and the errors of [`theorem1`], [`theorem2`] and [`vector_bound`].
 pub fn jde_bound(
@@ -206,7 +204,7 @@ pub fn jde_bound(
     let (false_obs, seed) = match o.model {
         JdeModel::I => {
             if o.clutter.is_some() {
-                return Err(wrong_model("clutter"));
+                return Err(wrong_model(true));
             }
             let (q, psi) = match &o.false_alarm {
                 Some(f) => (f.probability, f.density.clone()),
@@ -216,7 +214,7 @@ pub fn jde_bound(
         }
         JdeModel::II => {
             if o.false_alarm.is_some() {
-                return Err(wrong_model("false_alarm"));
+                return Err(wrong_model(false));
             }
             let (lambda, c) = match &o.clutter {
                 Some(c) => (c.rate, c.density.clone()),
@@ -303,11 +301,23 @@ pub fn jde_bound(
     }
 }
 
-fn wrong_model(what: &str) -> Error {
-    Error::Unsupported {
-        what: what.into(),
-        reason: WRONG_MODEL,
-    }
+/// The [`Error::Form`] (a wrong kind) of `clutter` given with model I (`clutter` true) or
+/// `false_alarm` with model II: each belongs to the other measurement model ((13) or (22)).
+pub fn wrong_model(clutter: bool) -> Error {
+    let (what, model, other, other_model) = if clutter {
+        ("clutter", "II", "false_alarm", "I")
+    } else {
+        ("false_alarm", "I", "clutter", "II")
+    };
+    Error::form(
+        what,
+        true,
+        alloc::vec![
+            Phrase::text(alloc::format!("is for model '{model}' (use ")),
+            Phrase::name(other),
+            Phrase::text(alloc::format!(" with model '{other_model}')")),
+        ],
+    )
 }
 
 /// The Monte Carlo budget of model II (Theorem 2): `samples` × Σ n over the cardinalities it

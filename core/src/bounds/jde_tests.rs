@@ -219,12 +219,11 @@ fn thm1_thm2_false_observations_belong_to_their_model() {
         ..scalar(JdeModel::I)
     };
     let e = jde_bound(&o, no_entropy).unwrap_err();
+    assert_eq!(e, wrong_model(true));
+    assert!(e.is_wrong_kind());
     assert_eq!(
-        e,
-        Error::Unsupported {
-            what: "clutter".into(),
-            reason: WRONG_MODEL
-        }
+        e.to_string(),
+        "clutter is for model 'II' (use false_alarm with model 'I')"
     );
     let o = with_false_alarms(scalar(JdeModel::II));
     assert_eq!(

@@ -32,6 +32,13 @@ const calls = [
   ['gaussianFisherInformation', [{ priorVariance: 4, gain: 2, noiseVariance: 3 }]],
   ['jdeSequentialBound', [{ method: 'enumeration', priorInformation: 0.1, detectedInformation: 1, detectionProbability: 0.8, steps: 5 }]],
   ['jdeSequentialBound', [{ method: 'irf', priorInformation: 0.1, detectedInformation: 1, detectionProbability: 0.8, steps: 5 }]],
+  // paper 002's jdeBound (Theorems 1 and 2, (63)–(72)) and jdeMonteCarlo (seeded)
+  ['jdeBound', [{ model: 'I', existence: 0.5, prior: { gaussian: { mean: 1, variance: 4 } }, observation: { detectionProbability: 0.9, gain: 2, offset: 0.5, noiseVariance: 1 }, falseAlarm: { probability: 0.2, density: { uniform: { low: -10, high: 10 } } }, falseAlarmError: 150, missError: 200 }]],
+  ['jdeBound', [{ model: 'II', existence: 0.7, prior: { gaussian: { mean: 1, variance: 4 } }, observation: { detectionProbability: { table: { x: [-3, 3], probability: [0.3, 0.9] } }, noiseVariance: 1 }, clutter: { rate: 0.5, density: { uniform: { low: -10, high: 10 } } }, falseAlarmError: 10, missError: 20, samples: 500, seed: 3 }]],
+  ['jdeBound', [{ model: 'I', existence: 0.6, prior: { multivariateGaussian: { mean: [0, 1], cov: [[2, 0.5], [0.5, 1]] } }, observation: { detectionProbability: 0.8, gain: [[1, 0], [0, 1]], offset: 0, noiseCov: [1, 0, 0, 2] }, falseAlarmError: 50, missError: 60 }]],
+  ['jdeMonteCarlo', [{ model: 'II', existence: 0.5, prior: { gaussian: { mean: 0, variance: 1 } }, observation: { detectionProbability: 0.9, noiseVariance: 1 }, clutter: { rate: 1, density: { uniform: { low: -10, high: 10 } } }, falseAlarmError: 1, missError: 1, samples: 300, seed: 5, emptyRule: 'map' }]],
+  ['jdeMonteCarlo', [{ model: 'I', existence: 0.8, prior: { multivariateGaussian: { mean: [0, 0], cov: [[1, 0.2], [0.2, 2]] } }, observation: { detectionProbability: 0.7, gain: [[1, 0], [0, 1]], noiseCov: [[1, 0], [0, 1]] }, falseAlarmError: 5, missError: 6, samples: 200, seed: 2, scans: 3 }]],
+  ['jdeMonteCarlo', [{ model: 'I', existence: 0.6, prior: 'example2', observation: { detectionProbability: 0.9 }, falseAlarm: { probability: 0.3, density: { uniform: { low: 0, high: 1 } } }, falseAlarmError: 1.2, missError: 1, samples: 200, seed: 9 }]],
   ['probabilityOutsideBall', [{ density: { mean: [0, 0], cov: [[1, 0.3], [0.3, 2]] }, center: [0.5, 0], radius: 1.5 }]],
   ['probabilityOutsideBall', [{ density: { mixture: [{ weight: 0.3, mean: [0, 0], cov: [[1, 0], [0, 1]] }, { weight: 0.7, mean: [2, 1], cov: [[0.5, 0], [0, 0.5]] }] }, center: [1, 0.5], radius: 1 }]],
   ['probabilityOutsideBall', [{ density: { particles: [[0, 0], [1, 1], [3, 0]], weights: [0.2, 0.5, 0.3] }, center: [0.5, 0.5], radius: 1 }]],
