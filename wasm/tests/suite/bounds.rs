@@ -27,25 +27,15 @@ fn no_clutter_bound_matches_the_core() {
 
 #[wasm_bindgen_test]
 fn no_clutter_bound_errors_name_the_field() {
-    assert_throws(
-        jde_bound_no_clutter(js(
-            r#"{"existence":1.5,"detectionProbability":0.4,"priorVariance":100,"posteriorVariance":25,"falseAlarmError":150,"missError":200}"#,
-        )),
-        "RangeError",
-        "options.existence",
-    );
-    assert_throws(
-        jde_bound_no_clutter(js(
-            r#"{"existence":0.5,"detectionProbability":0.4,"priorVariance":10,"posteriorVariance":25,"falseAlarmError":150,"missError":200}"#,
-        )),
-        "RangeError",
-        "options.posteriorVariance",
-    );
-    assert_throws(
-        jde_bound_no_clutter(js(r#"{"existence":0.5}"#)),
-        "TypeError",
-        "options",
-    );
+    #[rustfmt::skip]
+    let cases = [
+        (r#"{"existence":1.5,"detectionProbability":0.4,"priorVariance":100,"posteriorVariance":25,"falseAlarmError":150,"missError":200}"#, "RangeError", "options.existence"),
+        (r#"{"existence":0.5,"detectionProbability":0.4,"priorVariance":10,"posteriorVariance":25,"falseAlarmError":150,"missError":200}"#, "RangeError", "options.posteriorVariance"),
+        (r#"{"existence":0.5}"#, "TypeError", "options"),
+    ];
+    for (input, class, needle) in cases {
+        assert_throws(jde_bound_no_clutter(js(input)), class, needle);
+    }
 }
 
 #[wasm_bindgen_test]
@@ -74,27 +64,15 @@ fn sequential_bounds_match_the_core() {
         let native = fisst::bounds::sequential_bound(method, 0.01, 0.04, 0.6, 20).unwrap();
         assert_eq!(nums(&get(&r, "bound")), native);
     }
-    assert_throws(
-        jde_sequential_bound(js(
-            r#"{"method":"irf","priorInformation":0.01,"detectedInformation":0.04,"detectionProbability":0.6,"steps":0}"#,
-        )),
-        "RangeError",
-        "options.steps",
-    );
-    assert_throws(
-        jde_sequential_bound(js(
-            r#"{"method":"crb","priorInformation":0.01,"detectedInformation":0.04,"detectionProbability":0.6,"steps":3}"#,
-        )),
-        "RangeError",
-        "options.method",
-    );
-    assert_throws(
-        jde_sequential_bound(js(
-            r#"{"method":"irf","priorInformation":0.05,"detectedInformation":0.04,"detectionProbability":0.6,"steps":3}"#,
-        )),
-        "RangeError",
-        "options.detectedInformation",
-    );
+    #[rustfmt::skip]
+    let cases = [
+        (r#"{"method":"irf","priorInformation":0.01,"detectedInformation":0.04,"detectionProbability":0.6,"steps":0}"#, "RangeError", "options.steps"),
+        (r#"{"method":"crb","priorInformation":0.01,"detectedInformation":0.04,"detectionProbability":0.6,"steps":3}"#, "RangeError", "options.method"),
+        (r#"{"method":"irf","priorInformation":0.05,"detectedInformation":0.04,"detectionProbability":0.6,"steps":3}"#, "RangeError", "options.detectedInformation"),
+    ];
+    for (input, class, needle) in cases {
+        assert_throws(jde_sequential_bound(js(input)), class, needle);
+    }
 }
 
 fn native_model_i(q: f64) -> fisst::bounds::JdeBound {
@@ -171,53 +149,25 @@ fn jde_bound_errors_name_the_field() {
         ))
     };
     assert!(jde_bound(base("")).is_ok());
-    assert_throws(
-        jde_bound(base(r#","dims":2"#)),
-        "RangeError",
-        "options.dims",
-    );
-    assert_throws(
-        jde_bound(base(
-            r#","falseAlarm":{"probability":2,"density":{"uniform":{"low":0,"high":1}}}"#,
-        )),
-        "RangeError",
-        "options.falseAlarm.probability",
-    );
-    assert_throws(
-        jde_bound(base(
-            r#","falseAlarm":{"probability":0.2,"density":{"uniform":{"low":1,"high":0}}}"#,
-        )),
-        "RangeError",
-        "options.falseAlarm.density.uniform.high",
-    );
-    assert_throws(
-        jde_bound(base(
-            r#","clutter":{"rate":1,"density":{"uniform":{"low":0,"high":1}}}"#,
-        )),
-        "TypeError",
-        "options.clutter",
-    );
-    assert_throws(
-        jde_bound(js(
-            r#"{"model":"III","existence":0.6,"prior":{"gaussian":{"mean":1,"variance":4}},"observation":{"detectionProbability":0.8,"noiseVariance":1},"falseAlarmError":6,"missError":9}"#,
-        )),
-        "RangeError",
-        "options.model",
-    );
-    assert_throws(
-        jde_bound(js(
-            r#"{"model":"I","existence":0.6,"prior":{"table":{"x":[0,1],"density":[0,0]}},"observation":{"detectionProbability":0.8,"noiseVariance":1},"falseAlarmError":6,"missError":9}"#,
-        )),
-        "RangeError",
-        "options.prior.table.density",
-    );
-    assert_throws(
-        jde_bound(js(
-            r#"{"model":"I","existence":0.6,"prior":{"gaussian":{"mean":1,"variance":4}},"observation":{"detectionProbability":{"table":{"x":[0,1],"probability":[0.5,1.5]}},"noiseVariance":1},"falseAlarmError":6,"missError":9}"#,
-        )),
-        "RangeError",
-        "options.observation.detectionProbability.table.probability[1]",
-    );
+    #[rustfmt::skip]
+    let cases = [
+        (r#","dims":2"#, "RangeError", "options.dims"),
+        (r#","falseAlarm":{"probability":2,"density":{"uniform":{"low":0,"high":1}}}"#, "RangeError", "options.falseAlarm.probability"),
+        (r#","falseAlarm":{"probability":0.2,"density":{"uniform":{"low":1,"high":0}}}"#, "RangeError", "options.falseAlarm.density.uniform.high"),
+        (r#","clutter":{"rate":1,"density":{"uniform":{"low":0,"high":1}}}"#, "TypeError", "options.clutter"),
+    ];
+    for (input, class, needle) in cases {
+        assert_throws(jde_bound(base(input)), class, needle);
+    }
+    #[rustfmt::skip]
+    let cases = [
+        (r#"{"model":"III","existence":0.6,"prior":{"gaussian":{"mean":1,"variance":4}},"observation":{"detectionProbability":0.8,"noiseVariance":1},"falseAlarmError":6,"missError":9}"#, "RangeError", "options.model"),
+        (r#"{"model":"I","existence":0.6,"prior":{"table":{"x":[0,1],"density":[0,0]}},"observation":{"detectionProbability":0.8,"noiseVariance":1},"falseAlarmError":6,"missError":9}"#, "RangeError", "options.prior.table.density"),
+        (r#"{"model":"I","existence":0.6,"prior":{"gaussian":{"mean":1,"variance":4}},"observation":{"detectionProbability":{"table":{"x":[0,1],"probability":[0.5,1.5]}},"noiseVariance":1},"falseAlarmError":6,"missError":9}"#, "RangeError", "options.observation.detectionProbability.table.probability[1]"),
+    ];
+    for (input, class, needle) in cases {
+        assert_throws(jde_bound(js(input)), class, needle);
+    }
 }
 
 #[wasm_bindgen_test]
