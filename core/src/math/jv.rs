@@ -21,6 +21,11 @@
 //!   cut-off, where many costs tie at `c^p`, this keeps paths short — otherwise all their rows
 //!   are scanned before the next minimum is looked for.
 //!
+//! Square problems first take JV's column reduction (`v_j = min_i C[i, j]`, each column's
+//! cheapest row assigned to it while free), so that only the rows left free search; JV's
+//! augmenting row reduction is not used (on GOSPA's dense scenes it costs more than it saves:
+//! `lap.lapjv` is 4–6× slower than SciPy's plain shortest augmenting paths there).
+//!
 //! It is exact in the same sense as `sap`: an optimal assignment up to the rounding of the
 //! dual updates; the assignment may differ from `sap`'s among ties.
 //!
@@ -116,7 +121,32 @@ pub(crate) fn solve(cost: &[f64], nr: usize, nc: usize) -> Vec<usize> {
     let mut ties: Vec<usize> = Vec::new();
     let mut path: Vec<(usize, usize)> = Vec::new();
 
+    if nr == nc && nr > 1 {
+        // Column reduction (Jonker & Volgenant, square problems only: a column's dual may then
+        // be positive): v_j = min_i C[i, j], u = 0, each column's first cheapest row takes it
+        // if still free (columns in reverse order, as in JV).
+        v.copy_from_slice(&cost[..nc]);
+        let mut arg = vec![0usize; nc];
+        for (i, row) in cost.chunks_exact(nc).enumerate().skip(1) {
+            for ((vj, aj), &c) in v.iter_mut().zip(arg.iter_mut()).zip(row) {
+                if c < *vj {
+                    *vj = c;
+                    *aj = i;
+                }
+            }
+        }
+        for j in (0..nc).rev() {
+            let i = arg[j];
+            if col4row[i] == NONE {
+                col4row[i] = j;
+                row4col[j] = i;
+            }
+        }
+    }
     for cur in 0..nr {
+        if col4row[cur] != NONE {
+            continue;
+        }
         d.fill(f64::INFINITY);
         let h = -u[cur];
         scanned_rows.push((cur, h));
