@@ -1,5 +1,11 @@
 //! A dense shortest-augmenting-path solver tuned for contiguous rows (crate-internal).
 //!
+//! It solves the inner problem of OSPA and GOSPA where most pairs of points are closer than c:
+//! for GOSPA (α = 2) the minimum over assignments γ of `Σ_{(i,j)∈γ} d(x_i, y_j)^p + (c^p/2)
+//! (|X| + |Y| − 2|γ|)` (paper 003, García-Fernández & Svensson 2019, Prop. 3, eq. 1), computed
+//! as one assignment on the matrix `min(d, c)^p` (see `metrics::cutoff_assignment`), and every
+//! [`crate::math::linear_assignment`].
+//!
 //! The same method as [`super::assignment::sap`] — Jonker–Volgenant's augmentation step in
 //! the rectangular form of Crouse (Algorithm 1), one Dijkstra search over reduced costs per
 //! row with duals `u`, `v` kept feasible and tight on the assignment — organised so that the
