@@ -187,7 +187,8 @@ pub(crate) fn solve(cost: &[f64], nr: usize, nc: usize) -> Vec<usize> {
         path.clear();
         let (mut j, mut target, mut vj, mut limit) = (sink, min_val, v[sink], scanned_rows.len());
         loop {
-            let mut best = (f64::INFINITY, 0usize);
+            // (Falls back to `cur`, which keeps the assignment one-to-one, should no value match.)
+            let mut best = (f64::INFINITY, cur);
             for &(i, h) in &scanned_rows[..limit] {
                 let gap = crate::math::fns::abs(h + cost[i * nc + j] - vj - target);
                 if gap < best.0 {
