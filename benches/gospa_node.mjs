@@ -3,7 +3,7 @@
 // Untimed warm-up calls first (at least 5 and 0.3 s), so that the median measures the
 // optimised wasm code rather than V8's baseline compiler.
 import { readFileSync } from 'node:fs';
-import * as fisst from '../wasm/pkg/node.js';
+const fisst = await import(process.env.FISST_NODE_ENTRY ?? '../wasm/pkg/node.js');
 
 const [file, repsText] = process.argv.slice(2);
 const { truth, estimate, c, p } = JSON.parse(readFileSync(file, 'utf8'));

@@ -9,7 +9,9 @@
 //! uses): one Dijkstra search over reduced costs per row, with dual variables `u`, `v` kept
 //! feasible (`C[i, j] − u[i] − v[j] ≥ 0`) and tight on assigned pairs. It is exact — it returns
 //! an optimal assignment, not an approximation — up to the rounding of the dual updates, and
-//! runs in `O(min(r, c)² · max(r, c))` time and `O(r + c)` extra memory.
+//! runs in `O(min(r, c)² · max(r, c))` time and `O(r + c)` extra memory. The searches run in
+//! `math::jv`, which scans each row as one contiguous, branch-free pass and takes tied
+//! columns together as Jonker and Volgenant's SCAN set.
 //!
 //! # References
 //! - R. Jonker, A. Volgenant, "A shortest augmenting path algorithm for dense and sparse linear
@@ -99,7 +101,7 @@ pub(crate) fn solve_unchecked(cost: &[f64], rows: usize, cols: usize) -> Assignm
         };
     }
     let pairs = if rows <= cols {
-        let col4row = sap(cost, rows, cols);
+        let col4row = crate::math::jv::solve(cost, rows, cols);
         col4row.into_iter().enumerate().collect::<Vec<_>>()
     } else {
         let mut transposed = vec![0.0; rows * cols];
@@ -108,7 +110,7 @@ pub(crate) fn solve_unchecked(cost: &[f64], rows: usize, cols: usize) -> Assignm
                 transposed[j * rows + i] = cost[i * cols + j];
             }
         }
-        let row4col = sap(&transposed, cols, rows);
+        let row4col = crate::math::jv::solve(&transposed, cols, rows);
         let mut pairs: Vec<(usize, usize)> = row4col
             .into_iter()
             .enumerate()
@@ -125,9 +127,15 @@ pub(crate) fn solve_unchecked(cost: &[f64], rows: usize, cols: usize) -> Assignm
     Assignment { pairs, cost: total }
 }
 
+#[cfg(test)]
 const NONE: usize = usize::MAX;
 
 /// Shortest augmenting paths for `nr ≤ nc`; returns the column of each row.
+///
+/// The straightforward form of the method (a list of the columns not yet scanned, the
+/// predecessor of each column stored as it is relaxed): the solver before issue 29, kept as
+/// the reference that [`crate::math::jv`]'s tests compare against.
+#[cfg(test)]
 pub(crate) fn sap(cost: &[f64], nr: usize, nc: usize) -> Vec<usize> {
     debug_assert!(nr <= nc);
     let mut u = vec![0.0f64; nr];

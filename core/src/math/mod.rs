@@ -5,6 +5,7 @@
 pub mod assignment;
 pub mod fns;
 pub mod geometry;
+pub(crate) mod jv;
 pub mod log_sum;
 pub(crate) mod matching;
 pub mod optimise;

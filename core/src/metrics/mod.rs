@@ -48,7 +48,7 @@ use alloc::vec::Vec;
 
 use crate::error::{Error, Result};
 use crate::math::matching::{SparseRows, UNMATCHED, min_cost_partial_matching};
-use crate::math::{assignment, fns};
+use crate::math::{fns, jv};
 use pairs::{Problem, build};
 
 /// Validates a cut-off `c` (finite, > 0) and an order `p` (finite, ≥ 1).
@@ -167,7 +167,7 @@ pub(crate) fn cutoff_assignment_capped<T, M: Metric<T> + ?Sized>(
             let mut estimate_of = vec![UNMATCHED; n];
             let mut cost_of = vec![0.0f64; n];
             if nr > 0 {
-                for (a, b) in assignment::sap(&costs, nr, nc).into_iter().enumerate() {
+                for (a, b) in jv::solve(&costs, nr, nc).into_iter().enumerate() {
                     let cost = costs[a * nc + b];
                     let (i, j) = if transposed { (b, a) } else { (a, b) };
                     if cost < cp {
@@ -229,11 +229,11 @@ fn solve_graph(graph: pairs::CloseGraph, n: usize, m: usize, cp: f64) -> (Vec<u3
             }
         };
         if r <= k {
-            for (a, b) in assignment::sap(matrix, r, k).into_iter().enumerate() {
+            for (a, b) in jv::solve(matrix, r, k).into_iter().enumerate() {
                 take(a, b, matrix[a * k + b]);
             }
         } else {
-            for (b, a) in assignment::sap(matrix, k, r).into_iter().enumerate() {
+            for (b, a) in jv::solve(matrix, k, r).into_iter().enumerate() {
                 take(a, b, matrix[b * r + a]);
             }
         }
