@@ -19,7 +19,7 @@ use fisst::filters::{
     self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, ConfigShapes,
     Detection, EstimateOptions, FilterEstimate, GmBernoulli, LinearGaussianLikelihood,
     LinearGaussianTransition, ParticleOptions, PredictOptions, Splitting, SplittingOptions,
-    UpdateInfo, UpdateOptions,
+    UpdateOptions,
 };
 use fisst::mixture::ReductionOptions;
 use fisst::regions::Region as CoreRegion;
@@ -199,7 +199,8 @@ pub struct GmBernoulliPredictOptions {
 }
 
 /// Result of `gmBernoulliPredict`: a Bernoulli with a Gaussian-mixture (GM) density.
-#[derive(Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `GmBernoulli`
+#[derive(Tsify)]
 pub struct GmBernoulliResult {
     /// The predicted existence probability r ∈ [0, 1].
     pub existence: f64,
@@ -234,10 +235,7 @@ pub fn gm_bernoulli_predict(
         birth: birth(o.birth, "options")?,
     };
     let out = core_filters::gm_bernoulli_predict(&state, &config).or_throw_rendered("options")?;
-    write(&GmBernoulliResult {
-        existence: out.existence,
-        mixture: types::mixture_out(&out.mixture),
-    })
+    write(&out)
 }
 
 /// Options of `gmBernoulliUpdate` (the GM Bernoulli update of LeGrand & Ferrari, "Split Happens!
@@ -284,7 +282,8 @@ pub struct GmBernoulliUpdateOptions {
 }
 
 /// Result of `gmBernoulliUpdate`: the posterior Bernoulli.
-#[derive(Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `GmBernoulliUpdate`
+#[derive(Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct GmBernoulliUpdateResult {
     /// The posterior existence probability r_{k|k} ∈ [0, 1].
@@ -373,12 +372,7 @@ pub fn gm_bernoulli_update(
             core_filters::gm_bernoulli_update(&state, &r, &config).or_throw_rendered("options")?
         }
     };
-    write(&GmBernoulliUpdateResult {
-        existence: out.existence,
-        mixture: types::mixture_out(&out.mixture),
-        delta: out.delta,
-        split_components: out.split_components,
-    })
+    write(&Renamed::new(&out))
 }
 
 /// The configuration of `GmBernoulliFilter` and `ParticleBernoulliFilter` (the particle
@@ -444,7 +438,9 @@ struct Converted {
     seed: Option<u64>,
 }
 
-fn convert(c: BernoulliFilterConfig) -> JsResult<Converted> {
+/// Reads the argument `config` of either class's constructor.
+fn convert(config: JsValue) -> JsResult<Converted> {
+    let c: BernoulliFilterConfig = read(config, "config")?;
     check_shapes(
         &c.transition,
         &c.mixture,
@@ -656,6 +652,64 @@ fn renamed_report<S: serde::Serializer>(
     serde::Serialize::serialize(&report.as_ref().map(crate::names::Renamed::new), s)
 }
 
+/// The methods both filter classes share, each on the class's core filter `inner`: `update`
+/// (the core filter is unchanged when it fails), `estimate` and the `existence` getter.
+macro_rules! filter_methods {
+    ($class:ident, $js:literal) => {
+        #[wasm_bindgen(js_class = $js)]
+        impl $class {
+            /// The update with `Region[]` (imprecise reports; `[]`: the non-detection update)
+            /// or `{ measurements }`. Returns `{ delta, splitComponents }`. Work caps, a
+            /// RangeError naming `reports` beyond: GM vector update, components × measurements
+            /// × ⌈n²/16⌉ ≤ 2^18; particle filter, particles × reports × (1 + MCMC moves) ≤
+            /// 2·10^7.
+            #[wasm_bindgen(unchecked_return_type = "{ delta: number; splitComponents: number }")]
+            pub fn update(
+                &mut self,
+                #[wasm_bindgen(unchecked_param_type = "Region[] | { measurements: Point[] }")]
+                reports: JsValue,
+            ) -> JsResult<JsValue> {
+                let info = match scan(reports)? {
+                    Scan::Reports(r) => self.inner.update(&r),
+                    Scan::Measurements(z) => self.inner.update_measurements(&z),
+                };
+                write(&Renamed::new(&info.map_err(scan_error)?))
+            }
+
+            /// `{ existence, mean, cov, report }`; options `{ radius, costs }` for `report`.
+            #[wasm_bindgen(unchecked_return_type = "FilterEstimateResult")]
+            pub fn estimate(
+                &self,
+                #[wasm_bindgen(unchecked_optional_param_type = "FilterEstimateOptions")]
+                options: JsValue,
+            ) -> JsResult<JsValue> {
+                let o = estimate_options(options)?;
+                write(&estimate_result(
+                    self.inner.estimate(&o).map_err(estimate_error)?,
+                ))
+            }
+
+            /// The current existence probability r ∈ [0, 1].
+            #[wasm_bindgen(getter)]
+            pub fn existence(&self) -> f64 {
+                self.inner.existence()
+            }
+        }
+    };
+}
+
+/// The error of a class's `estimate`: under `config` when it names the transition (the
+/// particle filter's particles overflowed in a prediction, a fault of the config's model),
+/// else under the argument `options`.
+fn estimate_error(e: fisst::Error) -> JsValue {
+    let root = if e.field() == "transition" {
+        "config"
+    } else {
+        "options"
+    };
+    core_error_rendered(e, root)
+}
+
 /// The GM Bernoulli filter (Algorithm 3 of LeGrand & Ferrari, "Split Happens! Imprecise and
 /// negative information in Gaussian mixture random finite set filtering" (paper 001)). Call
 /// `free()` when done.
@@ -664,6 +718,8 @@ pub struct GmBernoulliFilterJs {
     inner: core_filters::GmBernoulliFilter,
 }
 
+filter_methods!(GmBernoulliFilterJs, "GmBernoulliFilter");
+
 #[wasm_bindgen(js_class = GmBernoulliFilter)]
 impl GmBernoulliFilterJs {
     /// A filter with the initial Bernoulli of `config`; validates `config`.
@@ -671,8 +727,7 @@ impl GmBernoulliFilterJs {
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "BernoulliFilterConfig")] config: JsValue,
     ) -> JsResult<GmBernoulliFilterJs> {
-        let c: BernoulliFilterConfig = read(config, "config")?;
-        let c = convert(c)?;
+        let c = convert(config)?;
         Ok(Self {
             inner: core_filters::GmBernoulliFilter::new(c.config).or_throw_rendered("config")?,
         })
@@ -683,54 +738,11 @@ impl GmBernoulliFilterJs {
         self.inner.predict().or_throw_rendered("config")
     }
 
-    /// The update with `Region[]` (imprecise reports; `[]`: the non-detection update) or
-    /// `{ measurements }`. Returns `{ delta, splitComponents }`. Work caps, a RangeError
-    /// naming `reports` beyond: GM vector update, components × measurements × ⌈n²/16⌉ ≤
-    /// 2^18; particle filter, particles × reports × (1 + MCMC moves) ≤ 2·10^7.
-    #[wasm_bindgen(unchecked_return_type = "{ delta: number; splitComponents: number }")]
-    pub fn update(
-        &mut self,
-        #[wasm_bindgen(unchecked_param_type = "Region[] | { measurements: Point[] }")]
-        reports: JsValue,
-    ) -> JsResult<JsValue> {
-        run_update(reports, |s| match s {
-            Scan::Reports(r) => self.inner.update(&r),
-            Scan::Measurements(z) => self.inner.update_measurements(&z),
-        })
-    }
-
-    /// `{ existence, mean, cov, report }`; options `{ radius, costs }` for `report`.
-    #[wasm_bindgen(unchecked_return_type = "FilterEstimateResult")]
-    pub fn estimate(
-        &self,
-        #[wasm_bindgen(unchecked_optional_param_type = "FilterEstimateOptions")] options: JsValue,
-    ) -> JsResult<JsValue> {
-        let o = estimate_options(options)?;
-        write(&estimate_result(
-            self.inner.estimate(&o).or_throw_rendered("options")?,
-        ))
-    }
-
-    /// The current existence probability r ∈ [0, 1].
-    #[wasm_bindgen(getter)]
-    pub fn existence(&self) -> f64 {
-        self.inner.existence()
-    }
-
     /// The current spatial density p(x), a Gaussian mixture (a copy).
     #[wasm_bindgen(getter, unchecked_return_type = "MixtureComponent[]")]
     pub fn mixture(&self) -> JsResult<JsValue> {
-        write(&types::mixture_out(self.inner.mixture()))
+        write(self.inner.mixture())
     }
-}
-
-/// Reads the scan `reports`, runs the filter's update on it (the core filter is unchanged
-/// when it fails) and writes `{ delta, splitComponents }`.
-fn run_update(
-    reports: JsValue,
-    update: impl FnOnce(Scan) -> fisst::Result<UpdateInfo>,
-) -> JsResult<JsValue> {
-    write(&Renamed::new(&update(scan(reports)?).map_err(scan_error)?))
 }
 
 /// The Bernoulli particle filter (Ristic, Vo, Vo & Farina, "A tutorial on Bernoulli filters:
@@ -743,6 +755,8 @@ pub struct ParticleBernoulliFilterJs {
     seed: u64,
 }
 
+filter_methods!(ParticleBernoulliFilterJs, "ParticleBernoulliFilter");
+
 #[wasm_bindgen(js_class = ParticleBernoulliFilter)]
 impl ParticleBernoulliFilterJs {
     /// A filter with N particles drawn from the initial Bernoulli of `config`; validates `config`
@@ -751,8 +765,7 @@ impl ParticleBernoulliFilterJs {
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "BernoulliFilterConfig")] config: JsValue,
     ) -> JsResult<ParticleBernoulliFilterJs> {
-        let c: BernoulliFilterConfig = read(config, "config")?;
-        let c = convert(c)?;
+        let c = convert(config)?;
         let seed = seed_or_entropy(c.seed)?;
         let options = ParticleOptions { seed, ..c.particle };
         Ok(Self {
@@ -767,56 +780,11 @@ impl ParticleBernoulliFilterJs {
         self.inner.predict();
     }
 
-    /// The update with `Region[]` or `{ measurements }`, as `GmBernoulliFilter.update`. Returns
-    /// `{ delta, splitComponents }`.
-    #[wasm_bindgen(unchecked_return_type = "{ delta: number; splitComponents: number }")]
-    pub fn update(
-        &mut self,
-        #[wasm_bindgen(unchecked_param_type = "Region[] | { measurements: Point[] }")]
-        reports: JsValue,
-    ) -> JsResult<JsValue> {
-        run_update(reports, |s| match s {
-            Scan::Reports(r) => self.inner.update(&r),
-            Scan::Measurements(z) => self.inner.update_measurements(&z),
-        })
-    }
-
-    /// The current estimate `{ existence, mean, cov, report }`; options `{ radius, costs }` for
-    /// `report`.
-    #[wasm_bindgen(unchecked_return_type = "FilterEstimateResult")]
-    pub fn estimate(
-        &self,
-        #[wasm_bindgen(unchecked_optional_param_type = "FilterEstimateOptions")] options: JsValue,
-    ) -> JsResult<JsValue> {
-        let o = estimate_options(options)?;
-        // `transition`: the particles overflowed in a prediction (a fault of the config's model).
-        let e = self.inner.estimate(&o).map_err(|e| {
-            let root = if e.field() == "transition" {
-                "config"
-            } else {
-                "options"
-            };
-            core_error_rendered(e, root)
-        })?;
-        write(&estimate_result(e))
-    }
-
-    /// The current existence probability r ∈ [0, 1].
-    #[wasm_bindgen(getter)]
-    pub fn existence(&self) -> f64 {
-        self.inner.existence()
-    }
-
     /// The particles, one state per row (a copy; equal weights after an update).
     #[wasm_bindgen(getter, unchecked_return_type = "number[][]")]
     pub fn particles(&self) -> JsResult<JsValue> {
         let d = self.inner.dim();
-        let rows: Vec<Vec<f64>> = self
-            .inner
-            .particles()
-            .chunks_exact(d)
-            .map(|c| c.to_vec())
-            .collect();
+        let rows: Vec<&[f64]> = self.inner.particles().chunks_exact(d).collect();
         write(&rows)
     }
 
