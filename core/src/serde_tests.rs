@@ -24,7 +24,7 @@ use crate::fov::{FovCardinality, MultiObjectDensity, SceneOptions};
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::metrics::{Gospa, GospaSeries, Ospa};
 use crate::mixture::ReductionOptions;
-use crate::regions::Region;
+use crate::regions::{MAX_MEMBERS, MAX_VERTICES, Region};
 use crate::sim::airport::{AirportScenarioOptions, airport_scenario};
 use crate::smc::{MultiObjectLikelihood, Regularisation};
 use crate::splitting::{SplitLibrary, SplitOptions, split_for_region};
@@ -377,13 +377,43 @@ fn regions_splitting_and_fov_round_trip() {
         json.starts_with(r#"{"union":[{"complement":{"ball":{"center""#),
         "{json}"
     );
+    // the constructors' errors, named relative to the region read
     assert_eq!(
-        rejected::<Region>(r#"{"ball":{"center":[0.0],"radius":-1.0}}"#),
-        Region::ball(&[0.0], -1.0, "ball").unwrap_err().to_string()
+        without_position(rejected::<Region>(
+            r#"{"ball":{"center":[0.0],"radius":-1.0}}"#
+        )),
+        ".ball.radius must be finite and > 0, got -1"
     );
     assert_eq!(
-        rejected::<Region>(r#"{"union":[]}"#),
-        Region::union(Vec::new(), "union").unwrap_err().to_string()
+        without_position(rejected::<Region>(r#"{"union":[]}"#)),
+        ".union must be a non-empty list of regions, got 0"
+    );
+    assert_eq!(
+        without_position(rejected::<Region>(
+            r#"{"complement":{"box":{"min":[0,1],"max":[1,0]}}}"#
+        )),
+        ".box.max[1] must be a number not below the matching min, got 0"
+    );
+    let disc = r#"{"ball":{"center":[0,0],"radius":1}}"#;
+    let ball3 = r#"{"ball":{"center":[0,0,0],"radius":1}}"#;
+    assert_eq!(
+        without_position(rejected::<Region>(&std::format!(
+            r#"{{"intersection":[{disc},{ball3}]}}"#
+        ))),
+        ".intersection[1] has length 3, expected 2"
+    );
+    // the caps of the constructors
+    let many = vec![disc; MAX_MEMBERS + 1].join(",");
+    assert_eq!(
+        without_position(rejected::<Region>(&std::format!(r#"{{"union":[{many}]}}"#))),
+        ".union has 1001 members, at most 1000 are supported"
+    );
+    let vertices = vec!["[0,0]"; MAX_VERTICES + 1].join(",");
+    assert_eq!(
+        without_position(rejected::<Region>(&std::format!(
+            r#"{{"polygon":{{"vertices":[{vertices}]}}}}"#
+        ))),
+        ".polygon has 1001 vertices, at most 1000 are supported"
     );
     let library = SplitLibrary::table_i();
     round_trip(&library);

@@ -24,7 +24,7 @@
 //! | [`GaussianPrior`] | `{mean, cov}` (`cov` rows) | [`GaussianPrior::new`] |
 //! | [`LinearGaussianSensor`] | `{detection_probability, gain, offset, noise_cov}` (`gain`, `noise_cov` rows) | [`LinearGaussianSensor::new`] |
 //! | [`SpatialDensity`] | exactly one of `{mean, cov}`, `{mixture: [...]}`, `{particles, weights}` (`weights` optional; errors name `.mixture[2].cov`, `.particles[1]`) | [`SpatialDensity::gaussian`], [`SpatialDensity::mixture`], [`SpatialDensity::particles`] |
-//! | [`Region`] | `{"box": …}`, `{"polygon": …}`, `{"ball": …}`, `{"union": [regions]}`, `{"intersection": [regions]}`, `{"complement": region}` | [`Region::from`], [`Region::union`], … |
+//! | [`Region`] | `{"box": {min, max}}`, `{"polygon": {vertices}}`, `{"ball": {center, radius}}`, `{"union": [regions]}`, `{"intersection": [regions]}`, `{"complement": region}` (errors name `.box.max[0]`, `.union[1]`, …) | [`AxisBox::new`], [`Polygon::new`], [`Ball::new`], [`Region::union`], … |
 //!
 //! Errors of the Gaussian types name the field relative to the value being read (`.cov`,
 //! `[2].weight`), so that a deserializer that tracks paths (the JavaScript one) continues its
@@ -702,16 +702,17 @@ enum RegionRef<'a> {
     Complement(&'a Region),
 }
 
-/// [`RegionRef`], owned, for reading.
+/// [`RegionRef`] as read: the arguments of the constructors, which [`Region`]'s
+/// `Deserialize` calls itself (so that their errors name the part of the region at fault).
 #[derive(Deserialize)]
 #[serde(rename = "Region")]
 enum RegionRepr {
     #[serde(rename = "box")]
-    Box(AxisBox),
+    Box(AxisBoxRepr),
     #[serde(rename = "polygon")]
-    Polygon(Polygon),
+    Polygon(PolygonRepr),
     #[serde(rename = "ball")]
-    Ball(Ball),
+    Ball(BallRepr),
     #[serde(rename = "union")]
     Union(Vec<Region>),
     #[serde(rename = "intersection")]
@@ -734,17 +735,25 @@ impl Serialize for Region {
     }
 }
 
+/// Read through the constructors ([`AxisBox::new`], [`Polygon::new`], [`Ball::new`],
+/// [`Region::union`], [`Region::intersection`], [`Region::complement`]); an error names the
+/// part at fault relative to the region (`.box.max[0]`, `.polygon[2][1]`, `.union[1]`,
+/// `.union has 1001 members, …`), so a path-tracking deserializer continues its own path with
+/// it (`options.fov` + `.box.max[0]`; the JavaScript one renders it in its names,
+/// `.disc.radius` for `.ball.radius`).
 impl<'de> Deserialize<'de> for Region {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         let built = match RegionRepr::deserialize(deserializer)? {
-            RegionRepr::Box(b) => Ok(Region::from(b)),
-            RegionRepr::Polygon(p) => Ok(Region::from(p)),
-            RegionRepr::Ball(b) => Ok(Region::from(b)),
+            RegionRepr::Box(b) => AxisBox::new(&b.min, &b.max, "box").map(Region::from),
+            RegionRepr::Polygon(p) => Polygon::new(&p.vertices, "polygon").map(Region::from),
+            RegionRepr::Ball(b) => Ball::new(&b.center, b.radius, "ball").map(Region::from),
             RegionRepr::Union(m) => Region::union(m, "union"),
             RegionRepr::Intersection(m) => Region::intersection(m, "intersection"),
             RegionRepr::Complement(r) => Ok(Region::complement(*r)),
         };
-        built.map_err(|e| D::Error::custom(e.to_string()))
+        built.map_err(|e| {
+            D::Error::custom(e.map_field(|what| alloc::format!(".{what}")).to_string())
+        })
     }
 }
 

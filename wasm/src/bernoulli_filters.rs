@@ -13,7 +13,7 @@ use crate::boundary::{
     seed_or_entropy, type_error, write,
 };
 use crate::names::Renamed;
-use crate::types::{self, MixtureComponent, Point, Region, WeightedGaussian};
+use crate::types::{self, MixtureComponent, Point, WeightedGaussian};
 use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
     self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, ConfigShapes,
@@ -22,7 +22,7 @@ use fisst::filters::{
     UpdateOptions,
 };
 use fisst::mixture::ReductionOptions;
-use fisst::regions::Region as CoreRegion;
+use fisst::regions::Region;
 use fisst::sim::airport::{AirportScenarioOptions, AirportScenarioReport, Anchor, TruthPoint};
 
 /// The mean lengths of the components of a mixture as given.
@@ -152,14 +152,6 @@ impl LikelihoodOptions {
     fn into_core(self, root: &'static str) -> JsResult<LinearGaussianLikelihood> {
         LinearGaussianLikelihood::from_rows(&self.h, &self.r).or_throw_rendered(root)
     }
-}
-
-fn regions(items: Vec<Region>, path: &str) -> JsResult<Vec<CoreRegion>> {
-    items
-        .into_iter()
-        .enumerate()
-        .map(|(i, r)| Ok(r.into_core(&format!("{path}[{i}]"))?.0))
-        .collect()
 }
 
 /// The birth of the argument `root` (the core names its errors `birth.probability`, …).
@@ -305,15 +297,11 @@ fn update_config(
     exclusions: Option<Vec<Region>>,
     root: &'static str,
 ) -> JsResult<UpdateOptions> {
-    let fov = match detection.fov {
-        Some(r) => Some(r.into_core(&format!("{root}.detection.fov"))?.0),
-        None => None,
-    };
     Ok(UpdateOptions {
         position_dims,
         detection: Detection {
             probability: detection.probability,
-            fov,
+            fov: detection.fov,
         },
         clutter,
         splitting: match splitting {
@@ -321,10 +309,7 @@ fn update_config(
             None => Splitting::default(),
         },
         reduction: reduction.unwrap_or_else(core_filters::default_reduction),
-        exclusions: regions(
-            exclusions.unwrap_or_default(),
-            &format!("{root}.exclusions"),
-        )?,
+        exclusions: exclusions.unwrap_or_default(),
     })
 }
 
@@ -368,7 +353,7 @@ pub fn gm_bernoulli_update(
             ));
         }
         (None, _) => {
-            let r = regions(o.reports.unwrap_or_default(), "options.reports")?;
+            let r = o.reports.unwrap_or_default();
             core_filters::gm_bernoulli_update(&state, &r, &config).or_throw_rendered("options")?
         }
     };
@@ -492,7 +477,7 @@ fn convert(config: JsValue) -> JsResult<Converted> {
 
 /// The argument of `update`: `Region[]` or `{ measurements }`.
 enum Scan {
-    Reports(Vec<CoreRegion>),
+    Reports(Vec<Region>),
     Measurements(Vec<Vec<f64>>),
 }
 
@@ -503,8 +488,7 @@ struct MeasurementsArg {
 
 fn scan(value: JsValue) -> JsResult<Scan> {
     if js_sys::Array::is_array(&value) {
-        let r: Vec<Region> = read(value, "reports")?;
-        Ok(Scan::Reports(regions(r, "reports")?))
+        Ok(Scan::Reports(read(value, "reports")?))
     } else {
         let m: MeasurementsArg = read(value, "reports")?;
         Ok(Scan::Measurements(measurements(m.measurements)))

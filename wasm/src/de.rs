@@ -34,7 +34,7 @@ use js_sys::{Array, Float32Array, Float64Array, Reflect};
 use serde::de::{self, DeserializeSeed, IntoDeserializer, Visitor};
 use wasm_bindgen::{JsCast, JsValue};
 
-use crate::names::js_name;
+use crate::names::{js_name, render_path_in, rule, variant_name};
 
 /// The deepest nesting of arrays and objects read (a `Region` union of unions, a GLMB of
 /// Gaussians, … never comes near it; a cyclic object reaches it at once).
@@ -134,10 +134,18 @@ impl Error {
                     Path::Key(path, js_name(path.parent_key(), field))
                 ),
                 // A message about a part of this value ("[2] must be …", ".cov must be …",
-                // as the core's Gaussian types write them) continues the path; any other
-                // continues the sentence ("… must be …").
+                // ".ball.radius must be …", as the core's Gaussian and region types write
+                // them, in Rust names) continues the path, its part rendered in JavaScript
+                // names (`.disc.radius`); any other continues the sentence ("… must be …").
                 None if self.message.starts_with(['[', '.']) => {
-                    std::format!("{path}{}", self.message)
+                    let (part, rest) = self
+                        .message
+                        .split_at(self.message.find(' ').unwrap_or(self.message.len()));
+                    let part = match part.strip_prefix('.') {
+                        Some(p) => std::format!(".{}", render_path_in(path.parent_key(), p)),
+                        None => render_path_in(path.parent_key(), part),
+                    };
+                    std::format!("{path}{part}{rest}")
                 }
                 None => std::format!("{path} {}", self.message),
             };
@@ -453,10 +461,22 @@ impl<'a> De<'a> {
     #[inline(never)]
     fn struct_entries(&self, fields: &'static [&'static str]) -> Result<Entries<'a>> {
         let depth = self.deeper()?;
+        let parent = self.path.parent_key();
+        // a variant JavaScript gives bare (`{ polygon: [[x, y], …] }`): the value is that of
+        // the struct's one field, at the variant's own path
+        if let ([field], Value::Js(v)) = (fields, &self.value)
+            && rule::BARE.iter().any(|(p, f)| *p == parent && f == field)
+        {
+            return Ok(Entries {
+                entries: std::vec![(Cow::Borrowed(*field), Some(SAME_PATH), v.clone())].into_iter(),
+                pending: None,
+                path: self.path,
+                depth,
+            });
+        }
         let obj = self.object()?;
         // the object's keys are the fields' JavaScript names (`futureScans` for the Rust field
         // `future_scans`); serde is given the Rust name, paths show the JavaScript one
-        let parent = self.path.parent_key();
         // a callback the binding reads itself (`onProgress`), at the top level only
         let callback = match self.depth {
             0 => CALLBACK.with(|c| c.borrow().as_ref().map(|(key, _)| *key)),
@@ -491,8 +511,12 @@ impl<'a> De<'a> {
 
     /// The variant named by a string, or by the one key of an object (with its payload).
     #[inline(never)]
-    fn variant(&self, variants: &'static [&'static str]) -> Result<Variant<'a>> {
+    fn variant(&self, rust_variants: &'static [&'static str]) -> Result<Variant<'a>> {
         let depth = self.deeper()?;
+        // the keys are the variants' JavaScript names (`disc` for the Rust `ball`)
+        let variants: Vec<&'static str> = rust_variants.iter().map(|v| variant_name(v)).collect();
+        let variants = variants.as_slice();
+        let rust = |i: usize| rust_variants[i];
         let listed = || {
             variants
                 .iter()
@@ -504,7 +528,7 @@ impl<'a> De<'a> {
             return Err(self.wrong_type(&std::format!("one of {}", listed())));
         };
         if let Some(s) = v.as_string() {
-            let Some(name) = variants.iter().find(|n| **n == s) else {
+            let Some(i) = variants.iter().position(|n| *n == s) else {
                 let shown: String = s.chars().take(40).collect();
                 return Err(Error::range_error(
                     &self.path,
@@ -512,7 +536,8 @@ impl<'a> De<'a> {
                 ));
             };
             return Ok(Variant {
-                name,
+                name: rust(i),
+                js: variants[i],
                 payload: None,
                 path: self.path,
                 depth,
@@ -543,11 +568,12 @@ impl<'a> De<'a> {
                 ),
             ));
         };
-        let Some(name) = variants.iter().find(|n| *n == key) else {
+        let Some(i) = variants.iter().position(|n| n == key) else {
             return Err(unknown_key(&self.path, key, variants));
         };
         Ok(Variant {
-            name,
+            name: rust(i),
+            js: variants[i],
             payload: Some(payload.clone()),
             path: self.path,
             depth,
@@ -649,6 +675,10 @@ impl<'de> de::SeqAccess<'de> for Seq<'_> {
     }
 }
 
+/// The spelling of an [`Entry`] whose value stands at its object's own path (the one field of
+/// a variant JavaScript gives bare, [`rule::BARE`]).
+const SAME_PATH: &str = "";
+
 /// One present key of an object: the key serde sees (a struct's Rust field name, a map's
 /// key), the key as the object spells it when that differs (a field's JavaScript name), and
 /// the value.
@@ -695,7 +725,10 @@ impl<'de> de::MapAccess<'de> for Entries<'_> {
         };
         // an error the value's own `Deserialize` raises after reading it (a core type's check,
         // "[1] has length 1, expected 2") is about the value: it gets the value's path
-        let path = Path::Key(&self.path, js.unwrap_or(&key));
+        let path = match js {
+            Some(SAME_PATH) => self.path,
+            _ => Path::Key(&self.path, js.unwrap_or(&key)),
+        };
         seed.deserialize(De::child(Value::Js(value), path, self.depth))
             .map_err(|e| e.at(&path))
     }
@@ -707,7 +740,10 @@ impl<'de> de::MapAccess<'de> for Entries<'_> {
 
 /// `EnumAccess` for a string (a unit variant) or a one-key object (`{ box: { … } }`).
 struct Variant<'a> {
+    /// The variant's Rust name, for serde.
     name: &'static str,
+    /// Its JavaScript name, for paths and messages.
+    js: &'static str,
     payload: Option<JsValue>,
     path: Path<'a>,
     depth: usize,
@@ -731,26 +767,26 @@ impl<'de> de::VariantAccess<'de> for Variant<'_> {
             None => Ok(()),
             Some(_) => Err(Error::type_error(
                 &self.path,
-                std::format!("must be the string '{}', not an object", self.name),
+                std::format!("must be the string '{}', not an object", self.js),
             )),
         }
     }
 
     fn newtype_variant_seed<T: DeserializeSeed<'de>>(self, seed: T) -> Result<T::Value> {
-        let path = Path::Key(&self.path, self.name);
+        let path = Path::Key(&self.path, self.js);
         match self.payload {
             Some(v) => seed
                 .deserialize(De::child(Value::Js(v), path, self.depth))
                 .map_err(|e| e.at(&path)),
             None => Err(Error::type_error(
                 &self.path,
-                std::format!("must be an object {{ {}: … }}, not a string", self.name),
+                std::format!("must be an object {{ {}: … }}, not a string", self.js),
             )),
         }
     }
 
     fn tuple_variant<V: Visitor<'de>>(self, len: usize, visitor: V) -> Result<V::Value> {
-        let path = Path::Key(&self.path, self.name);
+        let path = Path::Key(&self.path, self.js);
         match self.payload {
             Some(v) => de::Deserializer::deserialize_tuple(
                 De::child(Value::Js(v), path, self.depth),
@@ -759,7 +795,7 @@ impl<'de> de::VariantAccess<'de> for Variant<'_> {
             ),
             None => Err(Error::type_error(
                 &self.path,
-                std::format!("must be an object {{ {}: [...] }}, not a string", self.name),
+                std::format!("must be an object {{ {}: [...] }}, not a string", self.js),
             )),
         }
     }
@@ -769,7 +805,7 @@ impl<'de> de::VariantAccess<'de> for Variant<'_> {
         fields: &'static [&'static str],
         visitor: V,
     ) -> Result<V::Value> {
-        let path = Path::Key(&self.path, self.name);
+        let path = Path::Key(&self.path, self.js);
         match self.payload {
             Some(v) => de::Deserializer::deserialize_struct(
                 De::child(Value::Js(v), path, self.depth),
@@ -779,10 +815,7 @@ impl<'de> de::VariantAccess<'de> for Variant<'_> {
             ),
             None => Err(Error::type_error(
                 &self.path,
-                std::format!(
-                    "must be an object {{ {}: {{ … }} }}, not a string",
-                    self.name
-                ),
+                std::format!("must be an object {{ {}: {{ … }} }}, not a string", self.js),
             )),
         }
     }

@@ -48,8 +48,23 @@ pub fn js_name(parent: &str, field: &'static str) -> &'static str {
 /// An error path in Rust names (`transition.f`, `components[2].mean`, `future_scans`) in
 /// JavaScript names (`transition.F`, `components[2].mean`, `futureScans`).
 pub fn render_path(rust_path: &str) -> String {
+    render_path_in("", rust_path)
+}
+
+/// The JavaScript name of a Rust name as a value's variant key (`ball` → `disc`; the others
+/// as they are), as [`Renamed`] writes it.
+pub fn variant_name(rust: &'static str) -> &'static str {
+    rule::ANY_PARENT
+        .iter()
+        .find(|(r, _)| *r == rust)
+        .map_or(rust, |(_, js)| js)
+}
+
+/// [`render_path`] for a path below the field `parent` (`""` at the top): the exceptions of
+/// `parent`'s fields apply to its first segment.
+pub fn render_path_in(parent: &str, rust_path: &str) -> String {
     let mut out = String::with_capacity(rust_path.len());
-    let mut parent = "";
+    let mut parent = parent;
     for (i, segment) in rust_path.split('.').enumerate() {
         if i > 0 {
             out.push('.');
@@ -178,10 +193,7 @@ impl<S: Serializer> Serializer for Rename<S> {
         let parent = self.parent;
         // a variant holding a value is written as a one-key object: its key takes the
         // contract's name too (the core's `ball` region is `disc`)
-        let variant = rule::ANY_PARENT
-            .iter()
-            .find(|(rust, _)| *rust == variant)
-            .map_or(variant, |(_, js)| js);
+        let variant = variant_name(variant);
         self.inner
             .serialize_newtype_variant(name, index, variant, &Renamed { value, parent })
     }

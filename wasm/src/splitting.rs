@@ -8,7 +8,7 @@ use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, range_error, read, write};
 use crate::names::Renamed;
-use crate::types::{Region, mixture_out};
+use crate::types::mixture_out;
 use fisst::Error;
 use fisst::gaussian::GaussianMixture;
 use fisst::mixture::{merge_close, prune, runnalls};
@@ -95,8 +95,8 @@ export interface NegativeInformationScenario {
 
 /// Options of `splitForRegions` (Algorithms 1–2 of LeGrand & Ferrari, "Split Happens! Imprecise and
 /// negative information in Gaussian mixture random finite set filtering" (paper 001)): the
-/// core's [`CoreSplitForRegionsOptions`] with the regions in the contract's form (`disc`, a
-/// polygon as its vertices), which the core's region form is not; read here and handed over.
+/// core's [`CoreSplitForRegionsOptions`] with the split options' JavaScript defaults; read here
+/// and handed over.
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct SplitForRegionsOptions {
@@ -104,7 +104,8 @@ pub struct SplitForRegionsOptions {
     #[tsify(type = "WeightedGaussian[]")]
     pub mixture: GaussianMixture,
     /// One or more regions (at most 32) of dimension `positionDims`.
-    pub regions: Vec<Region>,
+    #[tsify(type = "Region[]")]
+    pub regions: Vec<CoreRegion>,
     /// The number n_s of position components: the first n_s state components are the position
     /// that regions refer to (default 2; in [1, 8]).
     #[serde(default = "defaults::position_dims")]
@@ -225,15 +226,9 @@ pub fn split_for_regions_js(
         fisst::splitting::MAX_REGIONS,
     )
     .or_throw_rendered("options")?;
-    let regions = o
-        .regions
-        .into_iter()
-        .enumerate()
-        .map(|(i, r)| Ok(r.into_core(&format!("options.regions[{i}]"))?.0))
-        .collect::<JsResult<Vec<CoreRegion>>>()?;
     let request = CoreSplitForRegionsOptions {
         mixture: o.mixture,
-        regions,
+        regions: o.regions,
         position_dims: o.position_dims,
         min_weight: o.min_weight,
         components: o.components,
