@@ -204,10 +204,16 @@ fn eq39_existence_and_detection_probability_1_5_are_rejected() {
         rejected::<GmBernoulli>(state),
         "existence must be a probability in [0, 1], got 1.5"
     );
+    // named relative to the value read (`config.detection` + `.probability` in a binding)
     let detection = rejected::<Detection>(r#"{"probability":1.5}"#);
     assert_eq!(
-        detection,
-        Detection::new(1.5, None).unwrap_err().to_string()
+        without_position(detection),
+        ".probability must be a probability in [0, 1], got 1.5"
+    );
+    let birth = r#"{"probability":0.1,"mixture":[{"weight":0.5,"mean":[0.0],"cov":[[1.0]]}]}"#;
+    assert_eq!(
+        without_position(rejected::<crate::filters::Birth>(birth)),
+        ".mixture[].weight must be weights summing to 1, got 0.5"
     );
     let d: Detection = serde_json::from_str(r#"{"probability":0.9}"#).unwrap();
     assert_eq!(d, Detection::new(0.9, None).unwrap());

@@ -16,8 +16,8 @@
 //! | [`SplitLibrary`] | `{weights, means, sigma, lambda}` | [`SplitLibrary::new`] |
 //! | [`MultiObjectLikelihood`] | `{detection, clutter_rate}` | [`MultiObjectLikelihood::new`] |
 //! | [`ParticleSet`] | `{points, weights}` | [`ParticleSet::new`] |
-//! | [`GmBernoulli`], [`Birth`] | `{existence, mixture}`, `{probability, mixture}` | their `new` |
-//! | [`Detection`] | `{probability, fov}` (`fov` optional) | [`Detection::new`] |
+//! | [`GmBernoulli`], [`Birth`] | `{existence, mixture}`, `{probability, mixture}` (a birth's errors name `.probability`, `.mixture[].weight`) | their `new` |
+//! | [`Detection`] | `{probability, fov}` (`fov` optional; errors name `.probability`) | [`Detection::new`] |
 //! | [`Density1`] | `{"gaussian": {mean, variance}}`, `{"uniform": {low, high}}`, `{"mixture": [{weight, mean, variance}, …]}`, `{"table": {x, density}}` (errors name `.gaussian.variance`, `.mixture[2].weight`, …); [`DensityOr`] with [`deserialize_density_or`] reads a value of those kinds or others of its own (a prior: a density or a Gaussian state) | [`Density1::gaussian`], … (a table's `cdf` is recomputed) |
 //! | [`bounds::Detection`](BoundsDetection) | a number p (constant), `{"table": {x, probability}}` (errors name `.table.x[3]`, …) | [`BoundsDetection::constant`], [`BoundsDetection::table`] |
 //! | [`LinearGaussian`] | `{detection, gain, offset, noise_variance}` | [`LinearGaussian::new`] |
@@ -54,9 +54,11 @@ use crate::smc::MultiObjectLikelihood;
 use crate::splitting::SplitLibrary;
 
 /// Implements `Serialize` by writing `$repr` built from `&self`, and `Deserialize` by reading
-/// `$repr` and passing it to the (fallible) constructor.
+/// `$repr` and passing it to the (fallible) constructor. With `below "field"`, the
+/// constructor names its errors under `field` (`birth.probability`) and they are given
+/// relative to the value read (`.probability`; see [`below`]).
 macro_rules! through_constructor {
-    ($ty:ty, $repr:ty, |$s:ident| $to:expr, |$r:ident| $from:expr) => {
+    ($ty:ty, $repr:ty, |$s:ident| $to:expr, |$r:ident| $from:expr $(, below $field:literal)?) => {
         impl Serialize for $ty {
             fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
                 let $s = self;
@@ -69,10 +71,21 @@ macro_rules! through_constructor {
             fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
                 let $r = <$repr>::deserialize(deserializer)?;
                 let built: Result<Self, Error> = $from;
+                $(let built = built.map_err(|e| below(e, $field));)?
                 built.map_err(|e| D::Error::custom(e.to_string()))
             }
         }
     };
+}
+
+/// A constructor's error about `field.x` (its own name for the value, `detection.probability`)
+/// named relative to the value (`.probability`), so that a path-tracking deserializer
+/// continues its own path with it (`config.detection` + `.probability`).
+fn below(e: Error, field: &str) -> Error {
+    e.map_field(|what| match what.strip_prefix(field) {
+        Some(rest) if rest.starts_with(['.', '[']) => rest.into(),
+        _ => what.into(),
+    })
 }
 
 #[derive(Serialize)]
@@ -660,6 +673,7 @@ through_constructor!(
 #[derive(Serialize, Deserialize)]
 struct BirthRepr {
     probability: f64,
+    #[serde(default)]
     mixture: GaussianMixture,
 }
 
@@ -670,7 +684,8 @@ through_constructor!(
         probability: b.probability,
         mixture: b.mixture.clone(),
     },
-    |r| Birth::new(r.probability, r.mixture)
+    |r| Birth::new(r.probability, r.mixture),
+    below "birth"
 );
 
 #[derive(Serialize, Deserialize)]
@@ -687,7 +702,8 @@ through_constructor!(
         probability: d.probability,
         fov: d.fov.clone(),
     },
-    |r| Detection::new(r.probability, r.fov)
+    |r| Detection::new(r.probability, r.fov),
+    below "detection"
 );
 
 /// A region written as the constructor that builds it (externally tagged, snake_case).

@@ -13,7 +13,7 @@ use crate::boundary::{
     seed_or_entropy, type_error, write,
 };
 use crate::names::Renamed;
-use crate::types::{self, MixtureComponent, Point, WeightedGaussian};
+use crate::types::{MixtureComponent, Point, WeightedGaussian};
 use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
     self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, ConfigShapes,
@@ -21,31 +21,31 @@ use fisst::filters::{
     LinearGaussianTransition, ParticleOptions, PredictOptions, Splitting, SplittingOptions,
     UpdateOptions,
 };
+use fisst::gaussian::GaussianMixture;
 use fisst::mixture::ReductionOptions;
 use fisst::regions::Region;
 use fisst::sim::airport::{AirportScenarioOptions, AirportScenarioReport, Anchor, TruthPoint};
 
-/// The mean lengths of the components of a mixture as given.
-fn mean_lengths(items: &[WeightedGaussian]) -> Vec<usize> {
-    items.iter().map(|g| g.mean.0.len()).collect()
+/// The mean lengths of the components of a mixture.
+fn mean_lengths(mixture: &GaussianMixture) -> Vec<usize> {
+    mixture.components().iter().map(|(_, g)| g.dim()).collect()
 }
 
-/// Checks the dimensions of the fields of the argument `root` against each other before any
-/// field is read alone ([`ConfigShapes::check`]).
+/// Checks the dimensions of the fields of the argument `root` against each other before the
+/// transition and the likelihood are built from their rows ([`ConfigShapes::check`]).
 fn check_shapes(
     transition: &Transition,
-    mixture: &[WeightedGaussian],
-    birth: Option<&BirthOptions>,
+    mixture: &GaussianMixture,
+    birth: &Birth,
     likelihood: Option<&LikelihoodOptions>,
     position_dims: usize,
     root: &'static str,
 ) -> JsResult<()> {
-    let birth = birth.map(|b| mean_lengths(&b.mixture)).unwrap_or_default();
     ConfigShapes {
         f: ConfigShapes::of_rows(&transition.f),
         q: ConfigShapes::of_rows(&transition.q),
         mixture: &mean_lengths(mixture),
-        birth: &birth,
+        birth: &mean_lengths(&birth.mixture),
         likelihood: likelihood.map(|l| (ConfigShapes::of_rows(&l.h), ConfigShapes::of_rows(&l.r))),
         position_dims,
     }
@@ -75,19 +75,21 @@ impl Transition {
 
 /// Object birth: p_b and the birth density b(x) (weights sum to 1; may be empty when
 /// p_b = 0).
-#[derive(Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `Birth`
+#[derive(Tsify)]
 pub struct BirthOptions {
     /// The birth probability p_b ∈ [0, 1]: the probability that an object appears in one step when
     /// none exists.
     pub probability: f64,
     /// The birth density b(x) of a new object's state, a Gaussian mixture (weights sum to 1).
-    #[serde(default)]
+    #[tsify(optional)]
     pub mixture: Vec<WeightedGaussian>,
 }
 
 /// Object detection: p_D(x; S) = 1_S(x) p_D, eq. (51) of LeGrand & Ferrari, "Split Happens!
 /// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper 001).
-#[derive(Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `Detection`
+#[derive(Tsify)]
 pub struct DetectionOptions {
     /// The detection probability p_D ∈ [0, 1] inside the field of view S.
     pub probability: f64,
@@ -154,21 +156,6 @@ impl LikelihoodOptions {
     }
 }
 
-/// The birth of the argument `root` (the core names its errors `birth.probability`, …).
-fn birth(b: Option<BirthOptions>, root: &'static str) -> JsResult<Birth> {
-    match b {
-        None => Ok(Birth::none()),
-        Some(b) => {
-            let m = types::mixture(b.mixture, &format!("{root}.birth.mixture"))?;
-            Birth::new(b.probability, m).or_throw_rendered(root)
-        }
-    }
-}
-
-fn density(items: Vec<WeightedGaussian>, path: &str) -> JsResult<fisst::gaussian::GaussianMixture> {
-    types::mixture(items, path)
-}
-
 /// Options of `gmBernoulliPredict` (the GM Bernoulli prediction of LeGrand & Ferrari, "Split
 /// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
 /// (paper 001)).
@@ -178,7 +165,8 @@ pub struct GmBernoulliPredictOptions {
     pub existence: f64,
     /// The spatial density p(x) before the prediction, a Gaussian mixture: weights sum to 1 (at
     /// most 10,000 components).
-    pub mixture: Vec<WeightedGaussian>,
+    #[tsify(type = "WeightedGaussian[]")]
+    pub mixture: GaussianMixture,
     /// The motion model: transition matrix F and process noise covariance Q.
     pub transition: Transition,
     /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives one
@@ -186,8 +174,9 @@ pub struct GmBernoulliPredictOptions {
     #[serde(default = "core_filters::default_survival")]
     pub survival: f64,
     /// Object birth: the birth probability p_b and birth density b(x); omitted: no birth.
-    #[tsify(optional)]
-    pub birth: Option<BirthOptions>,
+    #[serde(default = "Birth::none")]
+    #[tsify(optional, type = "BirthOptions")]
+    pub birth: Birth,
 }
 
 /// Result of `gmBernoulliPredict`: a Bernoulli with a Gaussian-mixture (GM) density.
@@ -209,22 +198,15 @@ pub fn gm_bernoulli_predict(
     #[wasm_bindgen(unchecked_param_type = "GmBernoulliPredictOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: GmBernoulliPredictOptions = read(options, "options")?;
-    check_shapes(
-        &o.transition,
-        &o.mixture,
-        o.birth.as_ref(),
-        None,
-        0,
-        "options",
-    )?;
+    check_shapes(&o.transition, &o.mixture, &o.birth, None, 0, "options")?;
     let state = GmBernoulli {
         existence: o.existence,
-        mixture: density(o.mixture, "options.mixture")?,
+        mixture: o.mixture,
     };
     let config = PredictOptions {
         transition: o.transition.into_core("options")?,
         survival: o.survival,
-        birth: birth(o.birth, "options")?,
+        birth: o.birth,
     };
     let out = core_filters::gm_bernoulli_predict(&state, &config).or_throw_rendered("options")?;
     write(&out)
@@ -239,13 +221,15 @@ pub struct GmBernoulliUpdateOptions {
     /// The predicted existence probability r_{k|k−1} ∈ [0, 1].
     pub existence: f64,
     /// The predicted spatial density p_{k|k−1}, a Gaussian mixture: weights sum to 1.
-    pub mixture: Vec<WeightedGaussian>,
+    #[tsify(type = "WeightedGaussian[]")]
+    pub mixture: GaussianMixture,
     /// The number n_s of position components: the first n_s state components are the position that
     /// regions refer to (default 2, in [1, 8]).
     #[serde(default = "core_filters::default_position_dims")]
     pub position_dims: usize,
     /// Detection: the detection probability p_D inside the field of view S.
-    pub detection: DetectionOptions,
+    #[tsify(type = "DetectionOptions")]
+    pub detection: Detection,
     /// The imprecise reports ζ (regions, g̃ = 1_ζ); omitted or empty with no `measurements`:
     /// the non-detection update.
     #[tsify(optional)]
@@ -265,12 +249,14 @@ pub struct GmBernoulliUpdateOptions {
     #[tsify(optional, type = "SplittingOptions")]
     pub splitting: Option<SplittingOptions>,
     /// The reduction; omitted: prune 1e-6, merge within 2, Runnalls to 100.
+    #[serde(default = "core_filters::default_reduction")]
     #[tsify(optional, type = "ReductionOptionsJs")]
-    pub reduction: Option<ReductionOptions>,
+    pub reduction: ReductionOptions,
     /// Regions the object cannot occupy (mass removed by the mean-based partition after
     /// splitting; the existence is unchanged).
+    #[serde(default)]
     #[tsify(optional)]
-    pub exclusions: Option<Vec<Region>>,
+    pub exclusions: Vec<Region>,
 }
 
 /// Result of `gmBernoulliUpdate`: the posterior Bernoulli.
@@ -288,29 +274,17 @@ pub struct GmBernoulliUpdateResult {
     pub split_components: usize,
 }
 
-fn update_config(
+/// The splitting step of the argument `root` for positions of `position_dims` coordinates
+/// (omitted: [`Splitting::default`]).
+fn splitting(
+    s: Option<SplittingOptions>,
     position_dims: usize,
-    detection: DetectionOptions,
-    clutter: Clutter,
-    splitting: Option<SplittingOptions>,
-    reduction: Option<ReductionOptions>,
-    exclusions: Option<Vec<Region>>,
     root: &'static str,
-) -> JsResult<UpdateOptions> {
-    Ok(UpdateOptions {
-        position_dims,
-        detection: Detection {
-            probability: detection.probability,
-            fov: detection.fov,
-        },
-        clutter,
-        splitting: match splitting {
-            Some(s) => s.build(position_dims).or_throw_rendered(root)?,
-            None => Splitting::default(),
-        },
-        reduction: reduction.unwrap_or_else(core_filters::default_reduction),
-        exclusions: exclusions.unwrap_or_default(),
-    })
+) -> JsResult<Splitting> {
+    match s {
+        Some(s) => s.build(position_dims).or_throw_rendered(root),
+        None => Ok(Splitting::default()),
+    }
 }
 
 fn measurements(points: Vec<Point>) -> Vec<Vec<f64>> {
@@ -329,17 +303,16 @@ pub fn gm_bernoulli_update(
     let o: GmBernoulliUpdateOptions = read(options, "options")?;
     let state = GmBernoulli {
         existence: o.existence,
-        mixture: density(o.mixture, "options.mixture")?,
+        mixture: o.mixture,
     };
-    let config = update_config(
-        o.position_dims,
-        o.detection,
-        o.clutter,
-        o.splitting,
-        o.reduction,
-        o.exclusions,
-        "options",
-    )?;
+    let config = UpdateOptions {
+        position_dims: o.position_dims,
+        detection: o.detection,
+        clutter: o.clutter,
+        splitting: splitting(o.splitting, o.position_dims, "options")?,
+        reduction: o.reduction,
+        exclusions: o.exclusions,
+    };
     let out = match (o.measurements, o.likelihood) {
         (Some(z), Some(l)) => {
             let lik = l.into_core("options")?;
@@ -369,7 +342,8 @@ pub struct BernoulliFilterConfig {
     /// The initial existence probability r_{0|0} ∈ [0, 1].
     pub existence: f64,
     /// The initial spatial density p_{0|0}, a Gaussian mixture (weights sum to 1).
-    pub mixture: Vec<WeightedGaussian>,
+    #[tsify(type = "WeightedGaussian[]")]
+    pub mixture: GaussianMixture,
     /// The motion model: transition matrix F and process noise covariance Q.
     pub transition: Transition,
     /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives one
@@ -377,14 +351,16 @@ pub struct BernoulliFilterConfig {
     #[serde(default = "core_filters::default_survival")]
     pub survival: f64,
     /// Object birth: the birth probability p_b and birth density b(x); omitted: no birth.
-    #[tsify(optional)]
-    pub birth: Option<BirthOptions>,
+    #[serde(default = "Birth::none")]
+    #[tsify(optional, type = "BirthOptions")]
+    pub birth: Birth,
     /// The number n_s of position components: the first n_s state components are the position that
     /// regions refer to (default 2).
     #[serde(default = "core_filters::default_position_dims")]
     pub position_dims: usize,
     /// Detection: the detection probability p_D inside the field of view S.
-    pub detection: DetectionOptions,
+    #[tsify(type = "DetectionOptions")]
+    pub detection: Detection,
     /// Clutter (false reports): the rate λ_c and density c̃.
     #[tsify(type = "ClutterOptions")]
     pub clutter: Clutter,
@@ -396,11 +372,13 @@ pub struct BernoulliFilterConfig {
     pub splitting: Option<SplittingOptions>,
     /// The reduction after each update (GM filter only); omitted: prune 1e-6, merge within 2,
     /// Runnalls to 100.
+    #[serde(default = "core_filters::default_reduction")]
     #[tsify(optional, type = "ReductionOptionsJs")]
-    pub reduction: Option<ReductionOptions>,
+    pub reduction: ReductionOptions,
     /// Regions the object cannot occupy.
+    #[serde(default)]
     #[tsify(optional)]
-    pub exclusions: Option<Vec<Region>>,
+    pub exclusions: Vec<Region>,
     /// Particle filter: the number of particles N (default 5000, at most 200000).
     #[serde(default = "core_filters::default_particles")]
     pub particles: usize,
@@ -429,37 +407,29 @@ fn convert(config: JsValue) -> JsResult<Converted> {
     check_shapes(
         &c.transition,
         &c.mixture,
-        c.birth.as_ref(),
+        &c.birth,
         c.likelihood.as_ref(),
         c.position_dims,
         "config",
     )?;
-    let update = update_config(
-        c.position_dims,
-        c.detection,
-        c.clutter,
-        c.splitting,
-        c.reduction,
-        c.exclusions,
-        "config",
-    )?;
+    let splitting = splitting(c.splitting, c.position_dims, "config")?;
     let likelihood = match c.likelihood {
         Some(l) => Some(l.into_core("config")?),
         None => None,
     };
     let config = CoreConfig {
         existence: c.existence,
-        mixture: density(c.mixture, "config.mixture")?,
+        mixture: c.mixture,
         transition: c.transition.into_core("config")?,
         survival: c.survival,
-        birth: birth(c.birth, "config")?,
-        position_dims: update.position_dims,
-        detection: update.detection,
-        clutter: update.clutter,
+        birth: c.birth,
+        position_dims: c.position_dims,
+        detection: c.detection,
+        clutter: c.clutter,
         likelihood,
-        splitting: update.splitting,
-        reduction: update.reduction,
-        exclusions: update.exclusions,
+        splitting,
+        reduction: c.reduction,
+        exclusions: c.exclusions,
     };
     // both filters' constructors validate the configuration as a whole first
     let particle = ParticleOptions {

@@ -372,6 +372,22 @@ mod tests {
         assert_eq!(render_path(""), "");
     }
 
+    #[test]
+    fn render_path_in_applies_the_parents_exceptions_and_variant_names() {
+        // a relative part of an error below `transition` (the core's `.q` of a transition)
+        assert_eq!(render_path_in("transition", "q"), "Q");
+        assert_eq!(render_path_in("", "q"), "q");
+        // a region's part: the core's `ball` is the contract's `disc`
+        assert_eq!(render_path_in("fov", "ball.radius"), "disc.radius");
+        assert_eq!(
+            render_path_in("fov", "union[1].ball.center"),
+            "union[1].disc.center"
+        );
+        assert_eq!(render_path_in("mixture", "[2].cov"), "[2].cov");
+        assert_eq!(variant_name("ball"), "disc");
+        assert_eq!(variant_name("polygon"), "polygon");
+    }
+
     #[derive(serde::Serialize)]
     struct Transition {
         f: Vec<f64>,

@@ -111,32 +111,6 @@ pub struct Bernoulli {
     pub cov: Covariance,
 }
 
-/// Checks the length of an array of Gaussians at `path` against [`MAX_GAUSSIANS`].
-pub fn check_gaussian_count(len: usize, path: &str) -> JsResult<()> {
-    if len > MAX_GAUSSIANS {
-        return Err(range_error(format!(
-            "{path} has {len} entries, at most {MAX_GAUSSIANS} are supported"
-        )));
-    }
-    Ok(())
-}
-
-/// A Gaussian mixture from its components at `path` (`options.mixture`).
-pub fn mixture(items: Vec<WeightedGaussian>, path: &str) -> JsResult<GaussianMixture> {
-    check_gaussian_count(items.len(), path)?;
-    let comps = items
-        .into_iter()
-        .enumerate()
-        .map(|(i, c)| {
-            Ok((
-                c.weight,
-                core_gaussian(c.mean, c.cov, &format!("{path}[{i}]"))?,
-            ))
-        })
-        .collect::<JsResult<Vec<_>>>()?;
-    GaussianMixture::new(comps, path).or_throw()
-}
-
 /// A mixture component as results give it back: `cov` as nested rows. It can be passed back
 /// wherever a [`WeightedGaussian`] is taken.
 #[derive(Clone, Debug, Serialize, Tsify)]
