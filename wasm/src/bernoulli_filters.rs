@@ -170,13 +170,12 @@ pub struct GmBernoulliPredictOptions {
     /// The motion model: transition matrix F and process noise covariance Q.
     pub transition: Transition,
     /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives one
-    /// step (default 0.99).
-    #[serde(default = "core_filters::default_survival")]
-    pub survival: f64,
+    /// step (omitted: 0.99, `default_survival`).
+    #[tsify(optional)]
+    pub survival: Option<f64>,
     /// Object birth: the birth probability p_b and birth density b(x); omitted: no birth.
-    #[serde(default = "Birth::none")]
     #[tsify(optional, type = "BirthOptions")]
-    pub birth: Birth,
+    pub birth: Option<Birth>,
 }
 
 /// Result of `gmBernoulliPredict`: a Bernoulli with a Gaussian-mixture (GM) density.
@@ -198,15 +197,16 @@ pub fn gm_bernoulli_predict(
     #[wasm_bindgen(unchecked_param_type = "GmBernoulliPredictOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: GmBernoulliPredictOptions = read(options, "options")?;
-    check_shapes(&o.transition, &o.mixture, &o.birth, None, 0, "options")?;
+    let birth = o.birth.unwrap_or_else(Birth::none);
+    check_shapes(&o.transition, &o.mixture, &birth, None, 0, "options")?;
     let state = GmBernoulli {
         existence: o.existence,
         mixture: o.mixture,
     };
     let config = PredictOptions {
         transition: o.transition.into_core("options")?,
-        survival: o.survival,
-        birth: o.birth,
+        survival: o.survival.unwrap_or_else(core_filters::default_survival),
+        birth,
     };
     let out = core_filters::gm_bernoulli_predict(&state, &config).or_throw_rendered("options")?;
     write(&out)
