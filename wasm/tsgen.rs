@@ -340,10 +340,12 @@ impl Gen<'_> {
                             let aliased = (*alias.ty).clone();
                             return self.ty(&aliased, None);
                         }
-                        if self.defs.contains_key(&name) {
-                            self.want(&name);
+                        // a name the binding declares is named, not generated (the core's
+                        // `Region` is declared in the contract's form)
+                        if self.declared.contains(&name) {
                             name
-                        } else if self.declared.contains(&name) {
+                        } else if self.defs.contains_key(&name) {
+                            self.want(&name);
                             name
                         } else {
                             self.warnings

@@ -24,7 +24,7 @@ use crate::fov::{FovCardinality, MultiObjectDensity, SceneOptions};
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::metrics::{Gospa, GospaSeries, Ospa};
 use crate::mixture::ReductionOptions;
-use crate::regions::Region;
+use crate::regions::{MAX_MEMBERS, MAX_VERTICES, Region};
 use crate::sim::airport::{AirportScenarioOptions, airport_scenario};
 use crate::smc::{MultiObjectLikelihood, Regularisation};
 use crate::splitting::{SplitLibrary, SplitOptions, split_for_region};
@@ -204,10 +204,16 @@ fn eq39_existence_and_detection_probability_1_5_are_rejected() {
         rejected::<GmBernoulli>(state),
         "existence must be a probability in [0, 1], got 1.5"
     );
+    // named relative to the value read (`config.detection` + `.probability` in a binding)
     let detection = rejected::<Detection>(r#"{"probability":1.5}"#);
     assert_eq!(
-        detection,
-        Detection::new(1.5, None).unwrap_err().to_string()
+        without_position(detection),
+        ".probability must be a probability in [0, 1], got 1.5"
+    );
+    let birth = r#"{"probability":0.1,"mixture":[{"weight":0.5,"mean":[0.0],"cov":[[1.0]]}]}"#;
+    assert_eq!(
+        without_position(rejected::<crate::filters::Birth>(birth)),
+        ".mixture[].weight must be weights summing to 1, got 0.5"
     );
     let d: Detection = serde_json::from_str(r#"{"probability":0.9}"#).unwrap();
     assert_eq!(d, Detection::new(0.9, None).unwrap());
@@ -377,13 +383,43 @@ fn regions_splitting_and_fov_round_trip() {
         json.starts_with(r#"{"union":[{"complement":{"ball":{"center""#),
         "{json}"
     );
+    // the constructors' errors, named relative to the region read
     assert_eq!(
-        rejected::<Region>(r#"{"ball":{"center":[0.0],"radius":-1.0}}"#),
-        Region::ball(&[0.0], -1.0, "ball").unwrap_err().to_string()
+        without_position(rejected::<Region>(
+            r#"{"ball":{"center":[0.0],"radius":-1.0}}"#
+        )),
+        ".ball.radius must be finite and > 0, got -1"
     );
     assert_eq!(
-        rejected::<Region>(r#"{"union":[]}"#),
-        Region::union(Vec::new(), "union").unwrap_err().to_string()
+        without_position(rejected::<Region>(r#"{"union":[]}"#)),
+        ".union must be a non-empty list of regions, got 0"
+    );
+    assert_eq!(
+        without_position(rejected::<Region>(
+            r#"{"complement":{"box":{"min":[0,1],"max":[1,0]}}}"#
+        )),
+        ".box.max[1] must be a number not below the matching min, got 0"
+    );
+    let disc = r#"{"ball":{"center":[0,0],"radius":1}}"#;
+    let ball3 = r#"{"ball":{"center":[0,0,0],"radius":1}}"#;
+    assert_eq!(
+        without_position(rejected::<Region>(&std::format!(
+            r#"{{"intersection":[{disc},{ball3}]}}"#
+        ))),
+        ".intersection[1] has length 3, expected 2"
+    );
+    // the caps of the constructors
+    let many = vec![disc; MAX_MEMBERS + 1].join(",");
+    assert_eq!(
+        without_position(rejected::<Region>(&std::format!(r#"{{"union":[{many}]}}"#))),
+        ".union has 1001 members, at most 1000 are supported"
+    );
+    let vertices = vec!["[0,0]"; MAX_VERTICES + 1].join(",");
+    assert_eq!(
+        without_position(rejected::<Region>(&std::format!(
+            r#"{{"polygon":{{"vertices":[{vertices}]}}}}"#
+        ))),
+        ".polygon has 1001 vertices, at most 1000 are supported"
     );
     let library = SplitLibrary::table_i();
     round_trip(&library);

@@ -16,15 +16,15 @@
 //! | [`SplitLibrary`] | `{weights, means, sigma, lambda}` | [`SplitLibrary::new`] |
 //! | [`MultiObjectLikelihood`] | `{detection, clutter_rate}` | [`MultiObjectLikelihood::new`] |
 //! | [`ParticleSet`] | `{points, weights}` | [`ParticleSet::new`] |
-//! | [`GmBernoulli`], [`Birth`] | `{existence, mixture}`, `{probability, mixture}` | their `new` |
-//! | [`Detection`] | `{probability, fov}` (`fov` optional) | [`Detection::new`] |
+//! | [`GmBernoulli`], [`Birth`] | `{existence, mixture}`, `{probability, mixture}` (a birth's errors name `.probability`, `.mixture[].weight`) | their `new` |
+//! | [`Detection`] | `{probability, fov}` (`fov` optional; errors name `.probability`) | [`Detection::new`] |
 //! | [`Density1`] | `{"gaussian": {mean, variance}}`, `{"uniform": {low, high}}`, `{"mixture": [{weight, mean, variance}, …]}`, `{"table": {x, density}}` (errors name `.gaussian.variance`, `.mixture[2].weight`, …); [`DensityOr`] with [`deserialize_density_or`] reads a value of those kinds or others of its own (a prior: a density or a Gaussian state) | [`Density1::gaussian`], … (a table's `cdf` is recomputed) |
 //! | [`bounds::Detection`](BoundsDetection) | a number p (constant), `{"table": {x, probability}}` (errors name `.table.x[3]`, …) | [`BoundsDetection::constant`], [`BoundsDetection::table`] |
 //! | [`LinearGaussian`] | `{detection, gain, offset, noise_variance}` | [`LinearGaussian::new`] |
 //! | [`GaussianPrior`] | `{mean, cov}` (`cov` rows) | [`GaussianPrior::new`] |
 //! | [`LinearGaussianSensor`] | `{detection_probability, gain, offset, noise_cov}` (`gain`, `noise_cov` rows) | [`LinearGaussianSensor::new`] |
 //! | [`SpatialDensity`] | exactly one of `{mean, cov}`, `{mixture: [...]}`, `{particles, weights}` (`weights` optional; errors name `.mixture[2].cov`, `.particles[1]`) | [`SpatialDensity::gaussian`], [`SpatialDensity::mixture`], [`SpatialDensity::particles`] |
-//! | [`Region`] | `{"box": …}`, `{"polygon": …}`, `{"ball": …}`, `{"union": [regions]}`, `{"intersection": [regions]}`, `{"complement": region}` | [`Region::from`], [`Region::union`], … |
+//! | [`Region`] | `{"box": {min, max}}`, `{"polygon": {vertices}}`, `{"ball": {center, radius}}`, `{"union": [regions]}`, `{"intersection": [regions]}`, `{"complement": region}` (errors name `.box.max[0]`, `.union[1]`, …) | [`AxisBox::new`], [`Polygon::new`], [`Ball::new`], [`Region::union`], … |
 //!
 //! Errors of the Gaussian types name the field relative to the value being read (`.cov`,
 //! `[2].weight`), so that a deserializer that tracks paths (the JavaScript one) continues its
@@ -54,9 +54,11 @@ use crate::smc::MultiObjectLikelihood;
 use crate::splitting::SplitLibrary;
 
 /// Implements `Serialize` by writing `$repr` built from `&self`, and `Deserialize` by reading
-/// `$repr` and passing it to the (fallible) constructor.
+/// `$repr` and passing it to the (fallible) constructor. With `below "field"`, the
+/// constructor names its errors under `field` (`birth.probability`) and they are given
+/// relative to the value read (`.probability`; see [`below`]).
 macro_rules! through_constructor {
-    ($ty:ty, $repr:ty, |$s:ident| $to:expr, |$r:ident| $from:expr) => {
+    ($ty:ty, $repr:ty, |$s:ident| $to:expr, |$r:ident| $from:expr $(, below $field:literal)?) => {
         impl Serialize for $ty {
             fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
                 let $s = self;
@@ -69,10 +71,21 @@ macro_rules! through_constructor {
             fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
                 let $r = <$repr>::deserialize(deserializer)?;
                 let built: Result<Self, Error> = $from;
+                $(let built = built.map_err(|e| below(e, $field));)?
                 built.map_err(|e| D::Error::custom(e.to_string()))
             }
         }
     };
+}
+
+/// A constructor's error about `field.x` (its own name for the value, `detection.probability`)
+/// named relative to the value (`.probability`), so that a path-tracking deserializer
+/// continues its own path with it (`config.detection` + `.probability`).
+fn below(e: Error, field: &str) -> Error {
+    e.map_field(|what| match what.strip_prefix(field) {
+        Some(rest) if rest.starts_with(['.', '[']) => rest.into(),
+        _ => what.into(),
+    })
 }
 
 #[derive(Serialize)]
@@ -660,6 +673,7 @@ through_constructor!(
 #[derive(Serialize, Deserialize)]
 struct BirthRepr {
     probability: f64,
+    #[serde(default)]
     mixture: GaussianMixture,
 }
 
@@ -670,7 +684,8 @@ through_constructor!(
         probability: b.probability,
         mixture: b.mixture.clone(),
     },
-    |r| Birth::new(r.probability, r.mixture)
+    |r| Birth::new(r.probability, r.mixture),
+    below "birth"
 );
 
 #[derive(Serialize, Deserialize)]
@@ -687,7 +702,8 @@ through_constructor!(
         probability: d.probability,
         fov: d.fov.clone(),
     },
-    |r| Detection::new(r.probability, r.fov)
+    |r| Detection::new(r.probability, r.fov),
+    below "detection"
 );
 
 /// A region written as the constructor that builds it (externally tagged, snake_case).
@@ -702,16 +718,17 @@ enum RegionRef<'a> {
     Complement(&'a Region),
 }
 
-/// [`RegionRef`], owned, for reading.
+/// [`RegionRef`] as read: the arguments of the constructors, which [`Region`]'s
+/// `Deserialize` calls itself (so that their errors name the part of the region at fault).
 #[derive(Deserialize)]
 #[serde(rename = "Region")]
 enum RegionRepr {
     #[serde(rename = "box")]
-    Box(AxisBox),
+    Box(AxisBoxRepr),
     #[serde(rename = "polygon")]
-    Polygon(Polygon),
+    Polygon(PolygonRepr),
     #[serde(rename = "ball")]
-    Ball(Ball),
+    Ball(BallRepr),
     #[serde(rename = "union")]
     Union(Vec<Region>),
     #[serde(rename = "intersection")]
@@ -734,17 +751,25 @@ impl Serialize for Region {
     }
 }
 
+/// Read through the constructors ([`AxisBox::new`], [`Polygon::new`], [`Ball::new`],
+/// [`Region::union`], [`Region::intersection`], [`Region::complement`]); an error names the
+/// part at fault relative to the region (`.box.max[0]`, `.polygon[2][1]`, `.union[1]`,
+/// `.union has 1001 members, …`), so a path-tracking deserializer continues its own path with
+/// it (`options.fov` + `.box.max[0]`; the JavaScript one renders it in its names,
+/// `.disc.radius` for `.ball.radius`).
 impl<'de> Deserialize<'de> for Region {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         let built = match RegionRepr::deserialize(deserializer)? {
-            RegionRepr::Box(b) => Ok(Region::from(b)),
-            RegionRepr::Polygon(p) => Ok(Region::from(p)),
-            RegionRepr::Ball(b) => Ok(Region::from(b)),
+            RegionRepr::Box(b) => AxisBox::new(&b.min, &b.max, "box").map(Region::from),
+            RegionRepr::Polygon(p) => Polygon::new(&p.vertices, "polygon").map(Region::from),
+            RegionRepr::Ball(b) => Ball::new(&b.center, b.radius, "ball").map(Region::from),
             RegionRepr::Union(m) => Region::union(m, "union"),
             RegionRepr::Intersection(m) => Region::intersection(m, "intersection"),
             RegionRepr::Complement(r) => Ok(Region::complement(*r)),
         };
-        built.map_err(|e| D::Error::custom(e.to_string()))
+        built.map_err(|e| {
+            D::Error::custom(e.map_field(|what| alloc::format!(".{what}")).to_string())
+        })
     }
 }
 

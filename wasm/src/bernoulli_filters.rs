@@ -13,39 +13,39 @@ use crate::boundary::{
     seed_or_entropy, type_error, write,
 };
 use crate::names::Renamed;
-use crate::types::{self, MixtureComponent, Point, Region, WeightedGaussian};
+use crate::types::{MixtureComponent, Point, WeightedGaussian};
 use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
     self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, ConfigShapes,
     Detection, EstimateOptions, FilterEstimate, GmBernoulli, LinearGaussianLikelihood,
     LinearGaussianTransition, ParticleOptions, PredictOptions, Splitting, SplittingOptions,
-    UpdateInfo, UpdateOptions,
+    UpdateOptions,
 };
+use fisst::gaussian::GaussianMixture;
 use fisst::mixture::ReductionOptions;
-use fisst::regions::Region as CoreRegion;
+use fisst::regions::Region;
 use fisst::sim::airport::{AirportScenarioOptions, AirportScenarioReport, Anchor, TruthPoint};
 
-/// The mean lengths of the components of a mixture as given.
-fn mean_lengths(items: &[WeightedGaussian]) -> Vec<usize> {
-    items.iter().map(|g| g.mean.0.len()).collect()
+/// The mean lengths of the components of a mixture.
+fn mean_lengths(mixture: &GaussianMixture) -> Vec<usize> {
+    mixture.components().iter().map(|(_, g)| g.dim()).collect()
 }
 
-/// Checks the dimensions of the fields of the argument `root` against each other before any
-/// field is read alone ([`ConfigShapes::check`]).
+/// Checks the dimensions of the fields of the argument `root` against each other before the
+/// transition and the likelihood are built from their rows ([`ConfigShapes::check`]).
 fn check_shapes(
     transition: &Transition,
-    mixture: &[WeightedGaussian],
-    birth: Option<&BirthOptions>,
+    mixture: &GaussianMixture,
+    birth: &Birth,
     likelihood: Option<&LikelihoodOptions>,
     position_dims: usize,
     root: &'static str,
 ) -> JsResult<()> {
-    let birth = birth.map(|b| mean_lengths(&b.mixture)).unwrap_or_default();
     ConfigShapes {
         f: ConfigShapes::of_rows(&transition.f),
         q: ConfigShapes::of_rows(&transition.q),
         mixture: &mean_lengths(mixture),
-        birth: &birth,
+        birth: &mean_lengths(&birth.mixture),
         likelihood: likelihood.map(|l| (ConfigShapes::of_rows(&l.h), ConfigShapes::of_rows(&l.r))),
         position_dims,
     }
@@ -75,19 +75,21 @@ impl Transition {
 
 /// Object birth: p_b and the birth density b(x) (weights sum to 1; may be empty when
 /// p_b = 0).
-#[derive(Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `Birth`
+#[derive(Tsify)]
 pub struct BirthOptions {
     /// The birth probability p_b ∈ [0, 1]: the probability that an object appears in one step when
     /// none exists.
     pub probability: f64,
     /// The birth density b(x) of a new object's state, a Gaussian mixture (weights sum to 1).
-    #[serde(default)]
+    #[tsify(optional)]
     pub mixture: Vec<WeightedGaussian>,
 }
 
 /// Object detection: p_D(x; S) = 1_S(x) p_D, eq. (51) of LeGrand & Ferrari, "Split Happens!
 /// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper 001).
-#[derive(Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `Detection`
+#[derive(Tsify)]
 pub struct DetectionOptions {
     /// The detection probability p_D ∈ [0, 1] inside the field of view S.
     pub probability: f64,
@@ -154,29 +156,6 @@ impl LikelihoodOptions {
     }
 }
 
-fn regions(items: Vec<Region>, path: &str) -> JsResult<Vec<CoreRegion>> {
-    items
-        .into_iter()
-        .enumerate()
-        .map(|(i, r)| Ok(r.into_core(&format!("{path}[{i}]"))?.0))
-        .collect()
-}
-
-/// The birth of the argument `root` (the core names its errors `birth.probability`, …).
-fn birth(b: Option<BirthOptions>, root: &'static str) -> JsResult<Birth> {
-    match b {
-        None => Ok(Birth::none()),
-        Some(b) => {
-            let m = types::mixture(b.mixture, &format!("{root}.birth.mixture"))?;
-            Birth::new(b.probability, m).or_throw_rendered(root)
-        }
-    }
-}
-
-fn density(items: Vec<WeightedGaussian>, path: &str) -> JsResult<fisst::gaussian::GaussianMixture> {
-    types::mixture(items, path)
-}
-
 /// Options of `gmBernoulliPredict` (the GM Bernoulli prediction of LeGrand & Ferrari, "Split
 /// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
 /// (paper 001)).
@@ -186,20 +165,22 @@ pub struct GmBernoulliPredictOptions {
     pub existence: f64,
     /// The spatial density p(x) before the prediction, a Gaussian mixture: weights sum to 1 (at
     /// most 10,000 components).
-    pub mixture: Vec<WeightedGaussian>,
+    #[tsify(type = "WeightedGaussian[]")]
+    pub mixture: GaussianMixture,
     /// The motion model: transition matrix F and process noise covariance Q.
     pub transition: Transition,
     /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives one
-    /// step (default 0.99).
-    #[serde(default = "core_filters::default_survival")]
-    pub survival: f64,
-    /// Object birth: the birth probability p_b and birth density b(x); omitted: no birth.
+    /// step (omitted: 0.99, `default_survival`).
     #[tsify(optional)]
-    pub birth: Option<BirthOptions>,
+    pub survival: Option<f64>,
+    /// Object birth: the birth probability p_b and birth density b(x); omitted: no birth.
+    #[tsify(optional, type = "BirthOptions")]
+    pub birth: Option<Birth>,
 }
 
 /// Result of `gmBernoulliPredict`: a Bernoulli with a Gaussian-mixture (GM) density.
-#[derive(Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `GmBernoulli`
+#[derive(Tsify)]
 pub struct GmBernoulliResult {
     /// The predicted existence probability r ∈ [0, 1].
     pub existence: f64,
@@ -216,28 +197,19 @@ pub fn gm_bernoulli_predict(
     #[wasm_bindgen(unchecked_param_type = "GmBernoulliPredictOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: GmBernoulliPredictOptions = read(options, "options")?;
-    check_shapes(
-        &o.transition,
-        &o.mixture,
-        o.birth.as_ref(),
-        None,
-        0,
-        "options",
-    )?;
+    let birth = o.birth.unwrap_or_else(Birth::none);
+    check_shapes(&o.transition, &o.mixture, &birth, None, 0, "options")?;
     let state = GmBernoulli {
         existence: o.existence,
-        mixture: density(o.mixture, "options.mixture")?,
+        mixture: o.mixture,
     };
     let config = PredictOptions {
         transition: o.transition.into_core("options")?,
-        survival: o.survival,
-        birth: birth(o.birth, "options")?,
+        survival: o.survival.unwrap_or_else(core_filters::default_survival),
+        birth,
     };
     let out = core_filters::gm_bernoulli_predict(&state, &config).or_throw_rendered("options")?;
-    write(&GmBernoulliResult {
-        existence: out.existence,
-        mixture: types::mixture_out(&out.mixture),
-    })
+    write(&out)
 }
 
 /// Options of `gmBernoulliUpdate` (the GM Bernoulli update of LeGrand & Ferrari, "Split Happens!
@@ -249,13 +221,15 @@ pub struct GmBernoulliUpdateOptions {
     /// The predicted existence probability r_{k|k−1} ∈ [0, 1].
     pub existence: f64,
     /// The predicted spatial density p_{k|k−1}, a Gaussian mixture: weights sum to 1.
-    pub mixture: Vec<WeightedGaussian>,
+    #[tsify(type = "WeightedGaussian[]")]
+    pub mixture: GaussianMixture,
     /// The number n_s of position components: the first n_s state components are the position that
     /// regions refer to (default 2, in [1, 8]).
     #[serde(default = "core_filters::default_position_dims")]
     pub position_dims: usize,
     /// Detection: the detection probability p_D inside the field of view S.
-    pub detection: DetectionOptions,
+    #[tsify(type = "DetectionOptions")]
+    pub detection: Detection,
     /// The imprecise reports ζ (regions, g̃ = 1_ζ); omitted or empty with no `measurements`:
     /// the non-detection update.
     #[tsify(optional)]
@@ -275,16 +249,19 @@ pub struct GmBernoulliUpdateOptions {
     #[tsify(optional, type = "SplittingOptions")]
     pub splitting: Option<SplittingOptions>,
     /// The reduction; omitted: prune 1e-6, merge within 2, Runnalls to 100.
+    #[serde(default = "core_filters::default_reduction")]
     #[tsify(optional, type = "ReductionOptionsJs")]
-    pub reduction: Option<ReductionOptions>,
+    pub reduction: ReductionOptions,
     /// Regions the object cannot occupy (mass removed by the mean-based partition after
     /// splitting; the existence is unchanged).
+    #[serde(default)]
     #[tsify(optional)]
-    pub exclusions: Option<Vec<Region>>,
+    pub exclusions: Vec<Region>,
 }
 
 /// Result of `gmBernoulliUpdate`: the posterior Bernoulli.
-#[derive(Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `GmBernoulliUpdate`
+#[derive(Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct GmBernoulliUpdateResult {
     /// The posterior existence probability r_{k|k} ∈ [0, 1].
@@ -297,36 +274,17 @@ pub struct GmBernoulliUpdateResult {
     pub split_components: usize,
 }
 
-fn update_config(
+/// The splitting step of the argument `root` for positions of `position_dims` coordinates
+/// (omitted: [`Splitting::default`]).
+fn splitting(
+    s: Option<SplittingOptions>,
     position_dims: usize,
-    detection: DetectionOptions,
-    clutter: Clutter,
-    splitting: Option<SplittingOptions>,
-    reduction: Option<ReductionOptions>,
-    exclusions: Option<Vec<Region>>,
     root: &'static str,
-) -> JsResult<UpdateOptions> {
-    let fov = match detection.fov {
-        Some(r) => Some(r.into_core(&format!("{root}.detection.fov"))?.0),
-        None => None,
-    };
-    Ok(UpdateOptions {
-        position_dims,
-        detection: Detection {
-            probability: detection.probability,
-            fov,
-        },
-        clutter,
-        splitting: match splitting {
-            Some(s) => s.build(position_dims).or_throw_rendered(root)?,
-            None => Splitting::default(),
-        },
-        reduction: reduction.unwrap_or_else(core_filters::default_reduction),
-        exclusions: regions(
-            exclusions.unwrap_or_default(),
-            &format!("{root}.exclusions"),
-        )?,
-    })
+) -> JsResult<Splitting> {
+    match s {
+        Some(s) => s.build(position_dims).or_throw_rendered(root),
+        None => Ok(Splitting::default()),
+    }
 }
 
 fn measurements(points: Vec<Point>) -> Vec<Vec<f64>> {
@@ -345,17 +303,16 @@ pub fn gm_bernoulli_update(
     let o: GmBernoulliUpdateOptions = read(options, "options")?;
     let state = GmBernoulli {
         existence: o.existence,
-        mixture: density(o.mixture, "options.mixture")?,
+        mixture: o.mixture,
     };
-    let config = update_config(
-        o.position_dims,
-        o.detection,
-        o.clutter,
-        o.splitting,
-        o.reduction,
-        o.exclusions,
-        "options",
-    )?;
+    let config = UpdateOptions {
+        position_dims: o.position_dims,
+        detection: o.detection,
+        clutter: o.clutter,
+        splitting: splitting(o.splitting, o.position_dims, "options")?,
+        reduction: o.reduction,
+        exclusions: o.exclusions,
+    };
     let out = match (o.measurements, o.likelihood) {
         (Some(z), Some(l)) => {
             let lik = l.into_core("options")?;
@@ -369,16 +326,11 @@ pub fn gm_bernoulli_update(
             ));
         }
         (None, _) => {
-            let r = regions(o.reports.unwrap_or_default(), "options.reports")?;
+            let r = o.reports.unwrap_or_default();
             core_filters::gm_bernoulli_update(&state, &r, &config).or_throw_rendered("options")?
         }
     };
-    write(&GmBernoulliUpdateResult {
-        existence: out.existence,
-        mixture: types::mixture_out(&out.mixture),
-        delta: out.delta,
-        split_components: out.split_components,
-    })
+    write(&Renamed::new(&out))
 }
 
 /// The configuration of `GmBernoulliFilter` and `ParticleBernoulliFilter` (the particle
@@ -390,7 +342,8 @@ pub struct BernoulliFilterConfig {
     /// The initial existence probability r_{0|0} ∈ [0, 1].
     pub existence: f64,
     /// The initial spatial density p_{0|0}, a Gaussian mixture (weights sum to 1).
-    pub mixture: Vec<WeightedGaussian>,
+    #[tsify(type = "WeightedGaussian[]")]
+    pub mixture: GaussianMixture,
     /// The motion model: transition matrix F and process noise covariance Q.
     pub transition: Transition,
     /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives one
@@ -398,14 +351,16 @@ pub struct BernoulliFilterConfig {
     #[serde(default = "core_filters::default_survival")]
     pub survival: f64,
     /// Object birth: the birth probability p_b and birth density b(x); omitted: no birth.
-    #[tsify(optional)]
-    pub birth: Option<BirthOptions>,
+    #[serde(default = "Birth::none")]
+    #[tsify(optional, type = "BirthOptions")]
+    pub birth: Birth,
     /// The number n_s of position components: the first n_s state components are the position that
     /// regions refer to (default 2).
     #[serde(default = "core_filters::default_position_dims")]
     pub position_dims: usize,
     /// Detection: the detection probability p_D inside the field of view S.
-    pub detection: DetectionOptions,
+    #[tsify(type = "DetectionOptions")]
+    pub detection: Detection,
     /// Clutter (false reports): the rate λ_c and density c̃.
     #[tsify(type = "ClutterOptions")]
     pub clutter: Clutter,
@@ -417,11 +372,13 @@ pub struct BernoulliFilterConfig {
     pub splitting: Option<SplittingOptions>,
     /// The reduction after each update (GM filter only); omitted: prune 1e-6, merge within 2,
     /// Runnalls to 100.
+    #[serde(default = "core_filters::default_reduction")]
     #[tsify(optional, type = "ReductionOptionsJs")]
-    pub reduction: Option<ReductionOptions>,
+    pub reduction: ReductionOptions,
     /// Regions the object cannot occupy.
+    #[serde(default)]
     #[tsify(optional)]
-    pub exclusions: Option<Vec<Region>>,
+    pub exclusions: Vec<Region>,
     /// Particle filter: the number of particles N (default 5000, at most 200000).
     #[serde(default = "core_filters::default_particles")]
     pub particles: usize,
@@ -444,41 +401,35 @@ struct Converted {
     seed: Option<u64>,
 }
 
-fn convert(c: BernoulliFilterConfig) -> JsResult<Converted> {
+/// Reads the argument `config` of either class's constructor.
+fn convert(config: JsValue) -> JsResult<Converted> {
+    let c: BernoulliFilterConfig = read(config, "config")?;
     check_shapes(
         &c.transition,
         &c.mixture,
-        c.birth.as_ref(),
+        &c.birth,
         c.likelihood.as_ref(),
         c.position_dims,
         "config",
     )?;
-    let update = update_config(
-        c.position_dims,
-        c.detection,
-        c.clutter,
-        c.splitting,
-        c.reduction,
-        c.exclusions,
-        "config",
-    )?;
+    let splitting = splitting(c.splitting, c.position_dims, "config")?;
     let likelihood = match c.likelihood {
         Some(l) => Some(l.into_core("config")?),
         None => None,
     };
     let config = CoreConfig {
         existence: c.existence,
-        mixture: density(c.mixture, "config.mixture")?,
+        mixture: c.mixture,
         transition: c.transition.into_core("config")?,
         survival: c.survival,
-        birth: birth(c.birth, "config")?,
-        position_dims: update.position_dims,
-        detection: update.detection,
-        clutter: update.clutter,
+        birth: c.birth,
+        position_dims: c.position_dims,
+        detection: c.detection,
+        clutter: c.clutter,
         likelihood,
-        splitting: update.splitting,
-        reduction: update.reduction,
-        exclusions: update.exclusions,
+        splitting,
+        reduction: c.reduction,
+        exclusions: c.exclusions,
     };
     // both filters' constructors validate the configuration as a whole first
     let particle = ParticleOptions {
@@ -496,7 +447,7 @@ fn convert(c: BernoulliFilterConfig) -> JsResult<Converted> {
 
 /// The argument of `update`: `Region[]` or `{ measurements }`.
 enum Scan {
-    Reports(Vec<CoreRegion>),
+    Reports(Vec<Region>),
     Measurements(Vec<Vec<f64>>),
 }
 
@@ -507,8 +458,7 @@ struct MeasurementsArg {
 
 fn scan(value: JsValue) -> JsResult<Scan> {
     if js_sys::Array::is_array(&value) {
-        let r: Vec<Region> = read(value, "reports")?;
-        Ok(Scan::Reports(regions(r, "reports")?))
+        Ok(Scan::Reports(read(value, "reports")?))
     } else {
         let m: MeasurementsArg = read(value, "reports")?;
         Ok(Scan::Measurements(measurements(m.measurements)))
@@ -656,6 +606,64 @@ fn renamed_report<S: serde::Serializer>(
     serde::Serialize::serialize(&report.as_ref().map(crate::names::Renamed::new), s)
 }
 
+/// The methods both filter classes share, each on the class's core filter `inner`: `update`
+/// (the core filter is unchanged when it fails), `estimate` and the `existence` getter.
+macro_rules! filter_methods {
+    ($class:ident, $js:literal) => {
+        #[wasm_bindgen(js_class = $js)]
+        impl $class {
+            /// The update with `Region[]` (imprecise reports; `[]`: the non-detection update)
+            /// or `{ measurements }`. Returns `{ delta, splitComponents }`. Work caps, a
+            /// RangeError naming `reports` beyond: GM vector update, components × measurements
+            /// × ⌈n²/16⌉ ≤ 2^18; particle filter, particles × reports × (1 + MCMC moves) ≤
+            /// 2·10^7.
+            #[wasm_bindgen(unchecked_return_type = "{ delta: number; splitComponents: number }")]
+            pub fn update(
+                &mut self,
+                #[wasm_bindgen(unchecked_param_type = "Region[] | { measurements: Point[] }")]
+                reports: JsValue,
+            ) -> JsResult<JsValue> {
+                let info = match scan(reports)? {
+                    Scan::Reports(r) => self.inner.update(&r),
+                    Scan::Measurements(z) => self.inner.update_measurements(&z),
+                };
+                write(&Renamed::new(&info.map_err(scan_error)?))
+            }
+
+            /// `{ existence, mean, cov, report }`; options `{ radius, costs }` for `report`.
+            #[wasm_bindgen(unchecked_return_type = "FilterEstimateResult")]
+            pub fn estimate(
+                &self,
+                #[wasm_bindgen(unchecked_optional_param_type = "FilterEstimateOptions")]
+                options: JsValue,
+            ) -> JsResult<JsValue> {
+                let o = estimate_options(options)?;
+                write(&estimate_result(
+                    self.inner.estimate(&o).map_err(estimate_error)?,
+                ))
+            }
+
+            /// The current existence probability r ∈ [0, 1].
+            #[wasm_bindgen(getter)]
+            pub fn existence(&self) -> f64 {
+                self.inner.existence()
+            }
+        }
+    };
+}
+
+/// The error of a class's `estimate`: under `config` when it names the transition (the
+/// particle filter's particles overflowed in a prediction, a fault of the config's model),
+/// else under the argument `options`.
+fn estimate_error(e: fisst::Error) -> JsValue {
+    let root = if e.field() == "transition" {
+        "config"
+    } else {
+        "options"
+    };
+    core_error_rendered(e, root)
+}
+
 /// The GM Bernoulli filter (Algorithm 3 of LeGrand & Ferrari, "Split Happens! Imprecise and
 /// negative information in Gaussian mixture random finite set filtering" (paper 001)). Call
 /// `free()` when done.
@@ -664,6 +672,8 @@ pub struct GmBernoulliFilterJs {
     inner: core_filters::GmBernoulliFilter,
 }
 
+filter_methods!(GmBernoulliFilterJs, "GmBernoulliFilter");
+
 #[wasm_bindgen(js_class = GmBernoulliFilter)]
 impl GmBernoulliFilterJs {
     /// A filter with the initial Bernoulli of `config`; validates `config`.
@@ -671,8 +681,7 @@ impl GmBernoulliFilterJs {
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "BernoulliFilterConfig")] config: JsValue,
     ) -> JsResult<GmBernoulliFilterJs> {
-        let c: BernoulliFilterConfig = read(config, "config")?;
-        let c = convert(c)?;
+        let c = convert(config)?;
         Ok(Self {
             inner: core_filters::GmBernoulliFilter::new(c.config).or_throw_rendered("config")?,
         })
@@ -683,54 +692,11 @@ impl GmBernoulliFilterJs {
         self.inner.predict().or_throw_rendered("config")
     }
 
-    /// The update with `Region[]` (imprecise reports; `[]`: the non-detection update) or
-    /// `{ measurements }`. Returns `{ delta, splitComponents }`. Work caps, a RangeError
-    /// naming `reports` beyond: GM vector update, components × measurements × ⌈n²/16⌉ ≤
-    /// 2^18; particle filter, particles × reports × (1 + MCMC moves) ≤ 2·10^7.
-    #[wasm_bindgen(unchecked_return_type = "{ delta: number; splitComponents: number }")]
-    pub fn update(
-        &mut self,
-        #[wasm_bindgen(unchecked_param_type = "Region[] | { measurements: Point[] }")]
-        reports: JsValue,
-    ) -> JsResult<JsValue> {
-        run_update(reports, |s| match s {
-            Scan::Reports(r) => self.inner.update(&r),
-            Scan::Measurements(z) => self.inner.update_measurements(&z),
-        })
-    }
-
-    /// `{ existence, mean, cov, report }`; options `{ radius, costs }` for `report`.
-    #[wasm_bindgen(unchecked_return_type = "FilterEstimateResult")]
-    pub fn estimate(
-        &self,
-        #[wasm_bindgen(unchecked_optional_param_type = "FilterEstimateOptions")] options: JsValue,
-    ) -> JsResult<JsValue> {
-        let o = estimate_options(options)?;
-        write(&estimate_result(
-            self.inner.estimate(&o).or_throw_rendered("options")?,
-        ))
-    }
-
-    /// The current existence probability r ∈ [0, 1].
-    #[wasm_bindgen(getter)]
-    pub fn existence(&self) -> f64 {
-        self.inner.existence()
-    }
-
     /// The current spatial density p(x), a Gaussian mixture (a copy).
     #[wasm_bindgen(getter, unchecked_return_type = "MixtureComponent[]")]
     pub fn mixture(&self) -> JsResult<JsValue> {
-        write(&types::mixture_out(self.inner.mixture()))
+        write(self.inner.mixture())
     }
-}
-
-/// Reads the scan `reports`, runs the filter's update on it (the core filter is unchanged
-/// when it fails) and writes `{ delta, splitComponents }`.
-fn run_update(
-    reports: JsValue,
-    update: impl FnOnce(Scan) -> fisst::Result<UpdateInfo>,
-) -> JsResult<JsValue> {
-    write(&Renamed::new(&update(scan(reports)?).map_err(scan_error)?))
 }
 
 /// The Bernoulli particle filter (Ristic, Vo, Vo & Farina, "A tutorial on Bernoulli filters:
@@ -743,6 +709,8 @@ pub struct ParticleBernoulliFilterJs {
     seed: u64,
 }
 
+filter_methods!(ParticleBernoulliFilterJs, "ParticleBernoulliFilter");
+
 #[wasm_bindgen(js_class = ParticleBernoulliFilter)]
 impl ParticleBernoulliFilterJs {
     /// A filter with N particles drawn from the initial Bernoulli of `config`; validates `config`
@@ -751,8 +719,7 @@ impl ParticleBernoulliFilterJs {
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "BernoulliFilterConfig")] config: JsValue,
     ) -> JsResult<ParticleBernoulliFilterJs> {
-        let c: BernoulliFilterConfig = read(config, "config")?;
-        let c = convert(c)?;
+        let c = convert(config)?;
         let seed = seed_or_entropy(c.seed)?;
         let options = ParticleOptions { seed, ..c.particle };
         Ok(Self {
@@ -767,56 +734,11 @@ impl ParticleBernoulliFilterJs {
         self.inner.predict();
     }
 
-    /// The update with `Region[]` or `{ measurements }`, as `GmBernoulliFilter.update`. Returns
-    /// `{ delta, splitComponents }`.
-    #[wasm_bindgen(unchecked_return_type = "{ delta: number; splitComponents: number }")]
-    pub fn update(
-        &mut self,
-        #[wasm_bindgen(unchecked_param_type = "Region[] | { measurements: Point[] }")]
-        reports: JsValue,
-    ) -> JsResult<JsValue> {
-        run_update(reports, |s| match s {
-            Scan::Reports(r) => self.inner.update(&r),
-            Scan::Measurements(z) => self.inner.update_measurements(&z),
-        })
-    }
-
-    /// The current estimate `{ existence, mean, cov, report }`; options `{ radius, costs }` for
-    /// `report`.
-    #[wasm_bindgen(unchecked_return_type = "FilterEstimateResult")]
-    pub fn estimate(
-        &self,
-        #[wasm_bindgen(unchecked_optional_param_type = "FilterEstimateOptions")] options: JsValue,
-    ) -> JsResult<JsValue> {
-        let o = estimate_options(options)?;
-        // `transition`: the particles overflowed in a prediction (a fault of the config's model).
-        let e = self.inner.estimate(&o).map_err(|e| {
-            let root = if e.field() == "transition" {
-                "config"
-            } else {
-                "options"
-            };
-            core_error_rendered(e, root)
-        })?;
-        write(&estimate_result(e))
-    }
-
-    /// The current existence probability r ∈ [0, 1].
-    #[wasm_bindgen(getter)]
-    pub fn existence(&self) -> f64 {
-        self.inner.existence()
-    }
-
     /// The particles, one state per row (a copy; equal weights after an update).
     #[wasm_bindgen(getter, unchecked_return_type = "number[][]")]
     pub fn particles(&self) -> JsResult<JsValue> {
         let d = self.inner.dim();
-        let rows: Vec<Vec<f64>> = self
-            .inner
-            .particles()
-            .chunks_exact(d)
-            .map(|c| c.to_vec())
-            .collect();
+        let rows: Vec<&[f64]> = self.inner.particles().chunks_exact(d).collect();
         write(&rows)
     }
 

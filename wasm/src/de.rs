@@ -34,7 +34,7 @@ use js_sys::{Array, Float32Array, Float64Array, Reflect};
 use serde::de::{self, DeserializeSeed, IntoDeserializer, Visitor};
 use wasm_bindgen::{JsCast, JsValue};
 
-use crate::names::js_name;
+use crate::names::{js_name, render_path_in, rule, variant_name};
 
 /// The deepest nesting of arrays and objects read (a `Region` union of unions, a GLMB of
 /// Gaussians, … never comes near it; a cyclic object reaches it at once).
@@ -134,10 +134,18 @@ impl Error {
                     Path::Key(path, js_name(path.parent_key(), field))
                 ),
                 // A message about a part of this value ("[2] must be …", ".cov must be …",
-                // as the core's Gaussian types write them) continues the path; any other
-                // continues the sentence ("… must be …").
+                // ".ball.radius must be …", as the core's Gaussian and region types write
+                // them, in Rust names) continues the path, its part rendered in JavaScript
+                // names (`.disc.radius`); any other continues the sentence ("… must be …").
                 None if self.message.starts_with(['[', '.']) => {
-                    std::format!("{path}{}", self.message)
+                    let (part, rest) = self
+                        .message
+                        .split_at(self.message.find(' ').unwrap_or(self.message.len()));
+                    let part = match part.strip_prefix('.') {
+                        Some(p) => std::format!(".{}", render_path_in(path.parent_key(), p)),
+                        None => render_path_in(path.parent_key(), part),
+                    };
+                    std::format!("{path}{part}{rest}")
                 }
                 None => std::format!("{path} {}", self.message),
             };
@@ -453,10 +461,22 @@ impl<'a> De<'a> {
     #[inline(never)]
     fn struct_entries(&self, fields: &'static [&'static str]) -> Result<Entries<'a>> {
         let depth = self.deeper()?;
+        let parent = self.path.parent_key();
+        // a variant JavaScript gives bare (`{ polygon: [[x, y], …] }`): the value is that of
+        // the struct's one field, at the variant's own path
+        if let ([field], Value::Js(v)) = (fields, &self.value)
+            && rule::BARE.iter().any(|(p, f)| *p == parent && f == field)
+        {
+            return Ok(Entries {
+                entries: std::vec![(Cow::Borrowed(*field), Some(SAME_PATH), v.clone())].into_iter(),
+                pending: None,
+                path: self.path,
+                depth,
+            });
+        }
         let obj = self.object()?;
         // the object's keys are the fields' JavaScript names (`futureScans` for the Rust field
         // `future_scans`); serde is given the Rust name, paths show the JavaScript one
-        let parent = self.path.parent_key();
         // a callback the binding reads itself (`onProgress`), at the top level only
         let callback = match self.depth {
             0 => CALLBACK.with(|c| c.borrow().as_ref().map(|(key, _)| *key)),
@@ -493,15 +513,19 @@ impl<'a> De<'a> {
     /// The names are the variants' JavaScript names (`multivariateGaussian` for the Rust
     /// `multivariate_gaussian`, [`js_name`]); serde is given the Rust one.
     #[inline(never)]
-    fn variant(&self, variants: &'static [&'static str]) -> Result<Variant<'a>> {
+    fn variant(&self, rust_variants: &'static [&'static str]) -> Result<Variant<'a>> {
         let depth = self.deeper()?;
-        let js_names: Vec<&'static str> = variants.iter().map(|v| js_name("", v)).collect();
-        let rust_name = |js: &str| {
-            js_names
-                .iter()
-                .position(|n| *n == js)
-                .map(|i| (variants[i], js_names[i]))
-        };
+        // the keys are the variants' JavaScript names: a renamed variant (`disc` for the Rust
+        // `ball`), else the camelCase name (`multivariateGaussian`)
+        let js_names: Vec<&'static str> = rust_variants
+            .iter()
+            .map(|v| match variant_name(v) {
+                renamed if renamed != *v => renamed,
+                _ => js_name("", v),
+            })
+            .collect();
+        let variants = js_names.as_slice();
+        let rust = |i: usize| rust_variants[i];
         let listed = || {
             js_names
                 .iter()
@@ -513,7 +537,7 @@ impl<'a> De<'a> {
             return Err(self.wrong_type(&std::format!("one of {}", listed())));
         };
         if let Some(s) = v.as_string() {
-            let Some((name, js)) = rust_name(&s) else {
+            let Some(i) = variants.iter().position(|n| *n == s) else {
                 let shown: String = s.chars().take(40).collect();
                 return Err(Error::range_error(
                     &self.path,
@@ -521,8 +545,8 @@ impl<'a> De<'a> {
                 ));
             };
             return Ok(Variant {
-                name,
-                js,
+                name: rust(i),
+                js: variants[i],
                 payload: None,
                 path: self.path,
                 depth,
@@ -553,12 +577,12 @@ impl<'a> De<'a> {
                 ),
             ));
         };
-        let Some((name, js)) = rust_name(key) else {
-            return Err(unknown_key(&self.path, key, &js_names));
+        let Some(i) = variants.iter().position(|n| n == key) else {
+            return Err(unknown_key(&self.path, key, variants));
         };
         Ok(Variant {
-            name,
-            js,
+            name: rust(i),
+            js: variants[i],
             payload: Some(payload.clone()),
             path: self.path,
             depth,
@@ -660,6 +684,10 @@ impl<'de> de::SeqAccess<'de> for Seq<'_> {
     }
 }
 
+/// The spelling of an [`Entry`] whose value stands at its object's own path (the one field of
+/// a variant JavaScript gives bare, [`rule::BARE`]).
+const SAME_PATH: &str = "";
+
 /// One present key of an object: the key serde sees (a struct's Rust field name, a map's
 /// key), the key as the object spells it when that differs (a field's JavaScript name), and
 /// the value.
@@ -706,7 +734,10 @@ impl<'de> de::MapAccess<'de> for Entries<'_> {
         };
         // an error the value's own `Deserialize` raises after reading it (a core type's check,
         // "[1] has length 1, expected 2") is about the value: it gets the value's path
-        let path = Path::Key(&self.path, js.unwrap_or(&key));
+        let path = match js {
+            Some(SAME_PATH) => self.path,
+            _ => Path::Key(&self.path, js.unwrap_or(&key)),
+        };
         seed.deserialize(De::child(Value::Js(value), path, self.depth))
             .map_err(|e| e.at(&path))
     }
@@ -718,9 +749,9 @@ impl<'de> de::MapAccess<'de> for Entries<'_> {
 
 /// `EnumAccess` for a string (a unit variant) or a one-key object (`{ box: { … } }`).
 struct Variant<'a> {
-    /// The Rust name, given to serde.
+    /// The variant's Rust name, for serde.
     name: &'static str,
-    /// The JavaScript name, in paths and messages.
+    /// Its JavaScript name, for paths and messages.
     js: &'static str,
     payload: Option<JsValue>,
     path: Path<'a>,

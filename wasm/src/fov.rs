@@ -9,7 +9,7 @@ use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, read, write};
 use crate::names::Renamed;
-use crate::types::{MultiObjectDensity, Region};
+use crate::types::MultiObjectDensity;
 use fisst::fov::{
     DEFAULT_DETECTION_PROBABILITY, FovCardinalityOptions as CoreCardinalityOptions,
     FovVarianceMapOptions as CoreVarianceMapOptions, Grid,
@@ -23,8 +23,8 @@ fn default_detection_probability() -> f64 {
 
 /// Options of `fovCardinality` (Propositions 1–4 of LeGrand & Ferrari, "Split Happens! Imprecise
 /// and negative information in Gaussian mixture random finite set filtering" (paper 001)): the
-/// core's `fisst::fov::FovCardinalityOptions`, with the field of view in the contract's region
-/// form (`disc`, a polygon as its vertices) that `splitForRegions` shares.
+/// core's `fisst::fov::FovCardinalityOptions`, with the multi-object density in the contract's
+/// form.
 #[derive(Deserialize, Tsify)]
 #[serde(rename_all = "camelCase")]
 pub struct FovCardinalityOptions {
@@ -33,7 +33,7 @@ pub struct FovCardinalityOptions {
     /// when its masses would take more than about 2 s).
     pub rfs: MultiObjectDensity,
     /// The field of view S, in the position subspace (the first state components).
-    pub fov: Region,
+    pub fov: fisst::regions::Region,
     /// The detection probability p_D ∈ [0, 1] (default 1): with p_D < 1 the pmf is that of
     /// object-originated detections, eq. (75).
     #[serde(default = "default_detection_probability")]
@@ -125,10 +125,9 @@ pub fn fov_cardinality_js(
             CoreDensity::Glmb(hyps.into_iter().map(|h| (h.weight, h.components)).collect())
         }
     };
-    let (fov, _) = o.fov.into_core("options.fov")?;
     let core = CoreCardinalityOptions {
         rfs,
-        fov,
+        fov: o.fov,
         detection_probability: o.detection_probability,
     };
     // the core's caps, budget and checks, its paths rendered under `options`

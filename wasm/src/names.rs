@@ -48,8 +48,23 @@ pub fn js_name(parent: &str, field: &'static str) -> &'static str {
 /// An error path in Rust names (`transition.f`, `components[2].mean`, `future_scans`) in
 /// JavaScript names (`transition.F`, `components[2].mean`, `futureScans`).
 pub fn render_path(rust_path: &str) -> String {
+    render_path_in("", rust_path)
+}
+
+/// The JavaScript name of a Rust name as a value's variant key (`ball` → `disc`; the others
+/// as they are), as [`Renamed`] writes it.
+pub fn variant_name(rust: &'static str) -> &'static str {
+    rule::ANY_PARENT
+        .iter()
+        .find(|(r, _)| *r == rust)
+        .map_or(rust, |(_, js)| js)
+}
+
+/// [`render_path`] for a path below the field `parent` (`""` at the top): the exceptions of
+/// `parent`'s fields apply to its first segment.
+pub fn render_path_in(parent: &str, rust_path: &str) -> String {
     let mut out = String::with_capacity(rust_path.len());
-    let mut parent = "";
+    let mut parent = parent;
     for (i, segment) in rust_path.split('.').enumerate() {
         if i > 0 {
             out.push('.');
@@ -178,10 +193,7 @@ impl<S: Serializer> Serializer for Rename<S> {
         let parent = self.parent;
         // a variant holding a value is written as a one-key object: its key takes the
         // contract's name too (the core's `ball` region is `disc`)
-        let variant = rule::ANY_PARENT
-            .iter()
-            .find(|(rust, _)| *rust == variant)
-            .map_or(variant, |(_, js)| js);
+        let variant = variant_name(variant);
         self.inner
             .serialize_newtype_variant(name, index, variant, &Renamed { value, parent })
     }
@@ -358,6 +370,22 @@ mod tests {
         );
         assert_eq!(render_path("likelihood.r[0][1]"), "likelihood.R[0][1]");
         assert_eq!(render_path(""), "");
+    }
+
+    #[test]
+    fn render_path_in_applies_the_parents_exceptions_and_variant_names() {
+        // a relative part of an error below `transition` (the core's `.q` of a transition)
+        assert_eq!(render_path_in("transition", "q"), "Q");
+        assert_eq!(render_path_in("", "q"), "q");
+        // a region's part: the core's `ball` is the contract's `disc`
+        assert_eq!(render_path_in("fov", "ball.radius"), "disc.radius");
+        assert_eq!(
+            render_path_in("fov", "union[1].ball.center"),
+            "union[1].disc.center"
+        );
+        assert_eq!(render_path_in("mixture", "[2].cov"), "[2].cov");
+        assert_eq!(variant_name("ball"), "disc");
+        assert_eq!(variant_name("polygon"), "polygon");
     }
 
     #[derive(serde::Serialize)]

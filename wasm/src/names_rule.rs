@@ -18,6 +18,10 @@ pub const EXCEPTIONS: &[(&str, &str, &str)] = &[
 /// radius } }`), so an error path `reports[0].ball.center` reads `reports[0].disc.center`.
 pub const ANY_PARENT: &[(&str, &str)] = &[("ball", "disc")];
 
+/// Variants that JavaScript gives bare, as the value of their one field: `(variant, field)`.
+/// The contract's polygon is `{ polygon: [[x, y], …] }`, the core's `{ polygon: { vertices } }`.
+pub const BARE: &[(&str, &str)] = &[("polygon", "vertices")];
+
 /// The JavaScript name of a Rust name that is not one of the exceptions: camelCase
 /// (`future_scans` → `futureScans`); a name without an underscore comes back borrowed. Rust
 /// field names are ASCII, so the ASCII case map is enough (and keeps Unicode's tables out of

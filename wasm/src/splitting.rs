@@ -8,15 +8,14 @@ use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, range_error, read, write};
 use crate::names::Renamed;
-use crate::types::{Region, mixture_out};
+use crate::types::mixture_out;
 use fisst::Error;
 use fisst::gaussian::GaussianMixture;
 use fisst::mixture::{merge_close, prune, runnalls};
-use fisst::regions::Region as CoreRegion;
 use fisst::splitting::{
     MAX_REDUCED_COMPONENTS, MAX_RUNNALLS_INPUT, NegativeInformationOptions,
     NegativeInformationReport, Spacing, SplitForRegionsOptions as CoreSplitForRegionsOptions,
-    SplitLibrary, SplitLibraryOptions, SplitLibraryReport, check_reduce_input, defaults,
+    SplitLibrary, SplitLibraryOptions, SplitLibraryReport, check_reduce_input,
     split_for_regions_report,
 };
 
@@ -93,54 +92,15 @@ export interface NegativeInformationScenario {
 }
 "#;
 
-/// Options of `splitForRegions` (Algorithms 1–2 of LeGrand & Ferrari, "Split Happens! Imprecise and
-/// negative information in Gaussian mixture random finite set filtering" (paper 001)): the
-/// core's [`CoreSplitForRegionsOptions`] with the regions in the contract's form (`disc`, a
-/// polygon as its vertices), which the core's region form is not; read here and handed over.
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct SplitForRegionsOptions {
-    /// The mixture to split: weights ≥ 0, means of length n, covariances n × n.
-    #[tsify(type = "WeightedGaussian[]")]
-    pub mixture: GaussianMixture,
-    /// One or more regions (at most 32) of dimension `positionDims`.
-    pub regions: Vec<Region>,
-    /// The number n_s of position components: the first n_s state components are the position
-    /// that regions refer to (default 2; in [1, 8]).
-    #[serde(default = "defaults::position_dims")]
-    pub position_dims: usize,
-    /// The minimum weight w_min ≥ 0 to split: lighter components are not split (default 0.01;
-    /// absolute weight).
-    #[serde(default = "defaults::min_weight")]
-    pub min_weight: f64,
-    /// The number R of components each split makes (default 3), an integer in [2, 16].
-    #[serde(default = "defaults::components")]
-    pub components: usize,
-    /// The split library's penalty weight λ of eq. (13) (default 0.001), in [1e-6, 10].
-    #[serde(default = "defaults::lambda")]
-    pub lambda: f64,
-    /// The split library's family: how its means are spaced (default `'equal'`).
-    #[serde(default)]
-    #[tsify(type = "Spacing")]
-    pub spacing: Spacing,
-    /// The collocation grid's Mahalanobis radius ζ > 0 (default 2, as the authors' pyest).
-    /// Components whose boundary lies beyond ζ are not split, which floors the partition
-    /// error at a few 1e-3 to 1e-2 of mass; 3 lowers that part to about 1e-4, with more
-    /// components.
-    #[serde(default = "defaults::grid_bound")]
-    pub grid_bound: f64,
-    /// The number N_g of collocation grid points per axis (default 15; N_g^positionDims ≤
-    /// 20000).
-    #[serde(default = "defaults::grid_points")]
-    pub grid_points: usize,
-    /// The most recursion levels (default 16, at most 64); 0 splits nothing: the result is the
-    /// mean-based partition of `mixture` itself.
-    #[serde(default = "defaults::max_depth")]
-    pub max_depth: usize,
-    /// The most components the split may make (default 10000, at most 50000).
-    #[serde(default = "defaults::max_components")]
-    pub max_components: usize,
-}
+// `splitForRegions` reads the core's own `SplitForRegionsOptions` (its TypeScript is generated
+// by build.rs from the core's source; its mixture is a `GaussianMixture`, declared here).
+#[wasm_bindgen(typescript_custom_section)]
+const GAUSSIAN_MIXTURE: &str = r#"
+/**
+ * A Gaussian mixture: its components, weights ≥ 0 (the core's `GaussianMixture`).
+ */
+export type GaussianMixture = WeightedGaussian[];
+"#;
 
 /// Options of `reduceMixture`.
 #[derive(Deserialize, Tsify)]
@@ -215,35 +175,7 @@ pub fn split_library_js(
 pub fn split_for_regions_js(
     #[wasm_bindgen(unchecked_param_type = "SplitForRegionsOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
-    let o: SplitForRegionsOptions = read(options, "options")?;
-    // the count first: a region's own error is not worth reading 10^6 of them
-    Error::check_count(
-        "regions",
-        "entries",
-        o.regions.len(),
-        1,
-        fisst::splitting::MAX_REGIONS,
-    )
-    .or_throw_rendered("options")?;
-    let regions = o
-        .regions
-        .into_iter()
-        .enumerate()
-        .map(|(i, r)| Ok(r.into_core(&format!("options.regions[{i}]"))?.0))
-        .collect::<JsResult<Vec<CoreRegion>>>()?;
-    let request = CoreSplitForRegionsOptions {
-        mixture: o.mixture,
-        regions,
-        position_dims: o.position_dims,
-        min_weight: o.min_weight,
-        components: o.components,
-        lambda_: o.lambda,
-        spacing: o.spacing,
-        grid_bound: o.grid_bound,
-        grid_points: o.grid_points,
-        max_depth: o.max_depth,
-        max_components: o.max_components,
-    };
+    let request: CoreSplitForRegionsOptions = read(options, "options")?;
     request.validate().or_throw_rendered("options")?;
     let library = library(&request.library_options())?;
     let report = split_for_regions_report(&request, &library).or_throw_rendered("options")?;

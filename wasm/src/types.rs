@@ -13,13 +13,10 @@ use tsify::Tsify;
 
 use crate::boundary::{JsResult, OrThrow, range_error, type_error};
 use fisst::gaussian::{Gaussian as CoreGaussian, GaussianMixture};
-use fisst::regions::Region as CoreRegion;
 
 /// At most this many Gaussians in one mixture or density argument (the core's cap, which its
 /// own readers of mixtures and multi-Bernoullis apply).
 pub use fisst::serde_shapes::MAX_GAUSSIANS;
-/// At most this many polygon vertices.
-pub const MAX_VERTICES: usize = 1_000;
 
 /// A point: one number per dimension; every point of a call has the same dimension.
 #[derive(Clone, Debug, Default, Deserialize, Tsify)]
@@ -114,32 +111,6 @@ pub struct Bernoulli {
     pub cov: Covariance,
 }
 
-/// Checks the length of an array of Gaussians at `path` against [`MAX_GAUSSIANS`].
-pub fn check_gaussian_count(len: usize, path: &str) -> JsResult<()> {
-    if len > MAX_GAUSSIANS {
-        return Err(range_error(format!(
-            "{path} has {len} entries, at most {MAX_GAUSSIANS} are supported"
-        )));
-    }
-    Ok(())
-}
-
-/// A Gaussian mixture from its components at `path` (`options.mixture`).
-pub fn mixture(items: Vec<WeightedGaussian>, path: &str) -> JsResult<GaussianMixture> {
-    check_gaussian_count(items.len(), path)?;
-    let comps = items
-        .into_iter()
-        .enumerate()
-        .map(|(i, c)| {
-            Ok((
-                c.weight,
-                core_gaussian(c.mean, c.cov, &format!("{path}[{i}]"))?,
-            ))
-        })
-        .collect::<JsResult<Vec<_>>>()?;
-    GaussianMixture::new(comps, path).or_throw()
-}
-
 /// A mixture component as results give it back: `cov` as nested rows. It can be passed back
 /// wherever a [`WeightedGaussian`] is taken.
 #[derive(Clone, Debug, Serialize, Tsify)]
@@ -172,8 +143,13 @@ pub fn mixture_out(m: &GaussianMixture) -> Vec<MixtureComponent> {
         .collect()
 }
 
+// The declarations of the core's `fisst::regions::Region` in the contract's form (TypeScript
+// only: the values are read and written as the core's `Region`, whose `ball` is the
+// contract's `disc` and whose polygon is given bare, `names_rule::ANY_PARENT` and `BARE`).
+
 /// An axis-aligned box `{ min, max }` (closed; any dimension).
-#[derive(Clone, Debug, Deserialize, Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only
+#[derive(Tsify)]
 pub struct BoxRegion {
     /// The lower corner: the smallest coordinate along each axis.
     #[tsify(type = "number[] | Float64Array")]
@@ -184,7 +160,8 @@ pub struct BoxRegion {
 }
 
 /// A disc `{ center, radius }` (a closed ball in more than two dimensions).
-#[derive(Clone, Debug, Deserialize, Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only
+#[derive(Tsify)]
 pub struct DiscRegion {
     /// The disc's centre, one number per position coordinate.
     #[tsify(type = "number[] | Float64Array")]
@@ -195,8 +172,10 @@ pub struct DiscRegion {
 
 /// A region of the position subspace (the first state components): a closed box (any
 /// dimension), a closed polygon (2D; either orientation; even–odd rule when
-/// self-intersecting), or a closed disc (a ball in higher dimensions). Exactly one key.
-#[derive(Clone, Debug, Deserialize, Serialize, Tsify)]
+/// self-intersecting), or a closed disc (a ball in higher dimensions), or a union,
+/// intersection or complement of regions. Exactly one key.
+#[allow(dead_code)] // a TypeScript declaration only
+#[derive(Tsify)]
 #[serde(rename_all = "camelCase")]
 pub enum Region {
     /// `{ box: { min, max } }`: an axis-aligned box.
@@ -205,52 +184,13 @@ pub enum Region {
     Polygon(Vec<[f64; 2]>),
     /// `{ disc: { center, radius } }`: a disc (a ball in more than two dimensions).
     Disc(DiscRegion),
-    /// `{ union: [region, …] }`: inside any member (at least one, all of one dimension).
+    /// `{ union: [region, …] }`: inside any member (1 to 1,000, all of one dimension).
     Union(Vec<Region>),
+    /// `{ intersection: [region, …] }`: inside every member (1 to 1,000, all of one
+    /// dimension).
+    Intersection(Vec<Region>),
     /// `{ complement: region }`: outside the region (open).
     Complement(Box<Region>),
-}
-
-impl Region {
-    /// The core region and the estimated cost of one Gaussian mass in it
-    /// ([`CoreRegion::mass_cost_us`], µs); errors name `path` (`options.fov`).
-    pub fn into_core(self, path: &str) -> JsResult<(CoreRegion, f64)> {
-        let region = match self {
-            Region::Box(b) => CoreRegion::axis_box(&b.min, &b.max, &format!("{path}.box")),
-            Region::Polygon(v) => {
-                let name = format!("{path}.polygon");
-                if v.len() > MAX_VERTICES {
-                    return Err(range_error(format!(
-                        "{name} has {} vertices, at most {MAX_VERTICES} are supported",
-                        v.len()
-                    )));
-                }
-                CoreRegion::polygon(&v, &name)
-            }
-            Region::Disc(d) => CoreRegion::ball(&d.center, d.radius, &format!("{path}.disc")),
-            Region::Union(m) => {
-                let name = format!("{path}.union");
-                if m.len() > MAX_VERTICES {
-                    return Err(range_error(format!(
-                        "{name} has {} members, at most {MAX_VERTICES} are supported",
-                        m.len()
-                    )));
-                }
-                let members = m
-                    .into_iter()
-                    .enumerate()
-                    .map(|(i, r)| Ok(r.into_core(&format!("{name}[{i}]"))?.0))
-                    .collect::<JsResult<Vec<_>>>()?;
-                CoreRegion::union(members, &name)
-            }
-            Region::Complement(r) => Ok(CoreRegion::complement(
-                r.into_core(&format!("{path}.complement"))?.0,
-            )),
-        };
-        let region = region.or_throw()?;
-        let cost = region.mass_cost_us();
-        Ok((region, cost))
-    }
 }
 
 /// One hypothesis of a GLMB density: its weight and the Gaussians of its labels.

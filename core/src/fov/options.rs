@@ -11,7 +11,7 @@ use alloc::vec::Vec;
 
 use crate::error::{Error, Result};
 use crate::gaussian::{Gaussian, GaussianMixture, MAX_GAUSSIANS};
-use crate::regions::{Node, Region};
+use crate::regions::Region;
 
 use super::{
     FOV_MASS_BUDGET_US, FovCount, GridAxis, MAX_CARDINALITY_LEN, MAX_DENSITY_GRID_WORK,
@@ -19,8 +19,9 @@ use super::{
     fov_mass_work_us, mixture_density_grid, variance_map,
 };
 
-/// At most this many vertices in one polygon of a field of view, and members in one union.
-pub const MAX_VERTICES: usize = 1_000;
+/// At most this many vertices in one polygon of a field of view (the regions' own cap, as
+/// [`crate::regions::MAX_MEMBERS`] is of a union's members).
+pub use crate::regions::MAX_VERTICES;
 
 /// The default detection probability p_D of [`FovCardinalityOptions`]: 1 (the pmf of objects,
 /// not of detections).
@@ -49,41 +50,13 @@ pub struct FovCardinalityOptions {
     pub detection_probability: f64,
 }
 
-/// The polygon and union caps of `region` at `path` ([`MAX_VERTICES`]).
-fn check_region(region: &Region, path: &str) -> Result<()> {
-    match region.node() {
-        Node::Polygon(p) => Error::check_count(
-            &alloc::format!("{path}.polygon.vertices"),
-            "vertices",
-            p.vertices().len(),
-            0,
-            MAX_VERTICES,
-        ),
-        Node::Union(m) | Node::Intersection(m) => {
-            let kind = if matches!(region.node(), Node::Union(_)) {
-                "union"
-            } else {
-                "intersection"
-            };
-            let name = alloc::format!("{path}.{kind}");
-            Error::check_count(&name, "members", m.len(), 0, MAX_VERTICES)?;
-            m.iter()
-                .enumerate()
-                .try_for_each(|(i, r)| check_region(r, &alloc::format!("{name}[{i}]")))
-        }
-        Node::Complement(r) => check_region(r, &alloc::format!("{path}.complement")),
-        Node::Box(_) | Node::Ball(_) => Ok(()),
-    }
-}
-
 impl FovCardinalityOptions {
     /// The size caps and the work budget ([`FOV_MASS_BUDGET_US`], about 2 s of masses by
     /// [`fov_mass_work_us`]) of these options.
     ///
     /// # Errors
     /// [`Error::Count`] naming `rfs.glmb` (more than [`MAX_GAUSSIANS`] components in all),
-    /// `rfs.iid_cluster.cardinality` (more than [`MAX_CARDINALITY_LEN`] entries),
-    /// `fov.polygon.vertices` or `fov.union` (more than [`MAX_VERTICES`]);
+    /// `rfs.iid_cluster.cardinality` (more than [`MAX_CARDINALITY_LEN`] entries);
     /// [`Error::OverBudget`] naming `rfs` when the masses would take more than about 2 s.
     pub fn check_work(&self) -> Result<()> {
         match &self.rfs {
@@ -100,7 +73,6 @@ impl FovCardinalityOptions {
             )?,
             MultiObjectDensity::Poisson(_) | MultiObjectDensity::MultiBernoulli(_) => {}
         }
-        check_region(&self.fov, "fov")?;
         let work = fov_mass_work_us(&self.rfs, &self.fov);
         if work > FOV_MASS_BUDGET_US {
             let per_mass = self.fov.mass_cost_us().max(f64::MIN_POSITIVE);
@@ -392,28 +364,6 @@ mod tests {
         assert_eq!(
             iid.run().unwrap_err().field(),
             "rfs.iid_cluster.cardinality"
-        );
-        let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]];
-        let many: Vec<[f64; 2]> = (0..=MAX_VERTICES)
-            .map(|i| {
-                let t = i as f64 * 0.001;
-                [libm::cos(t), libm::sin(t)]
-            })
-            .collect();
-        let poly = |v: &[[f64; 2]]| Region::polygon(v, "p").unwrap();
-        let nested = Region::union(
-            vec![poly(&square), Region::complement(poly(&many))],
-            "fov.union",
-        )
-        .unwrap();
-        let o = FovCardinalityOptions {
-            rfs: MultiObjectDensity::MultiBernoulli(vec![(0.5, g(0.0))]),
-            fov: nested,
-            detection_probability: 1.0,
-        };
-        assert_eq!(
-            o.run().unwrap_err().field(),
-            "fov.union[1].complement.polygon.vertices"
         );
         let pd = FovCardinalityOptions {
             rfs: MultiObjectDensity::MultiBernoulli(vec![(0.5, g(0.0))]),

@@ -41,7 +41,7 @@ mod predicates;
 pub use axis_box::AxisBox;
 pub use ball::Ball;
 pub use mass::{MAX_MASS_DIM, Mass};
-pub use polygon::Polygon;
+pub use polygon::{MAX_VERTICES, Polygon};
 
 pub(crate) use compiled::{Hull, RegionSet};
 
@@ -89,7 +89,12 @@ impl From<Ball> for Region {
     }
 }
 
+/// The most members of one union or intersection (a user's list of regions is bounded here;
+/// nesting is bounded by the readers' depth caps).
+pub const MAX_MEMBERS: usize = 1_000;
+
 fn same_dims(members: &[Region], what: &str) -> Result<()> {
+    Error::check_count(what, "members", members.len(), 0, MAX_MEMBERS)?;
     let Some(first) = members.first() else {
         return Err(Error::parameter(what, 0.0, "a non-empty list of regions"));
     };
@@ -134,6 +139,7 @@ impl Region {
     /// S₁ ∪ S₂ ∪ … (a point is inside when it is inside any member).
     ///
     /// # Errors
+    /// [`Error::Count`] naming `what` for more than [`MAX_MEMBERS`] members;
     /// [`Error::InvalidParameter`] for an empty list, [`Error::DimensionMismatch`] naming
     /// `{what}[i]` for a member of another dimension than the first.
     pub fn union(members: Vec<Region>, what: &str) -> Result<Self> {

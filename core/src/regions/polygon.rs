@@ -7,6 +7,10 @@ use crate::error::{Error, Result};
 
 use super::predicates::orient2d;
 
+/// The most vertices of one [`Polygon`]: its inclusion test and masses cost time linear in
+/// them, and a polygon given by a user (a report, a field of view) is bounded here.
+pub const MAX_VERTICES: usize = 1_000;
+
 /// A closed polygon in the first two position components, given by its vertices in order
 /// (the edge from the last vertex back to the first closes it).
 ///
@@ -26,9 +30,11 @@ impl Polygon {
     /// The polygon with these vertices. `what` names it in errors: `{what}[i]` for vertex i.
     ///
     /// # Errors
+    /// [`Error::Count`] naming `what` for more than [`MAX_VERTICES`] vertices;
     /// [`Error::InvalidParameter`] for fewer than 3 vertices, a non-finite coordinate, or
     /// vertices that all lie on one line (zero area; decided exactly).
     pub fn new(vertices: &[[f64; 2]], what: &str) -> Result<Self> {
+        Error::check_count(what, "vertices", vertices.len(), 0, MAX_VERTICES)?;
         if vertices.len() < 3 {
             return Err(Error::parameter(
                 what,
