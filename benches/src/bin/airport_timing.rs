@@ -2,6 +2,7 @@
 //!
 //! ```text
 //! airport_timing time [reps]          wall time of one 60-step run, GM and PF (median of reps)
+//! airport_timing table [reps]         the same per seed 1..=10: GM ms, PF ms, PF/GM (issue 29)
 //! airport_timing gm [reps]            only the GM filter, seed 1 (for callgrind / perf)
 //! airport_timing dump [runs]          every GM estimate of seeds 1..=runs, exactly
 //! airport_timing stats                 per-step component counts of seed 1 (GM)
@@ -129,6 +130,50 @@ fn main() {
                 pf / gm
             );
         }
+        "table" => {
+            // Issue 29's table: each seed timed after one warm-up run of each filter.
+            let reps = if n == 0 { 5 } else { n };
+            println!("airport 60 steps, median of {reps} after one warm-up run");
+            println!("seed   GM ms    PF ms   PF/GM");
+            let (mut worst, mut gsum, mut psum) = (f64::INFINITY, 0.0, 0.0);
+            for seed in 1..=10u64 {
+                let sc = airport_scenario(seed, STEPS).unwrap();
+                let r = reports(&sc);
+                let time = |f: &dyn Fn()| {
+                    f();
+                    median(
+                        (0..reps)
+                            .map(|_| {
+                                let t = Instant::now();
+                                f();
+                                t.elapsed().as_secs_f64()
+                            })
+                            .collect(),
+                    )
+                };
+                let gm = time(&|| {
+                    std::hint::black_box(gm_run(&sc, &r));
+                });
+                let pf = time(&|| {
+                    std::hint::black_box(pf_run(&sc, &r, seed));
+                });
+                worst = worst.min(pf / gm);
+                gsum += gm;
+                psum += pf;
+                println!(
+                    "{seed:>4} {:>7.2} {:>8.2} {:>6.1}×",
+                    gm * 1e3,
+                    pf * 1e3,
+                    pf / gm
+                );
+            }
+            println!(
+                "mean {:>7.2} {:>8.2} {:>6.1}×  (worst seed {worst:.1}×)",
+                gsum * 1e2,
+                psum * 1e2,
+                psum / gsum
+            );
+        }
         "accuracy" => {
             let runs = if n == 0 { 100 } else { n };
             let (mut g, mut p) = ((0, 0.0, 0.0, 0), (0, 0.0, 0.0, 0));
@@ -169,7 +214,7 @@ fn main() {
                 }
             }
         }
-        other => panic!("mode must be time, gm, stats, dump or accuracy, got {other}"),
+        other => panic!("mode must be time, table, gm, stats, dump or accuracy, got {other}"),
     }
 }
 

@@ -1,6 +1,7 @@
 //! A multivariate Gaussian with a validated covariance.
 
 use alloc::string::String;
+use alloc::sync::Arc;
 use alloc::vec::Vec;
 
 use nalgebra::{DMatrix, DVector};
@@ -11,11 +12,20 @@ use crate::math::fns;
 
 /// N(m, P): a mean and a symmetric positive definite covariance, validated once and stored
 /// with its Cholesky factor (P is never inverted).
+///
+/// P, L and ln det P are held behind one shared pointer: the R children of a split (eqs.
+/// (27)–(31) of `001_…`) share one covariance, so they share one factor, and a clone copies
+/// only the mean (issue 29: no heap matrix per split child).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Gaussian {
     mean: DVector<f64>,
+    factor: Arc<Factor>,
+}
+
+/// P, its lower Cholesky factor L (L Lᵀ = P) and ln det P.
+#[derive(Debug, PartialEq)]
+struct Factor {
     cov: DMatrix<f64>,
-    /// Lower-triangular L with L Lᵀ = P.
     chol: DMatrix<f64>,
     ln_det: f64,
 }
@@ -72,8 +82,17 @@ impl Gaussian {
         // Symmetrise exactly so that downstream results do not depend on which triangle
         // carried the rounding: A/2 + Aᵀ/2, which is (A + Aᵀ)/2 bit for bit but cannot
         // overflow for entries near f64::MAX (1e308 + 1e308 = ∞ gave an infinite Cholesky
-        // factor and infinite samples).
-        let cov = &cov * 0.5 + cov.transpose() * 0.5;
+        // factor and infinite samples). In place: a_ij/2 + a_ji/2 and a_ji/2 + a_ij/2 are
+        // the same sum (addition commutes exactly), so both entries get it.
+        let mut cov = cov;
+        for j in 0..n {
+            cov[(j, j)] = cov[(j, j)] * 0.5 + cov[(j, j)] * 0.5;
+            for i in j + 1..n {
+                let s = cov[(i, j)] * 0.5 + cov[(j, i)] * 0.5;
+                cov[(i, j)] = s;
+                cov[(j, i)] = s;
+            }
+        }
         let chol = match cov.clone().cholesky() {
             Some(c) => c.unpack(),
             None => return Err(super::covariance::not_positive_definite(&cov, cov_name())),
@@ -81,9 +100,7 @@ impl Gaussian {
         let ln_det = chol.diagonal().iter().map(|d| 2.0 * fns::ln(*d)).sum();
         Ok(Self {
             mean,
-            cov,
-            chol,
-            ln_det,
+            factor: Arc::new(Factor { cov, chol, ln_det }),
         })
     }
 
@@ -110,9 +127,7 @@ impl Gaussian {
         }
         Ok(Self {
             mean,
-            cov: self.cov.clone(),
-            chol: self.chol.clone(),
-            ln_det: self.ln_det,
+            factor: Arc::clone(&self.factor),
         })
     }
 
@@ -168,17 +183,17 @@ impl Gaussian {
 
     /// The covariance P (exactly symmetric).
     pub fn cov(&self) -> &DMatrix<f64> {
-        &self.cov
+        &self.factor.cov
     }
 
     /// The lower Cholesky factor L, L Lᵀ = P.
     pub fn chol(&self) -> &DMatrix<f64> {
-        &self.chol
+        &self.factor.chol
     }
 
     /// ln det P.
     pub fn ln_det(&self) -> f64 {
-        self.ln_det
+        self.factor.ln_det
     }
 
     /// (x − m)ᵀ P⁻¹ (x − m), by a triangular solve. `x` must have length n.
@@ -186,6 +201,7 @@ impl Gaussian {
     /// A point so far away that a whitened coordinate overflows gives +∞ (never NaN: the
     /// substitution stops as soon as the sum of squares is infinite, before an `∞ · 0` or
     /// `∞ − ∞` could appear), so the density there is 0.
+    #[allow(clippy::needless_range_loop)]
     pub fn mahalanobis_sq(&self, x: &[f64]) -> f64 {
         debug_assert_eq!(x.len(), self.dim());
         let n = self.dim();
@@ -198,13 +214,40 @@ impl Gaussian {
             large.resize(n, 0.0);
             &mut large
         };
-        let mut total = 0.0;
-        for (i, (&xi, &mi)) in x.iter().zip(self.mean.iter()).enumerate().take(n) {
-            let mut s = xi - mi;
-            for (j, yj) in y.iter().enumerate().take(i) {
-                s -= self.chol[(i, j)] * yj;
+        // L column-major: L_ij at i + j·n (flat slices, no per-entry bounds checks; the
+        // same operations in the same order).
+        let chol = self.factor.chol.as_slice();
+        let mean = self.mean.as_slice();
+        if n == 4 && x.len() == 4 {
+            // The loop below unrolled for the 4-D state (the same operations in the same
+            // order, the same early exit).
+            let l = chol;
+            let y0 = (x[0] - mean[0]) / l[0];
+            let mut total = y0 * y0;
+            if total == f64::INFINITY {
+                return f64::INFINITY;
             }
-            let yi = s / self.chol[(i, i)];
+            let y1 = (x[1] - mean[1] - l[1] * y0) / l[5];
+            total += y1 * y1;
+            if total == f64::INFINITY {
+                return f64::INFINITY;
+            }
+            let y2 = (x[2] - mean[2] - l[2] * y0 - l[6] * y1) / l[10];
+            total += y2 * y2;
+            if total == f64::INFINITY {
+                return f64::INFINITY;
+            }
+            let y3 = (x[3] - mean[3] - l[3] * y0 - l[7] * y1 - l[11] * y2) / l[15];
+            total += y3 * y3;
+            return total;
+        }
+        let mut total = 0.0;
+        for i in 0..n.min(x.len()) {
+            let mut s = x[i] - mean[i];
+            for j in 0..i {
+                s -= chol[i + j * n] * y[j];
+            }
+            let yi = s / chol[i + i * n];
             total += yi * yi;
             if total == f64::INFINITY {
                 return f64::INFINITY;
@@ -217,7 +260,7 @@ impl Gaussian {
     /// ln N(x; m, P).
     pub fn ln_pdf(&self, x: &[f64]) -> f64 {
         let n = self.dim() as f64;
-        -0.5 * (n * crate::math::special::LN_2PI + self.ln_det + self.mahalanobis_sq(x))
+        -0.5 * (n * crate::math::special::LN_2PI + self.factor.ln_det + self.mahalanobis_sq(x))
     }
 
     /// N(x; m, P).
@@ -231,13 +274,29 @@ impl Gaussian {
             self.dim(),
             (0..self.dim()).map(|_| super::normal::sample(rng)),
         );
-        &self.mean + &self.chol * z
+        &self.mean + &self.factor.chol * z
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The unrolled 4-D forward substitution equals a triangular solve, and overflows to +∞.
+    #[test]
+    fn mahalanobis_4d_matches_a_solve() {
+        let cov = [
+            4.0, 0.3, 0.2, 0.1, 0.3, 2.0, 0.05, 0.4, 0.2, 0.05, 1.5, 0.3, 0.1, 0.4, 0.3, 1.0,
+        ];
+        let g = Gaussian::from_slices(&[1.0, -2.0, 0.5, 0.25], &cov, "g").unwrap();
+        let x = [0.3, 1.1, -0.7, 2.0];
+        let d = DVector::from_column_slice(&x) - g.mean();
+        let y = g.chol().solve_lower_triangular(&d).unwrap();
+        let want = y.norm_squared();
+        assert!((g.mahalanobis_sq(&x) - want).abs() <= 1e-13 * want);
+        assert_eq!(g.mahalanobis_sq(&[1e300, 0.0, 0.0, 0.0]), f64::INFINITY);
+        assert_eq!(g.mahalanobis_sq(&[1.0, -2.0, 0.5, 0.25]), 0.0);
+    }
 
     #[test]
     fn a_variance_near_f64_max_stays_finite() {

@@ -94,11 +94,23 @@ impl<'a> RegionSet<'a> {
     /// of [`RegionSet::classify`] on a ball holding every point) are filled with their
     /// constant; only the undecided primitives are tested, point by point, by their exact
     /// test.
+    ///
+    /// `rows` (may be empty) lists runs `[a, b)` of points that lie on one segment, from
+    /// point a to point b − 1, up to `tol` per coordinate (the rows of the collocation grid
+    /// (20)–(22) of `001_…` along its first axis, with `tol` above the rounding of the
+    /// mapping (15)–(17)). For planar balls and boxes a run whose segment lies clearly on
+    /// one side of the boundary gets its bits without per-point tests (so only the rows
+    /// that cross a boundary are tested point by point): every point of a skipped run is farther from the boundary than any rounding, so its test could only
+    /// give the same bit, and the bits are those of the point-by-point test, bit for bit.
+    /// The runs must cover the points 0..count.
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn evaluate(
         &self,
         points: &[f64],
         ns: usize,
         count: usize,
+        rows: &[(usize, usize)],
+        tol: f64,
         state: &[Option<bool>],
         bits: &mut Vec<u64>,
     ) {
@@ -124,7 +136,11 @@ impl<'a> RegionSet<'a> {
             }
             let child = |c: usize| &done[c * words..(c + 1) * words];
             match node {
-                Flat::Primitive(r) => primitive_bits(r, points, ns, count, out),
+                Flat::Primitive(r) => {
+                    if !(ns == 2 && !rows.is_empty() && run_bits(r, points, rows, tol, out)) {
+                        primitive_bits(r, points, ns, count, out);
+                    }
+                }
                 Flat::Union(m) => {
                     for &c in m {
                         for (o, x) in out.iter_mut().zip(child(c)) {
@@ -165,33 +181,138 @@ fn combine(members: &[usize], state: &[Option<bool>], union: bool) -> Option<boo
     if all { Some(!union) } else { None }
 }
 
+/// The planar ball's exact inclusion test (`Ball::contains`, predicates::ball_side,
+/// unrolled for the plane: the same floating-point filter, the same exact fallback).
+#[inline]
+fn ball_bit(s: &[f64], c: &[f64], radius: f64) -> bool {
+    let (dx, dy) = (s[0] - c[0], s[1] - c[1]);
+    let r2 = radius * radius;
+    let k = 4.0 * (2.0 + 3.0) * EPS;
+    let d2 = dx * dx + dy * dy;
+    let diff = r2 - d2;
+    if fns::abs(diff) > k * (d2 + r2) {
+        diff > 0.0
+    } else {
+        ball_side_exact(s, c, radius) != Ordering::Less
+    }
+}
+
+/// The planar box's exact inclusion test (`AxisBox::contains`).
+#[inline]
+fn box_bit(s: &[f64], lo: &[f64], hi: &[f64]) -> bool {
+    lo[0] <= s[0] && s[0] <= hi[0] && lo[1] <= s[1] && s[1] <= hi[1]
+}
+
+/// The bits of a planar ball or box `r` at the points, run by run (see
+/// [`RegionSet::evaluate`]), as [`primitive_bits`] gives them; `false` (nothing written)
+/// for another primitive.
+///
+/// Every point of a run [a, b) lies within 3·`tol` of the segment from point a to point
+/// b − 1 (its exact position on the row does, and each computed point, the two ends
+/// included, is within `tol` of its exact position). A run is decided without per-point
+/// tests when that segment, widened by 4·`tol` and a relative 10⁻⁹ (for a ball), lies
+/// inside or outside the region (both are convex, so the segment is inside when its ends
+/// are): then every point is farther from the boundary than the rounding of its test, which
+/// can only give that bit. The other runs are tested point by point.
+fn run_bits(
+    r: &Region,
+    points: &[f64],
+    rows: &[(usize, usize)],
+    tol: f64,
+    out: &mut [u64],
+) -> bool {
+    let pt = |p: usize| &points[2 * p..2 * p + 2];
+    match r.node() {
+        Node::Ball(ball) if ball.dim() == 2 => {
+            let c = ball.center();
+            let (cx, cy, rho) = (c[0], c[1], ball.radius());
+            for &(a, b) in rows {
+                let (first, last) = (pt(a), pt(b - 1));
+                let (px, py) = (first[0] - cx, first[1] - cy);
+                let (qx, qy) = (last[0] - cx, last[1] - cy);
+                let margin = 1e-9 * (rho + px.abs() + py.abs() + qx.abs() + qy.abs()) + 4.0 * tol;
+                let (dp2, dq2) = (px * px + py * py, qx * qx + qy * qy);
+                let inner = rho - margin;
+                if inner > 0.0 && dp2.max(dq2) < inner * inner {
+                    set_bits(out, a, b);
+                    continue;
+                }
+                // The squared distance from the centre to the segment (t off by a few ulps
+                // moves the point along the segment: a second-order change).
+                let (ux, uy) = (qx - px, qy - py);
+                let uu = ux * ux + uy * uy;
+                let t = if uu > 0.0 {
+                    (-(px * ux + py * uy) / uu).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                let (nx, ny) = (px + t * ux, py + t * uy);
+                let outer = rho + margin;
+                if nx * nx + ny * ny > outer * outer {
+                    continue;
+                }
+                for p in a..b {
+                    out[p / 64] |= u64::from(ball_bit(pt(p), c, rho)) << (p % 64);
+                }
+            }
+            true
+        }
+        Node::Box(bx) if bx.dim() == 2 => {
+            let (lo, hi) = (bx.min(), bx.max());
+            let m = 4.0 * tol;
+            for &(a, b) in rows {
+                let (first, last) = (pt(a), pt(b - 1));
+                let (x_min, x_max) = (first[0].min(last[0]), first[0].max(last[0]));
+                let (y_min, y_max) = (first[1].min(last[1]), first[1].max(last[1]));
+                if lo[0] + m < x_min && x_max < hi[0] - m && lo[1] + m < y_min && y_max < hi[1] - m
+                {
+                    set_bits(out, a, b);
+                } else if x_max + m < lo[0]
+                    || x_min - m > hi[0]
+                    || y_max + m < lo[1]
+                    || y_min - m > hi[1]
+                {
+                } else {
+                    for p in a..b {
+                        out[p / 64] |= u64::from(box_bit(pt(p), lo, hi)) << (p % 64);
+                    }
+                }
+            }
+            true
+        }
+        _ => false,
+    }
+}
+
+/// Sets bits a..b of `out`.
+fn set_bits(out: &mut [u64], a: usize, b: usize) {
+    let mut p = a;
+    while p < b {
+        let (w, lo) = (p / 64, p % 64);
+        let hi = (b - w * 64).min(64);
+        let mask = if hi - lo == 64 {
+            u64::MAX
+        } else {
+            ((1u64 << (hi - lo)) - 1) << lo
+        };
+        out[w] |= mask;
+        p = w * 64 + hi;
+    }
+}
+
 /// The primitive's exact inclusion test at every point, as bits.
 fn primitive_bits(r: &Region, points: &[f64], ns: usize, count: usize, out: &mut [u64]) {
     match r.node() {
         Node::Ball(b) if ns == 2 && b.dim() == 2 => {
-            // Ball::contains (predicates::ball_side) unrolled for the plane: the same
-            // floating-point filter, the same exact fallback.
-            let (cx, cy, radius) = (b.center()[0], b.center()[1], b.radius());
-            let r2 = radius * radius;
-            let k = 4.0 * (2.0 + 3.0) * EPS;
+            let (c, radius) = (b.center(), b.radius());
             for (p, s) in points.chunks_exact(2).take(count).enumerate() {
-                let (dx, dy) = (s[0] - cx, s[1] - cy);
-                let d2 = dx * dx + dy * dy;
-                let diff = r2 - d2;
-                let inside = if fns::abs(diff) > k * (d2 + r2) {
-                    diff > 0.0
-                } else {
-                    ball_side_exact(s, b.center(), radius) != Ordering::Less
-                };
-                out[p / 64] |= u64::from(inside) << (p % 64);
+                out[p / 64] |= u64::from(ball_bit(s, c, radius)) << (p % 64);
             }
         }
         Node::Box(b) if ns == 2 && b.dim() == 2 => {
             let (lo, hi) = (b.min(), b.max());
-            let (x0, x1, y0, y1) = (lo[0], hi[0], lo[1], hi[1]);
             for (p, s) in points.chunks_exact(2).take(count).enumerate() {
-                let inside = x0 <= s[0] && s[0] <= x1 && y0 <= s[1] && s[1] <= y1;
-                out[p / 64] |= u64::from(inside) << (p % 64);
+                out[p / 64] |= u64::from(box_bit(s, lo, hi)) << (p % 64);
             }
         }
         _ => {
@@ -296,5 +417,55 @@ impl Hull<'_> {
             }
             _ => None,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use alloc::vec;
+
+    /// The run-by-run bits (planar balls and boxes, rows of a mapped grid) equal the
+    /// point-by-point bits, including runs that graze a boundary.
+    #[test]
+    fn runs_give_the_point_by_point_bits() {
+        let regions = vec![
+            Region::ball(&[0.3, -0.2], 1.0, "r0").unwrap(),
+            Region::axis_box(&[-0.5, -0.75], &[0.25, 2.0], "r1").unwrap(),
+            Region::complement(Region::ball(&[1.0, 1.0], 0.5, "r2").unwrap()),
+            // A boundary exactly on a row and one exactly through grid points.
+            Region::axis_box(&[-1.0, 0.0], &[0.0, 1.0], "r3").unwrap(),
+            Region::ball(&[0.0, 0.0], 1.0, "r4").unwrap(),
+        ];
+        let set = RegionSet::new(&regions);
+        for (theta, scale, shift) in [(0.0, 1.0, 0.0), (0.4, 0.7, 0.1), (1.3, 1.9, -0.3)] {
+            let (c, s) = (f64::cos(theta), f64::sin(theta));
+            let mut points = Vec::new();
+            let mut rows = Vec::new();
+            for j in 0..15 {
+                let a = points.len() / 2;
+                for i in 0..15 {
+                    let (u, v) = (-1.5 + 3.0 * i as f64 / 14.0, -1.5 + 3.0 * j as f64 / 14.0);
+                    if u * u + v * v <= 2.25 * (1.0 + 1e-12) {
+                        points.push(shift + scale * (c * u - s * v));
+                        points.push(scale * (s * u + c * v));
+                    }
+                }
+                rows.push((a, points.len() / 2));
+            }
+            let count = points.len() / 2;
+            let state = vec![None; 8];
+            let (mut by_runs, mut by_points) = (Vec::new(), Vec::new());
+            set.evaluate(&points, 2, count, &rows, 1e-12, &state, &mut by_runs);
+            set.evaluate(&points, 2, count, &[], 1e-12, &state, &mut by_points);
+            assert_eq!(by_runs, by_points);
+        }
+        let mut out = [0u64; 3];
+        set_bits(&mut out, 3, 130);
+        let mut want = [0u64; 3];
+        for p in 3..130 {
+            want[p / 64] |= 1 << (p % 64);
+        }
+        assert_eq!(out, want);
     }
 }

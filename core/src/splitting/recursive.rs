@@ -155,6 +155,9 @@ struct Grid {
     words: usize,
     /// Per plane (j, l) (slot j·N_g + l): the bit set of its points.
     planes: Vec<u64>,
+    /// For n_s = 2: the runs [a, b) of points with the same ȳ_2 (the rows along the first
+    /// axis, each on one segment of the mapped grid); empty otherwise.
+    rows: Vec<(usize, usize)>,
 }
 
 impl Grid {
@@ -190,6 +193,15 @@ impl Grid {
                             planes[(j * ng + l) * words + p / 64] |= 1 << (p % 64);
                         }
                     }
+                    let mut rows: Vec<(usize, usize)> = Vec::new();
+                    if ns == 2 {
+                        for (p, idx) in index.chunks_exact(2).enumerate() {
+                            match rows.last_mut() {
+                                Some((_, b)) if index[2 * (*b - 1) + 1] == idx[1] => *b = p + 1,
+                                _ => rows.push((p, p + 1)),
+                            }
+                        }
+                    }
                     return Self {
                         points,
                         ns,
@@ -197,6 +209,7 @@ impl Grid {
                         zeta,
                         words,
                         planes,
+                        rows,
                     };
                 }
                 idx[d] += 1;
@@ -673,10 +686,15 @@ fn split_direction(
     }
     let count = grid.len();
     let words = grid.words;
+    // Each mapped coordinate m_i + Σ_j a_ij ȳ_j is within a few ulps of |m_i| + Σ_j |a_ij ȳ_j|
+    // ≤ |m_i| + √2 ζ √λ_max of its exact value: far below this tolerance.
+    let tol = 1e-12 * (scale + 2.0 * reach);
     set.evaluate(
         &scratch.mapped,
         ns,
         count,
+        if ns == 2 { &grid.rows } else { &[] },
+        tol,
         &scratch.state,
         &mut scratch.bits,
     );
