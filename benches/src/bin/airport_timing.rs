@@ -3,6 +3,10 @@
 //! ```text
 //! airport_timing time [reps]          wall time of one 60-step run, GM and PF (median of reps)
 //! airport_timing table [reps]         the same per seed 1..=10: GM ms, PF ms, PF/GM (issue 29)
+//! airport_timing curve [runs]         GM only, one knob at a time (N_g, merge distance,
+//!                                     L_max, prune threshold): mean position error and 3σ
+//!                                     coverage over seeds 1..=runs (default 100) against the
+//!                                     mean time per run (the accuracy / time trade-off)
 //! airport_timing gm [reps]            only the GM filter, seed 1 (for callgrind / perf)
 //! airport_timing dump [runs]          every GM estimate of seeds 1..=runs, exactly
 //! airport_timing stats                 per-step component counts of seed 1 (GM)
@@ -11,7 +15,8 @@
 //! ```
 //!
 //! A third argument sets the GM filter's grid N_g (`SplitOptions::grid_points`, default 15),
-//! e.g. `airport_timing accuracy 100 7`.
+//! e.g. `airport_timing accuracy 100 7`; a fourth the prune threshold (default 1e-6),
+//! e.g. `airport_timing gm 1 15 1e-4`.
 //!
 //! The PF has 5,000 particles and one MCMC move (the paper's settings), seed 1000 + seed.
 use fisst::filters::{
@@ -29,9 +34,44 @@ fn grid_points() -> Option<usize> {
 }
 
 fn gm_run(sc: &AirportScenario, reports: &[Vec<Region>]) -> Vec<FilterEstimate> {
+    gm_run_with(
+        sc,
+        reports,
+        Knobs {
+            grid: grid_points(),
+            prune: std::env::args().nth(4).and_then(|s| s.parse().ok()),
+            ..Knobs::default()
+        },
+    )
+}
+
+/// The GM filter's knobs that `curve` varies (`None`: the scenario's default).
+#[derive(Clone, Copy, Default)]
+struct Knobs {
+    /// N_g of eqs. (20)–(22).
+    grid: Option<usize>,
+    /// The Mahalanobis merge distance of the reduction (default 2).
+    merge: Option<f64>,
+    /// Runnalls' L_max (default 100).
+    keep: Option<usize>,
+    /// The prune threshold (default 1e-6).
+    prune: Option<f64>,
+}
+
+/// The GM filter with `knobs`.
+fn gm_run_with(sc: &AirportScenario, reports: &[Vec<Region>], knobs: Knobs) -> Vec<FilterEstimate> {
     let mut config = sc.config.clone();
-    if let Some(g) = grid_points() {
+    if let Some(g) = knobs.grid {
         config.splitting.options.grid_points = g;
+    }
+    if let Some(d) = knobs.merge {
+        config.reduction.merge_distance = Some(d);
+    }
+    if let Some(k) = knobs.keep {
+        config.reduction.max_components = Some(k);
+    }
+    if let Some(p) = knobs.prune {
+        config.reduction.prune_below = p;
     }
     let mut f = GmBernoulliFilter::new(config).unwrap();
     reports
@@ -174,6 +214,74 @@ fn main() {
                 psum / gsum
             );
         }
+        "curve" => {
+            // Issue 29: the GM filter's error against its time as N_g (eqs. (20)–(22)) varies.
+            let runs = if n == 0 { 100 } else { n };
+            let scenarios: Vec<_> = (1..=runs as u64)
+                .map(|seed| {
+                    let sc = airport_scenario(seed, STEPS).unwrap();
+                    let r = reports(&sc);
+                    (sc, r)
+                })
+                .collect();
+            println!(
+                "airport GM, {runs} seeded runs of {STEPS} steps (defaults: N_g 15, merge 2, L_max 100, prune 1e-6)"
+            );
+            println!("knob            mean pos. error  3σ coverage  ms per run");
+            let mut rows: Vec<(String, Knobs)> = Vec::new();
+            for g in [5, 7, 9, 11, 15, 19] {
+                rows.push((
+                    format!("N_g {g}"),
+                    Knobs {
+                        grid: Some(g),
+                        ..Knobs::default()
+                    },
+                ));
+            }
+            for d in [0.5, 1.0, 1.5, 3.0, 4.0] {
+                rows.push((
+                    format!("merge {d}"),
+                    Knobs {
+                        merge: Some(d),
+                        ..Knobs::default()
+                    },
+                ));
+            }
+            for k in [10, 20, 50, 200] {
+                rows.push((
+                    format!("L_max {k}"),
+                    Knobs {
+                        keep: Some(k),
+                        ..Knobs::default()
+                    },
+                ));
+            }
+            for p in [1e-5, 3e-5, 1e-4, 3e-4, 1e-3] {
+                rows.push((
+                    format!("prune {p:e}"),
+                    Knobs {
+                        prune: Some(p),
+                        ..Knobs::default()
+                    },
+                ));
+            }
+            for (name, knobs) in rows {
+                let (mut s, mut t) = ((0, 0.0, 0.0, 0), 0.0);
+                for (sc, r) in &scenarios {
+                    let t0 = Instant::now();
+                    let e = gm_run_with(sc, r, knobs);
+                    t += t0.elapsed().as_secs_f64();
+                    let a = score(sc, &e);
+                    s = (s.0 + a.0, s.1 + a.1, s.2 + a.2, s.3 + a.3);
+                }
+                println!(
+                    "{name:<14}  {:>15.3}  {:>11.4}  {:>10.2}",
+                    s.1 / s.3 as f64,
+                    s.0 as f64 / s.3 as f64,
+                    t * 1e3 / runs as f64
+                );
+            }
+        }
         "accuracy" => {
             let runs = if n == 0 { 100 } else { n };
             let (mut g, mut p) = ((0, 0.0, 0.0, 0), (0, 0.0, 0.0, 0));
@@ -214,7 +322,9 @@ fn main() {
                 }
             }
         }
-        other => panic!("mode must be time, table, gm, stats, dump or accuracy, got {other}"),
+        other => {
+            panic!("mode must be time, table, curve, gm, stats, dump or accuracy, got {other}")
+        }
     }
 }
 
