@@ -57,6 +57,17 @@ pub(super) fn sum_matchings_small(
 /// below it are redone in log space.
 pub(super) const SMALL_FLOOR: f64 = 1.1e-291;
 
+/// `$body` once for each of the literals, in the order given, with `$i` bound to it: a loop
+/// that the compiler sees unrolled, every index a constant.
+macro_rules! unrolled {
+    ($i:ident in [$($k:literal)*] $body:block) => {
+        $({
+            let $i: usize = $k;
+            $body
+        })*
+    };
+}
+
 /// |S| for the subsets S of [`SMALL_SIDE`] columns. After r rows of the subset programme of
 /// eq. (20) of paper `004` only the subsets of at most r columns can hold a non-zero sum (a
 /// partial matching of r rows uses at most r columns), so [`sum_fixed`] and
@@ -144,63 +155,69 @@ pub(super) fn sum_fixed_lanes<const N: usize, const M: usize, const L: usize>(
     clutter: &[f64],
     factor: &impl Fn(usize, usize) -> [f64; L],
 ) -> [f64; L] {
+    const { assert!(N <= SMALL_SIDE && M <= SMALL_SIDE) };
     let objects_are_rows = N > M;
     let (rows, cols) = if objects_are_rows { (N, M) } else { (M, N) };
     let states = 1usize << cols;
     let clutter = &clutter[..M];
     let mut dp = [[0.0f64; L]; 1 << SMALL_SIDE];
     dp[0] = [1.0; L];
-    for r in 0..rows {
-        let rm = if objects_are_rows { miss } else { clutter[r] };
-        let mut row = [[0.0f64; L]; SMALL_SIDE];
-        for (c, f) in row.iter_mut().enumerate().take(cols) {
-            *f = if objects_are_rows {
-                factor(r, c)
-            } else {
-                factor(c, r)
-            };
-        }
-        for s in (1..states).rev() {
-            let size = SUBSET_SIZE[s] as usize;
-            if size > r + 1 {
-                continue;
+    // Rows and subsets written out (`unrolled!`), so that every test on them below is
+    // decided at compile time and the table is straight-line vector code.
+    unrolled!(r in [0 1 2 3] {
+        if r < rows {
+            let rm = if objects_are_rows { miss } else { clutter[r] };
+            let mut row = [[0.0f64; L]; SMALL_SIDE];
+            for (c, f) in row.iter_mut().enumerate().take(cols) {
+                *f = if objects_are_rows {
+                    factor(r, c)
+                } else {
+                    factor(c, r)
+                };
             }
-            let mut v = [0.0; L];
-            if size <= r {
-                v = dp[s];
-                for x in &mut v {
-                    *x *= rm;
+            unrolled!(s in [15 14 13 12 11 10 9 8 7 6 5 4 3 2 1] {
+                let size = SUBSET_SIZE[s] as usize;
+                if s < states && size <= r + 1 {
+                    let mut v = [0.0; L];
+                    if size <= r {
+                        v = dp[s];
+                        for x in &mut v {
+                            *x *= rm;
+                        }
+                    }
+                    for (c, f) in row.iter().enumerate().take(cols) {
+                        if s & (1 << c) != 0 {
+                            let d = dp[s & !(1 << c)];
+                            for l in 0..L {
+                                v[l] += d[l] * f[l];
+                            }
+                        }
+                    }
+                    dp[s] = v;
                 }
+            });
+            for x in &mut dp[0] {
+                *x *= rm;
             }
-            for (c, f) in row.iter().enumerate().take(cols) {
-                if s & (1 << c) != 0 {
-                    let d = dp[s & !(1 << c)];
-                    for l in 0..L {
-                        v[l] += d[l] * f[l];
+        }
+    });
+    let mut total = [0.0; L];
+    unrolled!(s in [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15] {
+        if s < states {
+            let mut f = dp[s];
+            for c in 0..cols {
+                if s & (1 << c) == 0 {
+                    let k = if objects_are_rows { clutter[c] } else { miss };
+                    for x in &mut f {
+                        *x *= k;
                     }
                 }
             }
-            dp[s] = v;
-        }
-        for x in &mut dp[0] {
-            *x *= rm;
-        }
-    }
-    let mut total = [0.0; L];
-    for (s, d) in dp.iter().enumerate().take(states) {
-        let mut f = *d;
-        for c in 0..cols {
-            if s & (1 << c) == 0 {
-                let k = if objects_are_rows { clutter[c] } else { miss };
-                for x in &mut f {
-                    *x *= k;
-                }
+            for l in 0..L {
+                total[l] += f[l];
             }
         }
-        for l in 0..L {
-            total[l] += f[l];
-        }
-    }
+    });
     total
 }
 
