@@ -7,9 +7,11 @@
 //! Prints one row per seed (ms per step), the worst and the mean step, the load average, and a
 //! checksum of every step's rewards and action and one of the actions alone (FNV-1a over their bits) to show that a change
 //! left the numbers as they were. `benches/control_node.mjs table` prints the same table
-//! through the npm package in Node. For instruction counts of one step add
-//! `valgrind --tool=callgrind --toggle-collect='*timed_step*'` and a single seed with the step
-//! (`control_table 1 1 4` counts steps 1–4 of seed 1).
+//! through the npm package in Node. For instruction counts run it under
+//! `valgrind --tool=callgrind` with a single seed and few steps (`control_table 1 1 2` counts
+//! seed 1's steps 1–2 and the set-up). Not `--toggle-collect='*timed_step*'`: even with one
+//! thread the rewards run on rayon's worker thread, whose stack has no `timed_step`, so that
+//! counts almost nothing.
 //!
 //! Measured (issue 29, 2026-12-04, load average 5–6 from three builds): seeds 1–10, steps
 //! 1–12, one native thread: worst 402–476 ms (seed 1, step 4), mean 91–124 ms; seed 1's first
@@ -20,6 +22,17 @@
 //! the actions of all 120 steps unchanged: 17.7e9 Ir, 18.4e9 with the range test hoisted);
 //! rustc leaves the kernel's exp loop scalar (no `mulpd`) though the same loop alone
 //! vectorises.
+//!
+//! After the batch kernel of (20) took n, m ≤ 4 unrolled, four particles as lanes (h-control,
+//! same checksums: rewards and actions bit for bit): seed 1's steps 1–2 are 2.45e9
+//! instructions instead of 8.25e9 and the whole table (seeds 1–10, steps 1–12) 90.5e9 instead
+//! of 108.5e9 (callgrind, whole program), of which 10.1e9 in the subset sum
+//! (`BatchLikelihood::scaled_likelihoods`), the rest in the kernel around it, mostly its exps
+//! (perf: the subset sum ~15 % of seed 1's steps 1–4 and ~7 % of seed 9's, exp 50–60 %).
+//! The 40 % above was `dp_row` inlined into the batch's tables for n = m = 4, which had no
+//! unrolled kernel; `ln_sum_matchings` itself is under 1 %. Seeds 1–10, steps 1–12, load
+//! average 4.4–4.8 on 2 cores: worst 199–306 ms, mean 66–108 ms (before, same conditions:
+//! worst 506–592 ms, mean 88–110 ms).
 use fisst::control::{ControlOptions, ControlRun, Scheme, StepOutcome};
 use std::hint::black_box;
 use std::time::Instant;

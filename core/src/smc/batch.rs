@@ -4,9 +4,15 @@
 //! [`super::fixed`], and the bound below which a pair factor may be dropped.
 
 use super::fixed::{
-    MAX_LARGER, SMALL_FLOOR, SMALL_SIDE, SmallTables, sum_fixed, sum_matchings_small,
+    MAX_LARGER, SMALL_FLOOR, SMALL_SIDE, SmallTables, sum_fixed, sum_fixed_lanes,
+    sum_matchings_small,
 };
 use super::likelihood::MultiObjectLikelihood;
+
+/// The sets of one cardinality that [`BatchLikelihood::scaled_likelihoods`] evaluates at once
+/// by [`sum_fixed_lanes`] (eq. (20) of paper `004`): independent chains of the same
+/// operations, one per particle.
+const LANES: usize = 4;
 
 /// ln of the largest pair factor that [`BatchLikelihood::negligible_pair_bound`] lets one replace by 0, as a
 /// multiple of ln 2: 2^{−64}.
@@ -56,10 +62,12 @@ impl BatchLikelihood {
     /// gradual underflow could matter (see [`sum_matchings_small`]); the caller then evaluates
     /// [`MultiObjectLikelihood::ln_likelihood_from_logs`], which is exact at every scale.
     ///
-    /// The common sizes (n, m ≤ 3) go to a kernel unrolled for them ([`sum_fixed`]), the others
-    /// to the fixed tables ([`sum_matchings_small`], the smaller side as the columns); both
-    /// with the operations of the general programme in the same order. The loop over the sets
-    /// is the inner one, so the size dispatch is paid once per batch and not once per set.
+    /// The common sizes (n, m ≤ 4) go to a kernel unrolled for them, [`LANES`] sets at a time
+    /// ([`sum_fixed_lanes`], then [`sum_fixed`] for the last few), the others to the fixed
+    /// tables ([`sum_matchings_small`], the smaller side as the columns); all with the
+    /// operations of the general programme in the same order (the same bits). The loop over
+    /// the sets is the inner one, so the size dispatch is paid once per batch and not once per
+    /// set.
     pub(crate) fn scaled_likelihoods(
         &mut self,
         n: usize,
@@ -80,7 +88,18 @@ impl BatchLikelihood {
             ($(($a:literal, $b:literal)),*) => {
                 match (n, m) {
                     $(($a, $b) => {
-                        for (q, t) in out.iter_mut().enumerate() {
+                        let whole = count - count % LANES;
+                        for (q, t) in out[..whole].chunks_exact_mut(LANES).enumerate() {
+                            let q = q * LANES;
+                            let v = sum_fixed_lanes::<$a, $b, LANES>(miss[0], clutter, &|o, j| {
+                                let at = (j * $a + o) * count + q;
+                                core::array::from_fn(|l| factors[at + l])
+                            });
+                            for (t, v) in t.iter_mut().zip(v) {
+                                *t = if v > SMALL_FLOOR { v } else { f64::NAN };
+                            }
+                        }
+                        for (q, t) in out.iter_mut().enumerate().skip(whole) {
                             let v = sum_fixed::<$a, $b>(miss[0], clutter, &|o, j| {
                                 factors[(j * $a + o) * count + q]
                             });
@@ -108,7 +127,16 @@ impl BatchLikelihood {
             (3, 0),
             (3, 1),
             (3, 2),
-            (3, 3)
+            (3, 3),
+            (0, 4),
+            (1, 4),
+            (2, 4),
+            (3, 4),
+            (4, 0),
+            (4, 1),
+            (4, 2),
+            (4, 3),
+            (4, 4)
         );
         for (q, t) in out.iter_mut().enumerate() {
             let factor = |o: usize, j: usize| factors[(j * n + o) * count + q];
@@ -232,17 +260,26 @@ mod tests {
     }
 
     /// The unrolled kernels of the batch give the bits of the table-driven programme, in both
-    /// orientations, for every set of a batch.
+    /// orientations, for every set of a batch: those of the lanes ([`sum_fixed_lanes`]) and
+    /// those after the last whole group of lanes, with exact zeros among the factors (as the
+    /// kernel's dropped pairs).
     #[test]
     fn eq20_fixed_kernels_match_the_tables_bit_for_bit() {
         let mut rng = seeded(77);
         let model = MultiObjectLikelihood::new(0.9, 0.8).unwrap();
         let mut batch = BatchLikelihood::new(&model);
-        let count = 20;
-        for n in 0..=3 {
-            for m in 0..=3 {
+        let count = 4 * LANES + 3;
+        for n in 0..=SMALL_SIDE {
+            for m in 0..=SMALL_SIDE {
                 let pairs: Vec<Vec<f64>> = (0..count)
-                    .map(|_| (0..n * m).map(|_| uniform(&mut rng)).collect())
+                    .map(|_| {
+                        (0..n * m)
+                            .map(|_| {
+                                let u = uniform(&mut rng);
+                                if u < 0.4 { 0.0 } else { u }
+                            })
+                            .collect()
+                    })
                     .collect();
                 let clutter: Vec<f64> = (0..m).map(|_| uniform(&mut rng)).collect();
                 let mut factors = vec![0.0; n * m * count];
@@ -256,7 +293,7 @@ mod tests {
                 let mut out = vec![0.0; count];
                 batch.scaled_likelihoods(n, &clutter, &factors, &mut out);
                 for (pair, fixed) in pairs.iter().zip(&out) {
-                    let miss = [1.0 - 0.9; 3];
+                    let miss = [1.0 - 0.9; SMALL_SIDE];
                     let table = if n > m {
                         sum_matchings_small(n, m, pair, &miss[..n], &clutter)
                     } else {

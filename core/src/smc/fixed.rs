@@ -57,6 +57,34 @@ pub(super) fn sum_matchings_small(
 /// below it are redone in log space.
 pub(super) const SMALL_FLOOR: f64 = 1.1e-291;
 
+/// `$body` once for each of the literals, in the order given, with `$i` bound to it: a loop
+/// that the compiler sees unrolled, every index a constant.
+macro_rules! unrolled {
+    ($i:ident in [$($k:literal)*] $body:block) => {
+        $({
+            let $i: usize = $k;
+            $body
+        })*
+    };
+}
+
+/// |S| for the subsets S of [`SMALL_SIDE`] columns. After r rows of the subset programme of
+/// eq. (20) of paper `004` only the subsets of at most r columns can hold a non-zero sum (a
+/// partial matching of r rows uses at most r columns), so [`sum_fixed`] and
+/// [`sum_fixed_lanes`] skip the others in row r (0-based: |S| > r + 1) and start the sum of
+/// a subset of exactly r + 1 columns at its first pair term (its previous value is 0). With
+/// every factor finite and ≥ 0 the skipped terms are exact zeros and x + 0 = x, so this
+/// changes no bit of the result.
+const SUBSET_SIZE: [u8; 1 << SMALL_SIDE] = {
+    let mut t = [0u8; 1 << SMALL_SIDE];
+    let mut s = 0;
+    while s < t.len() {
+        t[s] = (s as u32).count_ones() as u8;
+        s += 1;
+    }
+    t
+};
+
 /// [`sum_matchings_small`] for N objects and M measurements known at compile time (so that
 /// every loop unrolls), the pair factors from `factor(i, j)`, the objects' miss factor `miss`
 /// and the measurements' `clutter[j]`: the smaller side as the columns, and the operations of
@@ -85,7 +113,12 @@ pub(super) fn sum_fixed<const N: usize, const M: usize>(
             };
         }
         for s in (1..states).rev() {
-            let mut v = dp[s] * rm;
+            // See `SUBSET_SIZE`: skipped states stay 0, a started sum needs no 0 · rm.
+            let size = SUBSET_SIZE[s] as usize;
+            if size > r + 1 {
+                continue;
+            }
+            let mut v = if size == r + 1 { 0.0 } else { dp[s] * rm };
             for (c, &f) in row.iter().enumerate().take(cols) {
                 if s & (1 << c) != 0 {
                     v += dp[s & !(1 << c)] * f;
@@ -105,6 +138,86 @@ pub(super) fn sum_fixed<const N: usize, const M: usize>(
         }
         total += f;
     }
+    total
+}
+
+/// [`sum_fixed`] for `L` sets of N objects at once (the lanes, e.g. consecutive particles of
+/// one cardinality against the same scan): `factor(i, j)` gives the pair factors
+/// p_D g(z_j | x_i) of eq. (20) of paper `004` of the `L` sets, `miss` and `clutter` are
+/// shared. Each lane goes through exactly the operations of [`sum_fixed`] in the same order
+/// (an array of lanes in place of each number), so each lane's result has [`sum_fixed`]'s
+/// bits; the lanes are independent chains, which the processor overlaps and the compiler may
+/// turn into vector instructions.
+#[inline(always)]
+#[allow(clippy::needless_range_loop)] // `clutter` is indexed by rows or by columns.
+pub(super) fn sum_fixed_lanes<const N: usize, const M: usize, const L: usize>(
+    miss: f64,
+    clutter: &[f64],
+    factor: &impl Fn(usize, usize) -> [f64; L],
+) -> [f64; L] {
+    const { assert!(N <= SMALL_SIDE && M <= SMALL_SIDE) };
+    let objects_are_rows = N > M;
+    let (rows, cols) = if objects_are_rows { (N, M) } else { (M, N) };
+    let states = 1usize << cols;
+    let clutter = &clutter[..M];
+    let mut dp = [[0.0f64; L]; 1 << SMALL_SIDE];
+    dp[0] = [1.0; L];
+    // Rows and subsets written out (`unrolled!`), so that every test on them below is
+    // decided at compile time and the table is straight-line vector code.
+    unrolled!(r in [0 1 2 3] {
+        if r < rows {
+            let rm = if objects_are_rows { miss } else { clutter[r] };
+            let mut row = [[0.0f64; L]; SMALL_SIDE];
+            for (c, f) in row.iter_mut().enumerate().take(cols) {
+                *f = if objects_are_rows {
+                    factor(r, c)
+                } else {
+                    factor(c, r)
+                };
+            }
+            unrolled!(s in [15 14 13 12 11 10 9 8 7 6 5 4 3 2 1] {
+                let size = SUBSET_SIZE[s] as usize;
+                if s < states && size <= r + 1 {
+                    let mut v = [0.0; L];
+                    if size <= r {
+                        v = dp[s];
+                        for x in &mut v {
+                            *x *= rm;
+                        }
+                    }
+                    for (c, f) in row.iter().enumerate().take(cols) {
+                        if s & (1 << c) != 0 {
+                            let d = dp[s & !(1 << c)];
+                            for l in 0..L {
+                                v[l] += d[l] * f[l];
+                            }
+                        }
+                    }
+                    dp[s] = v;
+                }
+            });
+            for x in &mut dp[0] {
+                *x *= rm;
+            }
+        }
+    });
+    let mut total = [0.0; L];
+    unrolled!(s in [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15] {
+        if s < states {
+            let mut f = dp[s];
+            for c in 0..cols {
+                if s & (1 << c) == 0 {
+                    let k = if objects_are_rows { clutter[c] } else { miss };
+                    for x in &mut f {
+                        *x *= k;
+                    }
+                }
+            }
+            for l in 0..L {
+                total[l] += f[l];
+            }
+        }
+    });
     total
 }
 
