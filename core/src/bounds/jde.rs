@@ -111,8 +111,8 @@ pub struct JdeOptions {
     pub samples: Option<usize>,
     /// Seed of the Monte Carlo (default: fresh entropy, see [`jde_bound`]).
     pub seed: Option<u64>,
-    /// The largest |Z| = n integrated by deterministic quadrature, 1 or 2 (default
-    /// [`TheoremOptions::default`]'s; see [`TheoremOptions::quadrature_cardinality`]).
+    /// The largest |Z| = n integrated by deterministic quadrature, 1 or 2 (default: 2 for a
+    /// linear-Gaussian model, 1 otherwise; see [`TheoremOptions::quadrature_cardinality`]).
     pub quadrature_cardinality: Option<usize>,
 }
 

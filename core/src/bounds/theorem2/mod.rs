@@ -1,10 +1,11 @@
 //! Theorem 2 (22)–(26) of paper 002: measurement model II, Z = Θ_b0(X) ∪ W with W Poisson of
-//! intensity v = λ c. The n = 1 terms by 1D quadrature; the n = 2 terms by Monte Carlo or, as
-//! [`TheoremOptions::quadrature_cardinality`] says (default: Monte Carlo), by deterministic 2D
+//! intensity v = λ c. The n = 1 terms by 1D quadrature; the n = 2 terms by deterministic 2D
 //! cubature over Z² (nested adaptive G10/K21 split at the MAP region's boundary found by
-//! root-finding): in the linear-Gaussian case (Gaussian prior, linear-Gaussian g with constant
-//! P_o, any clutter density) its x-integrals are closed forms and a call takes 13–220 ms
-//! natively, otherwise seconds; n ≥ 3 by Monte Carlo over Z^n (error: one standard error).
+//! root-finding) or by Monte Carlo, as [`TheoremOptions::quadrature_cardinality`] says: by
+//! default the cubature in the linear-Gaussian case (Gaussian prior, linear-Gaussian g with
+//! constant P_o, any clutter density), where its x-integrals are closed forms and a call takes
+//! 13–220 ms natively, and Monte Carlo otherwise (the general cubature takes seconds); n ≥ 3
+//! by Monte Carlo over Z^n (error: one standard error).
 //! Each [`Cardinality::method`] says which.
 //! Truncation: the series stops at N clutter points as [`TheoremOptions::series_tolerance`] and
 //! [`TheoremOptions::max_clutter`] say; the bound returned is the truncated one below.

@@ -246,8 +246,17 @@ fn thm2_n2_closed_form_equals_the_general_cubature() {
 fn thm2_each_cardinality_reports_its_method() {
     let c = case(0.8, Density1::uniform(-10.0, 10.0).unwrap());
     let m = model(&c, 0.6, 1.0);
-    let mc = theorem2(&m, &TheoremOptions::default()).unwrap();
-    let quad = theorem2(
+    let mc = theorem2(
+        &m,
+        &TheoremOptions {
+            quadrature_cardinality: 1,
+            ..TheoremOptions::default()
+        },
+    )
+    .unwrap();
+    // the default on a linear-Gaussian model: the n = 2 cubature
+    let quad = theorem2(&m, &TheoremOptions::default()).unwrap();
+    let forced = theorem2(
         &m,
         &TheoremOptions {
             quadrature_cardinality: 2,
@@ -255,6 +264,10 @@ fn thm2_each_cardinality_reports_its_method() {
         },
     )
     .unwrap();
+    assert_eq!(quad, forced);
+    let s = TheoremOptions::default();
+    assert_eq!(s.quadrature_cardinality_for(true), 2);
+    assert_eq!(s.quadrature_cardinality_for(false), 1);
     let methods = |b: &JdeBound| b.cardinalities.iter().map(|c| c.method).collect::<Vec<_>>();
     let (a, b) = (methods(&mc), methods(&quad));
     assert!(a.len() > 3 && a.len() == b.len());
