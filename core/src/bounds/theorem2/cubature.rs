@@ -431,7 +431,7 @@ impl LinearGaussianCase {
             mz * k2 * logistic_normal(mu_u, s_u, 0.1 * inner * self.j0 / k2)
         };
         let control = Control::new(
-            Rule::G10K21,
+            Rule::G7K15,
             Tolerance::AbsoluteAboveNoise(inner * base),
             200,
         );
@@ -507,7 +507,7 @@ pub(super) fn logistic_normal(mu: f64, s: f64, tol: f64) -> f64 {
         } else {
             0.5 * (lo + hi)
         };
-        if fns::abs(next - u) <= 1e-12 * (1.0 + fns::abs(u)) {
+        if fns::abs(next - u) <= 1e-6 * (1.0 + fns::abs(u)) {
             u = next;
             break;
         }
@@ -539,7 +539,7 @@ pub(super) fn logistic_normal(mu: f64, s: f64, tol: f64) -> f64 {
 }
 
 /// The step of [`logistic_normal`]'s trapezoidal rule in t.
-const SINH_STEP: f64 = 0.2;
+const SINH_STEP: f64 = 0.25;
 /// At most this many steps each side.
 const SINH_TERMS: usize = 40;
 
