@@ -15,7 +15,7 @@ use alloc::vec::Vec;
 use crate::bounds::{
     Cardinality, ComponentBound, Density1, GaussianPrior, JdeBound, LinearGaussian,
     LinearGaussianSensor, Method, ModelI, ModelII, Phase, Terms, TheoremOptions, VectorMeasurement,
-    VectorModel, poisson_pmf, theorem1, theorem2, vector_bound,
+    VectorModel, is_linear_gaussian, poisson_pmf, theorem1, theorem2, vector_bound,
 };
 use crate::error::{Error, Phrase, Result};
 
@@ -111,8 +111,8 @@ pub struct JdeOptions {
     pub samples: Option<usize>,
     /// Seed of the Monte Carlo (default: fresh entropy, see [`jde_bound`]).
     pub seed: Option<u64>,
-    /// The largest |Z| = n integrated by deterministic quadrature, 1 or 2 (default 1; see
-    /// [`TheoremOptions::quadrature_cardinality`]).
+    /// The largest |Z| = n integrated by deterministic quadrature, 1 or 2 (default: 2 for a
+    /// linear-Gaussian model, 1 otherwise; see [`TheoremOptions::quadrature_cardinality`]).
     pub quadrature_cardinality: Option<usize>,
 }
 
@@ -220,7 +220,21 @@ pub fn jde_bound(
                 Some(c) => (c.rate, c.density.clone()),
                 None => (0.0, unit()?),
             };
-            let seed = monte_carlo_settings(&mut settings, lambda, o.samples, o.seed, entropy)?;
+            // the vector path is rank-one over a Gaussian prior and a constant P_o, or clutter-free
+            let linear_gaussian = match (&o.prior, &o.observation) {
+                (JdePrior::Scalar(prior), JdeObservation::Scalar(obs)) => {
+                    is_linear_gaussian(prior, obs)
+                }
+                _ => true,
+            };
+            let seed = monte_carlo_settings(
+                &mut settings,
+                linear_gaussian,
+                lambda,
+                o.samples,
+                o.seed,
+                entropy,
+            )?;
             (FalseObservations::II { lambda, c }, seed)
         }
     };
@@ -326,6 +340,7 @@ pub fn wrong_model(clutter: bool) -> Error {
 /// `settings.seed` and returns the seed used when clutter is sampled at all.
 fn monte_carlo_settings(
     settings: &mut TheoremOptions,
+    linear_gaussian: bool,
     lambda: f64,
     samples: Option<usize>,
     seed: Option<u64>,
@@ -348,7 +363,7 @@ fn monte_carlo_settings(
         last += 1;
         kept += poisson_pmf(lambda, last);
     }
-    let first = if settings.quadrature_cardinality >= 2 {
+    let first = if settings.quadrature_cardinality_for(linear_gaussian) >= 2 {
         3
     } else {
         2

@@ -169,13 +169,15 @@ fn thm2_samples_lie_in_their_range() {
 }
 
 /// λ = 1 keeps N = 9 clutter counts (the Poisson tail beyond 9 is 1.1e-7 < 1e-6), so the
-/// Monte Carlo samples n = 2 … 10, Σ n = 54 (52 with the n = 2 cubature).
+/// Monte Carlo samples n = 2 … 10, Σ n = 54 (52 with the n = 2 cubature, the default on this
+/// linear-Gaussian model).
 #[test]
 fn thm2_work_cap_is_samples_times_the_sampled_cardinalities() {
     let o = JdeOptions {
         clutter: Some(unit_clutter(1.0)),
         samples: Some(1_000_000),
         seed: Some(1),
+        quadrature_cardinality: Some(1),
         ..scalar(JdeModel::II)
     };
     let e = jde_bound(&o, no_entropy).unwrap_err();
@@ -183,19 +185,21 @@ fn thm2_work_cap_is_samples_times_the_sampled_cardinalities() {
         e.to_string(),
         "samples: samples × Σ n = 54000000 exceeds 10^7 at this clutter rate; pass fewer samples (at most 185185)"
     );
-    let o = JdeOptions {
-        quadrature_cardinality: Some(2),
-        ..o
-    };
-    let e = jde_bound(&o, no_entropy).unwrap_err();
-    assert!(matches!(
-        e,
-        Error::OverBudget {
-            work: 52_000_000,
-            at_most: 192_307,
-            ..
-        }
-    ));
+    for k in [Some(2), None] {
+        let o = JdeOptions {
+            quadrature_cardinality: k,
+            ..o.clone()
+        };
+        let e = jde_bound(&o, no_entropy).unwrap_err();
+        assert!(matches!(
+            e,
+            Error::OverBudget {
+                work: 52_000_000,
+                at_most: 192_307,
+                ..
+            }
+        ));
+    }
     // 185185 × 54 = 9,999,990 is within the cap: the check passes (then the dims check of a
     // bad option fails, so the Monte Carlo is not run)
     let o = JdeOptions {

@@ -38,6 +38,12 @@ pub trait Density {
     fn sample(&self, _rng: &mut SeededRng) -> Option<f64> {
         None
     }
+    /// `Some((mean, variance))` when the density is the Gaussian N(mean, variance) (truncated
+    /// to its support only where it is below e^{−72}), so that Theorem 2's n = 2 terms can
+    /// take their x-integrals in closed form (default: `None`).
+    fn gaussian_form(&self) -> Option<(f64, f64)> {
+        None
+    }
 }
 
 /// P_o(x) and g(z|x) of the Bernoulli observation Θ_b (13).
@@ -83,6 +89,19 @@ pub trait Observation {
     fn sample(&self, _x: f64, _rng: &mut SeededRng) -> Option<f64> {
         None
     }
+    /// `Some((P_o, a, b, σ_v²))` when P_o is the constant P_o and g(z|x) = N(z; a x + b, σ_v²),
+    /// so that Theorem 2's n = 2 terms can take their x-integrals in closed form (default:
+    /// `None`).
+    fn linear_gaussian_form(&self) -> Option<(f64, f64, f64, f64)> {
+        None
+    }
+}
+
+/// Whether the prior is Gaussian ([`Density::gaussian_form`]) and the observation
+/// linear-Gaussian with a constant P_o ([`Observation::linear_gaussian_form`]): the case where
+/// Theorem 2's n = 2 cubature has closed-form x-integrals and is the default.
+pub fn is_linear_gaussian(prior: &dyn Density, obs: &dyn Observation) -> bool {
+    prior.gaussian_form().is_some() && obs.linear_gaussian_form().is_some()
 }
 
 /// A standard normal draw (Box–Muller with libm, the same on every platform).
@@ -92,13 +111,13 @@ pub(crate) fn standard_normal(rng: &mut SeededRng) -> f64 {
     fns::sqrt(-2.0 * fns::ln(u1)) * fns::cos(2.0 * core::f64::consts::PI * u2)
 }
 
-fn normal_pdf(x: f64, mean: f64, var: f64) -> f64 {
+pub(crate) fn normal_pdf(x: f64, mean: f64, var: f64) -> f64 {
     let d = x - mean;
     fns::exp(-0.5 * d * d / var) / fns::sqrt(2.0 * core::f64::consts::PI * var)
 }
 
 /// Φ((b − μ)/σ) − Φ((a − μ)/σ) through erfc (accurate in both tails).
-fn normal_mass(a: f64, b: f64, mean: f64, var: f64) -> f64 {
+pub(crate) fn normal_mass(a: f64, b: f64, mean: f64, var: f64) -> f64 {
     let s = fns::sqrt(2.0 * var);
     let (ua, ub) = ((a - mean) / s, (b - mean) / s);
     if ua >= 0.0 {
@@ -329,6 +348,13 @@ impl Density for Density1 {
         }
     }
 
+    fn gaussian_form(&self) -> Option<(f64, f64)> {
+        match self {
+            Density1::Gaussian { mean, variance } => Some((*mean, *variance)),
+            _ => None,
+        }
+    }
+
     fn mass(&self, a: f64, b: f64) -> f64 {
         if b <= a {
             return 0.0;
@@ -526,6 +552,12 @@ impl Observation for LinearGaussian {
     }
     fn sample(&self, x: f64, rng: &mut SeededRng) -> Option<f64> {
         Some(self.gain * x + self.offset + fns::sqrt(self.noise_variance) * standard_normal(rng))
+    }
+    fn linear_gaussian_form(&self) -> Option<(f64, f64, f64, f64)> {
+        match self.detection {
+            Detection::Constant(p) => Some((p, self.gain, self.offset, self.noise_variance)),
+            Detection::Table { .. } => None,
+        }
     }
 }
 

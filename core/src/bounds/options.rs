@@ -481,16 +481,17 @@ pub struct JdeBoundOptions {
     /// The relative quadrature tolerance, in [1e-14, 0.1] (default 1e-10).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
-    /// Monte Carlo samples per cardinality n ≥ 2 (n ≥ 3 with `quadrature_cardinality` 2)
-    /// (model II with clutter; 100 to 1,000,000, default 20,000; samples × Σ n at most 10^7).
+    /// Monte Carlo samples per cardinality n ≥ 2 (n ≥ 3 with `quadrature_cardinality` 2, the
+    /// default for a linear-Gaussian model) (model II with clutter; 100 to 1,000,000, default 20,000; samples × Σ n at most 10^7).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub samples: Option<usize>,
     /// The seed of the Monte Carlo (omitted: fresh entropy, reported as `seed`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
     /// Model II with clutter: the largest |Z| = n integrated by deterministic quadrature, 1
-    /// (default) or 2 (also n = 2, by 2D cubature over Z², Theorem 2; seconds, not for
-    /// sliders).
+    /// or 2 (also n = 2, by 2D cubature over Z², Theorem 2); default 2 for a linear-Gaussian
+    /// model (Gaussian prior, constant P_o: 10–100 ms native), 1 otherwise (the general
+    /// cubature takes seconds, not for sliders).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub quadrature_cardinality: Option<usize>,
 }

@@ -1,9 +1,12 @@
 //! Theorem 2 (22)–(26) of paper 002: measurement model II, Z = Θ_b0(X) ∪ W with W Poisson of
-//! intensity v = λ c. The n = 1 terms by 1D quadrature; the n = 2 terms by Monte Carlo, or,
-//! with [`TheoremOptions::quadrature_cardinality`] = 2, by deterministic 2D cubature over Z² (nested
-//! adaptive G10/K21 split at the MAP region's boundary found by root-finding; ~3.5 s a call,
-//! hence not the default); n ≥ 3 by Monte Carlo over Z^n (error: one standard error). Each
-//! [`Cardinality::method`] says which.
+//! intensity v = λ c. The n = 1 terms by 1D quadrature; the n = 2 terms by deterministic 2D
+//! cubature over Z² (nested adaptive G10/K21 split at the MAP region's boundary found by
+//! root-finding) or by Monte Carlo, as [`TheoremOptions::quadrature_cardinality`] says: by
+//! default the cubature in the linear-Gaussian case (Gaussian prior, linear-Gaussian g with
+//! constant P_o, any clutter density), where its x-integrals are closed forms and a call takes
+//! 10–100 ms natively, and Monte Carlo otherwise (the general cubature takes seconds); n ≥ 3
+//! by Monte Carlo over Z^n (error: one standard error).
+//! Each [`Cardinality::method`] says which.
 //! Truncation: the series stops at N clutter points as [`TheoremOptions::series_tolerance`] and
 //! [`TheoremOptions::max_clutter`] say; the bound returned is the truncated one below.
 //!
@@ -27,12 +30,12 @@
 //! | `mod.rs` | [`ModelII`], [`theorem2`] and its steps (checks, the n = 1 terms, the assembly (23)–(24)), the MAP test of n points, the integrand of (25) shared by the two below |
 //! | `series.rs` | the Poisson series over n: its truncation, the sums S and W, the η2 bracket |
 //! | `monte_carlo.rs` | the n ≥ 2 terms by Monte Carlo over Z^n |
-//! | `cubature.rs` | the n = 2 terms by deterministic cubature over Z² (opt-in) |
+//! | `cubature.rs` | the n = 2 terms by deterministic cubature over Z² (closed-form x-integrals in the linear-Gaussian case) |
 
 use alloc::vec::Vec;
 
 use crate::bounds::closed::{Ingredients, check_nonnegative, poisson_pmf};
-use crate::bounds::model::{Density, Observation};
+use crate::bounds::model::{Density, Observation, is_linear_gaussian};
 use crate::bounds::theorem::{
     Cardinality, JdeBound, Method, TheoremOptions, check_common, check_interval, check_result,
     detected_parts, inverse_information, marginal, prior_stats, region,
@@ -76,12 +79,13 @@ pub fn theorem2(m: &ModelII<'_>, s: &TheoremOptions) -> Result<JdeBound> {
     let z_range = measurement_range(m);
     let zone = map_region(m, p, z_range, tol);
     let (first, a1) = single_point(m, p, &zone, tol);
+    let scale_a = information_scale(first.w, a1);
     let mut cards = alloc::vec![first.cardinality(1, poisson_pmf(lambda, 0), Method::Quadrature)];
     let (last, kept) = series::truncation(lambda, s);
-    let quad2 = s.quadrature_cardinality >= 2;
+    let linear_gaussian = is_linear_gaussian(m.prior, m.observation);
+    let quad2 = s.quadrature_cardinality_for(linear_gaussian) >= 2;
     if last > 0 && quad2 {
-        let scale_a = if a1 > 0.0 { a1 } else { 1.0 };
-        let c = cubature::quadrature2(m, p, scale_a, z_range, tol);
+        let c = cubature::quadrature2(m, p, scale_a, z_range, tol, true);
         cards.push(c.cardinality(2, poisson_pmf(lambda, 1), Method::Quadrature));
     }
     let first_mc = if quad2 { 2 } else { 1 };
@@ -168,7 +172,7 @@ fn map_region(m: &ModelII<'_>, p: f64, (zl, zh): (f64, f64), tol: f64) -> Vec<(f
 }
 
 /// The n = 1 terms by quadrature over the region `zone` (w_1, J'_1⁻¹ (25) and the one-point
-/// clutter rejection), and A_1 (the scale the n = 2 cubature measures its A_2 in).
+/// clutter rejection), and A_1 (with w_1, the scale the n = 2 cubature measures its A_2 in).
 fn single_point(m: &ModelII<'_>, p: f64, zone: &[(f64, f64)], tol: f64) -> (Term, f64) {
     let (w1, a1, ew1, ea1) = detected_parts(m.prior, m.observation, p, zone, tol);
     let (s1, es1) = inverse_information(w1, a1, ew1, ea1);
@@ -186,6 +190,13 @@ fn single_point(m: &ModelII<'_>, p: f64, zone: &[(f64, f64)], tol: f64) -> (Term
         enull: 0.0,
     };
     (term, a1)
+}
+
+/// The unit the n = 2 cubature measures A_2 in: A_1/w_1, the n = 1 information per unit of
+/// detected mass (A_1 alone is tiny when the one-point region is, and the tolerance on A_2
+/// would follow it), or 1 when the one-point region is empty.
+fn information_scale(w1: f64, a1: f64) -> f64 {
+    if a1 > 0.0 && w1 > 0.0 { a1 / w1 } else { 1.0 }
 }
 
 /// The terms of one cardinality n, with their error estimates (quadrature estimate or one

@@ -40,10 +40,12 @@ fn mc2(m: &ModelII<'_>, p: f64, samples: usize, seed: u64) -> Term {
     monte_carlo(m, &table, p, 2, samples, &mut seeded(seed), map).unwrap()
 }
 
-/// A_1, the n = 1 information integral Theorem 2 scales the cubature's A_2 by.
+/// A_1/w_1, the n = 1 information per unit of detected mass Theorem 2 scales the cubature's
+/// A_2 by.
 fn a1(m: &ModelII<'_>, p: f64) -> f64 {
     let zone = map_region(m, p, measurement_range(m), 1e-10);
-    single_point(m, p, &zone, 1e-10).1
+    let (term, a1) = single_point(m, p, &zone, 1e-10);
+    information_scale(term.w, a1)
 }
 
 #[test]
@@ -55,7 +57,7 @@ fn thm2_n2_cubature_agrees_with_monte_carlo() {
     ] {
         let c = case(p, clutter);
         let m = model(&c, r, lambda);
-        let q = quadrature2(&m, p, a1(&m, p), measurement_range(&m), 1e-10);
+        let q = quadrature2(&m, p, a1(&m, p), measurement_range(&m), 1e-10, false);
         let mc = mc2(&m, p, 200_000, 7);
         std::println!(
             "r {r} P {p} λ {lambda}: w {:.6}±{:.1e} vs {:.6}±{:.1e}; J'^-1 {:.6}±{:.1e} vs {:.6}±{:.1e}; null {:.6}±{:.1e} vs {:.6}±{:.1e}",
@@ -94,7 +96,7 @@ fn thm2_n2_cubature_agrees_with_a_fine_grid_sum() {
     let c = case(p, Density1::uniform(-10.0, 10.0).unwrap());
     let m = model(&c, r, lambda);
     let (zl, zh) = measurement_range(&m);
-    let q = quadrature2(&m, p, a1(&m, p), (zl, zh), 1e-10);
+    let q = quadrature2(&m, p, a1(&m, p), (zl, zh), 1e-10, false);
     let n = 1500;
     let h1 = (zh - zl) / n as f64;
     let z1: Vec<f64> = (0..n).map(|i| zl + h1 * (i as f64 + 0.5)).collect();
@@ -137,12 +139,124 @@ fn thm2_n2_cubature_agrees_with_a_fine_grid_sum() {
     );
 }
 
+/// (25) in the linear-Gaussian case: the n = 2 terms with the x-integrals in closed form
+/// ([`LinearGaussianCase`](super::cubature::LinearGaussianCase)) equal the general nested
+/// cubature (forced) to the cubature's error estimates, and the Monte Carlo within four
+/// standard errors, for uniform and Gaussian clutter and several r, P_o, λ, a, b, R.
+#[test]
+fn thm2_n2_closed_form_equals_the_general_cubature() {
+    let lg = |p: f64, a: f64, b: f64, r: f64| {
+        LinearGaussian::new(Detection::constant(p).unwrap(), a, b, r).unwrap()
+    };
+    for (r, p, lambda, clutter, obs) in [
+        (
+            0.6,
+            0.8,
+            1.0,
+            Density1::uniform(-10.0, 10.0).unwrap(),
+            lg(0.8, 1.0, 0.0, 1.0),
+        ),
+        (
+            0.3,
+            0.9,
+            2.0,
+            Density1::uniform(-10.0, 10.0).unwrap(),
+            lg(0.9, 1.0, 0.0, 1.0),
+        ),
+        (
+            0.5,
+            0.7,
+            0.5,
+            Density1::gaussian(0.0, 9.0).unwrap(),
+            lg(0.7, 1.0, 0.0, 1.0),
+        ),
+        (
+            0.8,
+            0.95,
+            3.0,
+            Density1::uniform(-12.0, 14.0).unwrap(),
+            lg(0.95, 0.5, 1.0, 2.0),
+        ),
+        (
+            0.45,
+            0.6,
+            1.5,
+            Density1::gaussian(1.0, 25.0).unwrap(),
+            lg(0.6, -2.0, 0.5, 0.5),
+        ),
+    ] {
+        let c = Case {
+            prior: Density1::gaussian(1.0, 4.0).unwrap(),
+            obs,
+            clutter,
+        };
+        let m = model(&c, r, lambda);
+        assert!(super::cubature::LinearGaussianCase::of(m.prior, m.observation).is_some());
+        let (range, scale) = (measurement_range(&m), a1(&m, p));
+        let t0 = std::time::Instant::now();
+        let closed = quadrature2(&m, p, scale, range, 1e-10, true);
+        let t_closed = t0.elapsed();
+        let t0 = std::time::Instant::now();
+        let general = quadrature2(&m, p, scale, range, 1e-10, false);
+        let t_general = t0.elapsed();
+        let mc = mc2(&m, p, 200_000, 11);
+        std::println!(
+            "r {r} P {p} λ {lambda}: closed {t_closed:?} general {t_general:?}; \
+             w {:.9}/{:.9} J'^-1 {:.9}/{:.9} null {:.9}/{:.9}; MC J'^-1 {:.6}±{:.1e}",
+            closed.w,
+            general.w,
+            closed.s,
+            general.s,
+            closed.null,
+            general.null,
+            mc.s,
+            mc.es
+        );
+        for (a, ea, b, eb, e_mc, mc_v, what) in [
+            (
+                closed.w, closed.ew, general.w, general.ew, mc.ew, mc.w, "w2",
+            ),
+            (
+                closed.s, closed.es, general.s, general.es, mc.es, mc.s, "J'2^-1",
+            ),
+            (
+                closed.null,
+                closed.enull,
+                general.null,
+                general.enull,
+                mc.enull,
+                mc.null,
+                "null2",
+            ),
+        ] {
+            assert!(ea < 1e-4 * a.max(1e-2), "{what}: closed-form error {ea}");
+            assert!(
+                fns::abs(a - b) <= ea + eb + 1e-12,
+                "{what}: closed form {a} ± {ea} vs general cubature {b} ± {eb}"
+            );
+            assert!(
+                fns::abs(a - mc_v) <= 4.0 * e_mc + ea + 1e-12,
+                "{what}: closed form {a} vs Monte Carlo {mc_v} ± {e_mc}"
+            );
+        }
+    }
+}
+
 #[test]
 fn thm2_each_cardinality_reports_its_method() {
     let c = case(0.8, Density1::uniform(-10.0, 10.0).unwrap());
     let m = model(&c, 0.6, 1.0);
-    let mc = theorem2(&m, &TheoremOptions::default()).unwrap();
-    let quad = theorem2(
+    let mc = theorem2(
+        &m,
+        &TheoremOptions {
+            quadrature_cardinality: 1,
+            ..TheoremOptions::default()
+        },
+    )
+    .unwrap();
+    // the default on a linear-Gaussian model: the n = 2 cubature
+    let quad = theorem2(&m, &TheoremOptions::default()).unwrap();
+    let forced = theorem2(
         &m,
         &TheoremOptions {
             quadrature_cardinality: 2,
@@ -150,6 +264,10 @@ fn thm2_each_cardinality_reports_its_method() {
         },
     )
     .unwrap();
+    assert_eq!(quad, forced);
+    let s = TheoremOptions::default();
+    assert_eq!(s.quadrature_cardinality_for(true), 2);
+    assert_eq!(s.quadrature_cardinality_for(false), 1);
     let methods = |b: &JdeBound| b.cardinalities.iter().map(|c| c.method).collect::<Vec<_>>();
     let (a, b) = (methods(&mc), methods(&quad));
     assert!(a.len() > 3 && a.len() == b.len());
@@ -240,4 +358,21 @@ fn thm2_eta_bracket_takes_the_smaller_bound() {
     assert_eq!(eta, if hi < lo { bracket.hi } else { bracket.lo });
     let exact = EtaBracket::exact(0.25);
     assert_eq!((exact.lo, exact.hi, exact.error), (0.25, 0.25, 0.0));
+}
+
+/// E σ'(u), u ~ N(μ, s²), by the sinh-mapped trapezoidal rule against adaptive G10/K21.
+#[test]
+fn thm2_logistic_normal_agrees_with_adaptive_quadrature() {
+    use super::cubature::{logistic_normal, logistic_normal_adaptive};
+    let mut worst: f64 = 0.0;
+    for mu in [0.0, 0.3, 1.0, 2.0, 5.0, 10.0, 20.0, 35.0, -3.0, -15.0] {
+        for s in [1e-6, 0.01, 0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 40.0] {
+            let a = logistic_normal(mu, s, 1e-12);
+            let b = logistic_normal_adaptive(mu, s, 1e-15);
+            let e = fns::abs(a - b);
+            std::println!("mu {mu} s {s}: {a:.12e} vs {b:.12e} diff {e:.1e}");
+            worst = worst.max(e / 1e-12f64.max(1e-3 * b));
+        }
+    }
+    assert!(worst <= 1.0, "worst {worst}");
 }

@@ -1,0 +1,77 @@
+//! Times the n = 2 terms of Theorem 2 (25) of paper 002 natively on linear-Gaussian models
+//! (prior N(1, 4), g(z|x) = N(z; x, 1), constant P_o, uniform or Gaussian clutter):
+//!
+//! `cd benches && cargo run --release --bin theorem2_timing [repetitions]`
+//!
+//! For each model prints the median milliseconds of `theorem2` with only n = 1
+//! (`max_clutter` 0), with n = 1 and the n = 2 cubature (`quadrature_cardinality` 2,
+//! `max_clutter` 1: no Monte Carlo), their difference (the n = 2 cubature's time), and the
+//! n = 2 terms (w_2, J'_2⁻¹, null_2 with their error estimates).
+use fisst::bounds::{
+    Density1, Detection, JdeBound, LinearGaussian, ModelII, TheoremOptions, theorem2,
+};
+use std::time::Instant;
+
+fn median_ms(reps: usize, mut f: impl FnMut() -> JdeBound) -> (f64, JdeBound) {
+    let mut times = Vec::with_capacity(reps);
+    let mut out = None;
+    for _ in 0..reps {
+        let t0 = Instant::now();
+        out = Some(f());
+        times.push(t0.elapsed().as_secs_f64() * 1e3);
+    }
+    times.sort_by(f64::total_cmp);
+    (times[reps / 2], out.expect("at least one repetition"))
+}
+
+fn main() {
+    let reps: usize = std::env::args()
+        .nth(1)
+        .map(|s| s.parse().expect("repetitions"))
+        .unwrap_or(5)
+        .max(1);
+    let prior = Density1::gaussian(1.0, 4.0).unwrap();
+    let models = [
+        (0.6, 0.8, 1.0, Density1::uniform(-10.0, 10.0).unwrap()),
+        (0.3, 0.9, 2.0, Density1::uniform(-10.0, 10.0).unwrap()),
+        (0.5, 0.7, 0.5, Density1::gaussian(0.0, 9.0).unwrap()),
+        (0.8, 0.95, 3.0, Density1::uniform(-20.0, 20.0).unwrap()),
+    ];
+    println!("repetitions {reps}");
+    for (r, p, lambda, clutter) in &models {
+        let obs = LinearGaussian::new(Detection::constant(*p).unwrap(), 1.0, 0.0, 1.0).unwrap();
+        let m = ModelII {
+            existence: *r,
+            prior: &prior,
+            observation: &obs,
+            clutter_rate: *lambda,
+            clutter_density: clutter,
+            false_alarm_error: 6.0,
+            miss_error: 9.0,
+        };
+        let m = &m;
+        let run = |qc: usize, max_clutter: usize| {
+            let s = TheoremOptions {
+                quadrature_cardinality: qc,
+                max_clutter,
+                ..TheoremOptions::default()
+            };
+            move || theorem2(m, &s).unwrap()
+        };
+        let (t1, _) = median_ms(reps, run(1, 0));
+        let (t2, b) = median_ms(reps, run(2, 1));
+        let c = &b.cardinalities[1];
+        println!(
+            "r {r} P_o {p} λ {lambda} clutter {clutter:?}: n = 1 {t1:.2} ms, n ≤ 2 {t2:.2} ms, \
+             n = 2 {:.2} ms ({:?}); w2 {:.9} ± {:.1e}, J'2^-1 {:.9} ± {:.1e}, null2 {:.9} ± {:.1e}",
+            t2 - t1,
+            c.method,
+            c.w,
+            c.w_error,
+            c.inverse_information,
+            c.error,
+            c.clutter_null,
+            c.clutter_null_error
+        );
+    }
+}
