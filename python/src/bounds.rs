@@ -108,7 +108,8 @@ pub fn jde_example2_regularity(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
 /// "density"}`` (model II: λ, v/λ); ``false_alarm_error`` e0² and ``miss_error`` e1²;
 /// optional ``dims``, ``tolerance`` (1e-10), ``samples`` (20,000 per cardinality of
 /// Theorem 2's Monte Carlo, samples × Σ n ≤ 10⁷), ``seed`` (omitted: fresh entropy,
-/// reported as ``seed``) and ``quadrature_cardinality`` (1 or 2). Returns a ``Result`` with
+/// reported as ``seed``) and ``quadrature_cardinality`` (1 or 2; default 2 on a
+/// linear-Gaussian model, Gaussian prior and constant P_o, else 1). Returns a ``Result`` with
 /// ``bound``, ``phase`` (``"HPE"``/``"LPE"``), ``existence_threshold``, ``terms``,
 /// ``error``, ``hpe``, ``lpe``, … and for a vector state ``components`` and
 /// ``inverse_information_matrix``. A wrong kind of value (rows as a 1D prior's gain,

@@ -421,9 +421,9 @@ test('jdeBound with l = 1: a multivariateGaussian prior is the scalar theorem to
 });
 
 test('jdeBound quadratureCardinality: 2 integrates n = 2 by the cubature of Theorem 2 and agrees with its Monte Carlo', { skip: waiting('jdeBound') }, () => {
-  // tolerance 1e-5 halves the cubature's time (~6 s instead of ~12 s in wasm on a loaded 2-core machine)
+  // A linear-Gaussian model (Gaussian prior, constant P_o): the n = 2 x-integrals in closed form
   const c = { ...gaussianSystem(0.6, 0.8), model: 'II', prior: { gaussian: { mean: 1, variance: 4 } }, observation: { detectionProbability: 0.8, noiseVariance: 1 }, clutter: { rate: 1, density: { uniform: { low: -10, high: 10 } } }, seed: 9, tolerance: 1e-5 };
-  const mc = fisst.jdeBound(c);
+  const mc = fisst.jdeBound({ ...c, quadratureCardinality: 1 });
   const t0 = performance.now();
   const quad = fisst.jdeBound({ ...c, quadratureCardinality: 2 });
   const ms = performance.now() - t0;
@@ -435,8 +435,10 @@ test('jdeBound quadratureCardinality: 2 integrates n = 2 by the cubature of Theo
   assert.ok(Math.abs(a.inverseInformation - b.inverseInformation) <= Z * a.error + b.error, `J'_2⁻¹: ${a.inverseInformation} ± ${a.error} vs ${b.inverseInformation} ± ${b.error}`);
   assert.ok(Math.abs(mc.bound - quad.bound) <= Z * (mc.error + quad.error), `bound ${mc.bound} ± ${mc.error} vs ${quad.bound} ± ${quad.error}`);
   assert.ok(b.error < a.error, 'the cubature error is below the Monte Carlo standard error');
-  // 1 is the default; anything else is a RangeError
-  assert.equal(fisst.jdeBound({ ...c, quadratureCardinality: 1 }).bound, mc.bound);
+  // 2 is the default on a linear-Gaussian model, 1 on any other (a tabulated P_o); 1 and 2 only
+  assert.equal(fisst.jdeBound(c).bound, quad.bound);
+  const tabulated = { ...c, observation: { detectionProbability: { table: { x: [-20, 20], probability: [0.8, 0.8] } }, noiseVariance: 1 } };
+  assert.deepEqual(fisst.jdeBound(tabulated).cardinalities.slice(0, 3).map((k) => k.method), ['quadrature', 'monte-carlo', 'monte-carlo']);
   throwsAt(() => fisst.jdeBound({ ...c, quadratureCardinality: 3 }), RangeError, 'options.quadratureCardinality');
   throwsAt(() => fisst.jdeBound({ ...c, quadratureCardinality: 1.5 }), RangeError, 'options.quadratureCardinality');
 });

@@ -277,12 +277,11 @@ pub struct JdeBoundOptions {
     #[tsify(optional)]
     pub seed: Option<u64>,
     /// Model II with clutter: the largest |Z| = n integrated by deterministic quadrature, 1
-    /// (default: n = 1 by 1D quadrature, every n ≥ 2 by Monte Carlo) or 2 (also n = 2, by
-    /// 2D cubature over Z² (Theorem 2), which removes the n = 2 Monte Carlo error). Cost:
-    /// the n = 2 cubature takes seconds (about 3.5 s natively; 6–15 s in wasm under Node on
-    /// a loaded 2-core machine, for λ = 1, an N(1, 4) prior and U[−10, 10] clutter, against
-    /// about 0.4 s with 1; a looser `tolerance` such as 1e-5 halves it): do not use it while
-    /// a slider moves. No effect on model I or without clutter.
+    /// (n = 1 by 1D quadrature, every n ≥ 2 by Monte Carlo) or 2 (also n = 2, by 2D cubature
+    /// over Z² (Theorem 2), which removes the n = 2 Monte Carlo error). Default: 2 on a
+    /// linear-Gaussian model (Gaussian prior, constant detection probability: the x-integrals
+    /// in closed form, tens of milliseconds natively), 1 on any other (there the cubature takes
+    /// seconds: do not use it while a slider moves). No effect on model I or without clutter.
     #[tsify(optional, type = "1 | 2")]
     pub quadrature_cardinality: Option<usize>,
 }
