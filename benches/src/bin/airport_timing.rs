@@ -129,6 +129,20 @@ fn score(sc: &AirportScenario, est: &[FilterEstimate]) -> (usize, f64, f64, usiz
     (hits, err, rss, est.len())
 }
 
+/// The median wall time in seconds of `reps` calls of `f` after one untimed warm-up call.
+fn time_after_warmup(reps: usize, f: &dyn Fn()) -> f64 {
+    f();
+    median(
+        (0..reps)
+            .map(|_| {
+                let t = Instant::now();
+                f();
+                t.elapsed().as_secs_f64()
+            })
+            .collect(),
+    )
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let mode = args.get(1).map(String::as_str).unwrap_or("time");
@@ -145,18 +159,7 @@ fn main() {
             let reps = if n == 0 { 11 } else { n };
             let sc = airport_scenario(1, STEPS).unwrap();
             let r = reports(&sc);
-            let time = |f: &dyn Fn()| {
-                f();
-                median(
-                    (0..reps)
-                        .map(|_| {
-                            let t = Instant::now();
-                            f();
-                            t.elapsed().as_secs_f64()
-                        })
-                        .collect(),
-                )
-            };
+            let time = |f: &dyn Fn()| time_after_warmup(reps, f);
             let gm = time(&|| {
                 std::hint::black_box(gm_run(&sc, &r));
             });
@@ -179,18 +182,7 @@ fn main() {
             for seed in 1..=10u64 {
                 let sc = airport_scenario(seed, STEPS).unwrap();
                 let r = reports(&sc);
-                let time = |f: &dyn Fn()| {
-                    f();
-                    median(
-                        (0..reps)
-                            .map(|_| {
-                                let t = Instant::now();
-                                f();
-                                t.elapsed().as_secs_f64()
-                            })
-                            .collect(),
-                    )
-                };
+                let time = |f: &dyn Fn()| time_after_warmup(reps, f);
                 let gm = time(&|| {
                     std::hint::black_box(gm_run(&sc, &r));
                 });

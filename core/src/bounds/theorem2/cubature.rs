@@ -445,15 +445,7 @@ impl LinearGaussianCase {
             if hi <= lo {
                 continue;
             }
-            let mut cuts = [cl, ch];
-            cuts.sort_by(f64::total_cmp);
-            let mut pts = alloc::vec![lo];
-            for t in cuts {
-                if t > lo && t < hi && t > pts[pts.len() - 1] {
-                    pts.push(t);
-                }
-            }
-            pts.push(hi);
+            let pts = breakpoints(lo, hi, [cl, ch]);
             correction += integrate(spread, &pts, &control).value;
         }
         base - correction
@@ -561,7 +553,14 @@ pub(super) fn logistic_normal_adaptive(mu: f64, s: f64, tol: f64) -> f64 {
     if hi <= lo {
         return 0.0;
     }
-    let mut cuts = [-8.0, -2.0, 0.0, 2.0, 8.0, mu];
+    let pts = breakpoints(lo, hi, [-8.0, -2.0, 0.0, 2.0, 8.0, mu]);
+    let control = Control::new(Rule::G10K21, Tolerance::AbsoluteAboveNoise(tol), 400);
+    integrate(|u| normal_pdf(u, mu, s * s) * sp(u), &pts, &control).value
+}
+
+/// The pieces of [lo, hi] split at the `cuts` strictly inside it, in increasing order (a cut
+/// repeated or outside is skipped): the breakpoints of a piecewise quadrature.
+fn breakpoints<const K: usize>(lo: f64, hi: f64, mut cuts: [f64; K]) -> Vec<f64> {
     cuts.sort_by(f64::total_cmp);
     let mut pts = alloc::vec![lo];
     for t in cuts {
@@ -570,6 +569,5 @@ pub(super) fn logistic_normal_adaptive(mu: f64, s: f64, tol: f64) -> f64 {
         }
     }
     pts.push(hi);
-    let control = Control::new(Rule::G10K21, Tolerance::AbsoluteAboveNoise(tol), 400);
-    integrate(|u| normal_pdf(u, mu, s * s) * sp(u), &pts, &control).value
+    pts
 }
