@@ -41,7 +41,7 @@ use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::bernoulli::{ApplicationLoss, Costs, DensityKind, ParticleSet, SpatialDensity};
-use crate::bounds::{Density1, Detection as BoundsDetection, LinearGaussian};
+use crate::bounds::{Density1, Detection as BoundsDetection, DetectionOptions, LinearGaussian};
 use crate::error::Error;
 use crate::filters::{
     Birth, Detection, GmBernoulli, LinearGaussianLikelihood, LinearGaussianTransition,
@@ -1015,67 +1015,34 @@ impl<'de, V: serde::de::Visitor<'de>> serde::de::DeserializeSeed<'de> for Struct
     }
 }
 
-/// A tabulated [`BoundsDetection`] as read and written: `{x, probability}`.
-#[derive(Serialize, Deserialize)]
-struct DetectionTableRepr {
-    x: Vec<f64>,
-    probability: Vec<f64>,
-}
-
-/// `{"table": {x, probability}}`, the map form of a [`BoundsDetection`].
-#[derive(Serialize, Deserialize)]
-struct DetectionTableWrapper {
-    table: DetectionTableRepr,
-}
-
+/// [`BoundsDetection`] is written and read as its unchecked form
+/// [`DetectionOptions`](crate::bounds::DetectionOptions): a number (a constant P_o, checked by
+/// [`BoundsDetection::constant`]; its error names the value itself) or
+/// `{"table": {x, probability}}` (checked by [`BoundsDetection::table`]; errors name
+/// `.table.x[i]`, `.table.probability[i]`).
 impl Serialize for BoundsDetection {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        match self {
-            BoundsDetection::Constant(p) => serializer.serialize_f64(*p),
-            BoundsDetection::Table { x, probability } => DetectionTableWrapper {
-                table: DetectionTableRepr {
-                    x: x.clone(),
-                    probability: probability.clone(),
-                },
-            }
-            .serialize(serializer),
-        }
+        let raw = match self {
+            BoundsDetection::Constant(p) => DetectionOptions::Constant(*p),
+            BoundsDetection::Table { x, probability } => DetectionOptions::Table {
+                x: x.clone(),
+                probability: probability.clone(),
+            },
+        };
+        raw.serialize(serializer)
     }
 }
 
-/// [`BoundsDetection`] is read as a number (a constant P_o, through
-/// [`BoundsDetection::constant`]; its error names the value itself) or as
-/// `{"table": {x, probability}}` (through [`BoundsDetection::table`]; errors name
-/// `.table.x[i]`, `.table.probability[i]`).
 impl<'de> Deserialize<'de> for BoundsDetection {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        use serde::de::{MapAccess, Visitor, value::MapAccessDeserializer};
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = BoundsDetection;
-            fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-                f.write_str("a probability or { table: { x, probability } }")
-            }
-            fn visit_f64<E: serde::de::Error>(self, p: f64) -> Result<Self::Value, E> {
-                BoundsDetection::constant(p).map_err(|e| {
-                    let message = e.map_field(|_| "".into()).to_string();
-                    E::custom(message.trim_start())
-                })
-            }
-            // self-describing formats other than JavaScript's (JSON, Python) give integers
-            fn visit_i64<E: serde::de::Error>(self, p: i64) -> Result<Self::Value, E> {
-                self.visit_f64(p as f64)
-            }
-            fn visit_u64<E: serde::de::Error>(self, p: u64) -> Result<Self::Value, E> {
-                self.visit_f64(p as f64)
-            }
-            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Self::Value, A::Error> {
-                let w = DetectionTableWrapper::deserialize(MapAccessDeserializer::new(map))?;
-                BoundsDetection::table(&w.table.x, &w.table.probability)
-                    .map_err(|e| A::Error::custom(relative(e, "table")))
-            }
+        match DetectionOptions::deserialize(deserializer)? {
+            DetectionOptions::Constant(p) => BoundsDetection::constant(p).map_err(|e| {
+                let message = e.map_field(|_| "".into()).to_string();
+                D::Error::custom(message.trim_start())
+            }),
+            DetectionOptions::Table { x, probability } => BoundsDetection::table(&x, &probability)
+                .map_err(|e| D::Error::custom(relative(e, "table"))),
         }
-        deserializer.deserialize_any(V)
     }
 }
 

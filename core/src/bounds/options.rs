@@ -482,7 +482,8 @@ pub struct JdeBoundOptions {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
     /// Monte Carlo samples per cardinality n ≥ 2 (n ≥ 3 with `quadrature_cardinality` 2, the
-    /// default for a linear-Gaussian model) (model II with clutter; 100 to 1,000,000, default 20,000; samples × Σ n at most 10^7).
+    /// default for a linear-Gaussian model) (model II with clutter; 100 to 1,000,000, default
+    /// 20,000; samples × Σ n at most 10^7).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub samples: Option<usize>,
     /// The seed of the Monte Carlo (omitted: fresh entropy, reported as `seed`).

@@ -458,10 +458,7 @@ impl LinearGaussianCase {
 /// u = u* + w sinh t, u* its mode and w = (1/s² + 2σ'(u*))^{−1/2} its curvature's scale (its
 /// tails then fall double-exponentially in t); σ'(μ) when s is below 1e-9.
 pub(super) fn logistic_normal(mu: f64, s: f64, tol: f64) -> f64 {
-    let sp = |u: f64| {
-        let e = fns::exp(-fns::abs(u));
-        e / ((1.0 + e) * (1.0 + e))
-    };
+    let sp = logistic_density;
     if s < 1e-9 {
         return sp(mu);
     }
@@ -541,10 +538,7 @@ const SINH_TERMS: usize = 40;
 /// The reference [`logistic_normal`] is tested against: adaptive G10/K21 to the absolute `tol`.
 #[cfg(test)]
 pub(super) fn logistic_normal_adaptive(mu: f64, s: f64, tol: f64) -> f64 {
-    let sp = |u: f64| {
-        let e = fns::exp(-fns::abs(u));
-        e / ((1.0 + e) * (1.0 + e))
-    };
+    let sp = logistic_density;
     if s < 1e-9 {
         return sp(mu);
     }
@@ -570,4 +564,11 @@ fn breakpoints<const K: usize>(lo: f64, hi: f64, mut cuts: [f64; K]) -> Vec<f64>
     }
     pts.push(hi);
     pts
+}
+
+/// σ'(u) = σ(u)(1 − σ(u)) = e^{−|u|}/(1 + e^{−|u|})², the logistic density (written with
+/// e^{−|u|} so that it cannot overflow).
+fn logistic_density(u: f64) -> f64 {
+    let e = fns::exp(-fns::abs(u));
+    e / ((1.0 + e) * (1.0 + e))
 }
