@@ -16,62 +16,14 @@ use crate::names::Renamed;
 use crate::types::{MixtureComponent, Point, WeightedGaussian};
 use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
-    self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, ConfigShapes,
-    Detection, EstimateOptions, FilterEstimate, GmBernoulli, LinearGaussianLikelihood,
-    LinearGaussianTransition, ParticleOptions, PredictOptions, Splitting, SplittingOptions,
-    UpdateOptions,
+    self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, Detection,
+    EstimateOptions, FilterEstimate, GmBernoulli, LikelihoodRows, ParticleOptions, PredictOptions,
+    Splitting, SplittingOptions, TransitionRows, UpdateOptions,
 };
 use fisst::gaussian::GaussianMixture;
 use fisst::mixture::ReductionOptions;
 use fisst::regions::Region;
 use fisst::sim::airport::{AirportScenarioOptions, AirportScenarioReport, Anchor, TruthPoint};
-
-/// The mean lengths of the components of a mixture.
-fn mean_lengths(mixture: &GaussianMixture) -> Vec<usize> {
-    mixture.components().iter().map(|(_, g)| g.dim()).collect()
-}
-
-/// Checks the dimensions of the fields of the argument `root` against each other before the
-/// transition and the likelihood are built from their rows ([`ConfigShapes::check`]).
-fn check_shapes(
-    transition: &Transition,
-    mixture: &GaussianMixture,
-    birth: &Birth,
-    likelihood: Option<&LikelihoodOptions>,
-    position_dims: usize,
-    root: &'static str,
-) -> JsResult<()> {
-    ConfigShapes {
-        f: ConfigShapes::of_rows(&transition.f),
-        q: ConfigShapes::of_rows(&transition.q),
-        mixture: &mean_lengths(mixture),
-        birth: &mean_lengths(&birth.mixture),
-        likelihood: likelihood.map(|l| (ConfigShapes::of_rows(&l.h), ConfigShapes::of_rows(&l.r))),
-        position_dims,
-    }
-    .check()
-    .or_throw_rendered(root)
-}
-
-/// The linear-Gaussian transition N(x; F x′, Q) (eq. (44) of LeGrand & Ferrari, "Split Happens!
-/// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper
-/// 001)): F and Q as n rows of n numbers (Q symmetric positive semidefinite).
-#[derive(Clone, Debug, Deserialize, Serialize, Tsify)]
-pub struct Transition {
-    /// The state transition matrix F, n rows of n numbers (x = F x′ + noise).
-    #[serde(rename = "F")]
-    pub f: Vec<Vec<f64>>,
-    /// The process noise covariance Q, n rows of n numbers, symmetric positive semidefinite.
-    #[serde(rename = "Q")]
-    pub q: Vec<Vec<f64>>,
-}
-
-impl Transition {
-    /// The transition of the argument `root` (the core checks the rows and the size).
-    fn into_core(self, root: &'static str) -> JsResult<LinearGaussianTransition> {
-        LinearGaussianTransition::from_rows(&self.f, &self.q).or_throw_rendered(root)
-    }
-}
 
 /// Object birth: p_b and the birth density b(x) (weights sum to 1; may be empty when
 /// p_b = 0).
@@ -129,6 +81,16 @@ export interface ClutterOptions {
  */
 export type ReductionOptionsJs = ReductionOptions;
 /**
+ * The linear-Gaussian transition N(x; F x′, Q) (eq. (44) of paper 001): the core's
+ * `TransitionRows`.
+ */
+export type Transition = TransitionRows;
+/**
+ * The linear-Gaussian likelihood N(z; H x, R) of vector measurements: the core's
+ * `LikelihoodRows`.
+ */
+export type LikelihoodOptions = LikelihoodRows;
+/**
  * An anchor of the airport example: the core's `Anchor`.
  */
 export type AnchorOut = Anchor;
@@ -137,24 +99,6 @@ export type AnchorOut = Anchor;
  */
 export type TruthOut = TruthPoint;
 "#;
-
-/// The linear-Gaussian likelihood N(z; H x, R) of vector measurements.
-#[derive(Deserialize, Tsify)]
-pub struct LikelihoodOptions {
-    /// The measurement matrix H, m rows of n numbers (z = H x + noise).
-    #[serde(rename = "H")]
-    pub h: Vec<Vec<f64>>,
-    /// The measurement noise covariance R, m rows of m numbers, symmetric positive definite.
-    #[serde(rename = "R")]
-    pub r: Vec<Vec<f64>>,
-}
-
-impl LikelihoodOptions {
-    /// The likelihood of the argument `root` (the core checks the rows and the size).
-    fn into_core(self, root: &'static str) -> JsResult<LinearGaussianLikelihood> {
-        LinearGaussianLikelihood::from_rows(&self.h, &self.r).or_throw_rendered(root)
-    }
-}
 
 /// Options of `gmBernoulliPredict` (the GM Bernoulli prediction of LeGrand & Ferrari, "Split
 /// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
@@ -168,7 +112,8 @@ pub struct GmBernoulliPredictOptions {
     #[tsify(type = "WeightedGaussian[]")]
     pub mixture: GaussianMixture,
     /// The motion model: transition matrix F and process noise covariance Q.
-    pub transition: Transition,
+    #[tsify(type = "Transition")]
+    pub transition: TransitionRows,
     /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives one
     /// step (omitted: 0.99, `default_survival`).
     #[tsify(optional)]
@@ -198,13 +143,15 @@ pub fn gm_bernoulli_predict(
 ) -> JsResult<JsValue> {
     let o: GmBernoulliPredictOptions = read(options, "options")?;
     let birth = o.birth.unwrap_or_else(Birth::none);
-    check_shapes(&o.transition, &o.mixture, &birth, None, 0, "options")?;
+    (o.transition)
+        .check_shapes(&o.mixture, &birth.mixture, None, 0)
+        .or_throw_rendered("options")?;
     let state = GmBernoulli {
         existence: o.existence,
         mixture: o.mixture,
     };
     let config = PredictOptions {
-        transition: o.transition.into_core("options")?,
+        transition: o.transition.build().or_throw_rendered("options")?,
         survival: o.survival.unwrap_or_else(core_filters::default_survival),
         birth,
     };
@@ -240,8 +187,8 @@ pub struct GmBernoulliUpdateOptions {
     #[tsify(optional)]
     pub measurements: Option<Vec<Point>>,
     /// The likelihood of the vector measurements: measurement matrix H and noise covariance R.
-    #[tsify(optional)]
-    pub likelihood: Option<LikelihoodOptions>,
+    #[tsify(optional, type = "LikelihoodOptions")]
+    pub likelihood: Option<LikelihoodRows>,
     /// Clutter (false reports): the rate λ_c and density c̃.
     #[tsify(type = "ClutterOptions")]
     pub clutter: Clutter,
@@ -315,7 +262,7 @@ pub fn gm_bernoulli_update(
     };
     let out = match (o.measurements, o.likelihood) {
         (Some(z), Some(l)) => {
-            let lik = l.into_core("options")?;
+            let lik = l.build().or_throw_rendered("options")?;
             let z = measurements(z);
             core_filters::gm_bernoulli_update_vector(&state, &z, &lik, &config)
                 .or_throw_rendered("options")?
@@ -345,7 +292,8 @@ pub struct BernoulliFilterConfig {
     #[tsify(type = "WeightedGaussian[]")]
     pub mixture: GaussianMixture,
     /// The motion model: transition matrix F and process noise covariance Q.
-    pub transition: Transition,
+    #[tsify(type = "Transition")]
+    pub transition: TransitionRows,
     /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives one
     /// step (default 0.99).
     #[serde(default = "core_filters::default_survival")]
@@ -365,8 +313,8 @@ pub struct BernoulliFilterConfig {
     #[tsify(type = "ClutterOptions")]
     pub clutter: Clutter,
     /// The likelihood (measurement matrix H, noise covariance R) for `update({ measurements })`.
-    #[tsify(optional)]
-    pub likelihood: Option<LikelihoodOptions>,
+    #[tsify(optional, type = "LikelihoodOptions")]
+    pub likelihood: Option<LikelihoodRows>,
     /// The splitting step (GM filter only); omitted: the defaults.
     #[tsify(optional, type = "SplittingOptions")]
     pub splitting: Option<SplittingOptions>,
@@ -404,23 +352,23 @@ struct Converted {
 /// Reads the argument `config` of either class's constructor.
 fn convert(config: JsValue) -> JsResult<Converted> {
     let c: BernoulliFilterConfig = read(config, "config")?;
-    check_shapes(
-        &c.transition,
-        &c.mixture,
-        &c.birth,
-        c.likelihood.as_ref(),
-        c.position_dims,
-        "config",
-    )?;
+    (c.transition)
+        .check_shapes(
+            &c.mixture,
+            &c.birth.mixture,
+            c.likelihood.as_ref(),
+            c.position_dims,
+        )
+        .or_throw_rendered("config")?;
     let splitting = splitting(c.splitting, c.position_dims, "config")?;
     let likelihood = match c.likelihood {
-        Some(l) => Some(l.into_core("config")?),
+        Some(l) => Some(l.build().or_throw_rendered("config")?),
         None => None,
     };
     let config = CoreConfig {
         existence: c.existence,
         mixture: c.mixture,
-        transition: c.transition.into_core("config")?,
+        transition: c.transition.build().or_throw_rendered("config")?,
         survival: c.survival,
         birth: c.birth,
         position_dims: c.position_dims,
@@ -767,7 +715,8 @@ pub struct AirportConfig {
     /// The initial spatial density p_{0|0}, a Gaussian mixture.
     pub mixture: Vec<MixtureComponent>,
     /// The motion model: transition matrix F and process noise covariance Q.
-    pub transition: Transition,
+    #[tsify(type = "Transition")]
+    pub transition: TransitionRows,
     /// The survival probability p_S ∈ [0, 1]: the probability that the person stays one more step.
     pub survival: f64,
     /// Object birth: the birth probability p_b and birth density b(x).

@@ -107,7 +107,7 @@ pub use particle_bernoulli::{
     ParticleOptions, default_mcmc_moves, default_particles,
 };
 pub use transition::{LinearGaussianTransition, MAX_STATES};
-pub use validate::ConfigShapes;
+pub use validate::{ConfigShapes, LikelihoodRows, TransitionRows};
 
 #[cfg(test)]
 mod limits_tests;

@@ -8,7 +8,7 @@
 use alloc::string::String;
 use alloc::vec::Vec;
 
-use super::BernoulliFilterOptions;
+use super::{BernoulliFilterOptions, LinearGaussianLikelihood, LinearGaussianTransition};
 use crate::error::{Error, Result, Shape};
 use crate::gaussian::GaussianMixture;
 use crate::regions::{Node, Region};
@@ -103,6 +103,82 @@ impl ConfigShapes<'_> {
 }
 
 /// The mean length of every component of `mixture`.
+/// F and Q as a user writes them, unchecked (`transition: { F, Q }` with the paper's
+/// capitals): the form a binding reads, so that their shapes are checked against the rest of
+/// the configuration ([`TransitionRows::check_shapes`]) before the transition is built
+/// ([`TransitionRows::build`]).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct TransitionRows {
+    /// The state transition matrix F, n rows of n numbers (x = F x′ + noise).
+    #[cfg_attr(feature = "serde", serde(rename = "F"))]
+    pub f: Vec<Vec<f64>>,
+    /// The process noise covariance Q, n rows of n numbers, symmetric positive semidefinite.
+    #[cfg_attr(feature = "serde", serde(rename = "Q"))]
+    pub q: Vec<Vec<f64>>,
+}
+
+/// H and R as a user writes them, unchecked (`likelihood: { H, R }`): the linear-Gaussian
+/// likelihood N(z; H x, R) of vector measurements before it is built
+/// ([`LikelihoodRows::build`]).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct LikelihoodRows {
+    /// The measurement matrix H, m rows of n numbers (z = H x + noise).
+    #[cfg_attr(feature = "serde", serde(rename = "H"))]
+    pub h: Vec<Vec<f64>>,
+    /// The measurement noise covariance R, m rows of m numbers, symmetric positive definite.
+    #[cfg_attr(feature = "serde", serde(rename = "R"))]
+    pub r: Vec<Vec<f64>>,
+}
+
+impl TransitionRows {
+    /// The transition ([`LinearGaussianTransition::from_rows`]).
+    ///
+    /// # Errors
+    /// As [`LinearGaussianTransition::from_rows`].
+    pub fn build(&self) -> Result<LinearGaussianTransition> {
+        LinearGaussianTransition::from_rows(&self.f, &self.q)
+    }
+
+    /// Checks the shapes of F and Q against the other fields of a configuration as given:
+    /// the means of `mixture` and of the birth density `birth`, H and R of `likelihood`,
+    /// and n_s = `position_dims` (0: not checked, as [`ConfigShapes::check`]).
+    ///
+    /// # Errors
+    /// As [`ConfigShapes::check`].
+    pub fn check_shapes(
+        &self,
+        mixture: &GaussianMixture,
+        birth: &GaussianMixture,
+        likelihood: Option<&LikelihoodRows>,
+        position_dims: usize,
+    ) -> Result<()> {
+        let mixture: Vec<usize> = mean_lengths(mixture).collect();
+        let birth: Vec<usize> = mean_lengths(birth).collect();
+        ConfigShapes {
+            f: ConfigShapes::of_rows(&self.f),
+            q: ConfigShapes::of_rows(&self.q),
+            mixture: &mixture,
+            birth: &birth,
+            likelihood: likelihood
+                .map(|l| (ConfigShapes::of_rows(&l.h), ConfigShapes::of_rows(&l.r))),
+            position_dims,
+        }
+        .check()
+    }
+}
+
+impl LikelihoodRows {
+    /// The likelihood ([`LinearGaussianLikelihood::from_rows`]).
+    ///
+    /// # Errors
+    /// As [`LinearGaussianLikelihood::from_rows`].
+    pub fn build(&self) -> Result<LinearGaussianLikelihood> {
+        LinearGaussianLikelihood::from_rows(&self.h, &self.r)
+    }
+}
+
 fn mean_lengths(mixture: &GaussianMixture) -> impl Iterator<Item = usize> + '_ {
     mixture.components().iter().map(|(_, g)| g.dim())
 }

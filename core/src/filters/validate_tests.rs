@@ -198,3 +198,70 @@ fn eq44_a_semidefinite_q_runs_in_both_filters() {
         assert!(e.cov.iter().flatten().all(|v| v.is_finite()), "{e:?}");
     }
 }
+
+/// The unchecked forms a binding reads: F, Q, H, R as rows, their shapes checked against the
+/// mixtures, H and n_s before either model is built, then built by the rows constructors.
+#[test]
+fn rows_forms_check_shapes_then_build() {
+    let eye = |n: usize| -> Vec<Vec<f64>> {
+        (0..n)
+            .map(|i| (0..n).map(|j| f64::from(u8::from(i == j))).collect())
+            .collect()
+    };
+    let mixture = |n: usize| {
+        let g = Gaussian::new(
+            nalgebra::DVector::zeros(n),
+            DMatrix::identity(n, n),
+            "mixture",
+        )
+        .unwrap();
+        GaussianMixture::new(vec![(1.0, g)], "mixture").unwrap()
+    };
+    let t = TransitionRows {
+        f: eye(2),
+        q: eye(2),
+    };
+    assert_eq!(
+        message(t.check_shapes(&mixture(4), &GaussianMixture::default(), None, 0)),
+        "mixture[0].mean has length 4 but transition.f is 2×2"
+    );
+    let h = LikelihoodRows {
+        h: vec![vec![1.0, 0.0]],
+        r: eye(2),
+    };
+    assert_eq!(
+        message(t.check_shapes(&mixture(2), &GaussianMixture::default(), Some(&h), 2)),
+        "likelihood.r is 2×2 but likelihood.h is 1×2"
+    );
+    t.check_shapes(&mixture(2), &mixture(2), None, 2).unwrap();
+    assert_eq!(
+        t.build().unwrap(),
+        LinearGaussianTransition::from_rows(&t.f, &t.q).unwrap()
+    );
+    let bad = TransitionRows {
+        f: eye(2),
+        q: vec![vec![1.0, 0.5], vec![0.4, 1.0]],
+    };
+    assert_eq!(
+        message(bad.build()),
+        message(LinearGaussianTransition::from_rows(&bad.f, &bad.q))
+    );
+    assert_eq!(
+        message(h.build()),
+        "likelihood.r is 2×2 but likelihood.h is 1×2"
+    );
+}
+
+/// The rows forms read and write the paper's capitals: `{F, Q}`, `{H, R}`.
+#[cfg(feature = "serde")]
+#[test]
+fn rows_forms_serde_names_are_the_papers_capitals() {
+    let t: TransitionRows = serde_json::from_str(r#"{"F": [[1]], "Q": [[0.5]]}"#).unwrap();
+    assert_eq!(t.q, vec![vec![0.5]]);
+    assert_eq!(
+        serde_json::to_string(&t).unwrap(),
+        r#"{"F":[[1.0]],"Q":[[0.5]]}"#
+    );
+    let l: LikelihoodRows = serde_json::from_str(r#"{"H": [[1, 0]], "R": [[2]]}"#).unwrap();
+    assert_eq!(l.build().unwrap().measurement_dim(), 1);
+}
