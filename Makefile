@@ -46,7 +46,7 @@ lint:
 test-native:
 	cargo test --locked
 	cargo test --locked -p fisst --features serde --lib
-	cargo test --locked -p fisst-wasm --lib
+	cargo test --locked -p fisst-wasm --lib --test tsgen
 
 test-nostd:
 	cargo test --locked -p fisst --no-default-features

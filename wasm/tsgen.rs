@@ -1,5 +1,5 @@
 //! The TypeScript generator of `build.rs` (see there): reads Rust source with `syn` and writes
-//! declarations of the serde types in JavaScript names. Tested in `src/tsgen_tests.rs`.
+//! declarations of the serde types in JavaScript names. Tested in `tests/tsgen.rs`.
 
 use std::collections::{BTreeMap, BTreeSet, VecDeque};
 use std::fs;

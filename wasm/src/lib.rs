@@ -34,8 +34,6 @@
 pub mod boundary;
 pub mod de;
 pub mod names;
-#[cfg(test)]
-mod tsgen_tests;
 pub mod types;
 
 /// The TypeScript declarations of the core's own types that this part takes or returns,
