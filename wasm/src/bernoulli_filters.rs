@@ -16,9 +16,9 @@ use crate::names::Renamed;
 use crate::types::{MixtureComponent, Point, WeightedGaussian};
 use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
-    self as core_filters, BernoulliFilterOptions as CoreConfig, Birth, Clutter, Detection,
-    EstimateOptions, FilterEstimate, GmBernoulli, LikelihoodRows, ParticleOptions, PredictOptions,
-    Splitting, SplittingOptions, TransitionRows, UpdateOptions,
+    self as core_filters, BernoulliFilterConfig, Clutter, Detection, EstimateOptions,
+    FilterEstimate, GmBernoulli, GmBernoulliPredictOptions, LikelihoodRows, ParticleOptions,
+    SplittingOptions, TransitionRows, UpdateOptions, splitting_or_default,
 };
 use fisst::gaussian::GaussianMixture;
 use fisst::mixture::ReductionOptions;
@@ -91,6 +91,22 @@ export type Transition = TransitionRows;
  */
 export type LikelihoodOptions = LikelihoodRows;
 /**
+ * A Gaussian mixture: its components (the core's `GaussianMixture`).
+ */
+export type GaussianMixture = WeightedGaussian[];
+/**
+ * Object birth (the core's `Birth`).
+ */
+export type Birth = BirthOptions;
+/**
+ * Object detection (the core's `Detection`).
+ */
+export type Detection = DetectionOptions;
+/**
+ * Clutter (the core's `Clutter`).
+ */
+export type Clutter = ClutterOptions;
+/**
  * An anchor of the airport example: the core's `Anchor`.
  */
 export type AnchorOut = Anchor;
@@ -99,29 +115,6 @@ export type AnchorOut = Anchor;
  */
 export type TruthOut = TruthPoint;
 "#;
-
-/// Options of `gmBernoulliPredict` (the GM Bernoulli prediction of LeGrand & Ferrari, "Split
-/// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
-/// (paper 001)).
-#[derive(Deserialize, Tsify)]
-pub struct GmBernoulliPredictOptions {
-    /// The existence probability r ∈ [0, 1] before the prediction.
-    pub existence: f64,
-    /// The spatial density p(x) before the prediction, a Gaussian mixture: weights sum to 1 (at
-    /// most 10,000 components).
-    #[tsify(type = "WeightedGaussian[]")]
-    pub mixture: GaussianMixture,
-    /// The motion model: transition matrix F and process noise covariance Q.
-    #[tsify(type = "Transition")]
-    pub transition: TransitionRows,
-    /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives one
-    /// step (omitted: 0.99, `default_survival`).
-    #[tsify(optional)]
-    pub survival: Option<f64>,
-    /// Object birth: the birth probability p_b and birth density b(x); omitted: no birth.
-    #[tsify(optional, type = "BirthOptions")]
-    pub birth: Option<Birth>,
-}
 
 /// Result of `gmBernoulliPredict`: a Bernoulli with a Gaussian-mixture (GM) density.
 #[allow(dead_code)] // a TypeScript declaration only: the value is the core's `GmBernoulli`
@@ -142,19 +135,7 @@ pub fn gm_bernoulli_predict(
     #[wasm_bindgen(unchecked_param_type = "GmBernoulliPredictOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: GmBernoulliPredictOptions = read(options, "options")?;
-    let birth = o.birth.unwrap_or_else(Birth::none);
-    (o.transition)
-        .check_shapes(&o.mixture, &birth.mixture, None, 0)
-        .or_throw_rendered("options")?;
-    let state = GmBernoulli {
-        existence: o.existence,
-        mixture: o.mixture,
-    };
-    let config = PredictOptions {
-        transition: o.transition.build().or_throw_rendered("options")?,
-        survival: o.survival.unwrap_or_else(core_filters::default_survival),
-        birth,
-    };
+    let (state, config) = o.build().or_throw_rendered("options")?;
     let out = core_filters::gm_bernoulli_predict(&state, &config).or_throw_rendered("options")?;
     write(&out)
 }
@@ -221,19 +202,6 @@ pub struct GmBernoulliUpdateResult {
     pub split_components: usize,
 }
 
-/// The splitting step of the argument `root` for positions of `position_dims` coordinates
-/// (omitted: [`Splitting::default`]).
-fn splitting(
-    s: Option<SplittingOptions>,
-    position_dims: usize,
-    root: &'static str,
-) -> JsResult<Splitting> {
-    match s {
-        Some(s) => s.build(position_dims).or_throw_rendered(root),
-        None => Ok(Splitting::default()),
-    }
-}
-
 fn measurements(points: Vec<Point>) -> Vec<Vec<f64>> {
     points.into_iter().map(|p| p.0).collect()
 }
@@ -256,7 +224,8 @@ pub fn gm_bernoulli_update(
         position_dims: o.position_dims,
         detection: o.detection,
         clutter: o.clutter,
-        splitting: splitting(o.splitting, o.position_dims, "options")?,
+        splitting: splitting_or_default(o.splitting.as_ref(), o.position_dims)
+            .or_throw_rendered("options")?,
         reduction: o.reduction,
         exclusions: o.exclusions,
     };
@@ -278,119 +247,6 @@ pub fn gm_bernoulli_update(
         }
     };
     write(&Renamed::new(&out))
-}
-
-/// The configuration of `GmBernoulliFilter` and `ParticleBernoulliFilter` (the particle
-/// filter also reads `particles`, `birthParticles`, `mcmcMoves`, `seed`, and ignores
-/// `splitting` and `reduction`).
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct BernoulliFilterConfig {
-    /// The initial existence probability r_{0|0} ∈ [0, 1].
-    pub existence: f64,
-    /// The initial spatial density p_{0|0}, a Gaussian mixture (weights sum to 1).
-    #[tsify(type = "WeightedGaussian[]")]
-    pub mixture: GaussianMixture,
-    /// The motion model: transition matrix F and process noise covariance Q.
-    #[tsify(type = "Transition")]
-    pub transition: TransitionRows,
-    /// The survival probability p_S ∈ [0, 1]: the probability that an existing object survives one
-    /// step (default 0.99).
-    #[serde(default = "core_filters::default_survival")]
-    pub survival: f64,
-    /// Object birth: the birth probability p_b and birth density b(x); omitted: no birth.
-    #[serde(default = "Birth::none")]
-    #[tsify(optional, type = "BirthOptions")]
-    pub birth: Birth,
-    /// The number n_s of position components: the first n_s state components are the position that
-    /// regions refer to (default 2).
-    #[serde(default = "core_filters::default_position_dims")]
-    pub position_dims: usize,
-    /// Detection: the detection probability p_D inside the field of view S.
-    #[tsify(type = "DetectionOptions")]
-    pub detection: Detection,
-    /// Clutter (false reports): the rate λ_c and density c̃.
-    #[tsify(type = "ClutterOptions")]
-    pub clutter: Clutter,
-    /// The likelihood (measurement matrix H, noise covariance R) for `update({ measurements })`.
-    #[tsify(optional, type = "LikelihoodOptions")]
-    pub likelihood: Option<LikelihoodRows>,
-    /// The splitting step (GM filter only); omitted: the defaults.
-    #[tsify(optional, type = "SplittingOptions")]
-    pub splitting: Option<SplittingOptions>,
-    /// The reduction after each update (GM filter only); omitted: prune 1e-6, merge within 2,
-    /// Runnalls to 100.
-    #[serde(default = "core_filters::default_reduction")]
-    #[tsify(optional, type = "ReductionOptionsJs")]
-    pub reduction: ReductionOptions,
-    /// Regions the object cannot occupy.
-    #[serde(default)]
-    #[tsify(optional)]
-    pub exclusions: Vec<Region>,
-    /// Particle filter: the number of particles N (default 5000, at most 200000).
-    #[serde(default = "core_filters::default_particles")]
-    pub particles: usize,
-    /// Particle filter: birth particles per prediction (default N/10).
-    #[tsify(optional)]
-    pub birth_particles: Option<usize>,
-    /// Particle filter: MCMC moves per update (default 1, at most 10).
-    #[serde(default = "core_filters::default_mcmc_moves")]
-    pub mcmc_moves: usize,
-    /// Particle filter: the seed; omitted: fresh entropy (the `seed` getter returns it).
-    #[tsify(optional)]
-    pub seed: Option<u64>,
-}
-
-/// A configuration as read: the core's, the particle filter's settings (seed 0) and the seed
-/// asked for.
-struct Converted {
-    config: CoreConfig,
-    particle: ParticleOptions,
-    seed: Option<u64>,
-}
-
-/// Reads the argument `config` of either class's constructor.
-fn convert(config: JsValue) -> JsResult<Converted> {
-    let c: BernoulliFilterConfig = read(config, "config")?;
-    (c.transition)
-        .check_shapes(
-            &c.mixture,
-            &c.birth.mixture,
-            c.likelihood.as_ref(),
-            c.position_dims,
-        )
-        .or_throw_rendered("config")?;
-    let splitting = splitting(c.splitting, c.position_dims, "config")?;
-    let likelihood = match c.likelihood {
-        Some(l) => Some(l.build().or_throw_rendered("config")?),
-        None => None,
-    };
-    let config = CoreConfig {
-        existence: c.existence,
-        mixture: c.mixture,
-        transition: c.transition.build().or_throw_rendered("config")?,
-        survival: c.survival,
-        birth: c.birth,
-        position_dims: c.position_dims,
-        detection: c.detection,
-        clutter: c.clutter,
-        likelihood,
-        splitting,
-        reduction: c.reduction,
-        exclusions: c.exclusions,
-    };
-    // both filters' constructors validate the configuration as a whole first
-    let particle = ParticleOptions {
-        particles: c.particles,
-        birth_particles: c.birth_particles,
-        mcmc_moves: c.mcmc_moves,
-        seed: 0,
-    };
-    Ok(Converted {
-        config,
-        particle,
-        seed: c.seed,
-    })
 }
 
 /// The argument of `update`: `Region[]` or `{ measurements }`.
@@ -629,9 +485,10 @@ impl GmBernoulliFilterJs {
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "BernoulliFilterConfig")] config: JsValue,
     ) -> JsResult<GmBernoulliFilterJs> {
-        let c = convert(config)?;
+        let c: BernoulliFilterConfig = read(config, "config")?;
+        let (config, _) = c.build().or_throw_rendered("config")?;
         Ok(Self {
-            inner: core_filters::GmBernoulliFilter::new(c.config).or_throw_rendered("config")?,
+            inner: core_filters::GmBernoulliFilter::new(config).or_throw_rendered("config")?,
         })
     }
 
@@ -667,11 +524,13 @@ impl ParticleBernoulliFilterJs {
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "BernoulliFilterConfig")] config: JsValue,
     ) -> JsResult<ParticleBernoulliFilterJs> {
-        let c = convert(config)?;
-        let seed = seed_or_entropy(c.seed)?;
-        let options = ParticleOptions { seed, ..c.particle };
+        let c: BernoulliFilterConfig = read(config, "config")?;
+        let asked = c.seed;
+        let (config, particle) = c.build().or_throw_rendered("config")?;
+        let seed = seed_or_entropy(asked)?;
+        let options = ParticleOptions { seed, ..particle };
         Ok(Self {
-            inner: core_filters::ParticleBernoulliFilter::new(c.config, options)
+            inner: core_filters::ParticleBernoulliFilter::new(config, options)
                 .or_throw_rendered("config")?,
             seed,
         })

@@ -81,6 +81,7 @@ mod detection;
 mod estimate;
 mod gm_bernoulli;
 mod likelihood;
+mod options;
 mod particle_bernoulli;
 mod transition;
 pub(crate) mod validate;
@@ -102,6 +103,7 @@ pub use likelihood::{
     FnLikelihood, GeneralizedLikelihood, LinearGaussianLikelihood, MAX_MEASUREMENT_DIM,
     RegionReports,
 };
+pub use options::{BernoulliFilterConfig, GmBernoulliPredictOptions, splitting_or_default};
 pub use particle_bernoulli::{
     MAX_MCMC_MOVES, MAX_PARTICLES, MAX_UPDATE_EVALUATIONS, ParticleBernoulliFilter,
     ParticleOptions, default_mcmc_moves, default_particles,

@@ -265,3 +265,38 @@ fn rows_forms_serde_names_are_the_papers_capitals() {
     let l: LikelihoodRows = serde_json::from_str(r#"{"H": [[1, 0]], "R": [[2]]}"#).unwrap();
     assert_eq!(l.build().unwrap().measurement_dim(), 1);
 }
+
+/// The options as a user writes them: the shapes of all the fields first (a 4-D mixture with
+/// a 2×2 F, before the asymmetric Q), then the models built; defaults for what is left out.
+#[cfg(feature = "serde")]
+#[test]
+fn user_options_check_shapes_before_building() {
+    let mixture = r#"[{"weight": 1, "mean": [0, 0, 0, 0], "cov": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}]"#;
+    let config = |transition: &str| {
+        std::format!(
+            r#"{{"existence": 0.5, "mixture": {mixture}, "transition": {transition},
+                "detection": {{"probability": 0.9}}, "clutter": {{"rate": 0.25, "density": 0.01}}}}"#
+        )
+    };
+    let bad = r#"{"F": [[1, 0], [0, 1]], "Q": [[1, 0.5], [0.4, 1]]}"#;
+    let c: BernoulliFilterConfig = serde_json::from_str(&config(bad)).unwrap();
+    assert_eq!(
+        message(c.build()),
+        "mixture[0].mean has length 4 but transition.f is 2×2"
+    );
+    let p: GmBernoulliPredictOptions = serde_json::from_str(&std::format!(
+        r#"{{"existence": 0.5, "mixture": {mixture}, "transition": {bad}}}"#
+    ))
+    .unwrap();
+    assert_eq!(
+        message(p.build()),
+        "mixture[0].mean has length 4 but transition.f is 2×2"
+    );
+    let eye4 = r#"{"F": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]], "Q": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}"#;
+    let c: BernoulliFilterConfig = serde_json::from_str(&config(eye4)).unwrap();
+    assert_eq!((c.particles, c.mcmc_moves, c.seed), (5000, 1, None));
+    let (built, particle) = c.build().unwrap();
+    assert_eq!((built.position_dims, built.survival), (2, 0.99));
+    assert_eq!(particle.seed, 0);
+    built.validate().unwrap();
+}
