@@ -97,24 +97,27 @@ pub mod matrix {
     }
 }
 
-/// `Vec<Vec<f64>>` as `[[x, …], …]`, each row a [`numbers`] (rows may differ in length).
+/// `Vec<Vec<f64>>` as `[[x, …], …]`, each row a [`numbers`] (rows may differ in length);
+/// also for an `Option<Vec<Vec<f64>>>`.
 pub mod rows_of_numbers {
     use super::*;
 
-    /// Writes the rows in order.
+    /// Writes the rows in order (or an `Option` of them: null for `None`).
     ///
     /// # Errors
     /// The serializer's.
-    pub fn serialize<S: Serializer>(v: &[Vec<f64>], s: S) -> Result<S::Ok, S::Error> {
+    pub fn serialize<T: Serialize + ?Sized, S: Serializer>(v: &T, s: S) -> Result<S::Ok, S::Error> {
         v.serialize(s)
     }
 
-    /// Reads `[[x, …], …]`.
+    /// Reads `[[x, …], …]` (or an `Option` of them, for a field with `default`).
     ///
     /// # Errors
     /// The deserializer's.
-    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<Vec<f64>>, D::Error> {
-        Vec::<Vec<f64>>::deserialize(d)
+    pub fn deserialize<'de, T: Deserialize<'de>, D: Deserializer<'de>>(
+        d: D,
+    ) -> Result<T, D::Error> {
+        T::deserialize(d)
     }
 }
 

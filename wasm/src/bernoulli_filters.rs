@@ -13,15 +13,12 @@ use crate::boundary::{
     seed_or_entropy, type_error, write,
 };
 use crate::names::Renamed;
-use crate::types::{MixtureComponent, Point, WeightedGaussian};
+use crate::types::{MixtureComponent, WeightedGaussian};
 use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
-    self as core_filters, BernoulliFilterConfig, Clutter, Detection, EstimateOptions,
-    FilterEstimate, GmBernoulli, GmBernoulliPredictOptions, LikelihoodRows, ParticleOptions,
-    SplittingOptions, TransitionRows, UpdateOptions, splitting_or_default,
+    self as core_filters, BernoulliFilterConfig, EstimateOptions, FilterEstimate, GmBernoulli,
+    GmBernoulliPredictOptions, GmBernoulliUpdateOptions, ParticleOptions, TransitionRows,
 };
-use fisst::gaussian::GaussianMixture;
-use fisst::mixture::ReductionOptions;
 use fisst::regions::Region;
 use fisst::sim::airport::{AirportScenarioOptions, AirportScenarioReport, Anchor, TruthPoint};
 
@@ -140,53 +137,6 @@ pub fn gm_bernoulli_predict(
     write(&out)
 }
 
-/// Options of `gmBernoulliUpdate` (the GM Bernoulli update of LeGrand & Ferrari, "Split Happens!
-/// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper
-/// 001)).
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct GmBernoulliUpdateOptions {
-    /// The predicted existence probability r_{k|k−1} ∈ [0, 1].
-    pub existence: f64,
-    /// The predicted spatial density p_{k|k−1}, a Gaussian mixture: weights sum to 1.
-    #[tsify(type = "WeightedGaussian[]")]
-    pub mixture: GaussianMixture,
-    /// The number n_s of position components: the first n_s state components are the position that
-    /// regions refer to (default 2, in [1, 8]).
-    #[serde(default = "core_filters::default_position_dims")]
-    pub position_dims: usize,
-    /// Detection: the detection probability p_D inside the field of view S.
-    #[tsify(type = "DetectionOptions")]
-    pub detection: Detection,
-    /// The imprecise reports ζ (regions, g̃ = 1_ζ); omitted or empty with no `measurements`:
-    /// the non-detection update.
-    #[tsify(optional)]
-    pub reports: Option<Vec<Region>>,
-    /// Vector measurements (with `likelihood`): the vector-measurement update instead. At most
-    /// 10,000, and components (after splitting) × measurements × ⌈n²/16⌉ ≤ 2^18 (a
-    /// RangeError naming `options.measurements` beyond).
-    #[tsify(optional)]
-    pub measurements: Option<Vec<Point>>,
-    /// The likelihood of the vector measurements: measurement matrix H and noise covariance R.
-    #[tsify(optional, type = "LikelihoodOptions")]
-    pub likelihood: Option<LikelihoodRows>,
-    /// Clutter (false reports): the rate λ_c and density c̃.
-    #[tsify(type = "ClutterOptions")]
-    pub clutter: Clutter,
-    /// The splitting step; omitted: the defaults.
-    #[tsify(optional, type = "SplittingOptions")]
-    pub splitting: Option<SplittingOptions>,
-    /// The reduction; omitted: prune 1e-6, merge within 2, Runnalls to 100.
-    #[serde(default = "core_filters::default_reduction")]
-    #[tsify(optional, type = "ReductionOptionsJs")]
-    pub reduction: ReductionOptions,
-    /// Regions the object cannot occupy (mass removed by the mean-based partition after
-    /// splitting; the existence is unchanged).
-    #[serde(default)]
-    #[tsify(optional)]
-    pub exclusions: Vec<Region>,
-}
-
 /// Result of `gmBernoulliUpdate`: the posterior Bernoulli.
 #[allow(dead_code)] // a TypeScript declaration only: the value is the core's `GmBernoulliUpdate`
 #[derive(Tsify)]
@@ -202,10 +152,6 @@ pub struct GmBernoulliUpdateResult {
     pub split_components: usize,
 }
 
-fn measurements(points: Vec<Point>) -> Vec<Vec<f64>> {
-    points.into_iter().map(|p| p.0).collect()
-}
-
 /// The GM Bernoulli update (Algorithm 3 of LeGrand & Ferrari, "Split Happens! Imprecise and
 /// negative information in Gaussian mixture random finite set filtering" (paper 001): split about
 /// ∂S, every ∂ζ and every exclusion, zeroth-order weights (57)–(58), existence (54), two-pass
@@ -216,23 +162,14 @@ pub fn gm_bernoulli_update(
     #[wasm_bindgen(unchecked_param_type = "GmBernoulliUpdateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: GmBernoulliUpdateOptions = read(options, "options")?;
+    let config = o.update_options().or_throw_rendered("options")?;
     let state = GmBernoulli {
         existence: o.existence,
         mixture: o.mixture,
     };
-    let config = UpdateOptions {
-        position_dims: o.position_dims,
-        detection: o.detection,
-        clutter: o.clutter,
-        splitting: splitting_or_default(o.splitting.as_ref(), o.position_dims)
-            .or_throw_rendered("options")?,
-        reduction: o.reduction,
-        exclusions: o.exclusions,
-    };
     let out = match (o.measurements, o.likelihood) {
         (Some(z), Some(l)) => {
             let lik = l.build().or_throw_rendered("options")?;
-            let z = measurements(z);
             core_filters::gm_bernoulli_update_vector(&state, &z, &lik, &config)
                 .or_throw_rendered("options")?
         }
@@ -257,7 +194,7 @@ enum Scan {
 
 #[derive(Deserialize)]
 struct MeasurementsArg {
-    measurements: Vec<Point>,
+    measurements: Vec<Vec<f64>>,
 }
 
 fn scan(value: JsValue) -> JsResult<Scan> {
@@ -265,7 +202,7 @@ fn scan(value: JsValue) -> JsResult<Scan> {
         Ok(Scan::Reports(read(value, "reports")?))
     } else {
         let m: MeasurementsArg = read(value, "reports")?;
-        Ok(Scan::Measurements(measurements(m.measurements)))
+        Ok(Scan::Measurements(m.measurements))
     }
 }
 

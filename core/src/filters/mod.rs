@@ -103,7 +103,10 @@ pub use likelihood::{
     FnLikelihood, GeneralizedLikelihood, LinearGaussianLikelihood, MAX_MEASUREMENT_DIM,
     RegionReports,
 };
-pub use options::{BernoulliFilterConfig, GmBernoulliPredictOptions, splitting_or_default};
+pub use options::{
+    BernoulliFilterConfig, GmBernoulliPredictOptions, GmBernoulliUpdateOptions,
+    splitting_or_default,
+};
 pub use particle_bernoulli::{
     MAX_MCMC_MOVES, MAX_PARTICLES, MAX_UPDATE_EVALUATIONS, ParticleBernoulliFilter,
     ParticleOptions, default_mcmc_moves, default_particles,

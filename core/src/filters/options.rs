@@ -9,7 +9,7 @@ use alloc::vec::Vec;
 
 use super::{
     BernoulliFilterOptions, Birth, Clutter, Detection, GmBernoulli, LikelihoodRows,
-    ParticleOptions, PredictOptions, Splitting, SplittingOptions, TransitionRows,
+    ParticleOptions, PredictOptions, Splitting, SplittingOptions, TransitionRows, UpdateOptions,
 };
 #[cfg(feature = "serde")]
 use super::{
@@ -173,5 +173,66 @@ impl BernoulliFilterConfig {
             seed: self.seed.unwrap_or(0),
         };
         Ok((config, particle))
+    }
+}
+
+/// Options of the GM Bernoulli update (Algorithm 3 of `001_0f0df91eee9b30d5.txt`) of one
+/// Bernoulli, with imprecise `reports` or with vector `measurements` and their `likelihood`.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct GmBernoulliUpdateOptions {
+    /// The predicted existence probability r_{k|k−1} ∈ [0, 1].
+    pub existence: f64,
+    /// The predicted spatial density p_{k|k−1}, a Gaussian mixture: weights sum to 1.
+    pub mixture: GaussianMixture,
+    /// The number n_s of position components: the first n_s state components are the position that
+    /// regions refer to (default 2, in [1, 8]).
+    #[cfg_attr(feature = "serde", serde(default = "default_position_dims"))]
+    pub position_dims: usize,
+    /// Detection: the detection probability p_D inside the field of view S.
+    pub detection: Detection,
+    /// The imprecise reports ζ (regions, g̃ = 1_ζ); omitted or empty with no `measurements`:
+    /// the non-detection update.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub reports: Option<Vec<Region>>,
+    /// Vector measurements (with `likelihood`): the vector-measurement update instead. At most
+    /// 10,000, and components (after splitting) × measurements × ⌈n²/16⌉ ≤ 2^18 (an error
+    /// naming `measurements` beyond).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, with = "crate::serde_shapes::rows_of_numbers")
+    )]
+    pub measurements: Option<Vec<Vec<f64>>>,
+    /// The likelihood of the vector measurements: measurement matrix H and noise covariance R.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub likelihood: Option<LikelihoodRows>,
+    /// Clutter (false reports): the rate λ_c and density c̃.
+    pub clutter: Clutter,
+    /// The splitting step; omitted: the defaults.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub splitting: Option<SplittingOptions>,
+    /// The reduction; omitted: prune 1e-6, merge within 2, Runnalls to 100.
+    #[cfg_attr(feature = "serde", serde(default = "default_reduction"))]
+    pub reduction: ReductionOptions,
+    /// Regions the object cannot occupy (mass removed by the mean-based partition after
+    /// splitting; the existence is unchanged).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub exclusions: Vec<Region>,
+}
+
+impl GmBernoulliUpdateOptions {
+    /// The update's options (the splitting step built for n_s).
+    ///
+    /// # Errors
+    /// As [`splitting_or_default`].
+    pub fn update_options(&self) -> Result<UpdateOptions> {
+        Ok(UpdateOptions {
+            position_dims: self.position_dims,
+            detection: self.detection.clone(),
+            clutter: self.clutter.clone(),
+            splitting: splitting_or_default(self.splitting.as_ref(), self.position_dims)?,
+            reduction: self.reduction,
+            exclusions: self.exclusions.clone(),
+        })
     }
 }

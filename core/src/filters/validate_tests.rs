@@ -300,3 +300,23 @@ fn user_options_check_shapes_before_building() {
     assert_eq!(particle.seed, 0);
     built.validate().unwrap();
 }
+
+/// The update's options as a user writes them: `measurements` optional (absent is not
+/// empty), the splitting step built for n_s.
+#[cfg(feature = "serde")]
+#[test]
+fn update_options_as_written() {
+    let base = r#""existence": 0.5, "mixture": [{"weight": 1, "mean": [0, 0], "cov": [[1, 0], [0, 1]]}],
+        "detection": {"probability": 0.9}, "clutter": {"rate": 0.25, "density": 0.01}"#;
+    let o: GmBernoulliUpdateOptions = serde_json::from_str(&std::format!("{{{base}}}")).unwrap();
+    assert_eq!(
+        (o.measurements, o.reports, o.position_dims),
+        (None, None, 2)
+    );
+    let o: GmBernoulliUpdateOptions = serde_json::from_str(&std::format!(
+        r#"{{{base}, "measurements": [], "splitting": {{"components": 1}}}}"#
+    ))
+    .unwrap();
+    assert_eq!(o.measurements, Some(Vec::new()));
+    assert!(message(o.update_options()).starts_with("splitting.components"));
+}
