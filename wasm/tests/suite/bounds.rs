@@ -210,7 +210,7 @@ fn native_vector(q: f64) -> fisst::bounds::VectorBound {
         },
         &TheoremOptions::default(),
     )
-    .unwrap()
+    .expect("the core's vector bound")
 }
 
 #[wasm_bindgen_test]
