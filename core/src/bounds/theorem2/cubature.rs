@@ -24,7 +24,7 @@ use super::{ModelII, Term, information_density};
 use crate::bounds::model::{Density, Observation, normal_mass, normal_pdf};
 use crate::bounds::theorem::inverse_information;
 use crate::math::fns;
-use crate::math::optimise::bisect;
+use crate::math::optimise::{bisect, golden_section};
 use crate::math::quadrature::{
     Control, Rule, Tolerance, integrate, integrate_equal_pieces as adaptive, integrate_vec,
 };
@@ -46,9 +46,12 @@ const CELLS: usize = 512;
 /// region's section at z_2: for each outer node it is found by root-finding on
 /// r P̄o m(z_1) − K v(z_1) (a 512-cell scan of tabulated m and v, then bisection with m by
 /// quadrature), and the inner integrals are split at its ends. The outer integral is
-/// adaptive G10/K21 on the sum w + null + A/(A_1/w_1) (all ≥ 0; A_1/w_1 the information
-/// per unit of detected mass of n = 1), whose error estimate is given to
-/// each; the inner ones add their relative tolerance.
+/// adaptive G10/K21 to half the inner tolerance on the sum w + null + A/(A_1/w_1) (all ≥ 0;
+/// A_1/w_1 the information per unit of detected mass of n = 1), whose error estimate is
+/// given to each; the inner ones add their relative tolerance. Its pieces are split where
+/// R(z_2) changes form (`Cubature::outer_breakpoints`: there the integrand has a kink or a
+/// √ behaviour) and each is mapped by z_2 = a + (b − a)(3u² − 2u³), which makes a √ at
+/// its ends smooth: the integrand is then smooth on each piece.
 ///
 /// With `closed_form` and a linear-Gaussian model ([`LinearGaussianCase::of`]) m, the inner
 /// w-integral and the x-integral of A_2 are closed forms (the module docs); otherwise (and
@@ -63,14 +66,28 @@ pub(super) fn quadrature2(
 ) -> Term {
     let cub = Cubature::new(m, p, scale_a, z_range, tol, closed_form);
     let mut terms = Vec::with_capacity(2);
-    let (cl, ch) = m.clutter_density.support();
-    let pts: Vec<f64> = (0..=8).map(|i| cl + (ch - cl) * i as f64 / 8.0).collect();
+    let pts = cub.outer_breakpoints(m.clutter_density.support());
     let control = Control::new(
         Rule::G10K21,
-        Tolerance::AbsoluteAboveNoise(2.0 * cub.inner),
+        Tolerance::AbsoluteAboveNoise(0.5 * cub.inner),
         200,
     );
-    let outer = integrate_vec(|z2| cub.outer(z2, &mut terms), &pts, &control);
+    // z_2 = a + (b − a)(3u² − 2u³) on each piece [a, b] = [pts[i], pts[i + 1]], u ∈ [i, i + 1]:
+    // the Jacobian 6(b − a)u(1 − u) turns the √ behaviour of the section's width where it
+    // appears into a smooth one
+    let unit: Vec<f64> = (0..pts.len()).map(|i| i as f64).collect();
+    let smoothed = |x: f64| {
+        let i = (x.max(0.0) as usize).min(pts.len() - 2);
+        let u = x - i as f64;
+        let (a, b) = (pts[i], pts[i + 1]);
+        let jac = 6.0 * (b - a) * u * (1.0 - u);
+        if jac <= 0.0 {
+            return [0.0; 4];
+        }
+        cub.outer(a + (b - a) * (u * u * (3.0 - 2.0 * u)), &mut terms)
+            .map(|v| v * jac)
+    };
+    let outer = integrate_vec(smoothed, &unit, &control);
     let (v, err) = (outer.value, outer.error);
     let inner = cub.inner;
     let (w, a, null) = (v[1].clamp(0.0, 1.0), v[2], v[3].clamp(0.0, 1.0));
@@ -86,6 +103,12 @@ pub(super) fn quadrature2(
         null,
         enull,
     }
+}
+
+/// The breakpoints of [`quadrature2`]'s outer integral (`Cubature::outer_breakpoints`).
+#[cfg(test)]
+pub(super) fn outer_breakpoints(m: &ModelII<'_>, p: f64, z_range: (f64, f64)) -> Vec<f64> {
+    Cubature::new(m, p, 1.0, z_range, 1e-10, true).outer_breakpoints(m.clutter_density.support())
 }
 
 /// What the nested integrals of [`quadrature2`] share: the model, the MAP test's constants,
@@ -156,6 +179,90 @@ impl<'a> Cubature<'a> {
             })
             .collect();
         cub
+    }
+
+    /// The breakpoints of the outer integral over the clutter's support [cl, ch]: 8 equal
+    /// pieces, and the z_2 where the section R(z_2) changes form. R(z_2) is
+    /// {z_1 : β_1(z_1) ≥ k0 − β_1(z_2)}, β_1 = r P̄o m/v, so it changes form where
+    /// β_1(z_2) = k0 − b for b = 0 (K = 0: the whole range) and b a critical value of β_1
+    /// (a local extremum, or its value at an end of the clutter's support): there the
+    /// section appears, splits or reaches an end, and the outer integrand has a kink or a
+    /// √ behaviour.
+    fn outer_breakpoints(&self, (cl, ch): (f64, f64)) -> Vec<f64> {
+        let mut pts: Vec<f64> = (0..=8).map(|i| cl + (ch - cl) * i as f64 / 8.0).collect();
+        let grid = &self.grid;
+        let beta = |z: f64| {
+            let v = self.lambda * self.clutter.pdf(z);
+            if v > 0.0 {
+                self.rp * self.marginal(z) / v
+            } else {
+                f64::INFINITY
+            }
+        };
+        let on = |i: usize| grid[i].1 > 0.0;
+        let b_at = |i: usize| self.rp * grid[i].0 / grid[i].1;
+        let mut critical = alloc::vec![0.0];
+        let cell = (self.z.1 - self.z.0) / CELLS as f64;
+        for i in 0..=CELLS {
+            if !on(i) {
+                continue;
+            }
+            let left = i > 0 && on(i - 1);
+            let right = i < CELLS && on(i + 1);
+            if !left || !right {
+                // an end of a run where v > 0: the clutter's support's end when it is within
+                // a cell (β_1 there exactly), else the node
+                let near = [cl, ch]
+                    .into_iter()
+                    .find(|&e| fns::abs(e - self.node(i)) <= cell && beta(e).is_finite());
+                critical.push(near.map_or(b_at(i), beta));
+                continue;
+            }
+            let (bl, b, br) = (b_at(i - 1), b_at(i), b_at(i + 1));
+            let sign = if b > bl && b >= br {
+                -1.0
+            } else if b < bl && b <= br {
+                1.0
+            } else {
+                continue;
+            };
+            let (_, v) = golden_section(|z| sign * beta(z), self.node(i - 1), self.node(i + 1), 80);
+            critical.push(sign * v);
+        }
+        let (zl, zh) = self.z;
+        for c in critical {
+            let t = self.k0 - c;
+            if !(t > 0.0 && t.is_finite()) {
+                continue;
+            }
+            let above = |mz: f64, vz: f64| self.rp * mz - t * vz >= 0.0;
+            for i in 1..=CELLS {
+                if !(on(i - 1) && on(i)) {
+                    continue;
+                }
+                let left_above = above(grid[i - 1].0, grid[i - 1].1);
+                if left_above == above(grid[i].0, grid[i].1) {
+                    continue;
+                }
+                let z = bisect(
+                    |mid| {
+                        let v = self.lambda * self.clutter.pdf(mid);
+                        above(self.marginal(mid), v) == left_above
+                    },
+                    self.node(i - 1),
+                    self.node(i),
+                    1e-11 * (zh - zl),
+                    usize::MAX,
+                );
+                if z > cl && z < ch {
+                    pts.push(z);
+                }
+            }
+        }
+        pts.sort_by(f64::total_cmp);
+        let min_gap = 1e-9 * (ch - cl);
+        pts.dedup_by(|b, a| *b - *a <= min_gap);
+        pts
     }
 
     /// Node i of the scan.

@@ -1,11 +1,12 @@
 //! Tests of Theorem 2 (22)–(26) of paper 002: the n = 2 cubature against the Monte Carlo and a
 //! brute grid sum, the methods reported per cardinality, and the series' cut and η2 bracket.
 
-use super::cubature::quadrature2;
+use super::cubature::{outer_breakpoints, quadrature2};
 use super::monte_carlo::{Table, monte_carlo};
 use super::*;
 use crate::bounds::model::{Density1, Detection, LinearGaussian};
 use crate::math::rng::seeded;
+use core::f64::consts::PI;
 
 struct Case {
     prior: Density1,
@@ -137,6 +138,43 @@ fn thm2_n2_cubature_agrees_with_a_fine_grid_sum() {
         "null2: grid {null} vs quadrature {}",
         q.null
     );
+}
+
+/// The outer breakpoints of the n = 2 cubature with uniform clutter on [cl, ch] and
+/// m = N(1, 5): β_1 = r P̄o m/v has its maximum at 1 and its other critical values at cl and
+/// ch, so R(z_2) changes form where β_1(z_2) = k0 − b, b ∈ {0, β_1(1), β_1(cl), β_1(ch)}, at
+/// z_2 = 1 ± (−10 ln((k0 − b) v √(10π)/(r P̄o)))^{1/2}; the breakpoints are the 8 equal
+/// pieces' nodes and exactly these, for a model where the section appears inside (r 0.3) and
+/// one where it is the whole range near the middle (r 0.6).
+#[test]
+fn thm2_n2_outer_breakpoints_are_where_the_section_changes_form() {
+    for (r, p, lambda) in [(0.6, 0.8, 1.0), (0.3, 0.9, 2.0)] {
+        let (cl, ch) = (-10.0, 10.0);
+        let c = case(p, Density1::uniform(cl, ch).unwrap());
+        let m = model(&c, r, lambda);
+        let pts = outer_breakpoints(&m, p, measurement_range(&m));
+        let (rp, k0, v) = (r * p, (1.0 - r) - r * (1.0 - p), lambda / (ch - cl));
+        let beta =
+            |z: f64| rp * fns::exp(-0.1 * (z - 1.0) * (z - 1.0)) / (fns::sqrt(10.0 * PI) * v);
+        let mut expected = Vec::new();
+        for b in [0.0, beta(1.0), beta(cl), beta(ch)] {
+            let arg = (k0 - b) * v * fns::sqrt(10.0 * PI) / rp;
+            if arg > 0.0 && arg < 1.0 {
+                let h = fns::sqrt(-10.0 * fns::ln(arg));
+                expected.extend([1.0 - h, 1.0 + h].into_iter().filter(|&z| z > cl && z < ch));
+            }
+        }
+        std::println!("r {r}: breakpoints {pts:?}, expected {expected:?}");
+        assert!(!expected.is_empty());
+        for z in &expected {
+            let near = pts
+                .iter()
+                .map(|q| fns::abs(q - z))
+                .fold(f64::INFINITY, f64::min);
+            assert!(near < 1e-8, "r {r}: no breakpoint at {z} (nearest {near})");
+        }
+        assert_eq!(pts.len(), 9 + expected.len(), "r {r}: {pts:?}");
+    }
 }
 
 /// (25) in the linear-Gaussian case: the n = 2 terms with the x-integrals in closed form
