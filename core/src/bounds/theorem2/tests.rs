@@ -414,3 +414,36 @@ fn thm2_logistic_normal_agrees_with_adaptive_quadrature() {
     }
     assert!(worst <= 1.0, "worst {worst}");
 }
+
+/// m(z) in the linear-Gaussian case is the closed form N(z; a μ + b, a² P + R) (the m of
+/// Lemma 1's β, paper 002): equal to the quadrature of ∫ f P_o g dx / P̄o to 1e-9 of its peak,
+/// for several a, b, R, μ, P and z across ±8 standard deviations of m.
+#[test]
+fn thm2_marginal_in_closed_form_equals_its_quadrature() {
+    for (mu, var, p, a, b, r) in [
+        (1.0, 4.0, 0.8, 1.0, 0.0, 1.0),
+        (-2.0, 0.5, 0.6, -2.0, 0.5, 0.5),
+        (0.5, 9.0, 1.0, 0.5, 1.0, 2.0),
+    ] {
+        let prior = Density1::gaussian(mu, var).unwrap();
+        let obs = LinearGaussian::new(Detection::constant(p).unwrap(), a, b, r).unwrap();
+        let (mean, sd) = (a * mu + b, fns::sqrt(a * a * var + r));
+        let peak = 1.0 / (sd * fns::sqrt(2.0 * PI));
+        for i in 0..=32 {
+            let z = mean + sd * (-8.0 + 0.5 * i as f64);
+            let closed = marginal(&prior, &obs, p, z, 1e-10);
+            let (xl, xh) = prior.support();
+            let (quad, _) = crate::bounds::theorem::integrate(
+                &mut |x| prior.pdf(x) * obs.detection(x) * obs.likelihood(z, x),
+                xl,
+                xh,
+                1e-12,
+            );
+            let quad = quad / p;
+            assert!(
+                fns::abs(closed - quad) <= 1e-9 * peak,
+                "μ {mu} P {var} a {a} b {b} R {r} z {z}: closed {closed} vs quadrature {quad}"
+            );
+        }
+    }
+}
