@@ -111,6 +111,12 @@ pub(super) fn outer_breakpoints(m: &ModelII<'_>, p: f64, z_range: (f64, f64)) ->
     Cubature::new(m, p, 1.0, z_range, 1e-10, true).outer_breakpoints(m.clutter_density.support())
 }
 
+/// The MAP region's section {z_1 : r P̄o m(z_1) − K v(z_1) ≥ 0} (`Cubature::section`).
+#[cfg(test)]
+pub(super) fn section(m: &ModelII<'_>, p: f64, z_range: (f64, f64), k: f64) -> Vec<(f64, f64)> {
+    Cubature::new(m, p, 1.0, z_range, 1e-10, true).section(k)
+}
+
 /// What the nested integrals of [`quadrature2`] share: the model, the MAP test's constants,
 /// the ranges, and m and v tabulated on the scan's grid.
 struct Cubature<'a> {
@@ -135,6 +141,10 @@ struct Cubature<'a> {
     o: (f64, f64),
     /// (m, v) at the scan's nodes.
     grid: Vec<(f64, f64)>,
+    /// The local extrema of β_1 = r P̄o m/v between the scan's nodes where v > 0: (the node i
+    /// where the scan sees one, the point z in [node i − 1, node i + 1] where it is (golden
+    /// section), β_1(z), whether it is a maximum).
+    extrema: Vec<(usize, f64, f64, bool)>,
     /// The closed forms of the linear-Gaussian case, when they are used.
     lg: Option<LinearGaussianCase>,
 }
@@ -166,6 +176,7 @@ impl<'a> Cubature<'a> {
             z,
             o: m.observation.z_range(x.0, x.1),
             grid: Vec::new(),
+            extrema: Vec::new(),
             lg: if closed_form {
                 LinearGaussianCase::of(m.prior, m.observation)
             } else {
@@ -178,7 +189,47 @@ impl<'a> Cubature<'a> {
                 (cub.marginal(z), cub.lambda * cub.clutter.pdf(z))
             })
             .collect();
+        cub.extrema = cub.extrema();
         cub
+    }
+
+    /// β_1(z) = r P̄o m(z)/v(z) (∞ where v = 0).
+    fn beta(&self, z: f64) -> f64 {
+        let v = self.lambda * self.clutter.pdf(z);
+        if v > 0.0 {
+            self.rp * self.marginal(z) / v
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// The local extrema of β_1 seen by the scan (a node above or below both neighbours, v > 0
+    /// at all three), each found by golden section between the neighbours.
+    fn extrema(&self) -> Vec<(usize, f64, f64, bool)> {
+        let grid = &self.grid;
+        let b_at = |i: usize| self.rp * grid[i].0 / grid[i].1;
+        let mut out = Vec::new();
+        for i in 1..CELLS {
+            if !(grid[i - 1].1 > 0.0 && grid[i].1 > 0.0 && grid[i + 1].1 > 0.0) {
+                continue;
+            }
+            let (bl, b, br) = (b_at(i - 1), b_at(i), b_at(i + 1));
+            let sign = if b > bl && b >= br {
+                -1.0
+            } else if b < bl && b <= br {
+                1.0
+            } else {
+                continue;
+            };
+            let (z, v) = golden_section(
+                |z| sign * self.beta(z),
+                self.node(i - 1),
+                self.node(i + 1),
+                80,
+            );
+            out.push((i, z, sign * v, sign < 0.0));
+        }
+        out
     }
 
     /// The breakpoints of the outer integral over the clutter's support [cl, ch]: 8 equal
@@ -191,43 +242,23 @@ impl<'a> Cubature<'a> {
     fn outer_breakpoints(&self, (cl, ch): (f64, f64)) -> Vec<f64> {
         let mut pts: Vec<f64> = (0..=8).map(|i| cl + (ch - cl) * i as f64 / 8.0).collect();
         let grid = &self.grid;
-        let beta = |z: f64| {
-            let v = self.lambda * self.clutter.pdf(z);
-            if v > 0.0 {
-                self.rp * self.marginal(z) / v
-            } else {
-                f64::INFINITY
-            }
-        };
+        let beta = |z: f64| self.beta(z);
         let on = |i: usize| grid[i].1 > 0.0;
         let b_at = |i: usize| self.rp * grid[i].0 / grid[i].1;
         let mut critical = alloc::vec![0.0];
+        critical.extend(self.extrema.iter().map(|e| e.2));
         let cell = (self.z.1 - self.z.0) / CELLS as f64;
         for i in 0..=CELLS {
-            if !on(i) {
-                continue;
-            }
             let left = i > 0 && on(i - 1);
             let right = i < CELLS && on(i + 1);
-            if !left || !right {
+            if on(i) && !(left && right) {
                 // an end of a run where v > 0: the clutter's support's end when it is within
                 // a cell (β_1 there exactly), else the node
                 let near = [cl, ch]
                     .into_iter()
                     .find(|&e| fns::abs(e - self.node(i)) <= cell && beta(e).is_finite());
                 critical.push(near.map_or(b_at(i), beta));
-                continue;
             }
-            let (bl, b, br) = (b_at(i - 1), b_at(i), b_at(i + 1));
-            let sign = if b > bl && b >= br {
-                -1.0
-            } else if b < bl && b <= br {
-                1.0
-            } else {
-                continue;
-            };
-            let (_, v) = golden_section(|z| sign * beta(z), self.node(i - 1), self.node(i + 1), 80);
-            critical.push(sign * v);
         }
         let (zl, zh) = self.z;
         for c in critical {
@@ -310,7 +341,7 @@ impl<'a> Cubature<'a> {
         for (i, g) in grid.iter().enumerate().skip(1) {
             let inside = self.inside(k, g.0, g.1);
             if inside != prev_in {
-                let edge = self.edge(k, i, prev_in);
+                let edge = self.edge(k, self.node(i - 1), self.node(i), prev_in);
                 if inside {
                     start = Some(edge);
                 } else if let Some(s) = start.take() {
@@ -322,19 +353,33 @@ impl<'a> Cubature<'a> {
         if let Some(s) = start {
             out.push((s, zh));
         }
+        // a section narrower than a cell around a maximum of β_1 the scan's nodes miss
+        let mut added = false;
+        for &(i, z, _, is_max) in &self.extrema {
+            let at = |z: f64| self.inside(k, self.marginal(z), self.lambda * self.clutter.pdf(z));
+            if is_max && !self.inside(k, grid[i].0, grid[i].1) && at(z) {
+                let lo = self.edge(k, self.node(i - 1), z, false);
+                let hi = self.edge(k, z, self.node(i + 1), true);
+                out.push((lo, hi));
+                added = true;
+            }
+        }
+        if added {
+            out.sort_by(|a, b| a.0.total_cmp(&b.0));
+        }
         out
     }
 
-    /// The section's edge in scan cell [i − 1, i] by bisection (m by quadrature), where the
-    /// left node's side is `left_in`.
-    fn edge(&self, k: f64, i: usize, left_in: bool) -> f64 {
+    /// The section's edge in [lo, hi] (within a scan cell or two) by bisection (m by
+    /// quadrature), where lo's side is `left_in`.
+    fn edge(&self, k: f64, lo: f64, hi: f64, left_in: bool) -> f64 {
         let (zl, zh) = self.z;
         bisect(
             |mid| {
                 self.inside(k, self.marginal(mid), self.lambda * self.clutter.pdf(mid)) == left_in
             },
-            self.node(i - 1),
-            self.node(i),
+            lo,
+            hi,
             1e-11 * (zh - zl),
             usize::MAX,
         )

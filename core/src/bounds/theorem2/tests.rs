@@ -1,7 +1,7 @@
 //! Tests of Theorem 2 (22)–(26) of paper 002: the n = 2 cubature against the Monte Carlo and a
 //! brute grid sum, the methods reported per cardinality, and the series' cut and η2 bracket.
 
-use super::cubature::{outer_breakpoints, quadrature2};
+use super::cubature::{outer_breakpoints, quadrature2, section};
 use super::monte_carlo::{Table, monte_carlo};
 use super::*;
 use crate::bounds::model::{Density1, Detection, LinearGaussian};
@@ -174,6 +174,35 @@ fn thm2_n2_outer_breakpoints_are_where_the_section_changes_form() {
             assert!(near < 1e-8, "r {r}: no breakpoint at {z} (nearest {near})");
         }
         assert_eq!(pts.len(), 9 + expected.len(), "r {r}: {pts:?}");
+    }
+}
+
+/// The section of the MAP region {z_1 : r P̄o m(z_1) ≥ K v(z_1)} just below the top of
+/// β_1 = r P̄o m/v, narrower than the scan's cell (clutter U[−60, 49], m = N(1, 5), the peak at 1
+/// between two of the scan's nodes): the interval 1 ± (−10 ln(K/β_1(1)))^{1/2}, not empty.
+#[test]
+fn thm2_n2_a_section_narrower_than_the_scan_is_found() {
+    let (r, p, lambda, cl, ch) = (0.6, 0.8, 1.0, -60.0, 49.0);
+    let c = case(p, Density1::uniform(cl, ch).unwrap());
+    let m = model(&c, r, lambda);
+    let range = measurement_range(&m);
+    let cell = (range.1 - range.0) / 512.0;
+    let t = (1.0 - range.0) / cell;
+    assert!(
+        fns::abs(t - libm::round(t)) > 0.1,
+        "the peak is a node: {t}"
+    );
+    let top = r * p / (fns::sqrt(10.0 * PI) * lambda / (ch - cl));
+    for drop in [1e-6, 1e-4] {
+        let k = top * (1.0 - drop);
+        let h = fns::sqrt(-10.0 * fns::ln(1.0 - drop));
+        assert!(2.0 * h < cell);
+        let s = section(&m, p, range, k);
+        assert_eq!(s.len(), 1, "drop {drop}: {s:?}");
+        assert!(
+            fns::abs(s[0].0 - (1.0 - h)) < 1e-8 && fns::abs(s[0].1 - (1.0 + h)) < 1e-8,
+            "drop {drop}: {s:?} vs 1 ± {h}"
+        );
     }
 }
 
