@@ -34,7 +34,7 @@ pub struct TheoremOptions {
     /// well; values above 2 act as 2); every larger n is Monte Carlo. 0, the default, is
     /// automatic ([`TheoremOptions::quadrature_cardinality_for`]): 2 in the linear-Gaussian
     /// case ([`is_linear_gaussian`](crate::bounds::is_linear_gaussian)), where the cubature's
-    /// x-integrals are closed forms (10–100 ms a call natively, release), 1 otherwise (the
+    /// x-integrals are closed forms (3–35 ms a call natively, release), 1 otherwise (the
     /// general cubature costs 0.5–5.4 s a call, against ~50 ms for its Monte Carlo).
     pub quadrature_cardinality: usize,
 }
