@@ -328,7 +328,10 @@ impl<'a> Cubature<'a> {
         self.rp * mz - k * vz >= 0.0
     }
 
-    /// The section {z_1 : r P̄o m(z_1) − K v(z_1) ≥ 0} as intervals.
+    /// The section {z_1 : r P̄o m(z_1) − K v(z_1) ≥ 0} as intervals: the sign changes of the
+    /// scan's nodes, each edge by bisection, and an interval around each maximum of β_1
+    /// that lies inside while its node does not (narrower than a cell, which the scan
+    /// alone would miss).
     fn section(&self, k: f64) -> Vec<(f64, f64)> {
         let (zl, zh) = self.z;
         if k <= 0.0 {
