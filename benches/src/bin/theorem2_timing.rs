@@ -6,7 +6,28 @@
 //! For each model prints the median milliseconds of `theorem2` with only n = 1
 //! (`max_clutter` 0), with n = 1 and the n = 2 cubature (`quadrature_cardinality` 2,
 //! `max_clutter` 1: no Monte Carlo), their difference (the n = 2 cubature's time), and the
-//! n = 2 terms (w_2, J'_2⁻¹, null_2 with their error estimates).
+//! n = 2 terms (w_2, J'_2⁻¹, null_2 with their error estimates). Then the median time of the
+//! 21-point Theorem 2 curve of web/bounds.html (prior N(0.5, 4), g = N(x, 1), P_o 0.8,
+//! clutter N(0, 25) of rate λ ∈ {1, 3}, r = 0, 0.05, …, 1, 2000 Monte Carlo samples for
+//! n ≥ 3, the default options otherwise), with `quadrature_cardinality` 1 and 2.
+//!
+//! Medians of 5 (ms, x86-64 release, 2 shared cores, load average 1.8–2.5), before and after
+//! the n = 2 cubature's outer breakpoints (where the MAP section changes form) and its
+//! narrow-section fix, and m(z) in closed form for n = 1 and the Monte Carlo's table:
+//!
+//! | model (prior N(1, 4), g = N(x, 1)) | n = 2 before | n = 2 after | n = 1 before | n = 1 after |
+//! |---|---|---|---|---|
+//! | r 0.6, P_o 0.8, λ 1, U[−10, 10] | 63.4 | 24.3 | 5.4 | 0.21 |
+//! | r 0.3, P_o 0.9, λ 2, U[−10, 10] | 16.0 | 3.6 | 4.7 | 0.15 |
+//! | r 0.5, P_o 0.7, λ 0.5, N(0, 9) | 41.6 | 17.5 | 4.7 | 0.11 |
+//! | r 0.8, P_o 0.95, λ 3, U[−20, 20] | 101.6 | 19.8 | 5.3 | 0.20 |
+//!
+//! | bounds page curve, 21 points | before | after | wasm (Node) after |
+//! |---|---|---|---|
+//! | λ 1, `quadrature_cardinality` 1 | 619 | 351 | 354 |
+//! | λ 1, default (2) | 1925 | 517 | 503 (2.1–2.2 s before) |
+//! | λ 3, `quadrature_cardinality` 1 | 938 | 686 | 703 |
+//! | λ 3, default (2) | 2041 | 837 | 871 |
 use fisst::bounds::{
     Density1, Detection, JdeBound, LinearGaussian, ModelII, TheoremOptions, theorem2,
 };
@@ -73,5 +94,41 @@ fn main() {
             c.clutter_null,
             c.clutter_null_error
         );
+    }
+    let prior = Density1::gaussian(0.5, 4.0).unwrap();
+    let obs = LinearGaussian::new(Detection::constant(0.8).unwrap(), 1.0, 0.0, 1.0).unwrap();
+    let clutter = Density1::gaussian(0.0, 25.0).unwrap();
+    for lambda in [1.0, 3.0] {
+        for qc in [1, 2] {
+            let (t, b) = median_ms(reps, || {
+                let mut last = None;
+                for i in 0..=20 {
+                    let m = ModelII {
+                        existence: i as f64 / 20.0,
+                        prior: &prior,
+                        observation: &obs,
+                        clutter_rate: lambda,
+                        clutter_density: &clutter,
+                        false_alarm_error: 6.0,
+                        miss_error: 8.0,
+                    };
+                    let s = TheoremOptions {
+                        quadrature_cardinality: qc,
+                        samples: 2000,
+                        seed: 4 + i as u64,
+                        ..TheoremOptions::default()
+                    };
+                    last = Some(theorem2(&m, &s).unwrap());
+                }
+                last.expect("21 points")
+            });
+            println!(
+                "bounds page curve, λ {lambda}, quadrature_cardinality {qc}: 21 points {t:.1} ms \
+                 (at r = 1: bound {:.6} ± {:.1e}, {} cardinalities)",
+                b.assembled.bound,
+                b.error,
+                b.cardinalities.len()
+            );
+        }
     }
 }

@@ -491,7 +491,7 @@ pub struct JdeBoundOptions {
     pub seed: Option<u64>,
     /// Model II with clutter: the largest |Z| = n integrated by deterministic quadrature, 1
     /// or 2 (also n = 2, by 2D cubature over Z², Theorem 2); default 2 for a linear-Gaussian
-    /// model (Gaussian prior, constant P_o: 10–100 ms native), 1 otherwise (the general
+    /// model (Gaussian prior, constant P_o: 3–35 ms native), 1 otherwise (the general
     /// cubature takes seconds, not for sliders).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub quadrature_cardinality: Option<usize>,

@@ -24,7 +24,7 @@ use super::{ModelII, Term, information_density};
 use crate::bounds::model::{Density, Observation, normal_mass, normal_pdf};
 use crate::bounds::theorem::inverse_information;
 use crate::math::fns;
-use crate::math::optimise::bisect;
+use crate::math::optimise::{bisect, golden_section};
 use crate::math::quadrature::{
     Control, Rule, Tolerance, integrate, integrate_equal_pieces as adaptive, integrate_vec,
 };
@@ -46,9 +46,12 @@ const CELLS: usize = 512;
 /// region's section at z_2: for each outer node it is found by root-finding on
 /// r P̄o m(z_1) − K v(z_1) (a 512-cell scan of tabulated m and v, then bisection with m by
 /// quadrature), and the inner integrals are split at its ends. The outer integral is
-/// adaptive G10/K21 on the sum w + null + A/(A_1/w_1) (all ≥ 0; A_1/w_1 the information
-/// per unit of detected mass of n = 1), whose error estimate is given to
-/// each; the inner ones add their relative tolerance.
+/// adaptive G10/K21 to half the inner tolerance on the sum w + null + A/(A_1/w_1) (all ≥ 0;
+/// A_1/w_1 the information per unit of detected mass of n = 1), whose error estimate is
+/// given to each; the inner ones add their relative tolerance. Its pieces are split where
+/// R(z_2) changes form (`Cubature::outer_breakpoints`: there the integrand has a kink or a
+/// √ behaviour) and each is mapped by z_2 = a + (b − a)(3u² − 2u³), which makes a √ at
+/// its ends smooth: the integrand is then smooth on each piece.
 ///
 /// With `closed_form` and a linear-Gaussian model ([`LinearGaussianCase::of`]) m, the inner
 /// w-integral and the x-integral of A_2 are closed forms (the module docs); otherwise (and
@@ -63,14 +66,28 @@ pub(super) fn quadrature2(
 ) -> Term {
     let cub = Cubature::new(m, p, scale_a, z_range, tol, closed_form);
     let mut terms = Vec::with_capacity(2);
-    let (cl, ch) = m.clutter_density.support();
-    let pts: Vec<f64> = (0..=8).map(|i| cl + (ch - cl) * i as f64 / 8.0).collect();
+    let pts = cub.outer_breakpoints(m.clutter_density.support());
     let control = Control::new(
         Rule::G10K21,
-        Tolerance::AbsoluteAboveNoise(2.0 * cub.inner),
+        Tolerance::AbsoluteAboveNoise(0.5 * cub.inner),
         200,
     );
-    let outer = integrate_vec(|z2| cub.outer(z2, &mut terms), &pts, &control);
+    // z_2 = a + (b − a)(3u² − 2u³) on each piece [a, b] = [pts[i], pts[i + 1]], u ∈ [i, i + 1]:
+    // the Jacobian 6(b − a)u(1 − u) turns the √ behaviour of the section's width where it
+    // appears into a smooth one
+    let unit: Vec<f64> = (0..pts.len()).map(|i| i as f64).collect();
+    let smoothed = |x: f64| {
+        let i = (x.max(0.0) as usize).min(pts.len() - 2);
+        let u = x - i as f64;
+        let (a, b) = (pts[i], pts[i + 1]);
+        let jac = 6.0 * (b - a) * u * (1.0 - u);
+        if jac <= 0.0 {
+            return [0.0; 4];
+        }
+        cub.outer(a + (b - a) * (u * u * (3.0 - 2.0 * u)), &mut terms)
+            .map(|v| v * jac)
+    };
+    let outer = integrate_vec(smoothed, &unit, &control);
     let (v, err) = (outer.value, outer.error);
     let inner = cub.inner;
     let (w, a, null) = (v[1].clamp(0.0, 1.0), v[2], v[3].clamp(0.0, 1.0));
@@ -86,6 +103,18 @@ pub(super) fn quadrature2(
         null,
         enull,
     }
+}
+
+/// The breakpoints of [`quadrature2`]'s outer integral (`Cubature::outer_breakpoints`).
+#[cfg(test)]
+pub(super) fn outer_breakpoints(m: &ModelII<'_>, p: f64, z_range: (f64, f64)) -> Vec<f64> {
+    Cubature::new(m, p, 1.0, z_range, 1e-10, true).outer_breakpoints(m.clutter_density.support())
+}
+
+/// The MAP region's section {z_1 : r P̄o m(z_1) − K v(z_1) ≥ 0} (`Cubature::section`).
+#[cfg(test)]
+pub(super) fn section(m: &ModelII<'_>, p: f64, z_range: (f64, f64), k: f64) -> Vec<(f64, f64)> {
+    Cubature::new(m, p, 1.0, z_range, 1e-10, true).section(k)
 }
 
 /// What the nested integrals of [`quadrature2`] share: the model, the MAP test's constants,
@@ -112,6 +141,10 @@ struct Cubature<'a> {
     o: (f64, f64),
     /// (m, v) at the scan's nodes.
     grid: Vec<(f64, f64)>,
+    /// The local extrema of β_1 = r P̄o m/v between the scan's nodes where v > 0: (the node i
+    /// where the scan sees one, the point z in [node i − 1, node i + 1] where it is (golden
+    /// section), β_1(z), whether it is a maximum).
+    extrema: Vec<(usize, f64, f64, bool)>,
     /// The closed forms of the linear-Gaussian case, when they are used.
     lg: Option<LinearGaussianCase>,
 }
@@ -143,6 +176,7 @@ impl<'a> Cubature<'a> {
             z,
             o: m.observation.z_range(x.0, x.1),
             grid: Vec::new(),
+            extrema: Vec::new(),
             lg: if closed_form {
                 LinearGaussianCase::of(m.prior, m.observation)
             } else {
@@ -155,7 +189,111 @@ impl<'a> Cubature<'a> {
                 (cub.marginal(z), cub.lambda * cub.clutter.pdf(z))
             })
             .collect();
+        cub.extrema = cub.extrema();
         cub
+    }
+
+    /// β_1(z) = r P̄o m(z)/v(z) (∞ where v = 0).
+    fn beta(&self, z: f64) -> f64 {
+        let v = self.lambda * self.clutter.pdf(z);
+        if v > 0.0 {
+            self.rp * self.marginal(z) / v
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// The local extrema of β_1 seen by the scan (a node above or below both neighbours, v > 0
+    /// at all three), each found by golden section between the neighbours.
+    fn extrema(&self) -> Vec<(usize, f64, f64, bool)> {
+        let grid = &self.grid;
+        let b_at = |i: usize| self.rp * grid[i].0 / grid[i].1;
+        let mut out = Vec::new();
+        for i in 1..CELLS {
+            if !(grid[i - 1].1 > 0.0 && grid[i].1 > 0.0 && grid[i + 1].1 > 0.0) {
+                continue;
+            }
+            let (bl, b, br) = (b_at(i - 1), b_at(i), b_at(i + 1));
+            let sign = if b > bl && b >= br {
+                -1.0
+            } else if b < bl && b <= br {
+                1.0
+            } else {
+                continue;
+            };
+            let (z, v) = golden_section(
+                |z| sign * self.beta(z),
+                self.node(i - 1),
+                self.node(i + 1),
+                80,
+            );
+            out.push((i, z, sign * v, sign < 0.0));
+        }
+        out
+    }
+
+    /// The breakpoints of the outer integral over the clutter's support [cl, ch]: 8 equal
+    /// pieces, and the z_2 where the section R(z_2) changes form. R(z_2) is
+    /// {z_1 : β_1(z_1) ≥ k0 − β_1(z_2)}, β_1 = r P̄o m/v, so it changes form where
+    /// β_1(z_2) = k0 − b for b = 0 (K = 0: the whole range) and b a critical value of β_1
+    /// (a local extremum, or its value at an end of the clutter's support): there the
+    /// section appears, splits or reaches an end, and the outer integrand has a kink or a
+    /// √ behaviour.
+    fn outer_breakpoints(&self, (cl, ch): (f64, f64)) -> Vec<f64> {
+        let mut pts: Vec<f64> = (0..=8).map(|i| cl + (ch - cl) * i as f64 / 8.0).collect();
+        let grid = &self.grid;
+        let beta = |z: f64| self.beta(z);
+        let on = |i: usize| grid[i].1 > 0.0;
+        let b_at = |i: usize| self.rp * grid[i].0 / grid[i].1;
+        let mut critical = alloc::vec![0.0];
+        critical.extend(self.extrema.iter().map(|e| e.2));
+        let cell = (self.z.1 - self.z.0) / CELLS as f64;
+        for i in 0..=CELLS {
+            let left = i > 0 && on(i - 1);
+            let right = i < CELLS && on(i + 1);
+            if on(i) && !(left && right) {
+                // an end of a run where v > 0: the clutter's support's end when it is within
+                // a cell (β_1 there exactly), else the node
+                let near = [cl, ch]
+                    .into_iter()
+                    .find(|&e| fns::abs(e - self.node(i)) <= cell && beta(e).is_finite());
+                critical.push(near.map_or(b_at(i), beta));
+            }
+        }
+        let (zl, zh) = self.z;
+        for c in critical {
+            let t = self.k0 - c;
+            if !(t > 0.0 && t.is_finite()) {
+                continue;
+            }
+            let above = |mz: f64, vz: f64| self.rp * mz - t * vz >= 0.0;
+            for i in 1..=CELLS {
+                if !(on(i - 1) && on(i)) {
+                    continue;
+                }
+                let left_above = above(grid[i - 1].0, grid[i - 1].1);
+                if left_above == above(grid[i].0, grid[i].1) {
+                    continue;
+                }
+                let z = bisect(
+                    |mid| {
+                        let v = self.lambda * self.clutter.pdf(mid);
+                        above(self.marginal(mid), v) == left_above
+                    },
+                    self.node(i - 1),
+                    self.node(i),
+                    1e-11 * (zh - zl),
+                    usize::MAX,
+                );
+                if z > cl && z < ch {
+                    pts.push(z);
+                }
+            }
+        }
+        pts.sort_by(f64::total_cmp);
+        let min_gap = 1e-9 * (ch - cl);
+        pts.dedup_by(|b, a| *b - *a <= min_gap);
+        pts
     }
 
     /// Node i of the scan.
@@ -190,7 +328,10 @@ impl<'a> Cubature<'a> {
         self.rp * mz - k * vz >= 0.0
     }
 
-    /// The section {z_1 : r P̄o m(z_1) − K v(z_1) ≥ 0} as intervals.
+    /// The section {z_1 : r P̄o m(z_1) − K v(z_1) ≥ 0} as intervals: the sign changes of the
+    /// scan's nodes, each edge by bisection, and an interval around each maximum of β_1
+    /// that lies inside while its node does not (narrower than a cell, which the scan
+    /// alone would miss).
     fn section(&self, k: f64) -> Vec<(f64, f64)> {
         let (zl, zh) = self.z;
         if k <= 0.0 {
@@ -203,7 +344,7 @@ impl<'a> Cubature<'a> {
         for (i, g) in grid.iter().enumerate().skip(1) {
             let inside = self.inside(k, g.0, g.1);
             if inside != prev_in {
-                let edge = self.edge(k, i, prev_in);
+                let edge = self.edge(k, self.node(i - 1), self.node(i), prev_in);
                 if inside {
                     start = Some(edge);
                 } else if let Some(s) = start.take() {
@@ -215,19 +356,33 @@ impl<'a> Cubature<'a> {
         if let Some(s) = start {
             out.push((s, zh));
         }
+        // a section narrower than a cell around a maximum of β_1 the scan's nodes miss
+        let mut added = false;
+        for &(i, z, _, is_max) in &self.extrema {
+            let at = |z: f64| self.inside(k, self.marginal(z), self.lambda * self.clutter.pdf(z));
+            if is_max && !self.inside(k, grid[i].0, grid[i].1) && at(z) {
+                let lo = self.edge(k, self.node(i - 1), z, false);
+                let hi = self.edge(k, z, self.node(i + 1), true);
+                out.push((lo, hi));
+                added = true;
+            }
+        }
+        if added {
+            out.sort_by(|a, b| a.0.total_cmp(&b.0));
+        }
         out
     }
 
-    /// The section's edge in scan cell [i − 1, i] by bisection (m by quadrature), where the
-    /// left node's side is `left_in`.
-    fn edge(&self, k: f64, i: usize, left_in: bool) -> f64 {
+    /// The section's edge in [lo, hi] (within a scan cell or two) by bisection (m by
+    /// quadrature), where lo's side is `left_in`.
+    fn edge(&self, k: f64, lo: f64, hi: f64, left_in: bool) -> f64 {
         let (zl, zh) = self.z;
         bisect(
             |mid| {
                 self.inside(k, self.marginal(mid), self.lambda * self.clutter.pdf(mid)) == left_in
             },
-            self.node(i - 1),
-            self.node(i),
+            lo,
+            hi,
             1e-11 * (zh - zl),
             usize::MAX,
         )

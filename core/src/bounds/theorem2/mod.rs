@@ -4,7 +4,7 @@
 //! root-finding) or by Monte Carlo, as [`TheoremOptions::quadrature_cardinality`] says: by
 //! default the cubature in the linear-Gaussian case (Gaussian prior, linear-Gaussian g with
 //! constant P_o, any clutter density), where its x-integrals are closed forms and a call takes
-//! 10–100 ms natively, and Monte Carlo otherwise (the general cubature takes seconds); n ≥ 3
+//! 3–35 ms natively, and Monte Carlo otherwise (the general cubature takes seconds); n ≥ 3
 //! by Monte Carlo over Z^n (error: one standard error).
 //! Each [`Cardinality::method`] says which.
 //! Truncation: the series stops at N clutter points as [`TheoremOptions::series_tolerance`] and

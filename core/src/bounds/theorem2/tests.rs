@@ -1,11 +1,12 @@
 //! Tests of Theorem 2 (22)–(26) of paper 002: the n = 2 cubature against the Monte Carlo and a
 //! brute grid sum, the methods reported per cardinality, and the series' cut and η2 bracket.
 
-use super::cubature::quadrature2;
+use super::cubature::{outer_breakpoints, quadrature2, section};
 use super::monte_carlo::{Table, monte_carlo};
 use super::*;
 use crate::bounds::model::{Density1, Detection, LinearGaussian};
 use crate::math::rng::seeded;
+use core::f64::consts::PI;
 
 struct Case {
     prior: Density1,
@@ -137,6 +138,72 @@ fn thm2_n2_cubature_agrees_with_a_fine_grid_sum() {
         "null2: grid {null} vs quadrature {}",
         q.null
     );
+}
+
+/// The outer breakpoints of the n = 2 cubature with uniform clutter on [cl, ch] and
+/// m = N(1, 5): β_1 = r P̄o m/v has its maximum at 1 and its other critical values at cl and
+/// ch, so R(z_2) changes form where β_1(z_2) = k0 − b, b ∈ {0, β_1(1), β_1(cl), β_1(ch)}, at
+/// z_2 = 1 ± (−10 ln((k0 − b) v √(10π)/(r P̄o)))^{1/2}; the breakpoints are the 8 equal
+/// pieces' nodes and exactly these, for a model where the section appears inside (r 0.3) and
+/// one where it is the whole range near the middle (r 0.6).
+#[test]
+fn thm2_n2_outer_breakpoints_are_where_the_section_changes_form() {
+    for (r, p, lambda) in [(0.6, 0.8, 1.0), (0.3, 0.9, 2.0)] {
+        let (cl, ch) = (-10.0, 10.0);
+        let c = case(p, Density1::uniform(cl, ch).unwrap());
+        let m = model(&c, r, lambda);
+        let pts = outer_breakpoints(&m, p, measurement_range(&m));
+        let (rp, k0, v) = (r * p, (1.0 - r) - r * (1.0 - p), lambda / (ch - cl));
+        let beta =
+            |z: f64| rp * fns::exp(-0.1 * (z - 1.0) * (z - 1.0)) / (fns::sqrt(10.0 * PI) * v);
+        let mut expected = Vec::new();
+        for b in [0.0, beta(1.0), beta(cl), beta(ch)] {
+            let arg = (k0 - b) * v * fns::sqrt(10.0 * PI) / rp;
+            if arg > 0.0 && arg < 1.0 {
+                let h = fns::sqrt(-10.0 * fns::ln(arg));
+                expected.extend([1.0 - h, 1.0 + h].into_iter().filter(|&z| z > cl && z < ch));
+            }
+        }
+        std::println!("r {r}: breakpoints {pts:?}, expected {expected:?}");
+        assert!(!expected.is_empty());
+        for z in &expected {
+            let near = pts
+                .iter()
+                .map(|q| fns::abs(q - z))
+                .fold(f64::INFINITY, f64::min);
+            assert!(near < 1e-8, "r {r}: no breakpoint at {z} (nearest {near})");
+        }
+        assert_eq!(pts.len(), 9 + expected.len(), "r {r}: {pts:?}");
+    }
+}
+
+/// The section of the MAP region {z_1 : r P̄o m(z_1) ≥ K v(z_1)} just below the top of
+/// β_1 = r P̄o m/v, narrower than the scan's cell (clutter U[−60, 49], m = N(1, 5), the peak at 1
+/// between two of the scan's nodes): the interval 1 ± (−10 ln(K/β_1(1)))^{1/2}, not empty.
+#[test]
+fn thm2_n2_a_section_narrower_than_the_scan_is_found() {
+    let (r, p, lambda, cl, ch) = (0.6, 0.8, 1.0, -60.0, 49.0);
+    let c = case(p, Density1::uniform(cl, ch).unwrap());
+    let m = model(&c, r, lambda);
+    let range = measurement_range(&m);
+    let cell = (range.1 - range.0) / 512.0;
+    let t = (1.0 - range.0) / cell;
+    assert!(
+        fns::abs(t - libm::round(t)) > 0.1,
+        "the peak is a node: {t}"
+    );
+    let top = r * p / (fns::sqrt(10.0 * PI) * lambda / (ch - cl));
+    for drop in [1e-6, 1e-4] {
+        let k = top * (1.0 - drop);
+        let h = fns::sqrt(-10.0 * fns::ln(1.0 - drop));
+        assert!(2.0 * h < cell);
+        let s = section(&m, p, range, k);
+        assert_eq!(s.len(), 1, "drop {drop}: {s:?}");
+        assert!(
+            fns::abs(s[0].0 - (1.0 - h)) < 1e-8 && fns::abs(s[0].1 - (1.0 + h)) < 1e-8,
+            "drop {drop}: {s:?} vs 1 ± {h}"
+        );
+    }
 }
 
 /// (25) in the linear-Gaussian case: the n = 2 terms with the x-integrals in closed form
@@ -375,4 +442,37 @@ fn thm2_logistic_normal_agrees_with_adaptive_quadrature() {
         }
     }
     assert!(worst <= 1.0, "worst {worst}");
+}
+
+/// m(z) in the linear-Gaussian case is the closed form N(z; a μ + b, a² P + R) (the m of
+/// Lemma 1's β, paper 002): equal to the quadrature of ∫ f P_o g dx / P̄o to 1e-9 of its peak,
+/// for several a, b, R, μ, P and z across ±8 standard deviations of m.
+#[test]
+fn thm2_marginal_in_closed_form_equals_its_quadrature() {
+    for (mu, var, p, a, b, r) in [
+        (1.0, 4.0, 0.8, 1.0, 0.0, 1.0),
+        (-2.0, 0.5, 0.6, -2.0, 0.5, 0.5),
+        (0.5, 9.0, 1.0, 0.5, 1.0, 2.0),
+    ] {
+        let prior = Density1::gaussian(mu, var).unwrap();
+        let obs = LinearGaussian::new(Detection::constant(p).unwrap(), a, b, r).unwrap();
+        let (mean, sd) = (a * mu + b, fns::sqrt(a * a * var + r));
+        let peak = 1.0 / (sd * fns::sqrt(2.0 * PI));
+        for i in 0..=32 {
+            let z = mean + sd * (-8.0 + 0.5 * i as f64);
+            let closed = marginal(&prior, &obs, p, z, 1e-10);
+            let (xl, xh) = prior.support();
+            let (quad, _) = crate::bounds::theorem::integrate(
+                &mut |x| prior.pdf(x) * obs.detection(x) * obs.likelihood(z, x),
+                xl,
+                xh,
+                1e-12,
+            );
+            let quad = quad / p;
+            assert!(
+                fns::abs(closed - quad) <= 1e-9 * peak,
+                "μ {mu} P {var} a {a} b {b} R {r} z {z}: closed {closed} vs quadrature {quad}"
+            );
+        }
+    }
 }
