@@ -10,6 +10,16 @@
 //     same table as the native `RAYON_NUM_THREADS=1 target/release/control_table` with the same
 //     checksum of rewards and actions (FNV-1a over their bits), so the two runs can be compared
 //     row by row.
+//
+// Measured (h-exp, the kernel's own exp, issue 29): seeds 1–10, steps 1–12, load average
+// 1.3–1.9, run alternately with the package before it: worst 255–278 ms, mean 80.2–81.4 ms
+// (before: worst 277–339 ms, mean 83.4–101 ms); the same checksums as native
+// (e74298192fb1b66d, actions d0cbc2f3b0c64a8c). The module is built without simd128, so the
+// exp loop stays scalar in wasm and gains little over libm's; natively (two SSE2 lanes) the
+// mean is 45 ms, so Node is 1.8× one native thread. The control module alone rebuilt with
+// RUSTFLAGS="-C target-feature=+simd128" (not what scripts/build-pkg.sh does): the same
+// checksums, and at load average 1.7–2.9, alternately with the module without: worst
+// 186–267 ms, mean 60.6–75.5 ms (without: worst 308–364 ms, mean 93.5–98.2 ms).
 import * as os from 'node:os';
 import * as fisst from '../wasm/pkg/node.js';
 

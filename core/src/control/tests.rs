@@ -87,7 +87,9 @@ fn eq17_renyi_reward_matches_the_reference() {
 /// The rewards (17) of every action (−∞ outside the area) in the four settings of [`cases`],
 /// as f64 bits: computed by `renyi_rewards` at commit cdd158c (main before the kernel moved
 /// to `renyi_kernel.rs`), whose rewards were then also checked bit for bit against the
-/// per-particle evaluation of 2caa890 that the batched kernel replaced.
+/// per-particle evaluation of 2caa890 that the batched kernel replaced; re-pinned when the
+/// kernel's pair factors moved from libm's exp to [`crate::math::exp`] (issue 29): 12 of
+/// the 68 changed, by at most 7.4·10⁻¹⁶ relatively.
 const PINNED: [[u64; 17]; 4] = [
     [
         0x4003_778f_3789_f0dc,
@@ -99,7 +101,7 @@ const PINNED: [[u64; 17]; 4] = [
         0xfff0_0000_0000_0000,
         0xfff0_0000_0000_0000,
         0x4004_61b6_76cd_176f,
-        0x4001_a6ab_a240_a65d,
+        0x4001_a6ab_a240_a65e,
         0x4000_ae0a_a4e7_53a8,
         0x4000_c8b0_06e5_a5e0,
         0x4002_1c06_5210_644b,
@@ -111,17 +113,17 @@ const PINNED: [[u64; 17]; 4] = [
     [
         0x3fe3_8b7f_6743_56f7,
         0x3fe6_2e49_3c45_7ae5,
-        0x3fe6_dda0_d51b_52a5,
-        0x3fe5_9ea7_bab8_ee41,
-        0x3fe3_7db2_e4dc_ba06,
+        0x3fe6_dda0_d51b_52a6,
+        0x3fe5_9ea7_bab8_ee40,
+        0x3fe3_7db2_e4dc_ba04,
         0x3fe1_422f_018b_2975,
         0x3fe1_b0c8_5bd2_8e82,
-        0x3fe2_aa47_302b_fb32,
+        0x3fe2_aa47_302b_fb34,
         0x3fe3_d657_1ba0_36de,
         0x3fe8_ce8e_c3ca_e53f,
-        0x3fe8_25a3_9c43_bb95,
+        0x3fe8_25a3_9c43_bb97,
         0x3fe5_693a_4eed_a140,
-        0x3fe3_3111_4bdd_4ac6,
+        0x3fe3_3111_4bdd_4aca,
         0x3fde_6b62_132d_1953,
         0x3fe0_b73e_dc93_c1cf,
         0x3fe2_2897_bd7c_7ec2,
@@ -134,16 +136,16 @@ const PINNED: [[u64; 17]; 4] = [
         0x3ffc_f671_0385_91ba,
         0x3ffc_4e1a_82bd_b7f7,
         0x3ffe_e2ed_b49b_61b2,
-        0x4001_858a_ee1c_26e4,
-        0x4003_427e_4b90_9964,
+        0x4001_858a_ee1c_26e5,
+        0x4003_427e_4b90_9963,
         0x4003_a9ef_5b42_bcc2,
         0x4004_8c40_c36f_19c7,
         0x4001_610b_6ec9_742f,
-        0x3ffc_d8e2_0e2d_fb1d,
-        0x3ff7_7b7e_37e0_f51a,
+        0x3ffc_d8e2_0e2d_fb1e,
+        0x3ff7_7b7e_37e0_f517,
         0x3ffc_4b06_9aa4_a98c,
         0x4001_fb88_88ce_463a,
-        0x4005_1fcb_7393_b651,
+        0x4005_1fcb_7393_b650,
         0x4006_1e58_4f66_2214,
     ],
     [

@@ -1,8 +1,9 @@
-//! Numerical building blocks: float functions, compensated sums, linear assignment,
+//! Numerical building blocks: float functions (and the Rényi kernel's own exp), compensated sums, linear assignment,
 //! quadrature, special functions, optimisation and root finding, the portable seeded generator
 //! and its samplers.
 
 pub mod assignment;
+pub(crate) mod exp;
 pub mod fns;
 pub mod geometry;
 pub(crate) mod jv;
