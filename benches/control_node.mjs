@@ -14,12 +14,12 @@
 // Measured (h-exp, the kernel's own exp, issue 29): seeds 1–10, steps 1–12, load average
 // 1.3–1.9, run alternately with the package before it: worst 255–278 ms, mean 80.2–81.4 ms
 // (before: worst 277–339 ms, mean 83.4–101 ms); the same checksums as native
-// (e74298192fb1b66d, actions d0cbc2f3b0c64a8c). The module is built without simd128, so the
-// exp loop stays scalar in wasm and gains little over libm's; natively (two SSE2 lanes) the
-// mean is 45 ms, so Node is 1.8× one native thread. The control module alone rebuilt with
-// RUSTFLAGS="-C target-feature=+simd128" (not what scripts/build-pkg.sh does): the same
-// checksums, and at load average 1.7–2.9, alternately with the module without: worst
-// 186–267 ms, mean 60.6–75.5 ms (without: worst 308–364 ms, mean 93.5–98.2 ms).
+// (e74298192fb1b66d, actions d0cbc2f3b0c64a8c). That module was built without simd128, so the
+// exp loop stayed scalar in wasm (natively, two SSE2 lanes, the mean is 45 ms: Node 1.8× one
+// native thread). Since then every module is built with simd128 (.cargo/config.toml): the same
+// checksums, and at load average 2.4–2.8, alternately with the scalar package of the same
+// commit: worst 171–187 ms, mean 54.2–55.2 ms (scalar: worst 272–277 ms, mean 83.1–85.6 ms);
+// Node/native of the means 1.2×.
 import * as os from 'node:os';
 import * as fisst from '../wasm/pkg/node.js';
 
