@@ -8,7 +8,6 @@ use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, range_error, read, write};
 use crate::names::Renamed;
-use crate::types::mixture_out;
 use fisst::Error;
 use fisst::gaussian::GaussianMixture;
 use fisst::mixture::{merge_close, prune, runnalls};
@@ -219,7 +218,7 @@ pub fn reduce_mixture_js(
         }
         out = runnalls(&out, max).or_throw_in("options")?;
     }
-    write(&mixture_out(&out))
+    write(&out)
 }
 
 thread_local! {

@@ -123,26 +123,6 @@ pub struct MixtureComponent {
     pub cov: Vec<Vec<f64>>,
 }
 
-/// The covariance of `g` as nested rows.
-pub fn cov_rows(g: &CoreGaussian) -> Vec<Vec<f64>> {
-    let (n, p) = (g.dim(), g.cov());
-    (0..n)
-        .map(|i| (0..n).map(|j| p[(i, j)]).collect())
-        .collect()
-}
-
-/// A core mixture as results give it back.
-pub fn mixture_out(m: &GaussianMixture) -> Vec<MixtureComponent> {
-    m.components()
-        .iter()
-        .map(|(w, g)| MixtureComponent {
-            weight: *w,
-            mean: g.mean().as_slice().to_vec(),
-            cov: cov_rows(g),
-        })
-        .collect()
-}
-
 // The declarations of the core's `fisst::regions::Region` in the contract's form (TypeScript
 // only: the values are read and written as the core's `Region`, whose `ball` is the
 // contract's `disc` and whose polygon is given bare, `names_rule::ANY_PARENT` and `BARE`).
