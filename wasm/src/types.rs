@@ -173,8 +173,12 @@ pub enum Region {
     Complement(Box<Region>),
 }
 
+// The declarations of the core's `fisst::fov::MultiObjectDensity` in the contract's form
+// (TypeScript only: the values are read by the core).
+
 /// One hypothesis of a GLMB density: its weight and the Gaussians of its labels.
-#[derive(Clone, Debug, Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only
+#[derive(Tsify)]
 pub struct GlmbHypothesis {
     /// The hypothesis weight (all weights sum to 1).
     pub weight: f64,
@@ -184,7 +188,8 @@ pub struct GlmbHypothesis {
 }
 
 /// An i.i.d. cluster density: a cardinality pmf and one single-object density.
-#[derive(Clone, Debug, Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only
+#[derive(Tsify)]
 pub struct IidCluster {
     /// The cardinality pmf ρ(0), ρ(1), …: ρ(n) is the probability of n objects (sums to 1; at
     /// most 20,001 entries).
@@ -201,15 +206,12 @@ pub struct IidCluster {
 ///   (weights sum to 1).
 /// - `glmb`: one entry per hypothesis: its weight (all sum to 1) and the densities of its
 ///   labels.
-#[derive(Clone, Debug, Deserialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only
+#[derive(Tsify)]
 #[serde(rename_all = "camelCase")]
 pub enum MultiObjectDensity {
     /// `{ multiBernoulli: Bernoulli[] }`: one Bernoulli per potential object.
-    MultiBernoulli(
-        #[serde(with = "fisst::serde_shapes::bernoullis")]
-        #[tsify(type = "Bernoulli[]")]
-        Vec<(f64, CoreGaussian)>,
-    ),
+    MultiBernoulli(#[tsify(type = "Bernoulli[]")] Vec<(f64, CoreGaussian)>),
     /// `{ poisson: WeightedGaussian[] }`: the PHD (intensity) of a Poisson RFS.
     Poisson(#[tsify(type = "WeightedGaussian[]")] GaussianMixture),
     /// `{ iidCluster: { cardinality, density } }`: an i.i.d. cluster RFS.
