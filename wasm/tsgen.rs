@@ -276,6 +276,8 @@ impl Gen<'_> {
                 "vector" | "numbers" => "number[] | Float64Array".into(),
                 "rows_of_numbers" => "(number[] | Float64Array)[]".into(),
                 "point_sets" => "(number[] | Float64Array)[][]".into(),
+                // `[{ existence, mean, cov }, …]`, declared by the binding
+                "bernoullis" => "Bernoulli[]".into(),
                 "bytes" => "Uint8Array".into(),
                 other => {
                     self.warnings.push(format!("unknown `with` module {other}"));

@@ -178,7 +178,7 @@ pub struct FovVarianceMapOptions {
     pub multi_bernoulli: Vec<(f64, Gaussian)>,
     /// FoV width and height, finite and > 0 (a box centred on each grid point).
     pub fov_size: [f64; 2],
-    /// The grid of FoV centres; components × cells at most [`MAX_VARIANCE_MAP_WORK`].
+    /// The grid of FoV centres; components × cells at most 2e8 ([`MAX_VARIANCE_MAP_WORK`]).
     pub grid: Grid,
 }
 
