@@ -86,14 +86,8 @@ export interface NegativeInformationScenario {
 "#;
 
 // `splitForRegions` reads the core's own `SplitForRegionsOptions` (its TypeScript is generated
-// by build.rs from the core's source; its mixture is a `GaussianMixture`, declared here).
-#[wasm_bindgen(typescript_custom_section)]
-const GAUSSIAN_MIXTURE: &str = r#"
-/**
- * A Gaussian mixture: its components, weights ≥ 0 (the core's `GaussianMixture`).
- */
-export type GaussianMixture = WeightedGaussian[];
-"#;
+// by build.rs from the core's source; its mixture is a `GaussianMixture`, declared in
+// `types.rs`).
 
 /// A split library's key: (R, λ as bits, spacing).
 type LibraryKey = (usize, u64, Spacing);

@@ -111,6 +111,15 @@ pub struct Bernoulli {
     pub cov: Covariance,
 }
 
+// The core's `GaussianMixture` as the options that hold it are generated.
+#[wasm_bindgen::prelude::wasm_bindgen(typescript_custom_section)]
+const GAUSSIAN_MIXTURE: &str = r#"
+/**
+ * A Gaussian mixture: its components, weights ≥ 0 (the core's `GaussianMixture`).
+ */
+export type GaussianMixture = WeightedGaussian[];
+"#;
+
 /// A mixture component as results give it back: `cov` as nested rows. It can be passed back
 /// wherever a [`WeightedGaussian`] is taken.
 #[derive(Clone, Debug, Serialize, Tsify)]

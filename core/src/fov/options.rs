@@ -237,9 +237,10 @@ impl From<VarianceMap> for FovVarianceMapResult {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MixtureDensityGridOptions {
     /// The mixture Σ weight · N(mean, cov); components of 3 or more dimensions use their first
-    /// two (position) components.
+    /// two (position) components. Its peak, Σ weight / √det(2π cov), must stay below the
+    /// largest double (about 1.8e308; an error naming the weight that passes it).
     pub mixture: GaussianMixture,
-    /// The grid of positions; components × cells at most [`MAX_DENSITY_GRID_WORK`].
+    /// The grid of positions; components × cells at most 2.5e7 ([`MAX_DENSITY_GRID_WORK`]).
     pub grid: Grid,
 }
 
