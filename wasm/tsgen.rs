@@ -276,6 +276,8 @@ impl Gen<'_> {
                 "vector" | "numbers" => "number[] | Float64Array".into(),
                 "rows_of_numbers" => "(number[] | Float64Array)[]".into(),
                 "point_sets" => "(number[] | Float64Array)[][]".into(),
+                // `[{ existence, mean, cov }, …]`, declared by the binding
+                "bernoullis" => "Bernoulli[]".into(),
                 "bytes" => "Uint8Array".into(),
                 other => {
                     self.warnings.push(format!("unknown `with` module {other}"));
@@ -328,10 +330,15 @@ impl Gen<'_> {
                         }
                     }
                     "Option" => format!("{} | undefined", self.ty(&args[0], None)),
-                    "ScalarOr" => {
-                        let inner = self.ty_paren(&args[0]);
-                        format!("{inner} | {inner}[]")
-                    }
+                    // one number, or an array of `T` (numbers may be a `Float64Array`)
+                    "ScalarOr" => match &*self.ty(&args[0], None) {
+                        "number" => "number | number[] | Float64Array".into(),
+                        "number[]" => "number | (number[] | Float64Array)[]".into(),
+                        _ => format!("number | {}[]", self.ty_paren(&args[0])),
+                    },
+                    // a name the binding declares is named, not generated or inlined (the
+                    // core's `Region` is declared in the contract's form)
+                    _ if self.declared.contains(&name) => name,
                     _ => {
                         if let Some(Def {
                             item: Item::Type(alias),
@@ -340,11 +347,7 @@ impl Gen<'_> {
                             let aliased = (*alias.ty).clone();
                             return self.ty(&aliased, None);
                         }
-                        // a name the binding declares is named, not generated (the core's
-                        // `Region` is declared in the contract's form)
-                        if self.declared.contains(&name) {
-                            name
-                        } else if self.defs.contains_key(&name) {
+                        if self.defs.contains_key(&name) {
                             self.want(&name);
                             name
                         } else {

@@ -508,9 +508,10 @@ impl fmt::Display for Error {
                 )
             }
             Error::Form { what, problem, .. } => {
-                // a sentence about a part of the field ("[1] has length …") continues its path
+                // a sentence about a part of the field ("[1] has length …") continues its
+                // path, and so does one after a colon
                 let joined = match problem.first() {
-                    Some(Phrase::Text(t)) => t.starts_with(['[', '.']),
+                    Some(Phrase::Text(t)) => t.starts_with(['[', '.', ':']),
                     _ => false,
                 };
                 f.write_str(what)?;

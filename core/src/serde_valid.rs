@@ -41,7 +41,7 @@ use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::bernoulli::{ApplicationLoss, Costs, DensityKind, ParticleSet, SpatialDensity};
-use crate::bounds::{Density1, Detection as BoundsDetection, DetectionOptions, LinearGaussian};
+use crate::bounds::{Density1, Detection as BoundsDetection, JdeDetectionOptions, LinearGaussian};
 use crate::error::Error;
 use crate::filters::{
     Birth, Detection, GmBernoulli, LinearGaussianLikelihood, LinearGaussianTransition,
@@ -1016,15 +1016,15 @@ impl<'de, V: serde::de::Visitor<'de>> serde::de::DeserializeSeed<'de> for Struct
 }
 
 /// [`BoundsDetection`] is written and read as its unchecked form
-/// [`DetectionOptions`](crate::bounds::DetectionOptions): a number (a constant P_o, checked by
+/// [`JdeDetectionOptions`](crate::bounds::JdeDetectionOptions): a number (a constant P_o, checked by
 /// [`BoundsDetection::constant`]; its error names the value itself) or
 /// `{"table": {x, probability}}` (checked by [`BoundsDetection::table`]; errors name
 /// `.table.x[i]`, `.table.probability[i]`).
 impl Serialize for BoundsDetection {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let raw = match self {
-            BoundsDetection::Constant(p) => DetectionOptions::Constant(*p),
-            BoundsDetection::Table { x, probability } => DetectionOptions::Table {
+            BoundsDetection::Constant(p) => JdeDetectionOptions::Constant(*p),
+            BoundsDetection::Table { x, probability } => JdeDetectionOptions::Table {
                 x: x.clone(),
                 probability: probability.clone(),
             },
@@ -1035,13 +1035,15 @@ impl Serialize for BoundsDetection {
 
 impl<'de> Deserialize<'de> for BoundsDetection {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        match DetectionOptions::deserialize(deserializer)? {
-            DetectionOptions::Constant(p) => BoundsDetection::constant(p).map_err(|e| {
+        match JdeDetectionOptions::deserialize(deserializer)? {
+            JdeDetectionOptions::Constant(p) => BoundsDetection::constant(p).map_err(|e| {
                 let message = e.map_field(|_| "".into()).to_string();
                 D::Error::custom(message.trim_start())
             }),
-            DetectionOptions::Table { x, probability } => BoundsDetection::table(&x, &probability)
-                .map_err(|e| D::Error::custom(relative(e, "table"))),
+            JdeDetectionOptions::Table { x, probability } => {
+                BoundsDetection::table(&x, &probability)
+                    .map_err(|e| D::Error::custom(relative(e, "table")))
+            }
         }
     }
 }

@@ -88,10 +88,6 @@ export type Transition = TransitionRows;
  */
 export type LikelihoodOptions = LikelihoodRows;
 /**
- * A Gaussian mixture: its components (the core's `GaussianMixture`).
- */
-export type GaussianMixture = WeightedGaussian[];
-/**
  * Object birth (the core's `Birth`).
  */
 export type Birth = BirthOptions;

@@ -2,21 +2,14 @@
 //! LeGrand & Ferrari, "Split Happens! Imprecise and negative information in Gaussian mixture
 //! random finite set filtering", paper 001).
 
-use serde::Deserialize;
-use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{JsResult, OrThrow, range_error, read, write};
+use crate::boundary::{JsResult, OrThrow, read, write};
 use crate::names::Renamed;
-use crate::types::mixture_out;
-use fisst::Error;
-use fisst::gaussian::GaussianMixture;
-use fisst::mixture::{merge_close, prune, runnalls};
 use fisst::splitting::{
-    MAX_REDUCED_COMPONENTS, MAX_RUNNALLS_INPUT, NegativeInformationOptions,
-    NegativeInformationReport, Spacing, SplitForRegionsOptions as CoreSplitForRegionsOptions,
-    SplitLibrary, SplitLibraryOptions, SplitLibraryReport, check_reduce_input,
-    split_for_regions_report,
+    NegativeInformationOptions, NegativeInformationReport, ReduceMixtureOptions, Spacing,
+    SplitForRegionsOptions as CoreSplitForRegionsOptions, SplitLibrary, SplitLibraryOptions,
+    SplitLibraryReport, check_reduce_input, split_for_regions_report,
 };
 
 // The results are the core's own types written under the contract's names: `splitLibrary`'s
@@ -93,34 +86,8 @@ export interface NegativeInformationScenario {
 "#;
 
 // `splitForRegions` reads the core's own `SplitForRegionsOptions` (its TypeScript is generated
-// by build.rs from the core's source; its mixture is a `GaussianMixture`, declared here).
-#[wasm_bindgen(typescript_custom_section)]
-const GAUSSIAN_MIXTURE: &str = r#"
-/**
- * A Gaussian mixture: its components, weights ≥ 0 (the core's `GaussianMixture`).
- */
-export type GaussianMixture = WeightedGaussian[];
-"#;
-
-/// Options of `reduceMixture`.
-#[derive(Deserialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct ReduceMixtureOptions {
-    /// The mixture to reduce: at most 5000 components.
-    #[tsify(type = "WeightedGaussian[]")]
-    pub mixture: GaussianMixture,
-    /// Drop components lighter than this, renormalising the rest (default 0: keep all).
-    #[serde(default)]
-    pub prune_below: f64,
-    /// Vo & Ma merge within this Mahalanobis distance (U = distance²); omitted: no merging.
-    #[tsify(optional)]
-    pub merge_distance: Option<f64>,
-    /// Runnalls' reduction to at most this many components, an integer in [1, 1e6];
-    /// omitted: no cap. Runnalls' reduction takes at most 3000 components (those left after
-    /// pruning and merging; a RangeError naming options.maxComponents beyond).
-    #[tsify(optional)]
-    pub max_components: Option<usize>,
-}
+// by build.rs from the core's source; its mixture is a `GaussianMixture`, declared in
+// `types.rs`).
 
 /// A split library's key: (R, λ as bits, spacing).
 type LibraryKey = (usize, u64, Spacing);
@@ -197,29 +164,7 @@ pub fn reduce_mixture_js(
         check_reduce_input(a.length() as usize).or_throw_rendered("options")?;
     }
     let o: ReduceMixtureOptions = read(options, "options")?;
-    check_reduce_input(o.mixture.len()).or_throw_rendered("options")?;
-    let mixture = o.mixture;
-    let max_components = o
-        .max_components
-        .map(|m| Error::check_range("max_components", m, 1, MAX_REDUCED_COMPONENTS))
-        .transpose()
-        .or_throw_rendered("options")?;
-    let mut out = prune(&mixture, o.prune_below).or_throw_in("options")?;
-    if let Some(d) = o.merge_distance {
-        out = merge_close(&out, d).or_throw_in("options")?;
-    }
-    if let Some(max) = max_components {
-        if out.len() > max && out.len() > MAX_RUNNALLS_INPUT {
-            return Err(range_error(format!(
-                "options.maxComponents: Runnalls' reduction takes at most {MAX_RUNNALLS_INPUT} \
-                 components, {} remain after pruning and merging; raise pruneBelow or \
-                 mergeDistance",
-                out.len()
-            )));
-        }
-        out = runnalls(&out, max).or_throw_in("options")?;
-    }
-    write(&mixture_out(&out))
+    write(&o.reduce().or_throw_rendered("options")?)
 }
 
 thread_local! {

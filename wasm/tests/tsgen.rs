@@ -232,3 +232,35 @@ struct KeptRepr { other: f64 }
     assert!(!ts.contains("other"), "{ts}");
     assert!(defs.contains_key("PlainRepr") && !defs.contains_key("Plain"));
 }
+
+#[test]
+fn scalar_or_is_a_number_or_an_array_and_a_declared_name_wins_over_a_core_alias() {
+    let src = r#"
+pub type Covariance = ScalarOr<ScalarOr<f64>>;
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Observation {
+    pub gain: Option<ScalarOr<Vec<f64>>>,
+    pub offset: ScalarOr<f64>,
+    pub noise_cov: Covariance,
+    pub gains: ScalarOr<Gain>,
+}
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Gain { pub a: f64 }
+"#;
+    let mut defs = BTreeMap::new();
+    tsgen::walk(syn::parse_file(src).unwrap().items, &mut defs);
+    let root = "Observation".to_string();
+    let declared = ["Covariance".to_string()].into_iter().collect();
+    let (ts, warnings) = tsgen::declarations_with(&defs, &[&root], &declared);
+    assert!(warnings.is_empty(), "{warnings:?}");
+    for expected in [
+        "    gain?: number | (number[] | Float64Array)[];",
+        "    offset: number | number[] | Float64Array;",
+        // the binding declares `Covariance` itself: named, not inlined from the core's alias
+        "    noiseCov: Covariance;",
+        "    gains: number | Gain[];",
+        "export interface Gain {",
+    ] {
+        assert!(ts.contains(expected), "missing {expected:?} in\n{ts}");
+    }
+}

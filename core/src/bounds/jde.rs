@@ -62,7 +62,7 @@ pub enum JdeObservation {
 /// Model I's false observations: probability q and density ψ.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct FalseAlarm {
+pub struct JdeFalseAlarm {
     /// The false alarm probability q ∈ [0, 1]: the probability of one false observation.
     pub probability: f64,
     /// The density ψ of a false observation.
@@ -72,7 +72,7 @@ pub struct FalseAlarm {
 /// Model II's Poisson clutter: rate λ and the density of its points (v = λ · density).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct Clutter {
+pub struct JdeClutter {
     /// The clutter rate λ ≥ 0: the mean number of clutter points.
     pub rate: f64,
     /// The density v/λ of one clutter point (v the clutter intensity).
@@ -91,9 +91,9 @@ pub struct JdeOptions {
     /// The observation: the detection probability P_o and the likelihood g (of the prior's kind).
     pub observation: JdeObservation,
     /// Model I: (q, ψ); `None`: q = 0. An error with model II.
-    pub false_alarm: Option<FalseAlarm>,
+    pub false_alarm: Option<JdeFalseAlarm>,
     /// Model II: (λ, v/λ); `None`: λ = 0. An error with model I.
-    pub clutter: Option<Clutter>,
+    pub clutter: Option<JdeClutter>,
     /// e_0² ≥ 0, the squared error of a false target: the square itself (of the whole state;
     /// coordinate i of a vector state uses e_0²/l).
     pub false_alarm_error: f64,

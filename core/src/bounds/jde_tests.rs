@@ -25,8 +25,8 @@ fn scalar_observation() -> LinearGaussian {
     LinearGaussian::new(Detection::constant(0.8).unwrap(), 2.0, 0.5, 1.5).unwrap()
 }
 
-fn unit_clutter(rate: f64) -> Clutter {
-    Clutter {
+fn unit_clutter(rate: f64) -> JdeClutter {
+    JdeClutter {
         rate,
         density: Density1::uniform(-10.0, 10.0).unwrap(),
     }
@@ -56,7 +56,7 @@ fn vector_of_one(model: JdeModel) -> JdeOptions {
 
 fn with_false_alarms(o: JdeOptions) -> JdeOptions {
     JdeOptions {
-        false_alarm: Some(FalseAlarm {
+        false_alarm: Some(JdeFalseAlarm {
             probability: 0.3,
             density: Density1::uniform(-10.0, 10.0).unwrap(),
         }),

@@ -20,7 +20,7 @@
 //! | [`vector_bound`], [`VectorModel`], [`GaussianPrior`], [`LinearGaussianSensor`] | (63)–(65) for a Gaussian state in R^l and a linear-Gaussian sensor: per-component and whole-state bounds of Theorems 1 and 2 | `vector::tests::eq63_one_dimension_is_the_scalar_theorem`, `eq63_an_observed_component_with_false_alarms_is_the_scalar_theorem`, `eq65_the_rank_one_reduction_is_the_matrix_information_without_clutter`, `eq72_independent_components_are_corollary3_per_component`, `eq72_a_negligible_gain_is_no_gain`, `eq63_vector_errors_name_the_field`; P: `eq64_vector_bounds_against_the_optimal_detector_estimator` |
 //! | [`jde_monte_carlo`], [`MonteCarloModel`], [`JdeMonteCarloOptions`], [`EmptyRule`] | the risk E e² (11) of the optimal joint detector-estimator (MAP detection (39)/(40), the posterior mean, HPE/LPE (46) or MAP on ∅ (Section IV-A)) by a seeded Monte Carlo; k scans (Section III-E) | `simulate::tests::cor3_the_optimal_detector_estimator_attains_the_no_clutter_bound`, `eq37_the_posterior_mean_over_scans_attains_the_enumeration_bound`, `ex2_the_posterior_mean_mse_is_below_the_regularity_failing_curve`, `eq11_same_seed_same_bits_and_another_seed_other_draws`, `eq11_bad_options_are_errors_naming_the_field`; P: `thm1_is_attained_by_map_detection_and_the_posterior_mean`, `thm2_lies_below_the_optimal_mse`, `eq64_vector_bounds_against_the_optimal_detector_estimator` |
 //! | [`jde_bound`], [`JdeOptions`], [`JdeBoundOutcome`] | Theorems 1 and 2 and (63)–(72) behind one call: model I/II, scalar/vector prior, Theorem 2's Monte Carlo work cap | `jde::tests::thm1_model_i_dispatches_to_theorem1`, `thm2_model_ii_dispatches_to_theorem2_with_the_seed_and_samples`, `thm2_work_cap_is_samples_times_the_sampled_cardinalities`, `eq63_a_vector_of_one_is_the_scalar_bound` |
-//! | `JdeBoundOptions`, `JdeMonteCarloRequest`, `PriorOptions`, `MonteCarloPrior`, `ObservationOptions`, `DetectionOptions`, `GaussianOptions` (feature `serde`; not linked, so that the docs build without it) | the options of [`jde_bound`] and [`jde_monte_carlo`] as the bindings take them: f, P_o and g of (13)/(22) and (63), checked together, errors naming the Rust path | `options_tests::eq63_a_vector_prior_takes_rows_and_noise_cov`, `eq13_a_scalar_prior_takes_numbers`, `eq13_eq22_false_observations_belong_to_their_model`, `eq11_the_request_runs_the_monte_carlo_with_its_defaults`, `defaults_are_the_core_options` |
+//! | `JdeBoundOptions`, `JdeMonteCarloRequest`, `PriorOptions`, `MonteCarloPrior`, `ObservationOptions`, `JdeDetectionOptions`, `GaussianOptions` (feature `serde`; not linked, so that the docs build without it) | the options of [`jde_bound`] and [`jde_monte_carlo`] as the bindings take them: f, P_o and g of (13)/(22) and (63), checked together, errors naming the Rust path | `options_tests::eq63_a_vector_prior_takes_rows_and_noise_cov`, `eq13_a_scalar_prior_takes_numbers`, `eq13_eq22_false_observations_belong_to_their_model`, `eq11_the_request_runs_the_monte_carlo_with_its_defaults`, `defaults_are_the_core_options` |
 //! | [`example2`], [`example2_regularity`] | Example 2 (32), Fig. 2 right: (32) against (20), and the regularity failure | P: `ex2_is_reproduced_and_its_regularity_fails` |
 //!
 //! "P:" names a test in `tests/tests/paper_002_bounds.rs`; the others are unit tests under
@@ -78,8 +78,8 @@ pub use example2::{
 };
 mod jde;
 pub use jde::{
-    BoundTerm, CardinalityTerm, Clutter, FalseAlarm, JdeBoundOutcome, JdeBoundReport,
-    JdeComponentBound, JdeModel, JdeObservation, JdeOptions, JdePrior, MAX_DIMS, MAX_SAMPLE_POINTS,
+    BoundTerm, CardinalityTerm, JdeBoundOutcome, JdeBoundReport, JdeClutter, JdeComponentBound,
+    JdeFalseAlarm, JdeModel, JdeObservation, JdeOptions, JdePrior, MAX_DIMS, MAX_SAMPLE_POINTS,
     MAX_SAMPLES, MIN_SAMPLES, TermName, jde_bound, wrong_model,
 };
 mod vector;
@@ -92,7 +92,7 @@ pub use vector::{
 mod options;
 #[cfg(feature = "serde")]
 pub use options::{
-    DetectionOptions, GaussianOptions, JdeBoundOptions, JdeMonteCarloRequest, MonteCarloPrior,
+    GaussianOptions, JdeBoundOptions, JdeDetectionOptions, JdeMonteCarloRequest, MonteCarloPrior,
     ObservationOptions, PriorOptions,
 };
 #[cfg(all(test, feature = "serde"))]

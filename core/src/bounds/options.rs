@@ -24,11 +24,11 @@ use serde::{Deserialize, Deserializer, Serialize};
 
 use crate::bounds::Density1;
 use crate::bounds::{
-    Clutter, DensityOr, Detection, EmptyRule, FalseAlarm, GaussianPrior, JdeBoundReport, JdeModel,
-    JdeMonteCarlo, JdeMonteCarloOptions, JdeObservation, JdeOptions, JdePrior, LinearGaussian,
-    LinearGaussianSensor, MonteCarloModel, SimulatedSystem, UnitUniform, VectorMeasurement,
-    check_measurement_dims, check_state_dims, deserialize_density_or, jde_bound, jde_monte_carlo,
-    wrong_model,
+    DensityOr, Detection, EmptyRule, GaussianPrior, JdeBoundReport, JdeClutter, JdeFalseAlarm,
+    JdeModel, JdeMonteCarlo, JdeMonteCarloOptions, JdeObservation, JdeOptions, JdePrior,
+    LinearGaussian, LinearGaussianSensor, MonteCarloModel, SimulatedSystem, UnitUniform,
+    VectorMeasurement, check_measurement_dims, check_state_dims, deserialize_density_or, jde_bound,
+    jde_monte_carlo, wrong_model,
 };
 use crate::error::{Error, Phrase, Result};
 use crate::serde_shapes::{Covariance, ScalarOr, covariance_row_major};
@@ -137,7 +137,7 @@ impl PriorOptions {
 /// [`Detection::table`]), after the checks of its kind (a Gaussian vector prior and Example 2
 /// take a constant only).
 #[derive(Clone, Debug, PartialEq)]
-pub enum DetectionOptions {
+pub enum JdeDetectionOptions {
     /// A constant P_o ∈ [0, 1].
     Constant(f64),
     /// A table of P_o at the knots `x` (strictly increasing, 2 to 10,000).
@@ -149,7 +149,7 @@ pub enum DetectionOptions {
     },
 }
 
-/// `{x, probability}`, the table of a [`DetectionOptions::Table`].
+/// `{x, probability}`, the table of a [`JdeDetectionOptions::Table`].
 #[derive(Serialize, Deserialize)]
 struct DetectionTable {
     x: Vec<f64>,
@@ -162,11 +162,11 @@ struct DetectionTableWrapper {
     table: DetectionTable,
 }
 
-impl Serialize for DetectionOptions {
+impl Serialize for JdeDetectionOptions {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         match self {
-            DetectionOptions::Constant(p) => s.serialize_f64(*p),
-            DetectionOptions::Table { x, probability } => DetectionTableWrapper {
+            JdeDetectionOptions::Constant(p) => s.serialize_f64(*p),
+            JdeDetectionOptions::Table { x, probability } => DetectionTableWrapper {
                 table: DetectionTable {
                     x: x.clone(),
                     probability: probability.clone(),
@@ -177,28 +177,28 @@ impl Serialize for DetectionOptions {
     }
 }
 
-impl<'de> Deserialize<'de> for DetectionOptions {
+impl<'de> Deserialize<'de> for JdeDetectionOptions {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         use serde::de::{MapAccess, Visitor, value::MapAccessDeserializer};
         struct V;
         impl<'de> Visitor<'de> for V {
-            type Value = DetectionOptions;
+            type Value = JdeDetectionOptions;
             fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
                 f.write_str("a probability or { table: { x, probability } }")
             }
             fn visit_f64<E: serde::de::Error>(self, p: f64) -> Result<Self::Value, E> {
-                Ok(DetectionOptions::Constant(p))
+                Ok(JdeDetectionOptions::Constant(p))
             }
             // self-describing formats other than JavaScript's (JSON, Python) give integers
             fn visit_i64<E: serde::de::Error>(self, p: i64) -> Result<Self::Value, E> {
-                Ok(DetectionOptions::Constant(p as f64))
+                Ok(JdeDetectionOptions::Constant(p as f64))
             }
             fn visit_u64<E: serde::de::Error>(self, p: u64) -> Result<Self::Value, E> {
-                Ok(DetectionOptions::Constant(p as f64))
+                Ok(JdeDetectionOptions::Constant(p as f64))
             }
             fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Self::Value, A::Error> {
                 let w = DetectionTableWrapper::deserialize(MapAccessDeserializer::new(map))?;
-                Ok(DetectionOptions::Table {
+                Ok(JdeDetectionOptions::Table {
                     x: w.table.x,
                     probability: w.table.probability,
                 })
@@ -208,7 +208,7 @@ impl<'de> Deserialize<'de> for DetectionOptions {
     }
 }
 
-impl DetectionOptions {
+impl JdeDetectionOptions {
     /// The checked [`Detection`]; errors name `detection_probability` or
     /// `detection_probability.table.x[i]`, `….probability[i]` (relative to the observation).
     ///
@@ -216,8 +216,8 @@ impl DetectionOptions {
     /// [`Detection::constant`]'s or [`Detection::table`]'s.
     pub fn detection(&self) -> Result<Detection> {
         match self {
-            DetectionOptions::Constant(p) => Detection::constant(*p),
-            DetectionOptions::Table { x, probability } => Detection::table(x, probability)
+            JdeDetectionOptions::Constant(p) => Detection::constant(*p),
+            JdeDetectionOptions::Table { x, probability } => Detection::table(x, probability)
                 .map_err(|e| e.within("detection_probability.table")),
         }
     }
@@ -230,7 +230,7 @@ impl DetectionOptions {
 pub struct ObservationOptions {
     /// The detection probability P_o(x): a number in [0, 1] or `{"table": {x, probability}}`
     /// (a Gaussian vector prior takes a constant only).
-    pub detection_probability: DetectionOptions,
+    pub detection_probability: JdeDetectionOptions,
     /// The gain a, a finite number (default 1); with a Gaussian vector prior H, m rows of l
     /// finite numbers (1 ≤ m ≤ 64; a number is H = `[[a]]` when l = 1). False alarms or clutter
     /// need m = 1: their densities are on the measurement line.
@@ -319,8 +319,8 @@ impl ObservationOptions {
     /// `for_what` ends the error's sentence.
     fn constant_detection(&self, for_what: Vec<Phrase>) -> Result<f64> {
         match self.detection_probability {
-            DetectionOptions::Constant(p) => Ok(p),
-            DetectionOptions::Table { .. } => {
+            JdeDetectionOptions::Constant(p) => Ok(p),
+            JdeDetectionOptions::Table { .. } => {
                 let mut problem = vec![text("must be a number (a constant P_o) ")];
                 problem.extend(for_what);
                 Err(Error::form("detection_probability", true, problem))
@@ -464,10 +464,10 @@ pub struct JdeBoundOptions {
     pub observation: ObservationOptions,
     /// Model I: `{probability, density}` (q, ψ); omitted: q = 0. Not allowed with model II.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub false_alarm: Option<FalseAlarm>,
+    pub false_alarm: Option<JdeFalseAlarm>,
     /// Model II: `{rate, density}` (λ, v/λ); omitted: λ = 0. Not allowed with model I.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub clutter: Option<Clutter>,
+    pub clutter: Option<JdeClutter>,
     /// The squared error e_0² ≥ 0 of a false target: the square itself (of the whole state;
     /// coordinate i of a vector state uses e_0²/l).
     pub false_alarm_error: f64,
@@ -608,10 +608,10 @@ pub struct JdeMonteCarloRequest {
     pub observation: ObservationOptions,
     /// Model I: `{probability, density}` (q, ψ; a density that draws); omitted: q = 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub false_alarm: Option<FalseAlarm>,
+    pub false_alarm: Option<JdeFalseAlarm>,
     /// Model II: `{rate, density}` (λ, v/λ); omitted: λ = 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub clutter: Option<Clutter>,
+    pub clutter: Option<JdeClutter>,
     /// The squared error (cost) e_0² ≥ 0 of a false target: the square itself.
     pub false_alarm_error: f64,
     /// The squared error (cost) e_1² ≥ 0 of a missed target: the square itself.

@@ -36,16 +36,16 @@ fn default_detection_probability() -> f64 {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FovCardinalityOptions {
-    /// The multi-object density of the random finite set X (at most [`MAX_GAUSSIANS`]
-    /// Gaussians in all; an i.i.d. cluster's cardinality pmf at most [`MAX_CARDINALITY_LEN`]
-    /// entries).
+    /// The multi-object density of the random finite set X (`rfs`: the papers' name for X;
+    /// at most 10,000 Gaussians in all ([`MAX_GAUSSIANS`]), an i.i.d. cluster's cardinality
+    /// pmf at most 20,001 entries ([`MAX_CARDINALITY_LEN`]); the call is refused when its
+    /// masses would take more than about 2 s).
     pub rfs: MultiObjectDensity,
     /// The field of view S, in the position subspace (the first state components); polygons of
-    /// at most [`MAX_VERTICES`] vertices, unions of at most as many members.
+    /// at most 1,000 vertices ([`MAX_VERTICES`]), unions of at most as many members.
     pub fov: Region,
-    /// The detection probability p_D ∈ [0, 1] (default
-    /// [`DEFAULT_DETECTION_PROBABILITY`]): with p_D < 1 the pmf is that of object-originated
-    /// detections, eq. (75).
+    /// The detection probability p_D ∈ [0, 1] (default 1, [`DEFAULT_DETECTION_PROBABILITY`]):
+    /// with p_D < 1 the pmf is that of object-originated detections, eq. (75).
     #[cfg_attr(feature = "serde", serde(default = "default_detection_probability"))]
     pub detection_probability: f64,
 }
@@ -178,7 +178,7 @@ pub struct FovVarianceMapOptions {
     pub multi_bernoulli: Vec<(f64, Gaussian)>,
     /// FoV width and height, finite and > 0 (a box centred on each grid point).
     pub fov_size: [f64; 2],
-    /// The grid of FoV centres; components × cells at most [`MAX_VARIANCE_MAP_WORK`].
+    /// The grid of FoV centres; components × cells at most 2e8 ([`MAX_VARIANCE_MAP_WORK`]).
     pub grid: Grid,
 }
 
@@ -237,9 +237,10 @@ impl From<VarianceMap> for FovVarianceMapResult {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MixtureDensityGridOptions {
     /// The mixture Σ weight · N(mean, cov); components of 3 or more dimensions use their first
-    /// two (position) components.
+    /// two (position) components. Its peak, Σ weight / √det(2π cov), must stay below the
+    /// largest double (about 1.8e308; an error naming the weight that passes it).
     pub mixture: GaussianMixture,
-    /// The grid of positions; components × cells at most [`MAX_DENSITY_GRID_WORK`].
+    /// The grid of positions; components × cells at most 2.5e7 ([`MAX_DENSITY_GRID_WORK`]).
     pub grid: Grid,
 }
 

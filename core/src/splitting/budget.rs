@@ -5,7 +5,9 @@
 //! next to the mean-based partition.
 
 use super::{MAX_DEPTH_LIMIT, MAX_SPLIT_COMPONENTS, MIN_SPLIT_COMPONENTS, SplitOptions};
-use crate::error::{Error, Result};
+use crate::error::{Error, Phrase, Result};
+use crate::gaussian::GaussianMixture;
+use crate::mixture::{merge_close, prune, runnalls};
 use crate::regions::{MAX_MASS_DIM, Region};
 
 /// At most this many position dimensions n_s in a bounded split request.
@@ -193,5 +195,77 @@ mod tests {
             Error::range("max_depth", 65, 0, 64).to_string(),
             "max_depth must be an integer in [0, 64], got 65"
         );
+    }
+}
+
+/// A bounded mixture reduction as a caller writes it (an interactive page's): prune
+/// (renormalising), Vo & Ma's Mahalanobis merge, then Runnalls' KL-based reduction, each pass
+/// only when asked; [`ReduceMixtureOptions::reduce`] runs it within [`MAX_REDUCE_INPUT`] and
+/// [`MAX_RUNNALLS_INPUT`].
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ReduceMixtureOptions {
+    /// The mixture to reduce: at most 5000 components.
+    pub mixture: GaussianMixture,
+    /// Drop components lighter than this, renormalising the rest (default 0: keep all).
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub prune_below: f64,
+    /// Vo & Ma merge within this Mahalanobis distance (U = distance²); omitted: no merging.
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub merge_distance: Option<f64>,
+    /// Runnalls' reduction to at most this many components, an integer in [1, 1e6]; omitted:
+    /// no cap. Runnalls' reduction takes at most 3000 components (those left after pruning
+    /// and merging; an error naming `max_components` beyond).
+    #[cfg_attr(
+        feature = "serde",
+        serde(default, skip_serializing_if = "Option::is_none")
+    )]
+    pub max_components: Option<usize>,
+}
+
+impl ReduceMixtureOptions {
+    /// The reduced mixture: [`prune`](crate::mixture::prune), then
+    /// [`merge_close`](crate::mixture::merge_close) and [`runnalls`](crate::mixture::runnalls)
+    /// when asked. The total weight is preserved; merges preserve the mixture's mean and
+    /// covariance.
+    ///
+    /// # Errors
+    /// [`check_reduce_input`]'s; an [`Error::OutOfRange`] naming `max_components` outside
+    /// [1, [`MAX_REDUCED_COMPONENTS`]]; the passes' own; an [`Error::Form`] naming
+    /// `max_components` when more than [`MAX_RUNNALLS_INPUT`] components reach Runnalls'
+    /// reduction.
+    pub fn reduce(&self) -> Result<GaussianMixture> {
+        check_reduce_input(self.mixture.len())?;
+        let max_components = self
+            .max_components
+            .map(|m| Error::check_range("max_components", m, 1, MAX_REDUCED_COMPONENTS))
+            .transpose()?;
+        let mut out = prune(&self.mixture, self.prune_below)?;
+        if let Some(d) = self.merge_distance {
+            out = merge_close(&out, d)?;
+        }
+        if let Some(max) = max_components {
+            if out.len() > max && out.len() > MAX_RUNNALLS_INPUT {
+                return Err(Error::form(
+                    "max_components",
+                    false,
+                    alloc::vec![
+                        Phrase::text(alloc::format!(
+                            ": Runnalls' reduction takes at most {MAX_RUNNALLS_INPUT} \
+                             components, {} remain after pruning and merging; raise ",
+                            out.len()
+                        )),
+                        Phrase::name("prune_below"),
+                        Phrase::text(" or "),
+                        Phrase::name("merge_distance"),
+                    ],
+                ));
+            }
+            out = runnalls(&out, max)?;
+        }
+        Ok(out)
     }
 }

@@ -74,8 +74,8 @@ mod variance_preserving;
 pub use budget::{
     EXACT_MASS_BUDGET_US, MAX_GRID_SIZE, MAX_POSITION_DIMS, MAX_REDUCE_INPUT,
     MAX_REDUCED_COMPONENTS, MAX_REGIONS, MAX_RUNNALLS_INPUT, MAX_SPLIT_RESULT_COMPONENTS,
-    SPLIT_WORK_BUDGET, check_bounded_split, check_reduce_input, exact_mass_affordable, grid_size,
-    split_work,
+    ReduceMixtureOptions, SPLIT_WORK_BUDGET, check_bounded_split, check_reduce_input,
+    exact_mass_affordable, grid_size, split_work,
 };
 pub use component::{Eigen, split_component};
 pub use library::{

@@ -1069,3 +1069,53 @@ fn alg2_reduction_input_cap_names_the_mixture() {
     assert_eq!(e.field(), "mixture");
     assert_eq!(MAX_RUNNALLS_INPUT, 3000);
 }
+
+/// A bounded reduction request: prune (renormalising), merge and Runnalls' reduction in that
+/// order, each only when asked; the caps name `max_components`.
+#[test]
+fn alg2_a_reduction_request_runs_the_passes_it_asks_within_its_caps() {
+    let spread = |n: usize| {
+        mixture(
+            (0..n)
+                .map(|i| (1.0 / n as f64, gauss(&[10.0 * i as f64], &[1.0])))
+                .collect(),
+        )
+    };
+    let request = |m: GaussianMixture| ReduceMixtureOptions {
+        mixture: m,
+        prune_below: 0.0,
+        merge_distance: None,
+        max_components: None,
+    };
+    // nothing asked: the mixture as given
+    let m = spread(4);
+    assert_eq!(request(m.clone()).reduce().unwrap().len(), 4);
+    // pruning drops the light components and renormalises
+    let mut r = request(mixture(vec![
+        (0.9, gauss(&[0.0], &[1.0])),
+        (0.1, gauss(&[50.0], &[1.0])),
+    ]));
+    r.prune_below = 0.5;
+    let out = r.reduce().unwrap();
+    assert_eq!(out.len(), 1);
+    assert!((out.components()[0].0 - 1.0).abs() < 1e-12);
+    // Runnalls' reduction to the cap, the total weight kept
+    let mut r = request(m);
+    r.max_components = Some(2);
+    let out = r.reduce().unwrap();
+    assert_eq!(out.len(), 2);
+    assert!((out.components().iter().map(|c| c.0).sum::<f64>() - 1.0).abs() < 1e-12);
+    // the caps
+    r.max_components = Some(0);
+    assert_eq!(r.reduce().unwrap_err().field(), "max_components");
+    let mut r = request(spread(MAX_RUNNALLS_INPUT + 1));
+    r.max_components = Some(1);
+    let e = r.reduce().unwrap_err();
+    assert_eq!(e.field(), "max_components");
+    assert!(
+        std::format!("{e}").starts_with(
+            "max_components: Runnalls' reduction takes at most 3000 components, 3001 remain"
+        ),
+        "{e}"
+    );
+}
