@@ -122,8 +122,42 @@ fn docs(attrs: &[Attribute]) -> Vec<String> {
             Meta::NameValue(nv) => lit_str(&nv.value),
             _ => None,
         })
-        .map(|s| strip_links(s.strip_prefix(' ').unwrap_or(&s)))
+        .map(|s| js_code_spans(&strip_links(s.strip_prefix(' ').unwrap_or(&s))))
         .collect()
+}
+
+/// The Rust field paths quoted in a doc line under their JavaScript names, as the declarations
+/// show the fields: "`prior.multivariate_gaussian.mean`" → "`prior.multivariateGaussian.mean`",
+/// "`quadrature_cardinality`" → "`quadratureCardinality`". Only code spans that are a plain
+/// path (identifiers, dots, `[i]`) change; Rust paths (`a::b`) and expressions stay.
+fn js_code_spans(line: &str) -> String {
+    let mut out = String::with_capacity(line.len());
+    for (i, part) in line.split('`').enumerate() {
+        if i > 0 {
+            out.push('`');
+        }
+        // lower-case names only: a constant (`MAX_DENSE_WORK`) stays as it is
+        let plain_path = part.contains('_')
+            && part.chars().all(|c| {
+                c.is_ascii_lowercase() || c.is_ascii_digit() || matches!(c, '_' | '.' | '[' | ']')
+            });
+        if i % 2 == 1 && plain_path {
+            let mut parent = "";
+            let renamed: Vec<_> = part
+                .split('.')
+                .map(|seg| {
+                    let (name, index) = seg.split_at(seg.find('[').unwrap_or(seg.len()));
+                    let js = format!("{}{index}", names_rule::js_name_of(parent, name));
+                    parent = name;
+                    js
+                })
+                .collect();
+            out.push_str(&renamed.join("."));
+        } else {
+            out.push_str(part);
+        }
+    }
+    out
 }
 
 /// Rustdoc's intra-doc links as plain code: "[`X`]" and "[`x`](path)" become "`X`", "`x`".

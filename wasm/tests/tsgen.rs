@@ -21,7 +21,8 @@ pub struct FilterOptions {
     /// The order (default 2).
     #[cfg_attr(feature = "serde", serde(default = "FilterOptions::default_p"))]
     pub p: f64,
-    /// Scans ahead.
+    /// Scans ahead (with `transition.survival_probability`; see `shape[i].max_corner`,
+    /// `Transition::survival_probability`, `MAX_DENSE_WORK` and `a_b + c`).
     pub future_scans: Option<usize>,
     pub transition: Transition,
     pub pairs: Vec<(usize, usize)>,
@@ -263,4 +264,20 @@ pub struct Gain { pub a: f64 }
     ] {
         assert!(ts.contains(expected), "missing {expected:?} in\n{ts}");
     }
+}
+
+#[test]
+fn field_paths_quoted_in_docs_are_in_javascript_names() {
+    let (ts, _) = declarations(&["FilterOptions"]);
+    assert!(
+        ts.contains(
+            "Scans ahead (with `transition.survivalProbability`; see `shape[i].maxCorner`,\n"
+        ),
+        "{ts}"
+    );
+    // Rust paths, constants and expressions stay as written
+    assert!(
+        ts.contains("`Transition::survival_probability`, `MAX_DENSE_WORK` and `a_b + c`)."),
+        "{ts}"
+    );
 }
