@@ -81,7 +81,7 @@ pub trait OrThrow<T> {
     fn or_throw(self) -> JsResult<T>;
     /// Maps the error to [`core_error`] with its field under `prefix` (`c` → `options.c`).
     fn or_throw_in(self, prefix: &str) -> JsResult<T>;
-    /// Maps the error to [`core_error_in`]: its Rust field path rendered in JavaScript names,
+    /// Maps the error to [`core_error_rendered`]: its Rust field path rendered in JavaScript names,
     /// under `prefix` (`max_components` → `options.maxComponents`).
     fn or_throw_rendered(self, prefix: &str) -> JsResult<T>;
 }
@@ -96,18 +96,11 @@ impl<T> OrThrow<T> for fisst::Result<T> {
     }
 
     fn or_throw_rendered(self, prefix: &str) -> JsResult<T> {
-        self.map_err(|e| core_error_in(e, prefix))
+        self.map_err(|e| core_error_rendered(e, prefix))
     }
 }
 
 pub use crate::names::render_path;
-
-/// The JS exception for a core error about `prefix.field`, the field rendered by
-/// [`render_path`] (`max_components` → `options.maxComponents`).
-pub fn core_error_in(e: fisst::Error, prefix: &str) -> JsValue {
-    // every variant, `OutOfRange` and `OverBudget` included (`map_field` covers them all)
-    core_error_rendered(e, prefix)
-}
 
 /// The seed of a seeded function: the caller's, or fresh platform entropy when omitted
 /// (`crypto.getRandomValues` through getrandom). Either way the result reports the seed
@@ -117,16 +110,6 @@ pub fn seed_or_entropy(seed: Option<u64>) -> JsResult<u64> {
         Some(s) => Ok(s),
         None => fisst::math::rng::entropy_seed().or_throw_in("options"),
     }
-}
-
-/// Checks that an integer option lies in `[min, max]`, naming it by `path`.
-pub fn check_range(path: &str, value: usize, min: usize, max: usize) -> JsResult<usize> {
-    if value < min || value > max {
-        return Err(range_error(std::format!(
-            "{path} must be an integer in [{min}, {max}], got {value}"
-        )));
-    }
-    Ok(value)
 }
 
 #[cfg(test)]

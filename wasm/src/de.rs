@@ -990,18 +990,10 @@ impl<'de> de::Deserializer<'de> for De<'_> {
 
     fn deserialize_newtype_struct<V: Visitor<'de>>(
         self,
-        name: &'static str,
+        _name: &'static str,
         visitor: V,
     ) -> Result<V::Value> {
         let path = self.path;
-        if name == RAW_JS_VALUE {
-            // A `JsFunction` (or another raw JS value): hand the value over untouched.
-            let Value::Js(v) = self.value else {
-                return Err(self.wrong_type("a function"));
-            };
-            RAW.with(|r| *r.borrow_mut() = Some(v));
-            return visitor.visit_unit::<Error>().map_err(|e| e.at(&path));
-        }
         visitor.visit_newtype_struct(self).map_err(|e| e.at(&path))
     }
 
@@ -1096,45 +1088,6 @@ fn typed_array_values(v: &JsValue) -> Option<Vec<f64>> {
     } else {
         v.dyn_ref::<Float32Array>()
             .map(|a| a.to_vec().into_iter().map(f64::from).collect())
-    }
-}
-
-/// The newtype name by which a field asks for the raw JS value (see [`JsFunction`]).
-const RAW_JS_VALUE: &str = "__fisst_raw_js_value";
-
-thread_local! {
-    /// The raw value being handed from [`De`] to [`JsFunction`]'s visitor (wasm is
-    /// single-threaded, and the hand-over happens within one call).
-    static RAW: std::cell::RefCell<Option<JsValue>> = const { std::cell::RefCell::new(None) };
-}
-
-/// A JavaScript function in an options object (a callback such as `onProgress`), read as is:
-/// serde cannot carry a JS value, so [`De`] passes it through a one-slot hand-over. Anything
-/// but a function is a `TypeError` naming the field.
-#[derive(Clone, Debug)]
-pub struct JsFunction(pub js_sys::Function);
-
-impl<'de> de::Deserialize<'de> for JsFunction {
-    fn deserialize<D: de::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = JsFunction;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("a function")
-            }
-            fn visit_unit<E: de::Error>(self) -> Result<JsFunction, E> {
-                let v = RAW.with(|r| r.borrow_mut().take());
-                match v.map(JsCast::dyn_into::<js_sys::Function>) {
-                    Some(Ok(f)) => Ok(JsFunction(f)),
-                    Some(Err(v)) => Err(E::invalid_type(
-                        de::Unexpected::Other(&describe(&v)),
-                        &"a function",
-                    )),
-                    None => Err(E::custom("must be a function")),
-                }
-            }
-        }
-        d.deserialize_newtype_struct(RAW_JS_VALUE, V)
     }
 }
 

@@ -1,9 +1,9 @@
 //! The deserializer of the boundary (`fisst_wasm::de`) on its own: paths, classes, unknown
 //! keys, absent values, typed arrays, depth and cycles, and callbacks.
 
-use fisst_wasm::de::{ErrorClass, JsFunction, from_js};
+use fisst_wasm::de::{ErrorClass, from_js, from_js_with_callback};
 use serde::Deserialize;
-use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
 
 use super::js;
@@ -23,7 +23,6 @@ struct Outer {
     #[serde(default)]
     items: Vec<Inner>,
     label: Option<String>,
-    on_progress: Option<JsFunction>,
 }
 
 fn err(v: JsValue) -> (ErrorClass, String) {
@@ -47,7 +46,7 @@ fn paths_classes_and_unknown_keys() {
         (
             ErrorClass::Type,
             "options has an unknown key \"aplha\" (did you mean alpha?); its keys are alpha, \
-             items, label, onProgress"
+             items, label"
                 .into()
         )
     );
@@ -130,19 +129,27 @@ fn callbacks_pass_through() {
     let f = js_sys::Function::new_with_args("a, b", "return a + b");
     let obj = js(r#"{"alpha":1}"#);
     js_sys::Reflect::set(&obj, &"onProgress".into(), &f).unwrap();
-    let o: Outer = from_js(obj, "options").unwrap();
-    let got = o
-        .on_progress
-        .unwrap()
-        .0
+    let (o, callback) = from_js_with_callback::<Outer>(obj, "options", "onProgress").unwrap();
+    assert_eq!(o.alpha, 1.0);
+    let got = callback
+        .expect("the callback")
         .call2(&JsValue::NULL, &1.into(), &2.into())
         .unwrap();
     assert_eq!(got.as_f64(), Some(3.0));
-    let (class, message) = err(js(r#"{"alpha":1,"onProgress":5}"#));
-    assert_eq!(class, ErrorClass::Type);
+    let e = from_js_with_callback::<Outer>(
+        js(r#"{"alpha":1,"onProgress":5}"#),
+        "options",
+        "onProgress",
+    )
+    .unwrap_err();
+    assert_eq!(e.class, ErrorClass::Type);
     assert!(
-        message.starts_with("options.onProgress must be a function"),
-        "{message}"
+        e.message
+            .starts_with("options.onProgress must be a function"),
+        "{}",
+        e.message
     );
-    let _ = f.dyn_ref::<js_sys::Function>();
+    // without the callback key, `onProgress` is an unknown key
+    let (class, _) = err(js(r#"{"alpha":1,"onProgress":5}"#));
+    assert_eq!(class, ErrorClass::Type);
 }
