@@ -830,6 +830,16 @@ impl<'de> de::VariantAccess<'de> for Variant<'_> {
     }
 }
 
+/// `deserialize_*` methods for integer types: [`De::integer`] in `[min, max]`, then the visit.
+macro_rules! integers {
+    ($($method:ident => $visit:ident as $t:ident in $min:expr, $max:expr;)*) => {$(
+        fn $method<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value> {
+            let x = self.integer($min, $max)?;
+            visitor.$visit::<Error>(x as $t).map_err(|e| e.at(&self.path))
+        }
+    )*};
+}
+
 impl<'de> de::Deserializer<'de> for De<'_> {
     type Error = Error;
 
@@ -875,60 +885,17 @@ impl<'de> de::Deserializer<'de> for De<'_> {
         self.deserialize_f64(visitor)
     }
 
-    fn deserialize_u64<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value> {
-        let x = self.integer(0.0, 9_007_199_254_740_991.0)?;
-        visitor
-            .visit_u64::<Error>(x as u64)
-            .map_err(|e| e.at(&self.path))
-    }
-
-    fn deserialize_u32<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value> {
-        let x = self.integer(0.0, f64::from(u32::MAX))?;
-        visitor
-            .visit_u64::<Error>(x as u64)
-            .map_err(|e| e.at(&self.path))
-    }
-
-    fn deserialize_u16<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value> {
-        let x = self.integer(0.0, f64::from(u16::MAX))?;
-        visitor
-            .visit_u64::<Error>(x as u64)
-            .map_err(|e| e.at(&self.path))
-    }
-
-    fn deserialize_u8<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value> {
-        let x = self.integer(0.0, f64::from(u8::MAX))?;
-        visitor
-            .visit_u64::<Error>(x as u64)
-            .map_err(|e| e.at(&self.path))
-    }
-
-    fn deserialize_i64<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value> {
-        let x = self.integer(-9_007_199_254_740_991.0, 9_007_199_254_740_991.0)?;
-        visitor
-            .visit_i64::<Error>(x as i64)
-            .map_err(|e| e.at(&self.path))
-    }
-
-    fn deserialize_i32<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value> {
-        let x = self.integer(f64::from(i32::MIN), f64::from(i32::MAX))?;
-        visitor
-            .visit_i64::<Error>(x as i64)
-            .map_err(|e| e.at(&self.path))
-    }
-
-    fn deserialize_i16<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value> {
-        let x = self.integer(f64::from(i16::MIN), f64::from(i16::MAX))?;
-        visitor
-            .visit_i64::<Error>(x as i64)
-            .map_err(|e| e.at(&self.path))
-    }
-
-    fn deserialize_i8<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value> {
-        let x = self.integer(f64::from(i8::MIN), f64::from(i8::MAX))?;
-        visitor
-            .visit_i64::<Error>(x as i64)
-            .map_err(|e| e.at(&self.path))
+    // An integer: a finite number with no fraction within the type's range (integers beyond
+    // ±(2^53 − 1) are not exact in a JS number, so u64 and i64 stop there).
+    integers! {
+        deserialize_u64 => visit_u64 as u64 in 0.0, 9_007_199_254_740_991.0;
+        deserialize_u32 => visit_u64 as u64 in 0.0, f64::from(u32::MAX);
+        deserialize_u16 => visit_u64 as u64 in 0.0, f64::from(u16::MAX);
+        deserialize_u8 => visit_u64 as u64 in 0.0, f64::from(u8::MAX);
+        deserialize_i64 => visit_i64 as i64 in -9_007_199_254_740_991.0, 9_007_199_254_740_991.0;
+        deserialize_i32 => visit_i64 as i64 in f64::from(i32::MIN), f64::from(i32::MAX);
+        deserialize_i16 => visit_i64 as i64 in f64::from(i16::MIN), f64::from(i16::MAX);
+        deserialize_i8 => visit_i64 as i64 in f64::from(i8::MIN), f64::from(i8::MAX);
     }
 
     fn deserialize_char<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value> {

@@ -136,6 +136,19 @@ macro_rules! forward {
     };
 }
 
+/// The compound `serialize_*` methods: the inner serialiser's, wrapped so that the elements
+/// and fields written through it are renamed in turn.
+macro_rules! compound {
+    ($($method:ident($($arg:ident: $ty:ty),*) -> $out:ident;)*) => {
+        $(fn $method(self, $($arg: $ty),*) -> Result<Self::$out, S::Error> {
+            Ok(Compound {
+                inner: self.inner.$method($($arg),*)?,
+                parent: self.parent,
+            })
+        })*
+    };
+}
+
 impl<S: Serializer> Serializer for Rename<S> {
     type Ok = S::Ok;
     type Error = S::Error;
@@ -198,77 +211,16 @@ impl<S: Serializer> Serializer for Rename<S> {
             .serialize_newtype_variant(name, index, variant, &Renamed { value, parent })
     }
 
-    fn serialize_seq(self, len: Option<usize>) -> Result<Self::SerializeSeq, S::Error> {
-        Ok(Compound {
-            inner: self.inner.serialize_seq(len)?,
-            parent: self.parent,
-        })
-    }
-
-    fn serialize_tuple(self, len: usize) -> Result<Self::SerializeTuple, S::Error> {
-        Ok(Compound {
-            inner: self.inner.serialize_tuple(len)?,
-            parent: self.parent,
-        })
-    }
-
-    fn serialize_tuple_struct(
-        self,
-        name: &'static str,
-        len: usize,
-    ) -> Result<Self::SerializeTupleStruct, S::Error> {
-        Ok(Compound {
-            inner: self.inner.serialize_tuple_struct(name, len)?,
-            parent: self.parent,
-        })
-    }
-
-    fn serialize_tuple_variant(
-        self,
-        name: &'static str,
-        index: u32,
-        variant: &'static str,
-        len: usize,
-    ) -> Result<Self::SerializeTupleVariant, S::Error> {
-        Ok(Compound {
-            inner: self
-                .inner
-                .serialize_tuple_variant(name, index, variant, len)?,
-            parent: self.parent,
-        })
-    }
-
-    fn serialize_map(self, len: Option<usize>) -> Result<Self::SerializeMap, S::Error> {
-        Ok(Compound {
-            inner: self.inner.serialize_map(len)?,
-            parent: self.parent,
-        })
-    }
-
-    fn serialize_struct(
-        self,
-        name: &'static str,
-        len: usize,
-    ) -> Result<Self::SerializeStruct, S::Error> {
-        Ok(Compound {
-            inner: self.inner.serialize_struct(name, len)?,
-            parent: self.parent,
-        })
-    }
-
-    fn serialize_struct_variant(
-        self,
-        name: &'static str,
-        index: u32,
-        variant: &'static str,
-        len: usize,
-    ) -> Result<Self::SerializeStructVariant, S::Error> {
-        Ok(Compound {
-            inner: self
-                .inner
-                .serialize_struct_variant(name, index, variant, len)?,
-            parent: self.parent,
-        })
+    compound! {
+        serialize_seq(len: Option<usize>) -> SerializeSeq;
+        serialize_tuple(len: usize) -> SerializeTuple;
+        serialize_tuple_struct(name: &'static str, len: usize) -> SerializeTupleStruct;
+        serialize_tuple_variant(name: &'static str, index: u32, variant: &'static str, len: usize)
+            -> SerializeTupleVariant;
+        serialize_map(len: Option<usize>) -> SerializeMap;
+        serialize_struct(name: &'static str, len: usize) -> SerializeStruct;
+        serialize_struct_variant(name: &'static str, index: u32, variant: &'static str, len: usize)
+            -> SerializeStructVariant;
     }
 
     fn is_human_readable(&self) -> bool {
