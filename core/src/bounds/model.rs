@@ -104,6 +104,18 @@ pub fn is_linear_gaussian(prior: &dyn Density, obs: &dyn Observation) -> bool {
     prior.gaussian_form().is_some() && obs.linear_gaussian_form().is_some()
 }
 
+/// In that case, the mean and variance of the marginal m(z) = ∫ f_d(x) g(z|x) dx (the m of
+/// Lemma 1's β = m/v, paper 002; f_d = f when P_o is constant): with f = N(μ, P) and
+/// g(z|x) = N(z; a x + b, R), m = N(a μ + b, a² P + R). `None` outside the case.
+pub(crate) fn linear_gaussian_marginal(
+    prior: &dyn Density,
+    obs: &dyn Observation,
+) -> Option<(f64, f64)> {
+    let (mu, var) = prior.gaussian_form()?;
+    let (_, a, b, r) = obs.linear_gaussian_form()?;
+    Some((a * mu + b, a * a * var + r))
+}
+
 /// A standard normal draw (Box–Muller with libm, the same on every platform).
 pub(crate) fn standard_normal(rng: &mut SeededRng) -> f64 {
     let u1 = 1.0 - uniform(rng); // (0, 1]

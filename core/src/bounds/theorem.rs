@@ -5,7 +5,7 @@
 use alloc::vec::Vec;
 
 use crate::bounds::closed::{Assembled, Ingredients, assemble, check_nonnegative};
-use crate::bounds::model::{Density, Observation, normal_pdf};
+use crate::bounds::model::{Density, Observation, linear_gaussian_marginal, normal_pdf};
 use crate::error::{Error, Result, check_probability};
 use crate::math::fns;
 use crate::math::quadrature::{self, Control, Rule, Tolerance};
@@ -203,9 +203,8 @@ pub(crate) fn prior_stats(prior: &dyn Density, obs: &dyn Observation, tol: f64) 
 }
 
 /// m(z) = ∫ f_d(x) g(z|x) dx = ∫ p_1(x, z) dx (the m of Lemma 1's β = m/v, paper 002), by
-/// quadrature; in the linear-Gaussian case of (22) (f = N(μ, P) by [`Density::gaussian_form`],
-/// a constant P_o and g(z|x) = N(z; a x + b, R) by [`Observation::linear_gaussian_form`]) the
-/// closed form N(z; a μ + b, a² P + R) (f_d = f when P_o is constant).
+/// quadrature; in the linear-Gaussian case of (22) the closed form N(z; a μ + b, a² P + R)
+/// ([`linear_gaussian_marginal`]).
 pub(crate) fn marginal(
     prior: &dyn Density,
     obs: &dyn Observation,
@@ -216,10 +215,8 @@ pub(crate) fn marginal(
     if p_bar <= 0.0 {
         return 0.0;
     }
-    if let (Some((mu, var)), Some((_, a, b, r))) =
-        (prior.gaussian_form(), obs.linear_gaussian_form())
-    {
-        return normal_pdf(z, a * mu + b, a * a * var + r);
+    if let Some((mean, var)) = linear_gaussian_marginal(prior, obs) {
+        return normal_pdf(z, mean, var);
     }
     let (lo, hi) = prior.support();
     let (lo, hi) = obs.x_range(z, lo, hi);

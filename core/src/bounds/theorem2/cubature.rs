@@ -21,7 +21,9 @@
 use alloc::vec::Vec;
 
 use super::{ModelII, Term, information_density};
-use crate::bounds::model::{Density, Observation, normal_mass, normal_pdf};
+use crate::bounds::model::{
+    Density, Observation, linear_gaussian_marginal, normal_mass, normal_pdf,
+};
 use crate::bounds::theorem::inverse_information;
 use crate::math::fns;
 use crate::math::optimise::{bisect, golden_section};
@@ -512,14 +514,15 @@ impl LinearGaussianCase {
     pub(super) fn of(prior: &dyn Density, obs: &dyn Observation) -> Option<Self> {
         let (mu, var) = prior.gaussian_form()?;
         let (_, gain, offset, noise) = obs.linear_gaussian_form()?;
+        let (m_mean, m_var) = linear_gaussian_marginal(prior, obs)?;
         Some(LinearGaussianCase {
             gain,
             offset,
             noise,
             mu_over_p: mu / var,
             j0: 1.0 / var + gain * gain / noise,
-            m_mean: gain * mu + offset,
-            m_var: gain * gain * var + noise,
+            m_mean,
+            m_var,
         })
     }
 
