@@ -718,6 +718,7 @@ pub fn item_attrs(item: &Item) -> &[syn::Attribute] {
         Item::Enum(i) => &i.attrs,
         Item::Fn(i) => &i.attrs,
         Item::Impl(i) => &i.attrs,
+        Item::Macro(i) => &i.attrs,
         Item::Mod(i) => &i.attrs,
         Item::Static(i) => &i.attrs,
         Item::Struct(i) => &i.attrs,

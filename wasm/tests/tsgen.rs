@@ -199,6 +199,9 @@ fn an_item_is_compiled_for_a_part_when_its_cfg_holds() {
     assert!(holds("#[cfg(not(feature = \"control\"))] const C: u8 = 0;"));
     // a build script is not a test build
     assert!(!holds("#[cfg(test)] mod tests;"));
+    // a macro call that writes exports (`filter_methods!(…)`), with its `#[cfg]`
+    assert!(!holds("#[cfg(feature = \"control\")] m!(A, \"A\");"));
+    assert!(holds("#[cfg(feature = \"metrics\")] m!(A, \"A\");"));
 }
 
 #[test]
