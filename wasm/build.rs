@@ -17,6 +17,8 @@ use syn::Item;
 #[path = "src/names_rule.rs"]
 #[allow(dead_code)]
 mod names_rule;
+#[path = "ts_aliases.rs"]
+mod ts_aliases;
 #[path = "tsgen.rs"]
 mod tsgen;
 use tsgen::{TokStr, cfg_enabled, collect, item_attrs};
@@ -25,6 +27,27 @@ use tsgen::{TokStr, cfg_enabled, collect, item_attrs};
 fn type_names(ts: &str) -> impl Iterator<Item = &str> {
     ts.split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
         .filter(|w| w.starts_with(|c: char| c.is_ascii_uppercase()))
+}
+
+/// TypeScript text without its comments (`/* … */`, `// …`).
+fn without_comments(ts: &str) -> String {
+    let mut out = String::new();
+    let mut rest = ts;
+    while let Some(i) = rest.find('/') {
+        out.push_str(&rest[..i]);
+        let close = match &rest[i + 1..] {
+            r if r.starts_with('*') => "*/",
+            r if r.starts_with('/') => "\n",
+            _ => {
+                out.push('/');
+                rest = &rest[i + 1..];
+                continue;
+            }
+        };
+        let after = &rest[i + 2..];
+        rest = after.find(close).map_or("", |e| &after[e + close.len()..]);
+    }
+    out + rest
 }
 
 /// Whether a Cargo feature of the crate is enabled in this build.
@@ -43,13 +66,20 @@ fn main() {
     println!("cargo:rerun-if-changed={}", wasm_src.display());
     println!("cargo:rerun-if-changed={}", core_src.display());
     println!("cargo:rerun-if-changed=build.rs");
+    println!("cargo:rerun-if-changed=tsgen.rs");
+    println!("cargo:rerun-if-changed=ts_aliases.rs");
 
     // the part's modules (`#[cfg(feature = "x")] mod y;` in lib.rs, for the enabled features),
     // and in them the items compiled for the part: the names its functions take and return
-    // (`unchecked_param_type = "…"`, `#[tsify(type = "…")]`), and those the binding declares
+    // (`unchecked_param_type = "…"`, `#[tsify(type = "…")]`), the names its own TypeScript
+    // holds, and those the binding declares
     let lib = syn::parse_file(&fs::read_to_string(wasm_src.join("lib.rs")).unwrap()).unwrap();
     let mut roots = BTreeSet::new();
-    let mut declared = BTreeSet::new();
+    let mut mentioned = BTreeSet::new();
+    let mut declared: BTreeSet<String> = ts_aliases::ALIASES
+        .iter()
+        .map(|(name, _, _)| name.to_string())
+        .collect();
     for item in &lib.items {
         let Item::Mod(m) = item else { continue };
         if !cfg_enabled(&m.attrs, &feature_on) {
@@ -60,6 +90,14 @@ fn main() {
         for item in &file.items {
             if !cfg_enabled(item_attrs(item), &feature_on) {
                 continue;
+            }
+            if let Item::Const(c) = item
+                && let syn::Expr::Lit(syn::ExprLit {
+                    lit: syn::Lit::Str(ts),
+                    ..
+                }) = &*c.expr
+            {
+                mentioned.extend(type_names(&without_comments(&ts.value())).map(str::to_string));
             }
             let text = item.to_token_stream_string();
             for piece in text.split("type = \"").skip(1) {
@@ -102,12 +140,8 @@ fn main() {
 
     let mut defs = BTreeMap::new();
     collect(&core_src, &mut defs);
-    let wanted: Vec<&String> = roots
-        .iter()
-        .filter(|r| !declared.contains(*r) && defs.contains_key(*r))
-        .collect();
-
-    let (out, warnings) = tsgen::declarations_with(&defs, &wanted, &declared);
+    let (out, warnings) =
+        tsgen::part_declarations(&defs, &roots, &mentioned, &declared, ts_aliases::ALIASES);
     for w in warnings {
         println!("cargo:warning=TypeScript of the core's types: {w}");
     }

@@ -279,6 +279,8 @@ pub struct Gen<'a> {
     /// Core types whose TypeScript the binding declares itself under the same name (a core
     /// type with a hand-written serde form, such as `Costs`): named, not generated.
     pub declared: &'a BTreeSet<String>,
+    /// The declared names the generated types hold.
+    pub named: BTreeSet<String>,
 }
 
 impl Gen<'_> {
@@ -372,7 +374,10 @@ impl Gen<'_> {
                     },
                     // a name the binding declares is named, not generated or inlined (the
                     // core's `Region` is declared in the contract's form)
-                    _ if self.declared.contains(&name) => name,
+                    _ if self.declared.contains(&name) => {
+                        self.named.insert(name.clone());
+                        name
+                    }
                     _ => {
                         if let Some(Def {
                             item: Item::Type(alias),
@@ -569,11 +574,23 @@ pub fn declarations_with(
     roots: &[&String],
     declared: &BTreeSet<String>,
 ) -> (String, Vec<String>) {
+    let (out, warnings, _) = declarations_reaching(defs, roots, declared);
+    (out, warnings)
+}
+
+/// [`declarations_with`], and the names the declarations reach: the types generated and the
+/// declared names they hold.
+pub fn declarations_reaching(
+    defs: &BTreeMap<String, Def>,
+    roots: &[&String],
+    declared: &BTreeSet<String>,
+) -> (String, Vec<String>, BTreeSet<String>) {
     // twice: the first pass learns which fields hold each type (their names decide the
     // JavaScript names of the matrix fields), the second writes
     let mut parents = BTreeMap::new();
     let mut out = String::new();
     let mut warnings = Vec::new();
+    let mut reached = BTreeSet::new();
     for _ in 0..2 {
         let mut g = Gen {
             defs,
@@ -583,6 +600,7 @@ pub fn declarations_with(
             holder: String::new(),
             parents: std::mem::take(&mut parents),
             declared,
+            named: BTreeSet::new(),
         };
         for r in roots {
             g.want(r);
@@ -594,8 +612,62 @@ pub fn declarations_with(
         }
         parents = g.parents;
         warnings = g.warnings;
+        reached = g.seen.into_iter().chain(g.named).collect();
     }
-    (out, warnings)
+    (out, warnings, reached)
+}
+
+/// The declaration of an alias `(name, ty, doc)` of `ts_aliases.rs`: a doc that does not end
+/// in a period is followed by ": the core's `ty`.".
+pub fn alias(name: &str, ty: &str, doc: &str) -> String {
+    let doc = match doc.ends_with('.') {
+        true => doc.to_string(),
+        false => format!("{doc}: the core's `{ty}`."),
+    };
+    let lines: Vec<String> = doc.lines().map(str::to_string).collect();
+    format!("{}export type {name} = {ty};\n", Gen::doc_block(&lines, ""))
+}
+
+/// The declarations of a part: the core types its `roots` reach (as [`declarations_with`]) and
+/// the aliases of `table` (`ts_aliases.rs`) it reaches. An alias goes in when its name is
+/// among the roots or the names the part's own declarations hold (`mentioned`), or either of
+/// its names is reached by the generated types; the type it names then becomes a root. (A
+/// shape of the binding that only the binding's declarations hold, `BernoulliCosts` in the
+/// filters' `FilterEstimateLoss`, does not bring in the core's name for it, `Costs`.)
+pub fn part_declarations(
+    defs: &BTreeMap<String, Def>,
+    roots: &BTreeSet<String>,
+    mentioned: &BTreeSet<String>,
+    declared: &BTreeSet<String>,
+    table: &[(&str, &str, &str)],
+) -> (String, Vec<String>) {
+    let mut roots = roots.clone();
+    let mut chosen = vec![false; table.len()];
+    loop {
+        let wanted: Vec<&String> = roots
+            .iter()
+            .filter(|r| !declared.contains(*r) && defs.contains_key(*r))
+            .collect();
+        let (out, warnings, reached) = declarations_reaching(defs, &wanted, declared);
+        let mut grew = false;
+        for (i, (name, ty, _)) in table.iter().enumerate() {
+            let named = mentioned.contains(*name) || roots.contains(*name);
+            if !chosen[i] && (named || reached.contains(*name) || reached.contains(*ty)) {
+                chosen[i] = true;
+                grew = true;
+                roots.insert(ty.to_string());
+            }
+        }
+        if !grew {
+            let aliases: String = table
+                .iter()
+                .zip(&chosen)
+                .filter(|(_, c)| **c)
+                .map(|((name, ty, doc), _)| alias(name, ty, doc) + "\n")
+                .collect();
+            return (aliases + &out, warnings);
+        }
+    }
 }
 
 /// Whether items with these attributes are compiled: their `#[cfg(…)]` (features, `any`,
@@ -646,6 +718,7 @@ pub fn item_attrs(item: &Item) -> &[syn::Attribute] {
         Item::Enum(i) => &i.attrs,
         Item::Fn(i) => &i.attrs,
         Item::Impl(i) => &i.attrs,
+        Item::Macro(i) => &i.attrs,
         Item::Mod(i) => &i.attrs,
         Item::Static(i) => &i.attrs,
         Item::Struct(i) => &i.attrs,

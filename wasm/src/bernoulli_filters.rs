@@ -49,7 +49,7 @@ pub struct DetectionOptions {
 
 // `clutter` is the core's `Clutter` (its density reads as a number or an array, the core's
 // `ScalarOr`), and `reduction` the core's `ReductionOptions` (omitted: the filters' default
-// reduction); their TypeScript names stay. `Clutter`'s is written here: the core's density
+// reduction); their TypeScript names stay (`ts_aliases.rs`). `Clutter`'s is written here: the core's density
 // also holds a function (Rust only), which has no TypeScript.
 #[wasm_bindgen(typescript_custom_section)]
 const CORE_NAMES: &str = r#"
@@ -71,42 +71,6 @@ export interface ClutterOptions {
      */
     density: ClutterDensityOption;
 }
-/**
- * The reduction after the update (the options of `reduceMixture`): the core's
- * `ReductionOptions`. Omitted: prune 1e-6, merge within Mahalanobis distance 2 (U = 4),
- * Runnalls to 100.
- */
-export type ReductionOptionsJs = ReductionOptions;
-/**
- * The linear-Gaussian transition N(x; F x′, Q) (eq. (44) of paper 001): the core's
- * `TransitionRows`.
- */
-export type Transition = TransitionRows;
-/**
- * The linear-Gaussian likelihood N(z; H x, R) of vector measurements: the core's
- * `LikelihoodRows`.
- */
-export type LikelihoodOptions = LikelihoodRows;
-/**
- * Object birth (the core's `Birth`).
- */
-export type Birth = BirthOptions;
-/**
- * Object detection (the core's `Detection`).
- */
-export type Detection = DetectionOptions;
-/**
- * Clutter (the core's `Clutter`).
- */
-export type Clutter = ClutterOptions;
-/**
- * An anchor of the airport example: the core's `Anchor`.
- */
-export type AnchorOut = Anchor;
-/**
- * The truth at one report time: the core's `TruthPoint`.
- */
-export type TruthOut = TruthPoint;
 "#;
 
 /// Result of `gmBernoulliPredict`: a Bernoulli with a Gaussian-mixture (GM) density.

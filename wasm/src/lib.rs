@@ -60,38 +60,22 @@ mod multi_bernoulli;
 #[cfg(feature = "splitting")]
 mod splitting;
 
-#[cfg(feature = "bernoulli")]
-pub use bernoulli::{
-    bernoulli_estimate, bernoulli_loss_curve, bernoulli_threshold_curve, mmuc_estimate,
-    multi_bernoulli_point_estimate, probability_outside_ball,
-};
+#[cfg(any(feature = "bernoulli", feature = "filters"))]
+pub use bernoulli::*;
 #[cfg(feature = "filters")]
-pub use bernoulli_filters::{
-    GmBernoulliFilterJs, ParticleBernoulliFilterJs, airport_scenario, gm_bernoulli_predict,
-    gm_bernoulli_update,
-};
+pub use bernoulli_filters::*;
 #[cfg(feature = "bounds")]
-pub use bounds::{
-    gaussian_fisher_information, jde_bound, jde_bound_no_clutter, jde_example2,
-    jde_example2_regularity, jde_sequential_bound,
-};
+pub use bounds::*;
 #[cfg(feature = "control")]
-pub use control::{SensorControlRunJs, compare_schemes, multi_object_likelihood};
+pub use control::*;
 #[cfg(any(feature = "bernoulli", feature = "splitting"))]
-pub use fov::mixture_density_grid_js;
-#[cfg(feature = "splitting")]
-pub use fov::{fov_cardinality_js, fov_variance_map, placement_scene_js};
+pub use fov::*;
 #[cfg(feature = "metrics")]
-pub use metrics::{gospa, gospa_series, linear_assignment, ospa, ospa_series, uospa};
+pub use metrics::*;
 #[cfg(feature = "metrics")]
-pub use multi_bernoulli::{
-    mb_alternative_estimate, mb_decision_map, mb_identical_component_counts, mb_mean_square_error,
-    mb_optimal_estimate, multi_bernoulli_cardinality_js, multi_bernoulli_leave_one_out,
-};
+pub use multi_bernoulli::*;
 #[cfg(feature = "splitting")]
-pub use splitting::{
-    negative_information_scenario_js, reduce_mixture_js, split_for_regions_js, split_library_js,
-};
+pub use splitting::*;
 
 use wasm_bindgen::prelude::*;
 

@@ -13,15 +13,11 @@ use fisst::splitting::{
 };
 
 // The results are the core's own types written under the contract's names: `splitLibrary`'s
-// is generated from the core's source; the others are declared here because they hold the
-// contract's shapes the generator does not write (`null` for an absent value, mixtures as
-// `MixtureComponent[]`).
+// is generated from the core's source (its name in `ts_aliases.rs`); the others are declared
+// here because they hold the contract's shapes the generator does not write (`null` for an
+// absent value, mixtures as `MixtureComponent[]`).
 #[wasm_bindgen(typescript_custom_section)]
 const RESULTS: &str = r#"
-/**
- * Result of `splitLibrary`: the core's `SplitLibraryReport`.
- */
-export type SplitLibraryResult = SplitLibraryReport;
 /**
  * Result of `splitForRegions`: the split mixture and its mean-based partition (the core's
  * `SplitForRegionsReport`).

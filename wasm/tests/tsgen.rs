@@ -199,6 +199,9 @@ fn an_item_is_compiled_for_a_part_when_its_cfg_holds() {
     assert!(holds("#[cfg(not(feature = \"control\"))] const C: u8 = 0;"));
     // a build script is not a test build
     assert!(!holds("#[cfg(test)] mod tests;"));
+    // a macro call that writes exports (`filter_methods!(…)`), with its `#[cfg]`
+    assert!(!holds("#[cfg(feature = \"control\")] m!(A, \"A\");"));
+    assert!(holds("#[cfg(feature = \"metrics\")] m!(A, \"A\");"));
 }
 
 #[test]
@@ -278,6 +281,48 @@ fn field_paths_quoted_in_docs_are_in_javascript_names() {
     // Rust paths, constants and expressions stay as written
     assert!(
         ts.contains("`Transition::survival_probability`, `MAX_DENSE_WORK` and `a_b + c`)."),
+        "{ts}"
+    );
+}
+
+#[test]
+fn an_alias_of_ts_aliases_is_declared_where_the_part_reaches_one_of_its_names() {
+    let mut defs = BTreeMap::new();
+    tsgen::walk(syn::parse_file(SOURCE).unwrap().items, &mut defs);
+    let table = [
+        // reached by a root: the core type it names is generated
+        ("FilterResult", "FilterOptions", "Result of `filter`"),
+        // reached through the generated types (`FilterOptions.shape`)
+        ("ShapeOut", "Shape", "A shape.\nOn two lines."),
+        // a binding's name the generated types hold (`transition: Transition`)
+        ("Transition", "TransitionShape", "The core's `Transition`."),
+        // not reached: left out
+        ("Other", "NotSerde", "Another"),
+    ];
+    let set = |names: &[&str]| names.iter().map(|n| n.to_string()).collect();
+    let declared = set(&["FilterResult", "ShapeOut", "Transition", "Other"]);
+    let (ts, warnings) =
+        tsgen::part_declarations(&defs, &set(&["FilterResult"]), &set(&[]), &declared, &table);
+    assert!(warnings.is_empty(), "{warnings:?}");
+    for expected in [
+        "/**\n * Result of `filter`: the core's `FilterOptions`.\n */\nexport type FilterResult = FilterOptions;\n",
+        "/**\n * A shape.\n * On two lines.\n */\nexport type ShapeOut = Shape;\n",
+        "export type Transition = TransitionShape;\n",
+        "export interface FilterOptions {",
+        "    transition: Transition;",
+    ] {
+        assert!(ts.contains(expected), "missing {expected:?} in\n{ts}");
+    }
+    assert!(!ts.contains("Other"), "{ts}");
+    // a name the part's own TypeScript holds reaches the alias too, the type it names does not
+    let (ts, _) =
+        tsgen::part_declarations(&defs, &set(&[]), &set(&["NotSerde"]), &declared, &table);
+    assert!(ts.is_empty(), "{ts}");
+    let (ts, _) = tsgen::part_declarations(&defs, &set(&[]), &set(&["Other"]), &declared, &table);
+    assert!(
+        ts.starts_with(
+            "/**\n * Another: the core's `NotSerde`.\n */\nexport type Other = NotSerde;\n"
+        ),
         "{ts}"
     );
 }
