@@ -3,10 +3,42 @@
 // ParticleBernoulliFilter (5,000 particles, one MCMC move: the paper's settings) on the
 // same reports of airportScenario({ seed, steps: 60 }), after a warm-up run of each.
 //   node benches/airport_node.mjs [seed] [reps]   →  median ms per run, GM and PF, and PF/GM
+//   node benches/airport_node.mjs first [firstSeed=1] [lastSeed=10]
+//     →  the first run in a fresh process (what a page or a script meets: the module's
+//        compilation and the engine's first tier included), each filter in its own process
+//        (`node benches/airport_node.mjs once SEED gm|pf` prints one such time)
 // (build the package first: scripts/build-pkg.sh).
-import * as fisst from '../wasm/pkg/node.js';
+//
+// Measured (stop 40, Node 20, load average 2.9–3.5 from two builds): `first 1 10`: GM 101–234 ms,
+// PF 287–400 ms, PF/GM 1.3–3.0× (loading the module and the scenario 25–53 ms before it); the
+// same process's later runs of the GM filter take 40–60 ms: its first run pays for V8 compiling
+// each wasm function on first call (steps 1, 5 and 9 of seed 3 take 9–17 ms once, 0.4 ms after),
+// and `--no-liftoff` does not change that (271 against 252 ms).
+import { execFileSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
 
-const seed = Number(process.argv[2] ?? 1);
+const mode = process.argv[2];
+if (mode === 'first') {
+  const [first, last] = [Number(process.argv[3] ?? 1), Number(process.argv[4] ?? 10)];
+  const once = (seed, which) => execFileSync(process.execPath,
+    [fileURLToPath(import.meta.url), 'once', String(seed), which], { encoding: 'utf8' })
+    .trim().split(' ').map(Number);
+  const [ratios, loads] = [[], []];
+  for (let seed = first; seed <= last; seed++) {
+    const [[loadGm, gm], [loadPf, pf]] = [once(seed, 'gm'), once(seed, 'pf')];
+    ratios.push(pf / gm);
+    loads.push(loadGm, loadPf);
+    console.log(`seed ${String(seed).padStart(2)}: first run in a fresh process GM ${gm.toFixed(1)} ms, `
+      + `PF ${pf.toFixed(1)} ms, PF/GM ${(pf / gm).toFixed(1)}× (loading the module and the `
+      + `scenario before it: ${loadGm.toFixed(0)}, ${loadPf.toFixed(0)} ms)`);
+  }
+  console.log(`PF/GM of first runs ${Math.min(...ratios).toFixed(1)}–${Math.max(...ratios).toFixed(1)}×; `
+    + `loading ${Math.min(...loads).toFixed(0)}–${Math.max(...loads).toFixed(0)} ms`);
+  process.exit(0);
+}
+const t0 = process.hrtime.bigint();
+const fisst = await import('../wasm/pkg/node.js');
+const seed = Number(process.argv[mode === 'once' ? 3 : 2] ?? 1);
 const reps = Number(process.argv[3] ?? 11);
 const steps = 60;
 const s = fisst.airportScenario({ seed, steps });
@@ -40,9 +72,19 @@ function median(f) {
   return times[Math.floor(reps / 2)];
 }
 
-const gm = median(() => run(() => new fisst.GmBernoulliFilter(s.config)));
-const pf = median(() => run(() => new fisst.ParticleBernoulliFilter({
+const makeGm = () => new fisst.GmBernoulliFilter(s.config);
+const makePf = () => new fisst.ParticleBernoulliFilter({
   ...s.config, particles: 5000, mcmcMoves: 1, seed: seed + 1000,
-})));
+});
+if (mode === 'once') {
+  // Printed: the module's loading (import, compilation, the scenario) and the first run.
+  const t1 = process.hrtime.bigint();
+  run(process.argv[4] === 'pf' ? makePf : makeGm);
+  const ms = (a, b) => (Number(b - a) / 1e6).toFixed(3);
+  console.log(`${ms(t0, t1)} ${ms(t1, process.hrtime.bigint())}`);
+  process.exit(0);
+}
+const gm = median(() => run(makeGm));
+const pf = median(() => run(makePf));
 console.log(`airport ${steps} steps, seed ${seed}, Node, median of ${reps}: GM ${gm.toFixed(1)} ms, `
   + `PF 5000 + MCMC ${pf.toFixed(1)} ms, PF/GM ${(pf / gm).toFixed(1)}×`);
