@@ -11,9 +11,11 @@
 //
 // Measured (stop 40, Node 20, load average 2.9–3.5 from two builds): `first 1 10`: GM 101–234 ms,
 // PF 287–400 ms, PF/GM 1.3–3.0× (loading the module and the scenario 25–53 ms before it); the
-// same process's later runs of the GM filter take 40–60 ms: its first run pays for V8 compiling
-// each wasm function on first call (steps 1, 5 and 9 of seed 3 take 9–17 ms once, 0.4 ms after),
-// and `--no-liftoff` does not change that (271 against 252 ms).
+// same process's later runs of the GM filter take 40–60 ms. The first run is V8's: each wasm
+// function is compiled on first call by the baseline compiler (Liftoff) and runs that slower code
+// until the optimising tier has caught up (steps 1, 5 and 9 of seed 3 take 9–17 ms once, 0.4 ms
+// after). Seed 3's GM, load then run: default 36 + 177 ms; `--no-wasm-lazy-compilation` 69–87 +
+// 112–144 ms; with `--no-liftoff` too 1,770–1,816 + 25 ms (everything optimised before the run).
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 
