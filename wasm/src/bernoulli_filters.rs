@@ -9,14 +9,14 @@ use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{
-    JsResult, OrThrow, core_error, core_error_rendered, range_error, read, render_path,
-    seed_or_entropy, type_error, write,
+    JsResult, OrThrow, core_error, core_error_rendered, read, render_path, seed_or_entropy,
+    type_error, write,
 };
 use crate::names::Renamed;
 use crate::types::{MixtureComponent, WeightedGaussian};
 use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
-    self as core_filters, BernoulliFilterConfig, EstimateOptions, FilterEstimate, GmBernoulli,
+    self as core_filters, BernoulliFilterConfig, EstimateOptions, FilterEstimate,
     GmBernoulliPredictOptions, GmBernoulliUpdateOptions, ParticleOptions, TransitionRows,
 };
 use fisst::regions::Region;
@@ -158,27 +158,7 @@ pub fn gm_bernoulli_update(
     #[wasm_bindgen(unchecked_param_type = "GmBernoulliUpdateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: GmBernoulliUpdateOptions = read(options, "options")?;
-    let config = o.update_options().or_throw_rendered("options")?;
-    let state = GmBernoulli {
-        existence: o.existence,
-        mixture: o.mixture,
-    };
-    let out = match (o.measurements, o.likelihood) {
-        (Some(z), Some(l)) => {
-            let lik = l.build().or_throw_rendered("options")?;
-            core_filters::gm_bernoulli_update_vector(&state, &z, &lik, &config)
-                .or_throw_rendered("options")?
-        }
-        (Some(_), None) => {
-            return Err(range_error(
-                "options.likelihood is needed with options.measurements",
-            ));
-        }
-        (None, _) => {
-            let r = o.reports.unwrap_or_default();
-            core_filters::gm_bernoulli_update(&state, &r, &config).or_throw_rendered("options")?
-        }
-    };
+    let out = o.run().or_throw_rendered("options")?;
     write(&Renamed::new(&out))
 }
 
