@@ -116,13 +116,7 @@ impl SensorControlRunJs {
     /// OSPA, choose the next action. A `RangeError` once `k` reached `steps`.
     #[wasm_bindgen(unchecked_return_type = "ControlStep")]
     pub fn step(&mut self) -> JsResult<JsValue> {
-        let steps = self.inner.options().steps;
-        let s = self.inner.step().map_err(|e| match e {
-            fisst::Error::Unsupported { .. } => {
-                range_error(format!("step: the run has done all its {steps} steps"))
-            }
-            e => core_error_rendered(e, "step"),
-        })?;
+        let s = self.inner.step().map_err(|e| core_error_rendered(e, ""))?;
         write(&Renamed::new(&s))
     }
 

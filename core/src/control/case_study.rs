@@ -14,7 +14,7 @@ use super::actions::{Action, ActionGrid};
 use super::renyi_kernel::{FutureScans, renyi_rewards};
 use super::rewards::{fisher_reward, pent_reward};
 pub use super::sensor::RangeSensor;
-use crate::error::{Error, Result};
+use crate::error::{Error, Phrase, Result};
 use crate::math::fns::exp;
 use crate::math::rng::{SeededRng, index, seeded};
 use crate::metrics::Ospa;
@@ -418,15 +418,14 @@ impl ControlRun {
     /// regularise, estimate, score, choose the next action.
     ///
     /// # Errors
-    /// [`Error::Unsupported`] naming `steps` once K steps are done. On `Err`, the run is
-    /// unchanged (the step works on its own copies of the particles and of both random
-    /// streams, and stores them only on success).
+    /// [`Error::Form`] naming `step` once K steps are done (`step: the run has done all its K
+    /// steps`, as both bindings say it). On `Err`, the run is unchanged (the step works on its
+    /// own copies of the particles and of both random streams, and stores them only on
+    /// success).
     pub fn step(&mut self) -> Result<StepOutcome> {
         if self.k >= self.config.steps {
-            return Err(Error::Unsupported {
-                what: "steps".into(),
-                reason: "the run has done all its steps",
-            });
+            let done = alloc::format!(": the run has done all its {} steps", self.config.steps);
+            return Err(Error::form("step", false, vec![Phrase::text(done)]));
         }
         let cfg = &self.config;
         let (mut world, mut rng) = (self.world.clone(), self.rng.clone());

@@ -267,7 +267,7 @@ fn alg1_reduced_run_localises_both_sources() {
     assert_eq!(run.sensor_path().len(), 31);
 }
 
-/// A step after the last one fails naming `steps` and leaves the run unchanged: particles,
+/// A step after the last one fails naming `step` (the bindings' words) and leaves the run unchanged: particles,
 /// path, scans and both random streams (every field, through `Debug`).
 #[test]
 fn alg1_step_after_the_last_leaves_the_run_unchanged() {
@@ -278,7 +278,11 @@ fn alg1_step_after_the_last_leaves_the_run_unchanged() {
     run.step().unwrap();
     let before = alloc::format!("{run:?}");
     let e = run.step().unwrap_err();
-    assert_eq!(e.field(), "steps");
+    assert_eq!(e.field(), "step");
+    assert_eq!(
+        alloc::format!("{e}"),
+        "step: the run has done all its 2 steps"
+    );
     assert_eq!(alloc::format!("{run:?}"), before);
     assert_eq!(run.k(), 2);
 }
