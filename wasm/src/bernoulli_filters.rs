@@ -9,12 +9,10 @@ use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{
-    JsResult, OrThrow, core_error, core_error_rendered, read, render_path, seed_or_entropy,
-    type_error, write,
+    JsResult, OrThrow, core_error, core_error_rendered, read, render_path, seed_or_entropy, write,
 };
 use crate::names::Renamed;
 use crate::types::{MixtureComponent, WeightedGaussian};
-use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
     self as core_filters, BernoulliFilterConfig, EstimateOptions, FilterEstimate,
     GmBernoulliPredictOptions, GmBernoulliUpdateOptions, ParticleOptions, TransitionRows,
@@ -211,14 +209,7 @@ fn scan_error(e: fisst::Error) -> JsValue {
 /// together (`FilterEstimateLoss`); omitted (or neither): no `report`.
 #[derive(Deserialize, Tsify, Default)]
 #[tsify(type = "FilterEstimateLoss | { radius?: undefined; costs?: undefined }")]
-pub struct FilterEstimateOptions {
-    /// The radius r0 > 0 of the loss's tolerance ball (a position distance).
-    #[tsify(optional)]
-    pub radius: Option<f64>,
-    /// The costs of the loss (7).
-    #[tsify(optional)]
-    pub costs: Option<fisst::bernoulli::Costs>,
-}
+pub struct FilterEstimateOptions(core_filters::EstimateLossOptions);
 
 /// The result of the filters' `estimate()`: the posterior existence, MMSE state and covariance.
 #[derive(Serialize, Tsify)]
@@ -280,27 +271,11 @@ export interface ParticleBernoulliFilter {
 "#;
 
 fn estimate_options(options: JsValue) -> JsResult<EstimateOptions> {
-    if options.is_undefined() || options.is_null() {
-        return Ok(EstimateOptions::default());
-    }
-    let o: FilterEstimateOptions = read(options, "options")?;
-    Ok(match (o.radius, o.costs) {
-        (Some(r), Some(c)) => EstimateOptions {
-            loss: Some(ApplicationLoss::new(c, r).or_throw_rendered("options")?),
-        },
-        (None, None) => EstimateOptions::default(),
-        // A missing field is a TypeError naming it (the README's rule), as `read` reports one.
-        (Some(_), None) => {
-            return Err(type_error(
-                "options.costs is required with options.radius (the loss (7) takes both)",
-            ));
-        }
-        (None, Some(_)) => {
-            return Err(type_error(
-                "options.radius is required with options.costs (the loss (7) takes both)",
-            ));
-        }
-    })
+    let o: Option<FilterEstimateOptions> = read(options, "options")?;
+    o.unwrap_or_default()
+        .0
+        .options()
+        .or_throw_rendered("options")
 }
 
 fn estimate_result(e: FilterEstimate) -> FilterEstimateResult {

@@ -4,8 +4,10 @@
 use alloc::vec::Vec;
 
 use super::config::GmBernoulli;
-use crate::bernoulli::{ApplicationLoss, BernoulliEstimate, ParticleSet, SpatialDensity, estimate};
-use crate::error::{Error, Result};
+use crate::bernoulli::{
+    ApplicationLoss, BernoulliEstimate, Costs, ParticleSet, SpatialDensity, estimate,
+};
+use crate::error::{Error, Phrase, Result};
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::math::sum::NeumaierSum;
 
@@ -23,6 +25,50 @@ pub struct EstimateOptions {
     /// estimate includes the optimal Bernoulli point estimate (`report`), computed on the
     /// position marginal (the first n_s state components), so r0 is a position distance.
     pub loss: Option<ApplicationLoss>,
+}
+
+/// The loss of [`EstimateOptions`] as a caller writes it: `radius` and `costs` side by side,
+/// both given or neither (the npm package's `estimate({ radius, costs })`).
+#[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
+pub struct EstimateLossOptions {
+    /// The radius r0 > 0 of the loss's tolerance ball (a position distance).
+    pub radius: Option<f64>,
+    /// The costs of the loss (7) of paper `000`.
+    pub costs: Option<Costs>,
+}
+
+impl EstimateLossOptions {
+    /// The [`EstimateOptions`]: with the loss when both are given, without it when neither is.
+    ///
+    /// # Errors
+    /// [`Error::Form`] (a wrong kind) naming the one missing when only the other is given;
+    /// as [`ApplicationLoss::new`].
+    pub fn options(&self) -> Result<EstimateOptions> {
+        let missing = |what: &str, with: &str| {
+            Err(Error::form(
+                what,
+                true,
+                alloc::vec![
+                    Phrase::text("is required with "),
+                    Phrase::path(with),
+                    Phrase::text(" (the loss (7) takes both)"),
+                ],
+            ))
+        };
+        match (self.radius, self.costs) {
+            (Some(r), Some(c)) => Ok(EstimateOptions {
+                loss: Some(ApplicationLoss::new(c, r)?),
+            }),
+            (None, None) => Ok(EstimateOptions::default()),
+            (Some(_), None) => missing("costs", "radius"),
+            (None, Some(_)) => missing("radius", "costs"),
+        }
+    }
 }
 
 /// A Bernoulli filter's estimate (`{ existence, mean, cov, report }`).
@@ -256,6 +302,49 @@ pub(crate) fn particle_estimate(
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn estimate_loss_options_take_radius_and_costs_together() {
+        use super::{EstimateLossOptions, EstimateOptions};
+        use crate::bernoulli::{ApplicationLoss, Costs};
+        let costs = Costs::mpe();
+        let both = EstimateLossOptions {
+            radius: Some(2.0),
+            costs: Some(costs),
+        };
+        let loss = ApplicationLoss::new(costs, 2.0).unwrap();
+        assert_eq!(both.options().unwrap().loss, Some(loss));
+        assert_eq!(
+            EstimateLossOptions::default().options().unwrap(),
+            EstimateOptions::default()
+        );
+        let radius = EstimateLossOptions {
+            costs: None,
+            ..both.clone()
+        };
+        let e = radius.options().unwrap_err();
+        assert!(e.is_wrong_kind());
+        assert_eq!(
+            alloc::format!("{}", e.within("options")),
+            "options.costs is required with options.radius (the loss (7) takes both)"
+        );
+        let costs_only = EstimateLossOptions {
+            radius: None,
+            ..both.clone()
+        };
+        assert_eq!(
+            alloc::format!("{}", costs_only.options().unwrap_err()),
+            "radius is required with costs (the loss (7) takes both)"
+        );
+        let bad = EstimateLossOptions {
+            radius: Some(-1.0),
+            ..both
+        };
+        assert_eq!(
+            bad.options().unwrap_err(),
+            ApplicationLoss::new(costs, -1.0).unwrap_err()
+        );
+    }
+
     use super::*;
 
     fn gm(components: &[(f64, [f64; 2], f64)]) -> GmBernoulli {
