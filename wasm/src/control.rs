@@ -5,14 +5,13 @@
 //! boundary; their TypeScript is generated from the core's source (`build.rs`), under the
 //! contract's names below. The shapes are also listed in `core/src/control/JS_SHAPES.md`.
 
-use std::format;
 use std::string::String;
 
 use fisst::control::MultiObjectLikelihoodOptions;
 use fisst::control::{CompareOptions, ControlOptions, ControlParticles, ControlRun};
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{JsResult, core_error_rendered, de_error, range_error, read, render_path};
+use crate::boundary::{JsResult, core_error_rendered, de_error, read};
 use crate::boundary::{seed_or_entropy, write};
 use crate::names::Renamed;
 
@@ -42,37 +41,9 @@ export type SchemeComparison = SchemeSummary;
 export type MeanOverRuns = MeanSeries;
 "#;
 
-/// A core error about `options` in JavaScript names, with the package's wording for the caps:
-/// a work cap "`options.x`: … must be at most …, got …", and the objects and measurements
-/// of `multiObjectLikelihood` "at most … are supported".
+/// A core error about `options` in JavaScript names (the caps are worded by the core).
 fn options_error(e: fisst::Error) -> JsValue {
-    let path = |what: &str| format!("options.{}", render_path(what));
-    match &e {
-        fisst::Error::OverBudget {
-            what,
-            measure,
-            work,
-            limit,
-            ..
-        } => range_error(format!(
-            "{}: {} must be at most {limit}, got {work}",
-            path(what),
-            render_path(measure)
-        )),
-        fisst::Error::OutOfRange {
-            what, value, max, ..
-        } if what == "likelihoods" || what == "clutter_density" => {
-            let unit = match what.as_str() {
-                "likelihoods" => "objects",
-                _ => "measurements",
-            };
-            range_error(format!(
-                "{}: at most {max} {unit} are supported, got {value}",
-                path(what)
-            ))
-        }
-        _ => core_error_rendered(e, "options"),
-    }
+    core_error_rendered(e, "options")
 }
 
 /// The multi-object likelihood (20) of Ristic & Vo, "Sensor control for multi-object state-space
