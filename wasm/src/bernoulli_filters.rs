@@ -4,7 +4,7 @@
 use std::format;
 use std::vec::Vec;
 
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
@@ -14,8 +14,8 @@ use crate::boundary::{
 use crate::names::Renamed;
 use crate::types::{MixtureComponent, WeightedGaussian};
 use fisst::filters::{
-    self as core_filters, BernoulliFilterConfig, EstimateOptions, FilterEstimate,
-    GmBernoulliPredictOptions, GmBernoulliUpdateOptions, ParticleOptions, TransitionRows,
+    self as core_filters, BernoulliFilterConfig, EstimateOptions, GmBernoulliPredictOptions,
+    GmBernoulliUpdateOptions, ParticleOptions, TransitionRows,
 };
 use fisst::regions::Region;
 use fisst::sim::airport::{AirportScenarioOptions, AirportScenarioReport, Anchor, TruthPoint};
@@ -212,7 +212,8 @@ fn scan_error(e: fisst::Error) -> JsValue {
 pub struct FilterEstimateOptions(core_filters::EstimateLossOptions);
 
 /// The result of the filters' `estimate()`: the posterior existence, MMSE state and covariance.
-#[derive(Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `FilterEstimateReport`
+#[derive(Tsify)]
 pub struct FilterEstimateResult {
     /// The posterior existence probability r ∈ [0, 1].
     pub existence: f64,
@@ -224,7 +225,6 @@ pub struct FilterEstimateResult {
     /// Bernoulli point estimation with applications" (paper 000)) on the position marginal; null
     /// without a loss.
     #[tsify(type = "BernoulliEstimateResult | null")]
-    #[serde(serialize_with = "renamed_report")]
     pub report: Option<fisst::bernoulli::BernoulliReport>,
 }
 
@@ -278,26 +278,6 @@ fn estimate_options(options: JsValue) -> JsResult<EstimateOptions> {
         .or_throw_rendered("options")
 }
 
-fn estimate_result(e: FilterEstimate) -> FilterEstimateResult {
-    FilterEstimateResult {
-        existence: e.existence,
-        mean: e.mean,
-        cov: e.cov,
-        report: e
-            .report
-            .as_ref()
-            .map(fisst::bernoulli::BernoulliReport::from),
-    }
-}
-
-/// Writes the core's `BernoulliReport` under its JavaScript names (null for `None`).
-fn renamed_report<S: serde::Serializer>(
-    report: &Option<fisst::bernoulli::BernoulliReport>,
-    s: S,
-) -> Result<S::Ok, S::Error> {
-    serde::Serialize::serialize(&report.as_ref().map(crate::names::Renamed::new), s)
-}
-
 /// The methods both filter classes share, each on the class's core filter `inner`: `update`
 /// (the core filter is unchanged when it fails), `estimate` and the `existence` getter.
 macro_rules! filter_methods {
@@ -330,9 +310,8 @@ macro_rules! filter_methods {
                 options: JsValue,
             ) -> JsResult<JsValue> {
                 let o = estimate_options(options)?;
-                write(&estimate_result(
-                    self.inner.estimate(&o).map_err(estimate_error)?,
-                ))
+                let e = self.inner.estimate(&o).map_err(estimate_error)?;
+                write(&Renamed::new(&core_filters::FilterEstimateReport::from(e)))
             }
 
             /// The current existence probability r ∈ [0, 1].

@@ -5,7 +5,8 @@ use alloc::vec::Vec;
 
 use super::config::GmBernoulli;
 use crate::bernoulli::{
-    ApplicationLoss, BernoulliEstimate, Costs, ParticleSet, SpatialDensity, estimate,
+    ApplicationLoss, BernoulliEstimate, BernoulliReport, Costs, ParticleSet, SpatialDensity,
+    estimate,
 };
 use crate::error::{Error, Phrase, Result};
 use crate::gaussian::{Gaussian, GaussianMixture};
@@ -91,6 +92,34 @@ impl FilterEstimate {
     /// components (Fig. 8's "covariance RSS").
     pub fn rss(&self, dims: core::ops::Range<usize>) -> f64 {
         crate::math::fns::sqrt(dims.map(|i| self.cov[i][i]).sum::<f64>())
+    }
+}
+
+/// A [`FilterEstimate`] in the flat form the npm package returns: the point estimate as a
+/// [`BernoulliReport`], always written (null without a loss).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct FilterEstimateReport {
+    /// The posterior existence probability r_{k|k} ∈ [0, 1].
+    pub existence: f64,
+    /// The MMSE state estimate.
+    pub mean: Vec<f64>,
+    /// The posterior covariance, rows.
+    pub cov: Vec<Vec<f64>>,
+    /// The optimal Bernoulli point estimate on the position marginal; `None` (null) without
+    /// a loss.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::nullable"))]
+    pub report: Option<BernoulliReport>,
+}
+
+impl From<FilterEstimate> for FilterEstimateReport {
+    fn from(e: FilterEstimate) -> Self {
+        Self {
+            existence: e.existence,
+            mean: e.mean,
+            cov: e.cov,
+            report: e.report.as_ref().map(BernoulliReport::from),
+        }
     }
 }
 
@@ -302,6 +331,39 @@ pub(crate) fn particle_estimate(
 
 #[cfg(test)]
 mod tests {
+    #[cfg(feature = "serde")]
+    #[test]
+    fn filter_estimate_report_writes_the_report_or_null() {
+        use super::{FilterEstimate, FilterEstimateReport};
+        use crate::bernoulli::{ApplicationLoss, Costs, SpatialDensity, estimate};
+        let density = SpatialDensity::gaussian_from_slices(&[0.0], &[1.0]).unwrap();
+        let loss = ApplicationLoss::new(Costs::mpe(), 1.0).unwrap();
+        let e = FilterEstimate {
+            existence: 0.9,
+            mean: alloc::vec![0.0],
+            cov: alloc::vec![alloc::vec![1.0]],
+            report: None,
+        };
+        let without = serde_json::to_string(&FilterEstimateReport::from(e.clone())).unwrap();
+        assert_eq!(
+            without,
+            r#"{"existence":0.9,"mean":[0.0],"cov":[[1.0]],"report":null}"#
+        );
+        let b = estimate(0.9, &density, &loss).unwrap();
+        let with = FilterEstimateReport::from(FilterEstimate {
+            report: Some(b.clone()),
+            ..e
+        });
+        assert_eq!(
+            with.report,
+            Some(crate::bernoulli::BernoulliReport::from(&b))
+        );
+        assert_eq!(
+            (with.existence, with.mean, with.cov),
+            (0.9, alloc::vec![0.0], alloc::vec![alloc::vec![1.0]])
+        );
+    }
+
     #[test]
     fn estimate_loss_options_take_radius_and_costs_together() {
         use super::{EstimateLossOptions, EstimateOptions};
