@@ -86,14 +86,8 @@ impl SensorControlRun {
     fn step<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         py.check_signals()?;
         let mut run = self.run()?;
-        let steps = run.options().steps;
         let inner: &mut ControlRun = &mut run;
-        let outcome = py.detach(|| inner.step()).map_err(|e| match e {
-            fisst::Error::Unsupported { .. } => pyo3::exceptions::PyValueError::new_err(format!(
-                "step: the run has done all its {steps} steps"
-            )),
-            e => to_py(e),
-        })?;
+        let outcome = py.detach(|| inner.step()).map_err(to_py)?;
         result(py, &outcome)
     }
 

@@ -2,16 +2,13 @@
 //! estimation with applications", paper 000): the estimate of Theorem III.3, q(a), the MMUC
 //! estimate and the threshold curves of Fig. 3.
 
-use serde::Deserialize;
-use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, read, write};
 use crate::names::Renamed;
-use crate::types::Point;
 use fisst::bernoulli::{
     self, BernoulliEstimateOptions, LossCurveOptions, MmucOptions, MultiBernoulliPointOptions,
-    SpatialDensity, ThresholdCurveOptions,
+    ProbabilityOutsideBallOptions, ThresholdCurveOptions,
 };
 
 // The spatial density of a Bernoulli is the core's `SpatialDensity`, read by its own
@@ -40,18 +37,6 @@ const COSTS: &str = r#"
 export type BernoulliCosts = 'mpe' | { mmol: { asset: number; countermeasure: number } } | { c00: number; c01: number; c10: number; c11: number; c: number };
 "#;
 
-/// Options of `probabilityOutsideBall`: a density and a ball.
-#[derive(Deserialize, Tsify)]
-pub struct ProbabilityOutsideBallOptions {
-    /// The spatial density of the object's state.
-    #[tsify(type = "BernoulliDensity")]
-    pub density: SpatialDensity,
-    /// The ball's centre (the density's dimension).
-    pub center: Point,
-    /// The ball's radius, > 0, in state units.
-    pub radius: f64,
-}
-
 /// The Bayes-optimal point estimate of a Bernoulli (Theorem III.3 of Narykov, Üney & Ralph,
 /// "Optimal Bernoulli point estimation with applications", paper 000): report the MMUC point a*
 /// (12) when the existence probability exceeds Γ (11), else nothing. Options `{ existence, density,
@@ -77,9 +62,7 @@ pub fn probability_outside_ball(
     #[wasm_bindgen(unchecked_param_type = "ProbabilityOutsideBallOptions")] options: JsValue,
 ) -> JsResult<f64> {
     let o: ProbabilityOutsideBallOptions = read(options, "options")?;
-    let s = o.density;
-    s.prob_outside_ball(&o.center.0, o.radius)
-        .or_throw_in("options")
+    o.probability().or_throw_in("options")
 }
 
 /// Γ (11) for each σ of an isotropic Gaussian N(a*, σ² I_dim) — Fig. 3 of Narykov, Üney & Ralph,

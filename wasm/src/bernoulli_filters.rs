@@ -4,20 +4,18 @@
 use std::format;
 use std::vec::Vec;
 
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
 use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{
-    JsResult, OrThrow, core_error, core_error_rendered, range_error, read, render_path,
-    seed_or_entropy, type_error, write,
+    JsResult, OrThrow, core_error, core_error_rendered, read, render_path, seed_or_entropy, write,
 };
 use crate::names::Renamed;
 use crate::types::{MixtureComponent, WeightedGaussian};
-use fisst::bernoulli::ApplicationLoss;
 use fisst::filters::{
-    self as core_filters, BernoulliFilterConfig, EstimateOptions, FilterEstimate, GmBernoulli,
-    GmBernoulliPredictOptions, GmBernoulliUpdateOptions, ParticleOptions, TransitionRows,
+    self as core_filters, BernoulliFilterConfig, EstimateOptions, GmBernoulliPredictOptions,
+    GmBernoulliUpdateOptions, ParticleOptions, TransitionRows,
 };
 use fisst::regions::Region;
 use fisst::sim::airport::{AirportScenarioOptions, AirportScenarioReport, Anchor, TruthPoint};
@@ -122,27 +120,7 @@ pub fn gm_bernoulli_update(
     #[wasm_bindgen(unchecked_param_type = "GmBernoulliUpdateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: GmBernoulliUpdateOptions = read(options, "options")?;
-    let config = o.update_options().or_throw_rendered("options")?;
-    let state = GmBernoulli {
-        existence: o.existence,
-        mixture: o.mixture,
-    };
-    let out = match (o.measurements, o.likelihood) {
-        (Some(z), Some(l)) => {
-            let lik = l.build().or_throw_rendered("options")?;
-            core_filters::gm_bernoulli_update_vector(&state, &z, &lik, &config)
-                .or_throw_rendered("options")?
-        }
-        (Some(_), None) => {
-            return Err(range_error(
-                "options.likelihood is needed with options.measurements",
-            ));
-        }
-        (None, _) => {
-            let r = o.reports.unwrap_or_default();
-            core_filters::gm_bernoulli_update(&state, &r, &config).or_throw_rendered("options")?
-        }
-    };
+    let out = o.run().or_throw_rendered("options")?;
     write(&Renamed::new(&out))
 }
 
@@ -195,17 +173,11 @@ fn scan_error(e: fisst::Error) -> JsValue {
 /// together (`FilterEstimateLoss`); omitted (or neither): no `report`.
 #[derive(Deserialize, Tsify, Default)]
 #[tsify(type = "FilterEstimateLoss | { radius?: undefined; costs?: undefined }")]
-pub struct FilterEstimateOptions {
-    /// The radius r0 > 0 of the loss's tolerance ball (a position distance).
-    #[tsify(optional)]
-    pub radius: Option<f64>,
-    /// The costs of the loss (7).
-    #[tsify(optional)]
-    pub costs: Option<fisst::bernoulli::Costs>,
-}
+pub struct FilterEstimateOptions(core_filters::EstimateLossOptions);
 
 /// The result of the filters' `estimate()`: the posterior existence, MMSE state and covariance.
-#[derive(Serialize, Tsify)]
+#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `FilterEstimateReport`
+#[derive(Tsify)]
 pub struct FilterEstimateResult {
     /// The posterior existence probability r ∈ [0, 1].
     pub existence: f64,
@@ -217,7 +189,6 @@ pub struct FilterEstimateResult {
     /// Bernoulli point estimation with applications" (paper 000)) on the position marginal; null
     /// without a loss.
     #[tsify(type = "BernoulliEstimateResult | null")]
-    #[serde(serialize_with = "renamed_report")]
     pub report: Option<fisst::bernoulli::BernoulliReport>,
 }
 
@@ -264,47 +235,11 @@ export interface ParticleBernoulliFilter {
 "#;
 
 fn estimate_options(options: JsValue) -> JsResult<EstimateOptions> {
-    if options.is_undefined() || options.is_null() {
-        return Ok(EstimateOptions::default());
-    }
-    let o: FilterEstimateOptions = read(options, "options")?;
-    Ok(match (o.radius, o.costs) {
-        (Some(r), Some(c)) => EstimateOptions {
-            loss: Some(ApplicationLoss::new(c, r).or_throw_rendered("options")?),
-        },
-        (None, None) => EstimateOptions::default(),
-        // A missing field is a TypeError naming it (the README's rule), as `read` reports one.
-        (Some(_), None) => {
-            return Err(type_error(
-                "options.costs is required with options.radius (the loss (7) takes both)",
-            ));
-        }
-        (None, Some(_)) => {
-            return Err(type_error(
-                "options.radius is required with options.costs (the loss (7) takes both)",
-            ));
-        }
-    })
-}
-
-fn estimate_result(e: FilterEstimate) -> FilterEstimateResult {
-    FilterEstimateResult {
-        existence: e.existence,
-        mean: e.mean,
-        cov: e.cov,
-        report: e
-            .report
-            .as_ref()
-            .map(fisst::bernoulli::BernoulliReport::from),
-    }
-}
-
-/// Writes the core's `BernoulliReport` under its JavaScript names (null for `None`).
-fn renamed_report<S: serde::Serializer>(
-    report: &Option<fisst::bernoulli::BernoulliReport>,
-    s: S,
-) -> Result<S::Ok, S::Error> {
-    serde::Serialize::serialize(&report.as_ref().map(crate::names::Renamed::new), s)
+    let o: Option<FilterEstimateOptions> = read(options, "options")?;
+    o.unwrap_or_default()
+        .0
+        .options()
+        .or_throw_rendered("options")
 }
 
 /// The methods both filter classes share, each on the class's core filter `inner`: `update`
@@ -339,9 +274,8 @@ macro_rules! filter_methods {
                 options: JsValue,
             ) -> JsResult<JsValue> {
                 let o = estimate_options(options)?;
-                write(&estimate_result(
-                    self.inner.estimate(&o).map_err(estimate_error)?,
-                ))
+                let e = self.inner.estimate(&o).map_err(estimate_error)?;
+                write(&Renamed::new(&core_filters::FilterEstimateReport::from(e)))
             }
 
             /// The current existence probability r ∈ [0, 1].

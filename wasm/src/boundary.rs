@@ -111,35 +111,3 @@ pub fn seed_or_entropy(seed: Option<u64>) -> JsResult<u64> {
         None => fisst::math::rng::entropy_seed().or_throw_in("options"),
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::render_path;
-
-    #[test]
-    fn render_path_camel_cases_each_segment() {
-        assert_eq!(render_path("max_components"), "maxComponents");
-        assert_eq!(render_path("grid_points"), "gridPoints");
-        assert_eq!(
-            render_path("rfs.iid_cluster.cardinality"),
-            "rfs.iidCluster.cardinality"
-        );
-        assert_eq!(
-            render_path("regions[2].position_dims"),
-            "regions[2].positionDims"
-        );
-        assert_eq!(render_path("existence[3]"), "existence[3]");
-        assert_eq!(render_path("missProbability"), "missProbability");
-        assert_eq!(render_path("transition.F"), "transition.F");
-        assert_eq!(render_path("transition.q"), "transition.Q");
-        assert_eq!(
-            render_path("reports[0].ball.center"),
-            "reports[0].disc.center"
-        );
-        assert_eq!(
-            render_path("detection.fov.complement.union[0].ball.center"),
-            "detection.fov.complement.union[0].disc.center"
-        );
-        assert_eq!(render_path(""), "");
-    }
-}

@@ -143,29 +143,9 @@ pub fn jde_bound(
 ) -> JsResult<JsValue> {
     let o: bounds::JdeBoundOptions = read(options, "options")?;
     let options = o.into_core().or_throw_rendered("options")?;
-    let out = bounds::jde_bound(&options, fisst::math::rng::entropy_seed)
-        .map_err(|e| jde_error(e, &options.prior))?;
+    let out =
+        bounds::jde_bound(&options, fisst::math::rng::entropy_seed).or_throw_rendered("options")?;
     write(&Renamed::new(&bounds::JdeBoundReport::from(&out)))
-}
-
-/// A [`bounds::jde_bound`] error in this binding's words: a `dims` that is not the prior's
-/// says what the prior is, and the rest name their path under `options` in camelCase.
-fn jde_error(e: fisst::Error, prior: &bounds::JdePrior) -> JsValue {
-    match &e {
-        fisst::Error::DimensionMismatch {
-            what,
-            expected,
-            found: l,
-        } if what == "dims" => crate::boundary::range_error(match prior {
-            bounds::JdePrior::Scalar(_) => format!(
-                "options.dims is {l}, but options.prior is a 1D density: a state in R^{l} needs prior: {{ multivariateGaussian: {{ mean, cov }} }}"
-            ),
-            bounds::JdePrior::Vector(_) => format!(
-                "options.dims is {l}, but options.prior.multivariateGaussian.mean has length {expected}"
-            ),
-        }),
-        _ => crate::boundary::core_error_rendered(e, "options"),
-    }
 }
 
 /// Example 2 of Rezaeian & Vo, "Error bounds for joint detection and estimation of a single object

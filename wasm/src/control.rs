@@ -5,14 +5,13 @@
 //! boundary; their TypeScript is generated from the core's source (`build.rs`), under the
 //! contract's names below. The shapes are also listed in `core/src/control/JS_SHAPES.md`.
 
-use std::format;
 use std::string::String;
 
 use fisst::control::MultiObjectLikelihoodOptions;
 use fisst::control::{CompareOptions, ControlOptions, ControlParticles, ControlRun};
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{JsResult, core_error_rendered, de_error, range_error, read, render_path};
+use crate::boundary::{JsResult, core_error_rendered, de_error, read};
 use crate::boundary::{seed_or_entropy, write};
 use crate::names::Renamed;
 
@@ -27,37 +26,9 @@ export type CompareSchemesOptions = CompareOptions & {
 };
 "#;
 
-/// A core error about `options` in JavaScript names, with the package's wording for the caps:
-/// a work cap "`options.x`: … must be at most …, got …", and the objects and measurements
-/// of `multiObjectLikelihood` "at most … are supported".
+/// A core error about `options` in JavaScript names (the caps are worded by the core).
 fn options_error(e: fisst::Error) -> JsValue {
-    let path = |what: &str| format!("options.{}", render_path(what));
-    match &e {
-        fisst::Error::OverBudget {
-            what,
-            measure,
-            work,
-            limit,
-            ..
-        } => range_error(format!(
-            "{}: {} must be at most {limit}, got {work}",
-            path(what),
-            render_path(measure)
-        )),
-        fisst::Error::OutOfRange {
-            what, value, max, ..
-        } if what == "likelihoods" || what == "clutter_density" => {
-            let unit = match what.as_str() {
-                "likelihoods" => "objects",
-                _ => "measurements",
-            };
-            range_error(format!(
-                "{}: at most {max} {unit} are supported, got {value}",
-                path(what)
-            ))
-        }
-        _ => core_error_rendered(e, "options"),
-    }
+    core_error_rendered(e, "options")
 }
 
 /// The multi-object likelihood (20) of Ristic & Vo, "Sensor control for multi-object state-space
@@ -101,13 +72,7 @@ impl SensorControlRunJs {
     /// OSPA, choose the next action. A `RangeError` once `k` reached `steps`.
     #[wasm_bindgen(unchecked_return_type = "ControlStep")]
     pub fn step(&mut self) -> JsResult<JsValue> {
-        let steps = self.inner.options().steps;
-        let s = self.inner.step().map_err(|e| match e {
-            fisst::Error::Unsupported { .. } => {
-                range_error(format!("step: the run has done all its {steps} steps"))
-            }
-            e => core_error_rendered(e, "step"),
-        })?;
+        let s = self.inner.step().map_err(|e| core_error_rendered(e, ""))?;
         write(&Renamed::new(&s))
     }
 

@@ -321,6 +321,14 @@ mod tests {
             "mixture[2].meanVector[1]"
         );
         assert_eq!(render_path("likelihood.r[0][1]"), "likelihood.R[0][1]");
+        assert_eq!(
+            render_path("rfs.iid_cluster.cardinality"),
+            "rfs.iidCluster.cardinality"
+        );
+        assert_eq!(
+            render_path("detection.fov.complement.union[0].ball.center"),
+            "detection.fov.complement.union[0].disc.center"
+        );
         assert_eq!(render_path(""), "");
     }
 

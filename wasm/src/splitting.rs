@@ -7,9 +7,9 @@ use wasm_bindgen::prelude::*;
 use crate::boundary::{JsResult, OrThrow, read, write};
 use crate::names::Renamed;
 use fisst::splitting::{
-    NegativeInformationOptions, NegativeInformationReport, ReduceMixtureOptions, Spacing,
-    SplitForRegionsOptions as CoreSplitForRegionsOptions, SplitLibrary, SplitLibraryOptions,
-    SplitLibraryReport, check_reduce_input, split_for_regions_report,
+    NegativeInformationOptions, NegativeInformationReport, ReduceMixtureOptions,
+    SplitForRegionsOptions as CoreSplitForRegionsOptions, SplitLibraryOptions, SplitLibraryReport,
+    check_reduce_input, split_for_regions_report,
 };
 
 // The results are the core's own types written under the contract's names: `splitLibrary`'s
@@ -85,33 +85,6 @@ export interface NegativeInformationScenario {
 // by build.rs from the core's source; its mixture is a `GaussianMixture`, declared in
 // `types.rs`).
 
-/// A split library's key: (R, λ as bits, spacing).
-type LibraryKey = (usize, u64, Spacing);
-
-thread_local! {
-    /// The last library computed (the demo page calls with the same R and λ repeatedly;
-    /// an optimisation costs a few ms in wasm).
-    static LAST_LIBRARY: std::cell::RefCell<Option<(LibraryKey, SplitLibrary)>> =
-        const { std::cell::RefCell::new(None) };
-}
-
-/// [`SplitLibraryOptions::library`], memoised on the last (R, λ, spacing); errors name the
-/// fields under `options`.
-fn library(o: &SplitLibraryOptions) -> JsResult<SplitLibrary> {
-    let key = (o.components, o.lambda_.to_bits(), o.spacing);
-    if let Some(lib) = LAST_LIBRARY.with(|c| {
-        c.borrow()
-            .as_ref()
-            .filter(|(k, _)| *k == key)
-            .map(|(_, l)| l.clone())
-    }) {
-        return Ok(lib);
-    }
-    let lib = o.library().or_throw_rendered("options")?;
-    LAST_LIBRARY.with(|c| *c.borrow_mut() = Some((key, lib.clone())));
-    Ok(lib)
-}
-
 /// The optimal R-component split of N(0, 1) of eqs. (13)–(14) of LeGrand & Ferrari, "Split
 /// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
 /// (paper 001): options
@@ -122,7 +95,7 @@ pub fn split_library_js(
     #[wasm_bindgen(unchecked_param_type = "SplitLibraryOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: SplitLibraryOptions = read(options, "options")?;
-    let lib = library(&o)?;
+    let lib = o.library_memo().or_throw_rendered("options")?;
     write(&Renamed::new(&SplitLibraryReport::from(&lib)))
 }
 
@@ -140,7 +113,10 @@ pub fn split_for_regions_js(
 ) -> JsResult<JsValue> {
     let request: CoreSplitForRegionsOptions = read(options, "options")?;
     request.validate().or_throw_rendered("options")?;
-    let library = library(&request.library_options())?;
+    let library = request
+        .library_options()
+        .library_memo()
+        .or_throw_rendered("options")?;
     let report = split_for_regions_report(&request, &library).or_throw_rendered("options")?;
     write(&Renamed::new(&report))
 }
@@ -161,13 +137,6 @@ pub fn reduce_mixture_js(
     }
     let o: ReduceMixtureOptions = read(options, "options")?;
     write(&o.reduce().or_throw_rendered("options")?)
-}
-
-thread_local! {
-    /// The Fig. 5 scenario: deterministic, so computed once (about 8 ms in wasm) and shared by
-    /// every later call.
-    static FIG5: std::cell::OnceCell<NegativeInformationReport> =
-        const { std::cell::OnceCell::new() };
 }
 
 // Overloads: with `step` the one step, without it the whole scenario (the general signature,
@@ -208,13 +177,7 @@ pub fn negative_information_scenario_js(
         read(options.unwrap_or(JsValue::UNDEFINED), "options")?;
     let o = o.unwrap_or_default();
     o.validate().or_throw_rendered("options")?;
-    let report = match FIG5.with(|c| c.get().cloned()) {
-        Some(r) => r,
-        None => {
-            let r = NegativeInformationReport::fig5().or_throw()?;
-            FIG5.with(|c| c.get_or_init(|| r).clone())
-        }
-    };
+    let report = NegativeInformationReport::fig5_memo().or_throw()?;
     write(&Renamed::new(
         &o.select(&report).or_throw_rendered("options")?,
     ))

@@ -91,6 +91,31 @@ impl MmucOptions {
     }
 }
 
+/// The options of [`ProbabilityOutsideBallOptions::probability`]: a spatial density and a
+/// ball, the miss probability q(a) of the loss (7) of `000_…`.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ProbabilityOutsideBallOptions {
+    /// The spatial density of the object's state.
+    pub density: SpatialDensity,
+    /// The ball's centre (the density's dimension).
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::numbers"))]
+    pub center: Vec<f64>,
+    /// The ball's radius, > 0, in state units.
+    pub radius: f64,
+}
+
+impl ProbabilityOutsideBallOptions {
+    /// q(`center`) = P(‖x − `center`‖ > `radius`) for x drawn from `density`
+    /// ([`SpatialDensity::prob_outside_ball`]).
+    ///
+    /// # Errors
+    /// As [`SpatialDensity::prob_outside_ball`] (`center`, `center[i]`, `radius`).
+    pub fn probability(&self) -> Result<f64> {
+        self.density.prob_outside_ball(&self.center, self.radius)
+    }
+}
+
 /// The MMUC point a* (12) of `000_…`, its miss probability and how it was found: a [`Mmuc`]
 /// without the quadrature's error estimate.
 #[derive(Clone, Debug, PartialEq)]

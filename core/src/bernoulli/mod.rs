@@ -68,7 +68,7 @@ pub use isotropic::{
 pub use loss::{ApplicationLoss, Costs};
 pub use mmuc::{
     MAX_MMUC_COMPONENTS, MAX_MMUC_PARTICLES, MMUC_SEARCH_BUDGET, Mmuc, MmucEstimate, MmucMethod,
-    MmucOptions,
+    MmucOptions, ProbabilityOutsideBallOptions,
 };
 pub use threshold::{
     Direction, LossCurve, LossCurveOptions, Threshold, expected_loss_empty,

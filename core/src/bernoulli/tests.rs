@@ -1516,3 +1516,24 @@ fn options_types_flatten_the_estimates_and_name_the_field() {
     far.radius = f64::NAN;
     assert_eq!(far.estimate().unwrap_err().field(), "radius");
 }
+
+#[test]
+fn eq7_probability_outside_ball_options_ask_the_density() {
+    let density = SpatialDensity::gaussian_from_slices(&[0.0], &[1.0]).unwrap();
+    let o = ProbabilityOutsideBallOptions {
+        density: density.clone(),
+        center: vec![0.5],
+        radius: 1.0,
+    };
+    let q = |c: &[f64], r| density.prob_outside_ball(c, r);
+    assert_eq!(o.probability(), q(&[0.5], 1.0));
+    let wrong = ProbabilityOutsideBallOptions {
+        center: vec![0.0, 0.0],
+        ..o.clone()
+    };
+    assert_eq!(wrong.probability(), q(&[0.0, 0.0], 1.0));
+    assert!(wrong.probability().is_err());
+    let bad = ProbabilityOutsideBallOptions { radius: -1.0, ..o };
+    assert_eq!(bad.probability(), q(&[0.5], -1.0));
+    assert!(bad.probability().is_err());
+}

@@ -173,8 +173,8 @@ enum FalseObservations {
 ///
 /// # Errors
 /// [`Error::OutOfRange`] naming `dims`, `quadrature_cardinality` or `samples`;
-/// [`Error::DimensionMismatch`] naming `dims` when it is not the prior's dimension (1 for a
-/// scalar prior); [`Error::Form`] ([`wrong_model`]) naming `clutter` with model I or `false_alarm` with
+/// [`Error::Form`] naming `dims` when it is not the prior's dimension (1 for a scalar prior:
+/// it says that a state in R^l needs a `multivariate_gaussian` prior); [`Error::Form`] ([`wrong_model`]) naming `clutter` with model I or `false_alarm` with
 /// model II; [`Error::Unsupported`] naming `observation` when its kind is not the prior's;
 /// [`Error::OverBudget`] naming `samples` when samples × Σ n exceeds 10^7; `entropy`'s
 /// error; and the errors of [`theorem1`], [`theorem2`] and [`vector_bound`].
@@ -185,12 +185,26 @@ pub fn jde_bound(
     let o = options;
     if let Some(l) = o.dims {
         Error::check_range("dims", l, 1, MAX_DIMS)?;
-        let prior_dims = match &o.prior {
-            JdePrior::Scalar(_) => 1,
-            JdePrior::Vector(g) => g.dims(),
+        let but = Phrase::text(alloc::format!("is {l}, but "));
+        let problem = match &o.prior {
+            JdePrior::Scalar(_) if l != 1 => Some(alloc::vec![
+                but,
+                Phrase::path("prior"),
+                Phrase::text(alloc::format!(" is a 1D density: a state in R^{l} needs ")),
+                Phrase::name("prior"),
+                Phrase::text(": { "),
+                Phrase::name("multivariate_gaussian"),
+                Phrase::text(": { mean, cov } }"),
+            ]),
+            JdePrior::Vector(g) if l != g.dims() => Some(alloc::vec![
+                but,
+                Phrase::path("prior.multivariate_gaussian.mean"),
+                Phrase::text(alloc::format!(" has length {}", g.dims())),
+            ]),
+            _ => None,
         };
-        if l != prior_dims {
-            return Err(Error::dimension("dims", prior_dims, l));
+        if let Some(problem) = problem {
+            return Err(Error::form("dims", false, problem));
         }
     }
     let mut settings = TheoremOptions::default();

@@ -244,13 +244,22 @@ fn eq63_dims_and_quadrature_cardinality_are_checked() {
         assert_eq!(e, Error::range("dims", l, 1, 64));
     }
     assert_eq!(
-        dims(scalar(JdeModel::I), 2).unwrap_err(),
-        Error::dimension("dims", 1, 2)
+        dims(scalar(JdeModel::I), 2).unwrap_err().to_string(),
+        "dims is 2, but prior is a 1D density: a state in R^2 needs prior: { multivariate_gaussian: { mean, cov } }"
     );
     assert!(dims(scalar(JdeModel::I), 1).is_ok());
+    let e = dims(vector_of_one(JdeModel::I), 3).unwrap_err();
     assert_eq!(
-        dims(vector_of_one(JdeModel::I), 3).unwrap_err(),
-        Error::dimension("dims", 1, 3)
+        e.to_string(),
+        "dims is 3, but prior.multivariate_gaussian.mean has length 1"
+    );
+    // each binding renders the paths and names in its own names
+    let e = e
+        .within("options")
+        .map_paths(|p| p.replace("multivariate_gaussian", "mvg"));
+    assert_eq!(
+        e.to_string(),
+        "options.dims is 3, but options.prior.mvg.mean has length 1"
     );
     assert!(dims(vector_of_one(JdeModel::I), 1).is_ok());
     let o = JdeOptions {

@@ -14,7 +14,7 @@ use super::actions::{Action, ActionGrid};
 use super::renyi_kernel::{FutureScans, renyi_rewards};
 use super::rewards::{fisher_reward, pent_reward};
 pub use super::sensor::RangeSensor;
-use crate::error::{Error, Result};
+use crate::error::{Error, Phrase, Result};
 use crate::math::fns::exp;
 use crate::math::rng::{SeededRng, index, seeded};
 use crate::metrics::Ospa;
@@ -234,20 +234,26 @@ impl ControlOptions {
     ///
     /// # Errors
     /// [`Error::OutOfRange`] naming `particles`, `future_scans`, `steps` or `max_objects`;
-    /// [`Error::OverBudget`] naming `future_scans` when N·M·w(n_max) exceeds [`MAX_WORK`].
+    /// [`Error::Form`] naming `future_scans` when N·M·w(n_max) exceeds [`MAX_WORK`]
+    /// (`future_scans: {WORK_MEASURE} must be at most 300000, got …`, the measure a
+    /// [`Phrase::Name`] that bindings render in their names).
     pub fn check_limits(&self) -> Result<()> {
         Error::check_range("particles", self.particles, 1, MAX_PARTICLES)?;
         Error::check_range("future_scans", self.future_scans, 1, MAX_FUTURE_SCANS)?;
         Error::check_range("steps", self.steps, 1, MAX_STEPS)?;
         Error::check_range("max_objects", self.max_objects, 1, MAX_MAX_OBJECTS)?;
-        Error::check_work(
-            "future_scans",
-            WORK_MEASURE,
-            "300000",
-            self.particles.saturating_mul(work_weight(self.max_objects)),
-            self.future_scans,
-            MAX_WORK,
-        )
+        let per_scan = self.particles.saturating_mul(work_weight(self.max_objects));
+        let work = per_scan.max(1).saturating_mul(self.future_scans);
+        if work > MAX_WORK {
+            let got = alloc::format!(" must be at most {MAX_WORK}, got {work}");
+            let problem = vec![
+                Phrase::text(": "),
+                Phrase::name(WORK_MEASURE),
+                Phrase::text(got),
+            ];
+            return Err(Error::form("future_scans", false, problem));
+        }
+        Ok(())
     }
 
     /// Checks the fields (Rust names).
@@ -418,15 +424,14 @@ impl ControlRun {
     /// regularise, estimate, score, choose the next action.
     ///
     /// # Errors
-    /// [`Error::Unsupported`] naming `steps` once K steps are done. On `Err`, the run is
-    /// unchanged (the step works on its own copies of the particles and of both random
-    /// streams, and stores them only on success).
+    /// [`Error::Form`] naming `step` once K steps are done (`step: the run has done all its K
+    /// steps`, as both bindings say it). On `Err`, the run is unchanged (the step works on its
+    /// own copies of the particles and of both random streams, and stores them only on
+    /// success).
     pub fn step(&mut self) -> Result<StepOutcome> {
         if self.k >= self.config.steps {
-            return Err(Error::Unsupported {
-                what: "steps".into(),
-                reason: "the run has done all its steps",
-            });
+            let done = alloc::format!(": the run has done all its {} steps", self.config.steps);
+            return Err(Error::form("step", false, vec![Phrase::text(done)]));
         }
         let cfg = &self.config;
         let (mut world, mut rng) = (self.world.clone(), self.rng.clone());

@@ -2,9 +2,11 @@
 //! its options with the caps that keep one call fast, and its result. The dynamic programme
 //! itself is [`crate::smc::ln_likelihood`].
 
+use alloc::format;
+use alloc::string::String;
 use alloc::vec::Vec;
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Phrase, Result};
 
 /// The bindings' cap on n, the objects (rows of `likelihoods`).
 pub const MAX_OBJECTS: usize = 64;
@@ -47,25 +49,30 @@ impl MultiObjectLikelihoodOptions {
     /// m ≤ [`MAX_MEASUREMENTS`], min(n, m) ≤ [`MAX_SMALLER`].
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] naming `likelihoods` (n) or `clutter_density` (m);
-    /// [`Error::OverBudget`] naming `likelihoods` when min(n, m) > [`MAX_SMALLER`].
+    /// [`Error::Form`] naming `likelihoods` (n, or min(n, m) > [`MAX_SMALLER`]) or
+    /// `clutter_density` (m): `likelihoods: at most 64 objects are supported, got 65`.
     pub fn check_limits(&self) -> Result<()> {
         let n = self.likelihoods.len();
         let m = self.clutter_density.len();
+        let cap = |what: &str, said: String| {
+            Err(Error::form(what, false, alloc::vec![Phrase::text(said)]))
+        };
         if n > MAX_OBJECTS {
-            return Err(Error::range("likelihoods", n, 0, MAX_OBJECTS));
+            return cap(
+                "likelihoods",
+                format!(": at most {MAX_OBJECTS} objects are supported, got {n}"),
+            );
         }
         if m > MAX_MEASUREMENTS {
-            return Err(Error::range("clutter_density", m, 0, MAX_MEASUREMENTS));
+            let said = format!(": at most {MAX_MEASUREMENTS} measurements are supported, got {m}");
+            return cap("clutter_density", said);
         }
         if n.min(m) > MAX_SMALLER {
-            return Err(Error::OverBudget {
-                what: "likelihoods".into(),
-                measure: "min(objects, measurements)",
-                work: n.min(m),
-                limit: "12",
-                at_most: MAX_SMALLER,
-            });
+            let said = format!(
+                ": min(objects, measurements) must be at most {MAX_SMALLER}, got {}",
+                n.min(m)
+            );
+            return cap("likelihoods", said);
         }
         Ok(())
     }
@@ -110,32 +117,28 @@ mod tests {
         let want = crate::smc::ln_likelihood(&ok.likelihoods, 0.9, 1.0, &ok.clutter_density);
         assert_eq!(ok.evaluate().unwrap().log_likelihood, want.unwrap());
         assert!(square(12, 12).evaluate().is_ok());
-        let smaller = Error::OverBudget {
-            what: "likelihoods".into(),
-            measure: "min(objects, measurements)",
-            work: 13,
-            limit: "12",
-            at_most: MAX_SMALLER,
-        };
         for (o, e) in [
             (
                 square(65, 1),
-                Error::range("likelihoods", 65, 0, MAX_OBJECTS),
+                "likelihoods: at most 64 objects are supported, got 65",
             ),
             (
                 square(1, 1001),
-                Error::range("clutter_density", 1001, 0, MAX_MEASUREMENTS),
+                "clutter_density: at most 1000 measurements are supported, got 1001",
             ),
             (
                 square(65, 1001),
-                Error::range("likelihoods", 65, 0, MAX_OBJECTS),
+                "likelihoods: at most 64 objects are supported, got 65",
             ),
-            (square(13, 13), smaller),
+            (
+                square(13, 13),
+                "likelihoods: min(objects, measurements) must be at most 12, got 13",
+            ),
         ] {
             let mut bad = o.clone();
             bad.detection_probability = 2.0;
             for o in [o, bad] {
-                assert_eq!(o.evaluate(), Err(e.clone()));
+                assert_eq!(format!("{}", o.evaluate().unwrap_err()), e);
             }
         }
         let mut bad = square(2, 2);

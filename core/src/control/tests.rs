@@ -7,7 +7,7 @@ use alloc::vec::Vec;
 use super::case_study::{ControlOptions, ControlRun, Scheme};
 use super::reference::RenyiReference;
 use super::renyi_kernel::{FutureScans, SCANS_PER_TASK, renyi_reward, renyi_rewards};
-use crate::error::Error;
+use crate::error::{Error, Phrase};
 use crate::math::rng::seeded;
 use crate::smc::LikelihoodWorkspace;
 
@@ -267,7 +267,7 @@ fn alg1_reduced_run_localises_both_sources() {
     assert_eq!(run.sensor_path().len(), 31);
 }
 
-/// A step after the last one fails naming `steps` and leaves the run unchanged: particles,
+/// A step after the last one fails naming `step` (the bindings' words) and leaves the run unchanged: particles,
 /// path, scans and both random streams (every field, through `Debug`).
 #[test]
 fn alg1_step_after_the_last_leaves_the_run_unchanged() {
@@ -278,7 +278,11 @@ fn alg1_step_after_the_last_leaves_the_run_unchanged() {
     run.step().unwrap();
     let before = alloc::format!("{run:?}");
     let e = run.step().unwrap_err();
-    assert_eq!(e.field(), "steps");
+    assert_eq!(e.field(), "step");
+    assert_eq!(
+        alloc::format!("{e}"),
+        "step: the run has done all its 2 steps"
+    );
     assert_eq!(alloc::format!("{run:?}"), before);
     assert_eq!(run.k(), 2);
 }
@@ -316,19 +320,21 @@ fn alg1_work_caps_name_the_field_and_the_range() {
     // N·M: after the four ranges, naming M with the largest M within the cap.
     let mut c = base.clone();
     (c.particles, c.future_scans) = (2000, 151);
-    let over = Error::OverBudget {
-        what: "future_scans".into(),
-        measure: WORK_MEASURE,
-        work: 302_000,
-        limit: "300000",
-        at_most: 150,
-    };
-    assert_eq!(c.check_limits(), Err(over.clone()));
+    let over = Err(Error::form(
+        "future_scans",
+        false,
+        vec![
+            Phrase::text(": "),
+            Phrase::name(WORK_MEASURE),
+            Phrase::text(" must be at most 300000, got 302000"),
+        ],
+    ));
+    assert_eq!(c.check_limits(), over.clone());
     c.steps = 0;
     assert_eq!(c.check_limits().unwrap_err().field(), "steps");
     c.steps = 1;
     c.alpha = 0.0;
-    assert_eq!(c.check_limits(), Err(over));
+    assert_eq!(c.check_limits(), over);
     (c.particles, c.future_scans) = (2000, MAX_WORK / 2000);
     assert!(c.check_limits().is_ok());
     assert_eq!(c.validate().unwrap_err().field(), "alpha");
@@ -346,16 +352,15 @@ fn alg1_work_caps_name_the_field_and_the_range() {
     assert!(c.check_limits().is_ok());
     c.max_objects = 8;
     (c.particles, c.future_scans) = (1000, 10);
+    let e = c.check_limits().unwrap_err();
     assert_eq!(
-        c.check_limits(),
-        Err(Error::OverBudget {
-            what: "future_scans".into(),
-            measure: WORK_MEASURE,
-            work: 320_000,
-            limit: "300000",
-            at_most: 9,
-        })
+        alloc::format!("{e}"),
+        "future_scans: particles · future_scans · (max_objects ≤ 4 ? 1 : 2^(max_objects − 3)) must be at most 300000, got 320000"
     );
+    let js = e
+        .within("options")
+        .map_names(|n| n.replace("_scans", "Scans"));
+    assert!(alloc::format!("{js}").starts_with("options.future_scans: particles · futureScans"));
     c.future_scans = 9;
     assert!(c.check_limits().is_ok());
 }

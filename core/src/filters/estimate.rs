@@ -4,8 +4,11 @@
 use alloc::vec::Vec;
 
 use super::config::GmBernoulli;
-use crate::bernoulli::{ApplicationLoss, BernoulliEstimate, ParticleSet, SpatialDensity, estimate};
-use crate::error::{Error, Result};
+use crate::bernoulli::{
+    ApplicationLoss, BernoulliEstimate, BernoulliReport, Costs, ParticleSet, SpatialDensity,
+    estimate,
+};
+use crate::error::{Error, Phrase, Result};
 use crate::gaussian::{Gaussian, GaussianMixture};
 use crate::math::sum::NeumaierSum;
 
@@ -23,6 +26,50 @@ pub struct EstimateOptions {
     /// estimate includes the optimal Bernoulli point estimate (`report`), computed on the
     /// position marginal (the first n_s state components), so r0 is a position distance.
     pub loss: Option<ApplicationLoss>,
+}
+
+/// The loss of [`EstimateOptions`] as a caller writes it: `radius` and `costs` side by side,
+/// both given or neither (the npm package's `estimate({ radius, costs })`).
+#[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(default)
+)]
+pub struct EstimateLossOptions {
+    /// The radius r0 > 0 of the loss's tolerance ball (a position distance).
+    pub radius: Option<f64>,
+    /// The costs of the loss (7) of paper `000`.
+    pub costs: Option<Costs>,
+}
+
+impl EstimateLossOptions {
+    /// The [`EstimateOptions`]: with the loss when both are given, without it when neither is.
+    ///
+    /// # Errors
+    /// [`Error::Form`] (a wrong kind) naming the one missing when only the other is given;
+    /// as [`ApplicationLoss::new`].
+    pub fn options(&self) -> Result<EstimateOptions> {
+        let missing = |what: &str, with: &str| {
+            Err(Error::form(
+                what,
+                true,
+                alloc::vec![
+                    Phrase::text("is required with "),
+                    Phrase::path(with),
+                    Phrase::text(" (the loss (7) takes both)"),
+                ],
+            ))
+        };
+        match (self.radius, self.costs) {
+            (Some(r), Some(c)) => Ok(EstimateOptions {
+                loss: Some(ApplicationLoss::new(c, r)?),
+            }),
+            (None, None) => Ok(EstimateOptions::default()),
+            (Some(_), None) => missing("costs", "radius"),
+            (None, Some(_)) => missing("radius", "costs"),
+        }
+    }
 }
 
 /// A Bernoulli filter's estimate (`{ existence, mean, cov, report }`).
@@ -45,6 +92,34 @@ impl FilterEstimate {
     /// components (Fig. 8's "covariance RSS").
     pub fn rss(&self, dims: core::ops::Range<usize>) -> f64 {
         crate::math::fns::sqrt(dims.map(|i| self.cov[i][i]).sum::<f64>())
+    }
+}
+
+/// A [`FilterEstimate`] in the flat form the npm package returns: the point estimate as a
+/// [`BernoulliReport`], always written (null without a loss).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct FilterEstimateReport {
+    /// The posterior existence probability r_{k|k} ∈ [0, 1].
+    pub existence: f64,
+    /// The MMSE state estimate.
+    pub mean: Vec<f64>,
+    /// The posterior covariance, rows.
+    pub cov: Vec<Vec<f64>>,
+    /// The optimal Bernoulli point estimate on the position marginal; `None` (null) without
+    /// a loss.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::nullable"))]
+    pub report: Option<BernoulliReport>,
+}
+
+impl From<FilterEstimate> for FilterEstimateReport {
+    fn from(e: FilterEstimate) -> Self {
+        Self {
+            existence: e.existence,
+            mean: e.mean,
+            cov: e.cov,
+            report: e.report.as_ref().map(BernoulliReport::from),
+        }
     }
 }
 
@@ -256,6 +331,82 @@ pub(crate) fn particle_estimate(
 
 #[cfg(test)]
 mod tests {
+    #[cfg(feature = "serde")]
+    #[test]
+    fn filter_estimate_report_writes_the_report_or_null() {
+        use super::{FilterEstimate, FilterEstimateReport};
+        use crate::bernoulli::{ApplicationLoss, Costs, SpatialDensity, estimate};
+        let density = SpatialDensity::gaussian_from_slices(&[0.0], &[1.0]).unwrap();
+        let loss = ApplicationLoss::new(Costs::mpe(), 1.0).unwrap();
+        let e = FilterEstimate {
+            existence: 0.9,
+            mean: alloc::vec![0.0],
+            cov: alloc::vec![alloc::vec![1.0]],
+            report: None,
+        };
+        let without = serde_json::to_string(&FilterEstimateReport::from(e.clone())).unwrap();
+        assert_eq!(
+            without,
+            r#"{"existence":0.9,"mean":[0.0],"cov":[[1.0]],"report":null}"#
+        );
+        let b = estimate(0.9, &density, &loss).unwrap();
+        let with = FilterEstimateReport::from(FilterEstimate {
+            report: Some(b.clone()),
+            ..e
+        });
+        assert_eq!(
+            with.report,
+            Some(crate::bernoulli::BernoulliReport::from(&b))
+        );
+        assert_eq!(
+            (with.existence, with.mean, with.cov),
+            (0.9, alloc::vec![0.0], alloc::vec![alloc::vec![1.0]])
+        );
+    }
+
+    #[test]
+    fn estimate_loss_options_take_radius_and_costs_together() {
+        use super::{EstimateLossOptions, EstimateOptions};
+        use crate::bernoulli::{ApplicationLoss, Costs};
+        let costs = Costs::mpe();
+        let both = EstimateLossOptions {
+            radius: Some(2.0),
+            costs: Some(costs),
+        };
+        let loss = ApplicationLoss::new(costs, 2.0).unwrap();
+        assert_eq!(both.options().unwrap().loss, Some(loss));
+        assert_eq!(
+            EstimateLossOptions::default().options().unwrap(),
+            EstimateOptions::default()
+        );
+        let radius = EstimateLossOptions {
+            costs: None,
+            ..both.clone()
+        };
+        let e = radius.options().unwrap_err();
+        assert!(e.is_wrong_kind());
+        assert_eq!(
+            alloc::format!("{}", e.within("options")),
+            "options.costs is required with options.radius (the loss (7) takes both)"
+        );
+        let costs_only = EstimateLossOptions {
+            radius: None,
+            ..both.clone()
+        };
+        assert_eq!(
+            alloc::format!("{}", costs_only.options().unwrap_err()),
+            "radius is required with costs (the loss (7) takes both)"
+        );
+        let bad = EstimateLossOptions {
+            radius: Some(-1.0),
+            ..both
+        };
+        assert_eq!(
+            bad.options().unwrap_err(),
+            ApplicationLoss::new(costs, -1.0).unwrap_err()
+        );
+    }
+
     use super::*;
 
     fn gm(components: &[(f64, [f64; 2], f64)]) -> GmBernoulli {

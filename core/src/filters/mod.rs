@@ -94,7 +94,9 @@ pub use config::{
     default_split_library, default_survival,
 };
 pub use detection::Detection;
-pub use estimate::{EstimateOptions, FilterEstimate, gm_estimate};
+pub use estimate::{
+    EstimateLossOptions, EstimateOptions, FilterEstimate, FilterEstimateReport, gm_estimate,
+};
 pub use gm_bernoulli::{
     GmBernoulliFilter, GmBernoulliUpdate, MAX_VECTOR_UPDATE_WORK, UpdateInfo, gm_bernoulli_predict,
     gm_bernoulli_update, gm_bernoulli_update_vector, gm_bernoulli_update_with,

@@ -11,12 +11,13 @@ use super::{
     BernoulliFilterOptions, Birth, Clutter, Detection, GmBernoulli, LikelihoodRows,
     ParticleOptions, PredictOptions, Splitting, SplittingOptions, TransitionRows, UpdateOptions,
 };
+use super::{GmBernoulliUpdate, gm_bernoulli_update, gm_bernoulli_update_vector};
 #[cfg(feature = "serde")]
 use super::{
     default_mcmc_moves, default_particles, default_position_dims, default_reduction,
     default_survival,
 };
-use crate::error::Result;
+use crate::error::{Error, Phrase, Result};
 use crate::gaussian::GaussianMixture;
 use crate::mixture::ReductionOptions;
 use crate::regions::Region;
@@ -234,5 +235,33 @@ impl GmBernoulliUpdateOptions {
             reduction: self.reduction,
             exclusions: self.exclusions.clone(),
         })
+    }
+
+    /// The update these options ask for: with `measurements` and `likelihood` the
+    /// vector-measurement update ([`gm_bernoulli_update_vector`]), else the update with
+    /// `reports` ([`gm_bernoulli_update`]; omitted: the non-detection update).
+    ///
+    /// # Errors
+    /// [`Error::Form`] naming `likelihood` when `measurements` come without it; as
+    /// [`GmBernoulliUpdateOptions::update_options`], [`LikelihoodRows::build`] and the update.
+    #[inline] // instantiates the updates in the caller's crate, with the filter classes' copies
+    pub fn run(self) -> Result<GmBernoulliUpdate> {
+        let config = self.update_options()?;
+        let state = GmBernoulli {
+            existence: self.existence,
+            mixture: self.mixture,
+        };
+        match (self.measurements, self.likelihood) {
+            (Some(z), Some(l)) => gm_bernoulli_update_vector(&state, &z, &l.build()?, &config),
+            (Some(_), None) => Err(Error::form(
+                "likelihood",
+                false,
+                alloc::vec![
+                    Phrase::text("is needed with "),
+                    Phrase::path("measurements")
+                ],
+            )),
+            (None, _) => gm_bernoulli_update(&state, &self.reports.unwrap_or_default(), &config),
+        }
     }
 }

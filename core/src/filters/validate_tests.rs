@@ -320,3 +320,33 @@ fn update_options_as_written() {
     assert_eq!(o.measurements, Some(Vec::new()));
     assert!(message(o.update_options()).starts_with("splitting.components"));
 }
+
+/// `run` picks the update the options ask for, and measurements need their likelihood.
+#[cfg(feature = "serde")]
+#[test]
+fn update_options_run_the_update_they_ask_for() {
+    let base = r#""existence": 0.5, "mixture": [{"weight": 1, "mean": [0, 0], "cov": [[1, 0], [0, 1]]}],
+        "detection": {"probability": 0.9}, "clutter": {"rate": 0.25, "density": 0.01}"#;
+    let read = |extra: &str| -> GmBernoulliUpdateOptions {
+        serde_json::from_str(&std::format!("{{{base}{extra}}}")).unwrap()
+    };
+    let o = read("");
+    let expected = super::gm_bernoulli_update(
+        &GmBernoulli {
+            existence: o.existence,
+            mixture: o.mixture.clone(),
+        },
+        &[],
+        &o.update_options().unwrap(),
+    );
+    assert_eq!(o.run(), expected);
+    assert_eq!(
+        message(read(r#", "measurements": [[0, 0]]"#).run()),
+        "likelihood is needed with measurements"
+    );
+    let vector = read(
+        r#", "measurements": [[0, 0]], "likelihood": {"H": [[1, 0], [0, 1]], "R": [[1, 0], [0, 1]]}"#,
+    );
+    let out = vector.run().unwrap();
+    assert!(out.existence > 0.0 && out.existence <= 1.0);
+}

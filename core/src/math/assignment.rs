@@ -35,6 +35,62 @@ pub struct Assignment {
     pub cost: f64,
 }
 
+/// A cost matrix given as rows of equal length (a serialised form's array of rows), stored
+/// row-major for [`linear_assignment`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct CostRows {
+    flat: Vec<f64>,
+    rows: usize,
+    cols: usize,
+}
+
+impl CostRows {
+    /// The matrix of `rows`, each as long as the first (no rows: an empty matrix).
+    ///
+    /// # Errors
+    /// [`Error::DimensionMismatch`] naming `{what}[i]` for the first row `i` of another length.
+    pub fn new(rows: &[Vec<f64>], what: &str) -> Result<Self> {
+        let cols = rows.first().map_or(0, Vec::len);
+        let mut flat = Vec::with_capacity(rows.len() * cols);
+        for (i, row) in rows.iter().enumerate() {
+            if row.len() != cols {
+                return Err(Error::dimension(
+                    alloc::format!("{what}[{i}]"),
+                    cols,
+                    row.len(),
+                ));
+            }
+            flat.extend_from_slice(row);
+        }
+        Ok(Self {
+            flat,
+            rows: rows.len(),
+            cols,
+        })
+    }
+
+    /// [`linear_assignment`] on this matrix.
+    ///
+    /// # Errors
+    /// As [`linear_assignment`] (a non-finite entry).
+    pub fn assign(&self) -> Result<Assignment> {
+        linear_assignment(&self.flat, self.rows, self.cols)
+    }
+}
+
+/// Read as an array of rows of equal length; a row of another length fails as
+/// `[i] has length …, expected …` (relative to the value read, see `serde_valid`).
+#[cfg(feature = "serde")]
+impl<'de> serde::Deserialize<'de> for CostRows {
+    fn deserialize<D: serde::Deserializer<'de>>(
+        deserializer: D,
+    ) -> core::result::Result<Self, D::Error> {
+        use alloc::string::ToString;
+        let rows = Vec::<Vec<f64>>::deserialize(deserializer)?;
+        Self::new(&rows, "").map_err(|e| serde::de::Error::custom(e.to_string()))
+    }
+}
+
 /// Solves the rectangular linear assignment problem exactly.
 ///
 /// `cost` is row-major with `rows · cols` entries, all finite. Every row is assigned when
@@ -223,6 +279,38 @@ pub(crate) fn sap(cost: &[f64], nr: usize, nc: usize) -> Vec<usize> {
 pub(crate) mod tests {
     use super::*;
     use rand::{RngExt, SeedableRng, rngs::SmallRng};
+
+    #[test]
+    fn cost_rows_flatten_equal_rows_and_name_the_first_ragged_row() {
+        use alloc::string::ToString;
+        let m = CostRows::new(&[vec![4.0, 1.0, 3.0], vec![2.0, 0.0, 5.0]], "cost").unwrap();
+        assert_eq!(
+            m.assign().unwrap(),
+            linear_assignment(&[4.0, 1.0, 3.0, 2.0, 0.0, 5.0], 2, 3).unwrap()
+        );
+        assert_eq!(
+            CostRows::new(&[], "cost").unwrap().assign().unwrap().pairs,
+            vec![]
+        );
+        let e = CostRows::new(&[vec![1.0, 2.0], vec![3.0, 4.0], vec![5.0]], "cost").unwrap_err();
+        assert_eq!(e.to_string(), "cost[2] has length 1, expected 2");
+    }
+
+    #[cfg(feature = "serde")]
+    #[test]
+    fn cost_rows_read_an_array_of_rows_and_fail_relative_to_it() {
+        use alloc::string::ToString;
+        let m: CostRows = serde_json::from_str("[[1, 2], [3, 4]]").unwrap();
+        assert_eq!(
+            m,
+            CostRows::new(&[vec![1.0, 2.0], vec![3.0, 4.0]], "").unwrap()
+        );
+        let e = serde_json::from_str::<CostRows>("[[1, 2], [3]]").unwrap_err();
+        assert!(
+            e.to_string().starts_with("[1] has length 1, expected 2"),
+            "{e}"
+        );
+    }
 
     /// Minimum over all injective maps from the smaller side into the larger.
     pub(crate) fn brute_force(cost: &[f64], rows: usize, cols: usize) -> f64 {

@@ -16,5 +16,5 @@ pub mod sort;
 pub mod special;
 pub mod sum;
 
-pub use assignment::{Assignment, linear_assignment};
+pub use assignment::{Assignment, CostRows, linear_assignment};
 pub use sum::NeumaierSum;

@@ -65,6 +65,34 @@ impl SplitLibraryOptions {
             })
         })
     }
+
+    /// [`SplitLibraryOptions::library`], memoised per thread on the last (R, λ, spacing): a
+    /// caller that asks for the same split repeatedly (a demo page) pays for one optimisation
+    /// (a few ms in wasm).
+    ///
+    /// # Errors
+    /// As [`SplitLibraryOptions::library`] (errors are not memoised).
+    #[cfg(feature = "std")]
+    pub fn library_memo(&self) -> Result<SplitLibrary> {
+        type Key = (usize, u64, Spacing);
+        std::thread_local! {
+            static LAST: core::cell::RefCell<Option<(Key, SplitLibrary)>> =
+                const { core::cell::RefCell::new(None) };
+        }
+        let key = (self.components, self.lambda_.to_bits(), self.spacing);
+        let hit = LAST.with(|c| {
+            c.borrow()
+                .as_ref()
+                .filter(|(k, _)| *k == key)
+                .map(|(_, l)| l.clone())
+        });
+        if let Some(lib) = hit {
+            return Ok(lib);
+        }
+        let lib = self.library()?;
+        LAST.with(|c| *c.borrow_mut() = Some((key, lib.clone())));
+        Ok(lib)
+    }
 }
 
 /// An R-component split of N(0, 1), eq. (14) of `001_…`, with its objective J of eq. (13)
@@ -393,6 +421,24 @@ impl NegativeInformationReport {
         })
     }
 
+    /// [`NegativeInformationReport::fig5`], computed once per thread (it is deterministic;
+    /// about 8 ms in wasm) and cloned for every later call.
+    ///
+    /// # Errors
+    /// As [`NegativeInformationReport::fig5`] (none in practice).
+    #[cfg(feature = "std")]
+    pub fn fig5_memo() -> Result<Self> {
+        std::thread_local! {
+            static FIG5: core::cell::OnceCell<NegativeInformationReport> =
+                const { core::cell::OnceCell::new() };
+        }
+        if let Some(r) = FIG5.with(|c| c.get().cloned()) {
+            return Ok(r);
+        }
+        let r = Self::fig5()?;
+        Ok(FIG5.with(|c| c.get_or_init(|| r).clone()))
+    }
+
     /// Step `k` (1 to the number of steps).
     ///
     /// # Errors
@@ -571,5 +617,31 @@ mod tests {
             .select(&report)
             .unwrap_err();
         assert_eq!(e.to_string(), "step must be an integer in [1, 3], got 4");
+    }
+
+    #[cfg(feature = "std")]
+    #[test]
+    fn memos_give_the_uncached_values_and_do_not_keep_errors() {
+        let o = SplitLibraryOptions {
+            components: 4,
+            lambda_: 0.001,
+            spacing: Spacing::Equal,
+        };
+        assert_eq!(o.library_memo().unwrap(), o.library().unwrap());
+        assert_eq!(o.library_memo().unwrap(), o.library().unwrap());
+        let other = SplitLibraryOptions {
+            components: 3,
+            ..o.clone()
+        };
+        assert_eq!(other.library_memo().unwrap(), other.library().unwrap());
+        let bad = SplitLibraryOptions {
+            components: 1,
+            ..o.clone()
+        };
+        assert_eq!(bad.library_memo().unwrap_err(), bad.library().unwrap_err());
+        assert_eq!(o.library_memo().unwrap(), o.library().unwrap());
+        let fig5 = NegativeInformationReport::fig5().unwrap();
+        assert_eq!(NegativeInformationReport::fig5_memo().unwrap(), fig5);
+        assert_eq!(NegativeInformationReport::fig5_memo().unwrap(), fig5);
     }
 }
