@@ -315,6 +315,8 @@ impl Gen<'_> {
                 "point_sets" => "(number[] | Float64Array)[][]".into(),
                 // `[{ existence, mean, cov }, …]`, declared by the binding
                 "bernoullis" => "Bernoulli[]".into(),
+                // a result's mixture (`cov` as rows), declared by the binding
+                "components" => "MixtureComponent[]".into(),
                 // `[{ weight, components }, …]`, declared by the binding
                 "glmb_hypotheses" => "GlmbHypothesis[]".into(),
                 "bytes" => "Uint8Array".into(),

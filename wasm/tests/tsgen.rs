@@ -152,6 +152,8 @@ pub struct Inputs {
     pub method: Method,
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::nullable"))]
     pub estimate: Option<Vec<f64>>,
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::components"))]
+    pub split: GaussianMixture,
 }
 "#;
 
@@ -169,6 +171,8 @@ fn kebab_case_variants_and_the_number_shapes_of_serde_shapes() {
         "    decisions: Uint8Array;",
         // a nullable Option is always present, null for None
         "    estimate: number[] | null;",
+        // a result's mixture, as the binding declares it
+        "    split: MixtureComponent[];",
         "    | \"mam\"",
         "    | \"map-cardinality\"",
     ] {
