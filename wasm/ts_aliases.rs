@@ -14,7 +14,7 @@ pub const ALIASES: &[(&str, &str, &str)] = &[
     ("BernoulliLossCurveOptions", "LossCurveOptions", "Options of `bernoulliLossCurve`"),
     ("BernoulliLossCurveResult", "LossCurve", "Result of `bernoulliLossCurve`"),
     ("BernoulliThresholdCurveOptions", "ThresholdCurveOptions", "Options of `bernoulliThresholdCurve`"),
-    ("SpatialDensity", "BernoulliDensity", "The core's `SpatialDensity`: `BernoulliDensity`."),
+    ("BernoulliDensity", "SpatialDensity", "The spatial density of a Bernoulli"),
     ("MmucEstimateOptions", "MmucOptions", "Options of `mmucEstimate`"),
     ("MmucEstimateResult", "MmucEstimate", "Result of `mmucEstimate`"),
     ("MultiBernoulliPointEstimateOptions", "MultiBernoulliPointOptions", "Options of `multiBernoulliPointEstimate`"),

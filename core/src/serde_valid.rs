@@ -1092,18 +1092,34 @@ through_constructor!(
     |r| LinearGaussian::new(r.detection, r.gain, r.offset, r.noise_variance)
 );
 
-/// [`SpatialDensity`] as written: one Gaussian `{mean, cov}`, `{mixture: [...]}` or
-/// `{particles, weights}`.
+/// Numbers `[x, …]`, written under this name, which the JavaScript binding declares (a list
+/// of numbers or a `Float64Array`).
+type Numbers = Vec<f64>;
+
+// [`SpatialDensity`] as written (the weights always); read by [`DensityVisitor`]. The
+// JavaScript binding's TypeScript generator declares `SpatialDensity` by this form (its
+// `rename`; `weights` may be left out).
+/// The spatial density of a Bernoulli: one Gaussian (any dimension, full covariance), a
+/// Gaussian mixture (weights ≥ 0 with a positive sum; normalised), or weighted particles
+/// (weights ≥ 0 with a positive sum, default equal; normalised). Exactly one form.
 #[derive(Serialize)]
-#[serde(untagged)]
+#[serde(rename = "SpatialDensity", untagged)]
 enum SpatialDensityRepr {
+    /// `{ mean, cov }`: one Gaussian.
     Gaussian(Gaussian),
+    /// `{ mixture }`: a Gaussian mixture.
     Mixture {
+        /// The mixture's components.
         mixture: GaussianMixture,
     },
+    /// `{ particles, weights? }`: weighted particles.
     Particles {
+        /// The particles, one point each.
+        #[serde(with = "crate::serde_shapes::rows_of_numbers")]
         particles: Vec<Vec<f64>>,
-        weights: Vec<f64>,
+        /// The particles' weights (default equal).
+        #[serde(default)]
+        weights: Numbers,
     },
 }
 
