@@ -14,7 +14,7 @@ pub const ALIASES: &[(&str, &str, &str)] = &[
     ("BernoulliLossCurveOptions", "LossCurveOptions", "Options of `bernoulliLossCurve`"),
     ("BernoulliLossCurveResult", "LossCurve", "Result of `bernoulliLossCurve`"),
     ("BernoulliThresholdCurveOptions", "ThresholdCurveOptions", "Options of `bernoulliThresholdCurve`"),
-    ("SpatialDensity", "BernoulliDensity", "The core's `SpatialDensity`: `BernoulliDensity`."),
+    ("BernoulliDensity", "SpatialDensity", "The spatial density of a Bernoulli"),
     ("MmucEstimateOptions", "MmucOptions", "Options of `mmucEstimate`"),
     ("MmucEstimateResult", "MmucEstimate", "Result of `mmucEstimate`"),
     ("MultiBernoulliPointEstimateOptions", "MultiBernoulliPointOptions", "Options of `multiBernoulliPointEstimate`"),
@@ -78,4 +78,7 @@ pub const ALIASES: &[(&str, &str, &str)] = &[
     ("MbIdenticalComponentCountsResult", "IdenticalComponentCounts", "Result of `mbIdenticalComponentCounts`"),
     // splitting
     ("SplitLibraryResult", "SplitLibraryReport", "Result of `splitLibrary`"),
+    ("SplitForRegionsResult", "SplitForRegionsReport", "Result of `splitForRegions`: the split mixture and its mean-based partition"),
+    ("NegativeInformationStep", "NegativeInformationStepReport", "One predict → split → non-detection update cycle of the Fig. 5 scenario of LeGrand &\nFerrari, \"Split Happens! Imprecise and negative information in Gaussian mixture random finite\nset filtering\" (paper 001)"),
+    ("NegativeInformationScenario", "NegativeInformationReport", "Result of `negativeInformationScenario`: the Fig. 5 scenario of paper 001 (FoV, initial\nmixture over (x, y, ẋ, ẏ) and the three steps)"),
 ];

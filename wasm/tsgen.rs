@@ -13,6 +13,8 @@ use syn::{Attribute, Expr, Fields, GenericArgument, Item, Lit, Meta, PathArgumen
 #[derive(Default, Debug, Clone)]
 pub struct Serde {
     derive: bool,
+    /// Derives `Deserialize` (a form read from JavaScript, preferred for a renamed name).
+    deserialize: bool,
     default: bool,
     rename: Option<String>,
     rename_all: Option<String>,
@@ -70,11 +72,9 @@ pub fn serde_of(attrs: &[Attribute]) -> Serde {
                 read_serde_list(l, &mut s);
             }
         } else if a.path().is_ident("derive") {
-            if a.meta.to_token_stream_string().contains("Serialize")
-                || a.meta.to_token_stream_string().contains("Deserialize")
-            {
-                s.derive = true;
-            }
+            let t = a.meta.to_token_stream_string();
+            s.derive |= t.contains("Serialize") || t.contains("Deserialize");
+            s.deserialize |= t.contains("Deserialize");
         } else if a.path().is_ident("cfg_attr") {
             let Ok(items) = a.parse_args_with(Punctuated::<Meta, Token![,]>::parse_terminated)
             else {
@@ -94,9 +94,8 @@ pub fn serde_of(attrs: &[Attribute]) -> Serde {
                         read_serde_list(l, &mut s);
                     } else if l.path.is_ident("derive") {
                         let t = l.tokens.to_string();
-                        if t.contains("Serialize") || t.contains("Deserialize") {
-                            s.derive = true;
-                        }
+                        s.derive |= t.contains("Serialize") || t.contains("Deserialize");
+                        s.deserialize |= t.contains("Deserialize");
                     }
                 }
             }
@@ -201,7 +200,8 @@ pub fn collect(dir: &Path, out: &mut BTreeMap<String, Def>) {
 /// Registers the serde types of `items` by their Rust names. A type with a hand-written serde
 /// impl has no derive to read; when the impl goes through a derived form renamed to it
 /// (`#[serde(rename = "Density1")] enum Density1Repr`), the form is also registered under that
-/// name, which is how the type is written.
+/// name, which is how the type is written; of two forms renamed to one name (a type's
+/// `Serialize` form and its `Deserialize` form), the one read from JavaScript.
 pub fn walk(items: Vec<Item>, out: &mut BTreeMap<String, Def>) {
     let mut forms = Vec::new();
     for it in items {
@@ -227,6 +227,7 @@ pub fn walk(items: Vec<Item>, out: &mut BTreeMap<String, Def>) {
             _ => {}
         }
     }
+    forms.sort_by_key(|(_, item)| !serde_of(item_attrs(item)).deserialize);
     for (name, item) in forms {
         out.entry(name).or_insert(Def { item });
     }
@@ -314,6 +315,10 @@ impl Gen<'_> {
                 "point_sets" => "(number[] | Float64Array)[][]".into(),
                 // `[{ existence, mean, cov }, …]`, declared by the binding
                 "bernoullis" => "Bernoulli[]".into(),
+                // a result's mixture (`cov` as rows), declared by the binding
+                "components" => "MixtureComponent[]".into(),
+                // `[{ weight, components }, …]`, declared by the binding
+                "glmb_hypotheses" => "GlmbHypothesis[]".into(),
                 "bytes" => "Uint8Array".into(),
                 other => {
                     self.warnings.push(format!("unknown `with` module {other}"));
@@ -387,6 +392,7 @@ impl Gen<'_> {
                             return self.ty(&aliased, None);
                         }
                         if self.defs.contains_key(&name) {
+                            let name = self.ts_name(&name);
                             self.want(&name);
                             name
                         } else {
@@ -405,6 +411,40 @@ impl Gen<'_> {
                 "unknown".into()
             }
         }
+    }
+
+    /// The TypeScript name of the core type `name`: the name a derived form is renamed to
+    /// where it is registered under it (`#[serde(rename = "BoxRegion")] struct AxisBoxRepr`),
+    /// else its own.
+    fn ts_name(&self, name: &str) -> String {
+        let ident = |item: &Item| match item {
+            Item::Struct(s) => Some(s.ident.to_string()),
+            Item::Enum(e) => Some(e.ident.to_string()),
+            _ => None,
+        };
+        match serde_of(item_attrs(&self.defs[name].item)).rename {
+            Some(r) if self.defs.get(&r).and_then(|d| ident(&d.item)).as_deref() == Some(name) => r,
+            _ => name.to_string(),
+        }
+    }
+
+    /// The one field of a variant that JavaScript gives bare (`names_rule::BARE`: `{ polygon:
+    /// [[x, y], …] }` for `Polygon(PolygonRepr { vertices })`), with its `with`.
+    fn bare_field(&self, variant: &str, t: &Type) -> Option<(Type, Option<String>)> {
+        let (_, field) = names_rule::BARE.iter().find(|(v, _)| *v == variant)?;
+        let Type::Path(p) = t else { return None };
+        let name = p.path.segments.last()?.ident.to_string();
+        let Some(Def {
+            item: Item::Struct(st),
+        }) = self.defs.get(&name)
+        else {
+            return None;
+        };
+        let f = st
+            .fields
+            .iter()
+            .find(|f| f.ident.as_ref().is_some_and(|i| i == field))?;
+        Some((f.ty.clone(), serde_of(&f.attrs).with))
     }
 
     fn ty_paren(&mut self, t: &Type) -> String {
@@ -513,14 +553,22 @@ impl Gen<'_> {
                 let mut alts = Vec::new();
                 for v in &en.variants {
                     let vs = serde_of(&v.attrs);
-                    let tag = vs.rename.clone().unwrap_or_else(|| {
+                    let rust_tag = vs.rename.clone().unwrap_or_else(|| {
                         rename_variant(&v.ident.to_string(), c.rename_all.as_deref())
                     });
+                    // as `de.rs` reads it: camelCase, the renames of `names_rule::ANY_PARENT`
+                    let tag = names_rule::js_name_of("", &rust_tag);
                     let doc = docs(&v.attrs);
                     let body = match &v.fields {
                         Fields::Unit => None,
                         Fields::Unnamed(u) if u.unnamed.len() == 1 => {
-                            Some(self.ty(&u.unnamed[0].ty, vs.with.as_deref()))
+                            Some(match self.bare_field(&rust_tag, &u.unnamed[0].ty) {
+                                Some((t, with)) => self.ty(&t, with.as_deref()),
+                                None => {
+                                    let field = serde_of(&u.unnamed[0].attrs).with;
+                                    self.ty(&u.unnamed[0].ty, field.or(vs.with).as_deref())
+                                }
+                            })
                         }
                         Fields::Unnamed(u) => {
                             let parts: Vec<String> =

@@ -169,6 +169,13 @@ pub mod numbers {
     }
 }
 
+/// A `GaussianMixture` as results write it, `[{weight, mean, cov}, …]` with `cov` as rows:
+/// the serde shape is the mixture's own; the module marks the field for the bindings' type
+/// generators (a result's mixture, not one read).
+pub mod components {
+    pub use super::numbers::{deserialize, serialize};
+}
+
 /// An `Option<T>` that is always written: the value, or null for `None` (a required field
 /// that may be null, where a plain `Option` field is optional); the module marks the field
 /// for the bindings' type generators (`T | null`).

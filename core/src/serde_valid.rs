@@ -556,9 +556,15 @@ through_constructor!(
     |r| ApplicationLoss::new(r.costs, r.radius)
 );
 
+/// An axis-aligned box `{ min, max }` (closed; any dimension).
 #[derive(Serialize, Deserialize)]
+#[serde(rename = "BoxRegion")]
 struct AxisBoxRepr {
+    /// The lower corner: the smallest coordinate along each axis.
+    #[serde(with = "crate::serde_shapes::numbers")]
     min: Vec<f64>,
+    /// The upper corner: the largest coordinate along each axis (each entry ≥ the lower one).
+    #[serde(with = "crate::serde_shapes::numbers")]
     max: Vec<f64>,
 }
 
@@ -572,9 +578,15 @@ through_constructor!(
     |r| AxisBox::new(&r.min, &r.max, "box")
 );
 
+/// A disc `{ center, radius }` (a closed ball in more than two dimensions; JavaScript's
+/// `disc` is the core's `ball`).
 #[derive(Serialize, Deserialize)]
+#[serde(rename = "DiscRegion")]
 struct BallRepr {
+    /// The disc's centre, one number per position coordinate.
+    #[serde(with = "crate::serde_shapes::numbers")]
     center: Vec<f64>,
+    /// The disc's radius, > 0.
     radius: f64,
 }
 
@@ -718,21 +730,33 @@ enum RegionRef<'a> {
     Complement(&'a Region),
 }
 
-/// [`RegionRef`] as read: the arguments of the constructors, which [`Region`]'s
-/// `Deserialize` calls itself (so that their errors name the part of the region at fault).
+// [`RegionRef`] as read: the arguments of the constructors, which [`Region`]'s
+// `Deserialize` calls itself (so that their errors name the part of the region at fault); the
+// JavaScript binding's TypeScript generator declares `Region` by this form (its `rename`).
+/// A region of the position subspace (the first state components): a closed box (any
+/// dimension), a closed polygon (2D; either orientation; even–odd rule when
+/// self-intersecting), or a closed disc (a ball in higher dimensions), or a union,
+/// intersection or complement of regions. Exactly one key.
 #[derive(Deserialize)]
 #[serde(rename = "Region")]
 enum RegionRepr {
+    /// `{ box: { min, max } }`: an axis-aligned box.
     #[serde(rename = "box")]
     Box(AxisBoxRepr),
+    /// `{ polygon: [[x, y], …] }`: a 2D polygon of at least three vertices, at most 1,000.
     #[serde(rename = "polygon")]
     Polygon(PolygonRepr),
+    /// `{ disc: { center, radius } }`: a disc (a ball in more than two dimensions).
     #[serde(rename = "ball")]
     Ball(BallRepr),
+    /// `{ union: [region, …] }`: inside any member (1 to 1,000, all of one dimension).
     #[serde(rename = "union")]
     Union(Vec<Region>),
+    /// `{ intersection: [region, …] }`: inside every member (1 to 1,000, all of one
+    /// dimension).
     #[serde(rename = "intersection")]
     Intersection(Vec<Region>),
+    /// `{ complement: region }`: outside the region (open).
     #[serde(rename = "complement")]
     Complement(Box<Region>),
 }
@@ -1068,18 +1092,34 @@ through_constructor!(
     |r| LinearGaussian::new(r.detection, r.gain, r.offset, r.noise_variance)
 );
 
-/// [`SpatialDensity`] as written: one Gaussian `{mean, cov}`, `{mixture: [...]}` or
-/// `{particles, weights}`.
+/// Numbers `[x, …]`, written under this name, which the JavaScript binding declares (a list
+/// of numbers or a `Float64Array`).
+type Numbers = Vec<f64>;
+
+// [`SpatialDensity`] as written (the weights always); read by [`DensityVisitor`]. The
+// JavaScript binding's TypeScript generator declares `SpatialDensity` by this form (its
+// `rename`; `weights` may be left out).
+/// The spatial density of a Bernoulli: one Gaussian (any dimension, full covariance), a
+/// Gaussian mixture (weights ≥ 0 with a positive sum; normalised), or weighted particles
+/// (weights ≥ 0 with a positive sum, default equal; normalised). Exactly one form.
 #[derive(Serialize)]
-#[serde(untagged)]
+#[serde(rename = "SpatialDensity", untagged)]
 enum SpatialDensityRepr {
+    /// `{ mean, cov }`: one Gaussian.
     Gaussian(Gaussian),
+    /// `{ mixture }`: a Gaussian mixture.
     Mixture {
+        /// The mixture's components.
         mixture: GaussianMixture,
     },
+    /// `{ particles, weights? }`: weighted particles.
     Particles {
+        /// The particles, one point each.
+        #[serde(with = "crate::serde_shapes::rows_of_numbers")]
         particles: Vec<Vec<f64>>,
-        weights: Vec<f64>,
+        /// The particles' weights (default equal).
+        #[serde(default)]
+        weights: Numbers,
     },
 }
 

@@ -12,17 +12,8 @@ use fisst::bernoulli::{
 };
 
 // The spatial density of a Bernoulli is the core's `SpatialDensity`, read by its own
-// deserializer (`{ mean, cov }`, `{ mixture }` or `{ particles, weights? }`, exactly one form;
-// errors name `.mixture[2].cov`, `.particles[1]` under the density's path).
-#[wasm_bindgen(typescript_custom_section)]
-const BERNOULLI_DENSITY: &str = r#"
-/**
- * The spatial density of a Bernoulli: one Gaussian (any dimension, full covariance), a
- * Gaussian mixture (weights ≥ 0 with a positive sum; normalised), or weighted particles
- * (weights ≥ 0 with a positive sum, default equal; normalised). Exactly one form.
- */
-export type BernoulliDensity = { mean: Point; cov: Covariance } | { mixture: WeightedGaussian[] } | { particles: Point[]; weights?: Numbers };
-"#;
+// deserializer (errors name `.mixture[2].cov`, `.particles[1]` under the density's path); its
+// TypeScript is generated, `BernoulliDensity` its contract name (`ts_aliases.rs`).
 
 // The costs of the loss (7) are the core's `Costs`, read by its own deserializer ('mpe',
 // `{ mmol }` or the five costs; errors name `.c01`, `.mmol.asset` under `options.costs`).

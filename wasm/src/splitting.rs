@@ -12,74 +12,8 @@ use fisst::splitting::{
     check_reduce_input, split_for_regions_report,
 };
 
-// The results are the core's own types written under the contract's names: `splitLibrary`'s
-// is generated from the core's source (its name in `ts_aliases.rs`); the others are declared
-// here because they hold the contract's shapes the generator does not write (`null` for an
-// absent value, mixtures as `MixtureComponent[]`).
-#[wasm_bindgen(typescript_custom_section)]
-const RESULTS: &str = r#"
-/**
- * Result of `splitForRegions`: the split mixture and its mean-based partition (the core's
- * `SplitForRegionsReport`).
- */
-export interface SplitForRegionsResult {
-    /** The split mixture (each input component replaced in place by its descendants). */
-    mixture: MixtureComponent[];
-    /** The mean-based partition (11)–(12) for the first region: the inside weight. */
-    inside: number;
-    /** The mean-based partition for the first region: the outside weight (of the components whose mean lies outside it). */
-    outside: number;
-    /** `insideMask[i]`: whether component i of `mixture` is in p_S, i.e. its mean (position part) lies in the first region (`inside` is the sum of the weights it selects). */
-    insideMask: boolean[];
-    /** The exact mass ⟨1_S, p⟩ of the first region S under the input mixture p (null when too costly: more than ~0.5 s of masses, or positionDims > 4). */
-    exactInside: number | null;
-    /** The number of recursion levels used. */
-    depth: number;
-    /** The number of split operations (components replaced by R children). */
-    splits: number;
-    /** null, or the cap that stopped the recursion. */
-    stop: null | 'maxDepth' | 'maxComponents';
-}
-/**
- * One predict → split → non-detection update cycle of the Fig. 5 scenario of LeGrand & Ferrari,
- * "Split Happens! Imprecise and negative information in Gaussian mixture random finite set
- * filtering" (paper 001) (the core's `NegativeInformationStepReport`).
- */
-export interface NegativeInformationStep {
-    /** The step number k: 1, 2 or 3. */
-    step: number;
-    /** The predicted density p_{k|k−1}, a Gaussian mixture. */
-    predicted: MixtureComponent[];
-    /** Algorithm 1 applied to it (R = 3, λ = 0.001, w_min = 0.01). */
-    split: MixtureComponent[];
-    /** The posterior density p_{k|k}: the mean-based partition's outside part, normalised. */
-    posterior: MixtureComponent[];
-    /** The predicted probability 1 − Δ_k of the non-detection. */
-    nonDetectionProb: number;
-    /** The exact predicted mass in the field of view, ⟨1_S, p_{k|k−1}⟩ ∈ [0, 1]. */
-    predictedInside: number;
-    /** The exact posterior mass in the field of view, ⟨1_S, p_{k|k}⟩ ∈ [0, 1]. */
-    posteriorInside: number;
-    /** The number of recursion levels used by the split. */
-    depth: number;
-    /** The number of split operations (components replaced by R children). */
-    splits: number;
-}
-/**
- * Result of `negativeInformationScenario`: the Fig. 5 scenario of LeGrand & Ferrari, "Split
- * Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
- * (paper 001): FoV, initial mixture (state x, y, ẋ, ẏ) and the three steps (the core's
- * `NegativeInformationReport`).
- */
-export interface NegativeInformationScenario {
-    /** The field of view S, a box in (x, y). */
-    fov: Region;
-    /** The initial density p_{0|0}, a Gaussian mixture over (x, y, ẋ, ẏ). */
-    initial: MixtureComponent[];
-    /** The three predict → split → update steps, k = 1, 2, 3. */
-    steps: NegativeInformationStep[];
-}
-"#;
+// The results are the core's own types written under the contract's names (`ts_aliases.rs`),
+// their TypeScript generated from the core's source by build.rs.
 
 // `splitForRegions` reads the core's own `SplitForRegionsOptions` (its TypeScript is generated
 // by build.rs from the core's source; its mixture is a `GaussianMixture`, declared in

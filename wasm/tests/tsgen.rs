@@ -152,6 +152,8 @@ pub struct Inputs {
     pub method: Method,
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::nullable"))]
     pub estimate: Option<Vec<f64>>,
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::components"))]
+    pub split: GaussianMixture,
 }
 "#;
 
@@ -169,6 +171,8 @@ fn kebab_case_variants_and_the_number_shapes_of_serde_shapes() {
         "    decisions: Uint8Array;",
         // a nullable Option is always present, null for None
         "    estimate: number[] | null;",
+        // a result's mixture, as the binding declares it
+        "    split: MixtureComponent[];",
         "    | \"mam\"",
         "    | \"map-cardinality\"",
     ] {
@@ -325,4 +329,64 @@ fn an_alias_of_ts_aliases_is_declared_where_the_part_reaches_one_of_its_names() 
         ),
         "{ts}"
     );
+}
+
+#[test]
+fn variant_tags_in_javascript_names_a_bare_variant_and_a_form_named_by_its_rename() {
+    // the core's `Region`: read through a form renamed to it, whose variants hold forms
+    // renamed to the contract's names; `ball` is JavaScript's `disc`, a polygon is given bare
+    let source = r#"
+pub struct Region { node: Node }
+#[derive(Serialize)]
+#[serde(rename = "Region", rename_all = "snake_case")]
+enum RegionRef<'a> { Box(&'a AxisBox), Ball(&'a Ball) }
+/// A region.
+#[derive(Deserialize)]
+#[serde(rename = "Region")]
+enum RegionRepr {
+    #[serde(rename = "box")]
+    Box(AxisBoxRepr),
+    #[serde(rename = "polygon")]
+    Polygon(PolygonRepr),
+    #[serde(rename = "ball")]
+    Ball(BallRepr),
+    #[serde(rename = "union")]
+    Union(Vec<Region>),
+}
+#[derive(Serialize, Deserialize)]
+#[serde(rename = "BoxRegion")]
+struct AxisBoxRepr { #[serde(with = "crate::serde_shapes::numbers")] min: Vec<f64> }
+#[derive(Serialize, Deserialize)]
+#[serde(rename = "DiscRegion")]
+struct BallRepr { radius: f64 }
+#[derive(Serialize, Deserialize)]
+struct PolygonRepr { vertices: Vec<[f64; 2]> }
+#[derive(Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+enum Density {
+    MultiBernoulli(#[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::bernoullis"))] Vec<(f64, G)>),
+    IidCluster { size_hint: f64 },
+}
+"#;
+    let mut defs = BTreeMap::new();
+    tsgen::walk(syn::parse_file(source).unwrap().items, &mut defs);
+    let roots = ["Region".to_string(), "Density".to_string()];
+    let refs: std::vec::Vec<&String> = roots.iter().collect();
+    let (ts, warnings) = tsgen::declarations(&defs, &refs);
+    assert!(warnings.is_empty(), "{warnings:?}");
+    for expected in [
+        "/**\n * A region.\n */\nexport type Region =\n",
+        "    | { box: BoxRegion }",
+        "    | { polygon: [number, number][] }",
+        "    | { disc: DiscRegion }",
+        "    | { union: Region[] }",
+        "export interface BoxRegion {\n    min: number[] | Float64Array;\n}",
+        "export interface DiscRegion {\n    radius: number;\n}",
+        // a `with` on the variant's field
+        "    | { multiBernoulli: Bernoulli[] }",
+        "    | { iidCluster: {\n        sizeHint: number;\n",
+    ] {
+        assert!(ts.contains(expected), "missing {expected:?} in\n{ts}");
+    }
+    assert!(!ts.contains("Repr") && !ts.contains("ball"), "{ts}");
 }

@@ -29,7 +29,7 @@ impl MultiObjectDensity {
     pub fn gaussian_count(&self) -> usize {
         match self {
             MultiObjectDensity::Poisson(m) => m.len(),
-            MultiObjectDensity::IidCluster { density, .. } => density.len(),
+            MultiObjectDensity::IidCluster(c) => c.density.len(),
             MultiObjectDensity::MultiBernoulli(c) => c.len(),
             MultiObjectDensity::Glmb(h) => h.iter().map(|(_, c)| c.len()).sum(),
         }

@@ -16,9 +16,9 @@ use super::pmf::{self, FovCardinality, GlmbHypothesis};
 /// A multi-object density whose single-object densities are Gaussians or Gaussian mixtures
 /// (eq. (7) of `001_…`).
 ///
-/// Its serde form (feature `serde`) has exactly one key: `{"poisson": [{weight, mean, cov}, …]}`,
-/// `{"iid_cluster": {cardinality, density}}`, `{"multi_bernoulli": [{existence, mean, cov}, …]}`
-/// or `{"glmb": [{weight, components: [{mean, cov}, …]}, …]}`.
+/// Its serde form (feature `serde`) has exactly one key: `poisson` (a mixture
+/// `[{weight, mean, cov}, …]`), `iid_cluster` (`{cardinality, density}`), `multi_bernoulli`
+/// (`[{existence, mean, cov}, …]`) or `glmb` (`[{weight, components: [{mean, cov}, …]}, …]`).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(
     feature = "serde",
@@ -30,12 +30,7 @@ pub enum MultiObjectDensity {
     Poisson(GaussianMixture),
     /// i.i.d. cluster RFS (83): cardinality pmf ρ(0), ρ(1), … and single-object density p
     /// (a mixture whose weights sum to 1).
-    IidCluster {
-        /// ρ(n), n = 0, 1, …
-        cardinality: Vec<f64>,
-        /// p(x).
-        density: GaussianMixture,
-    },
+    IidCluster(IidCluster),
     /// Multi-Bernoulli RFS (87): (existence r⁽ⁱ⁾, density p⁽ⁱ⁾) per component.
     MultiBernoulli(
         #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::bernoullis"))]
@@ -47,6 +42,22 @@ pub enum MultiObjectDensity {
         #[cfg_attr(feature = "serde", serde(with = "super::options::glmb_hypotheses"))]
         Vec<(f64, Vec<Gaussian>)>,
     ),
+}
+
+/// Numbers `[x, …]`, written under this name, which the JavaScript binding declares (a list
+/// of numbers or a `Float64Array`).
+type Numbers = Vec<f64>;
+
+/// An i.i.d. cluster density: a cardinality pmf and one single-object density (the
+/// [`MultiObjectDensity::IidCluster`] variant).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct IidCluster {
+    /// The cardinality pmf ρ(0), ρ(1), …: ρ(n) is the probability of n objects (sums to 1; at
+    /// most 20,001 entries).
+    pub cardinality: Numbers,
+    /// The single-object density p(x) as a mixture (weights sum to 1).
+    pub density: GaussianMixture,
 }
 
 /// [`fov_cardinality`]'s result.
@@ -203,10 +214,10 @@ pub fn fov_cardinality(
                 mass_in_fov,
             })
         }
-        MultiObjectDensity::IidCluster {
+        MultiObjectDensity::IidCluster(IidCluster {
             cardinality,
             density,
-        } => {
+        }) => {
             let total = weights_sum_to_one(
                 density.components().iter().map(|(w, _)| *w),
                 "rfs.iid_cluster.density",

@@ -46,10 +46,10 @@ pub use budget::{
     FOV_MASS_BUDGET_US, MAX_CARDINALITY_LEN, MAX_DENSITY_GRID_WORK, MAX_VARIANCE_MAP_WORK,
     fov_mass_work_us, grid_work,
 };
-pub use density::{FovCount, MultiObjectDensity, fov_cardinality};
+pub use density::{FovCount, IidCluster, MultiObjectDensity, fov_cardinality};
 pub use density_grid::mixture_density_grid;
 pub use options::{
-    DEFAULT_DETECTION_PROBABILITY, FovCardinalityOptions, FovCardinalityResult,
+    Axis, DEFAULT_DETECTION_PROBABILITY, FovCardinalityOptions, FovCardinalityResult,
     FovVarianceMapOptions, FovVarianceMapResult, Grid, MAX_VERTICES, MixtureDensityGridOptions,
 };
 pub use placement::{GridAxis, MAX_GRID_AXIS, MAX_GRID_CELLS, VarianceMap, variance_map};

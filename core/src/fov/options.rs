@@ -14,7 +14,7 @@ use crate::gaussian::{Gaussian, GaussianMixture, MAX_GAUSSIANS};
 use crate::regions::Region;
 
 use super::{
-    FOV_MASS_BUDGET_US, FovCount, GridAxis, MAX_CARDINALITY_LEN, MAX_DENSITY_GRID_WORK,
+    FOV_MASS_BUDGET_US, FovCount, GridAxis, IidCluster, MAX_CARDINALITY_LEN, MAX_DENSITY_GRID_WORK,
     MAX_GRID_AXIS, MAX_VARIANCE_MAP_WORK, MultiObjectDensity, VarianceMap, fov_cardinality,
     fov_mass_work_us, mixture_density_grid, variance_map,
 };
@@ -64,7 +64,7 @@ impl FovCardinalityOptions {
                 let total = h.iter().map(|(_, c)| c.len()).sum();
                 Error::check_count("rfs.glmb", "components in all", total, 0, MAX_GAUSSIANS)?;
             }
-            MultiObjectDensity::IidCluster { cardinality, .. } => Error::check_count(
+            MultiObjectDensity::IidCluster(IidCluster { cardinality, .. }) => Error::check_count(
                 "rfs.iid_cluster.cardinality",
                 "entries",
                 cardinality.len(),
@@ -130,15 +130,18 @@ impl From<FovCount> for FovCardinalityResult {
     }
 }
 
+/// A grid axis `[min, max, count]`: `count` points from `min` to `max` (like linspace).
+pub type Axis = [f64; 3];
+
 /// A 2D grid of positions, one axis `[min, max, count]` per coordinate (`count` points from
 /// `min` to `max`, like linspace; `count` an integer in [1, [`MAX_GRID_AXIS`]]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Grid {
-    /// The x axis `[min, max, count]`.
-    pub x: [f64; 3],
-    /// The y axis `[min, max, count]`.
-    pub y: [f64; 3],
+    /// The x axis `[min, max, count]`, `count` in [1, 4096].
+    pub x: Axis,
+    /// The y axis `[min, max, count]`, `count` in [1, 4096].
+    pub y: Axis,
 }
 
 fn axis([min, max, count]: [f64; 3], name: &str) -> Result<GridAxis> {
@@ -355,10 +358,10 @@ mod tests {
         assert_eq!(e.field(), "rfs.glmb");
         assert!(e.to_string().contains("10001 components in all"), "{e}");
         let iid = FovCardinalityOptions {
-            rfs: MultiObjectDensity::IidCluster {
+            rfs: MultiObjectDensity::IidCluster(IidCluster {
                 cardinality: vec![0.0; MAX_CARDINALITY_LEN + 1],
                 density: GaussianMixture::new(vec![(1.0, g(0.0))], "d").unwrap(),
-            },
+            }),
             fov: fov.clone(),
             detection_probability: 1.0,
         };

@@ -186,10 +186,10 @@ fn eq84_iid_cluster_matches_the_series_and_the_simulation() {
     let density =
         GaussianMixture::new(w.iter().copied().zip(gs.iter().cloned()).collect(), "d").unwrap();
     let res = fov_cardinality(
-        &MultiObjectDensity::IidCluster {
+        &MultiObjectDensity::IidCluster(IidCluster {
             cardinality: rho.to_vec(),
             density,
-        },
+        }),
         &fov,
         0.8,
     )
@@ -402,10 +402,10 @@ fn front_door_names_fields() {
     assert_eq!(phd.unwrap_err().field(), "rfs.poisson[1].mean");
     let density = GaussianMixture::new(vec![(0.5, gs[0].clone())], "d").unwrap();
     let e = fov_cardinality(
-        &MultiObjectDensity::IidCluster {
+        &MultiObjectDensity::IidCluster(IidCluster {
             cardinality: vec![0.5, 0.5],
             density,
-        },
+        }),
         &fov,
         1.0,
     )
@@ -413,10 +413,10 @@ fn front_door_names_fields() {
     assert_eq!(e.field(), "rfs.iid_cluster.density");
     let density = GaussianMixture::new(vec![(1.0, gs[0].clone())], "d").unwrap();
     let e = fov_cardinality(
-        &MultiObjectDensity::IidCluster {
+        &MultiObjectDensity::IidCluster(IidCluster {
             cardinality: vec![0.5, f64::NAN],
             density,
-        },
+        }),
         &fov,
         1.0,
     )

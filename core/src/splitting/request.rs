@@ -268,6 +268,7 @@ fn max_grid_points(position_dims: usize) -> usize {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SplitForRegionsReport {
     /// The split mixture (each input component replaced in place by its descendants).
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::components"))]
     pub mixture: GaussianMixture,
     /// The mean-based partition (11)–(12) for the first region: the inside weight.
     pub inside: f64,
@@ -278,13 +279,15 @@ pub struct SplitForRegionsReport {
     /// part) lies in the first region (`inside` is the sum of the weights it selects).
     pub inside_mask: Vec<bool>,
     /// The exact mass ⟨1_S, p⟩ of the first region S under the input mixture p, eq. (8)
-    /// (`None` when too costly: [`exact_mass_affordable`]).
+    /// (`None`, written null, when too costly: [`exact_mass_affordable`]).
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::nullable"))]
     pub exact_inside: Option<f64>,
     /// The number of recursion levels used.
     pub depth: usize,
     /// The number of split operations (components replaced by R children).
     pub splits: usize,
-    /// `None`, or the cap that stopped the recursion.
+    /// `None` (written null), or the cap that stopped the recursion.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::nullable"))]
     pub stop: Option<SplitStop>,
 }
 
@@ -356,11 +359,14 @@ pub struct NegativeInformationStepReport {
     /// The step number k: 1, 2 or 3.
     pub step: usize,
     /// The predicted density p_{k|k−1}, a Gaussian mixture.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::components"))]
     pub predicted: GaussianMixture,
     /// Algorithm 1 applied to it (R = 3, λ = 0.001, w_min = 0.01).
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::components"))]
     pub split: GaussianMixture,
     /// The posterior density p_{k|k}: the mean-based partition's outside part, normalised
     /// (eqs. (57)–(58)).
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::components"))]
     pub posterior: GaussianMixture,
     /// The predicted probability 1 − Δ_k of the non-detection.
     pub non_detection_prob: f64,
@@ -398,6 +404,7 @@ pub struct NegativeInformationReport {
     /// The field of view S, a box in (x, y).
     pub fov: Region,
     /// The initial density p_{0|0}, a Gaussian mixture over (x, y, ẋ, ẏ).
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::components"))]
     pub initial: GaussianMixture,
     /// The three predict → split → update steps, k = 1, 2, 3.
     pub steps: Vec<NegativeInformationStepReport>,
