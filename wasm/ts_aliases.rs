@@ -27,6 +27,8 @@ pub const ALIASES: &[(&str, &str, &str)] = &[
     ("Birth", "BirthOptions", "Object birth (the core's `Birth`)."),
     ("Detection", "DetectionOptions", "Object detection (the core's `Detection`)."),
     ("Clutter", "ClutterOptions", "Clutter (the core's `Clutter`)."),
+    ("GmBernoulliUpdateResult", "GmBernoulliUpdate", "Result of `gmBernoulliUpdate`: the posterior Bernoulli"),
+    ("FilterEstimateResult", "FilterEstimateReport", "The result of the filters' `estimate()`: the posterior existence, MMSE state and\ncovariance"),
     ("AnchorOut", "Anchor", "An anchor of the airport example"),
     ("TruthOut", "TruthPoint", "The truth at one report time"),
     // bounds

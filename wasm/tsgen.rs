@@ -135,11 +135,15 @@ fn js_code_spans(line: &str) -> String {
         if i > 0 {
             out.push('`');
         }
-        // lower-case names only: a constant (`MAX_DENSE_WORK`) stays as it is
+        // lower-case names only: a constant (`MAX_DENSE_WORK`) stays as it is, and so does a
+        // file name (`001_0f0df91eee9b30d5.txt`: a segment that does not start as a name)
         let plain_path = part.contains('_')
             && part.chars().all(|c| {
                 c.is_ascii_lowercase() || c.is_ascii_digit() || matches!(c, '_' | '.' | '[' | ']')
-            });
+            })
+            && part
+                .split('.')
+                .all(|seg| seg.starts_with(|c: char| c.is_ascii_lowercase() || c == '_'));
         if i % 2 == 1 && plain_path {
             let mut parent = "";
             let renamed: Vec<_> = part

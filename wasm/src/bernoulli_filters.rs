@@ -95,21 +95,6 @@ pub fn gm_bernoulli_predict(
     write(&out)
 }
 
-/// Result of `gmBernoulliUpdate`: the posterior Bernoulli.
-#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `GmBernoulliUpdate`
-#[derive(Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct GmBernoulliUpdateResult {
-    /// The posterior existence probability r_{k|k} ∈ [0, 1].
-    pub existence: f64,
-    /// The posterior spatial density p_{k|k}, a Gaussian mixture, after the reduction.
-    pub mixture: Vec<MixtureComponent>,
-    /// The update's Δ_k of eq. (58) (−Infinity when a report has zero clutter intensity).
-    pub delta: f64,
-    /// Components after splitting, before the update and the reduction.
-    pub split_components: usize,
-}
-
 /// The GM Bernoulli update (Algorithm 3 of LeGrand & Ferrari, "Split Happens! Imprecise and
 /// negative information in Gaussian mixture random finite set filtering" (paper 001): split about
 /// ∂S, every ∂ζ and every exclusion, zeroth-order weights (57)–(58), existence (54), two-pass
@@ -174,23 +159,6 @@ fn scan_error(e: fisst::Error) -> JsValue {
 #[derive(Deserialize, Tsify, Default)]
 #[tsify(type = "FilterEstimateLoss | { radius?: undefined; costs?: undefined }")]
 pub struct FilterEstimateOptions(core_filters::EstimateLossOptions);
-
-/// The result of the filters' `estimate()`: the posterior existence, MMSE state and covariance.
-#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `FilterEstimateReport`
-#[derive(Tsify)]
-pub struct FilterEstimateResult {
-    /// The posterior existence probability r ∈ [0, 1].
-    pub existence: f64,
-    /// The MMSE (posterior mean) state, length n.
-    pub mean: Vec<f64>,
-    /// The posterior covariance, n rows of n numbers.
-    pub cov: Vec<Vec<f64>>,
-    /// The optimal Bernoulli point estimate (Theorem III.3 of Narykov, Üney & Ralph, "Optimal
-    /// Bernoulli point estimation with applications" (paper 000)) on the position marginal; null
-    /// without a loss.
-    #[tsify(type = "BernoulliEstimateResult | null")]
-    pub report: Option<fisst::bernoulli::BernoulliReport>,
-}
 
 // `radius` and `costs` go together (`FilterEstimateOptions`), and with them `report` is never
 // null: overloads of both filters' `estimate` (interfaces merged into the classes;

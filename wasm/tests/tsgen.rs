@@ -22,7 +22,8 @@ pub struct FilterOptions {
     #[cfg_attr(feature = "serde", serde(default = "FilterOptions::default_p"))]
     pub p: f64,
     /// Scans ahead (with `transition.survival_probability`; see `shape[i].max_corner`,
-    /// `Transition::survival_probability`, `MAX_DENSE_WORK` and `a_b + c`).
+    /// `Transition::survival_probability`, `MAX_DENSE_WORK` and `a_b + c`; eq. (3) of
+    /// `001_0f0df91eee9b30d5.txt`).
     pub future_scans: Option<usize>,
     pub transition: Transition,
     pub pairs: Vec<(usize, usize)>,
@@ -284,9 +285,13 @@ fn field_paths_quoted_in_docs_are_in_javascript_names() {
     );
     // Rust paths, constants and expressions stay as written
     assert!(
-        ts.contains("`Transition::survival_probability`, `MAX_DENSE_WORK` and `a_b + c`)."),
+        ts.contains(
+            "`Transition::survival_probability`, `MAX_DENSE_WORK` and `a_b + c`; eq. (3) of"
+        ),
         "{ts}"
     );
+    // a file name is not a path: its segments are not identifiers
+    assert!(ts.contains("`001_0f0df91eee9b30d5.txt`)."), "{ts}");
 }
 
 #[test]

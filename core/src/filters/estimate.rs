@@ -106,8 +106,8 @@ pub struct FilterEstimateReport {
     pub mean: Vec<f64>,
     /// The posterior covariance, rows.
     pub cov: Vec<Vec<f64>>,
-    /// The optimal Bernoulli point estimate on the position marginal; `None` (null) without
-    /// a loss.
+    /// The optimal Bernoulli point estimate (Theorem III.3 of paper 000) on the position
+    /// marginal; null without a loss.
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::nullable"))]
     pub report: Option<BernoulliReport>,
 }

@@ -112,6 +112,7 @@ pub struct GmBernoulliUpdate {
     pub existence: f64,
     /// The posterior spatial density p_{k|k} after the reduction (`mixture`), weights summing
     /// to 1.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::components"))]
     pub mixture: GaussianMixture,
     /// The update's Δ_k of eq. (58) (`delta`), computed on the split, exclusion-constrained
     /// prediction; 1 − Δ_k is the likelihood ratio of the scan under "the object exists" against
