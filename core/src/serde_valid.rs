@@ -682,9 +682,15 @@ through_constructor!(
     |r| GmBernoulli::new(r.existence, r.mixture)
 );
 
+/// Object birth: p_b and the birth density b(x) (eq. (43) of paper 001; weights sum to 1; may
+/// be empty when p_b = 0).
 #[derive(Serialize, Deserialize)]
+#[serde(rename = "Birth")]
 struct BirthRepr {
+    /// The birth probability p_b ∈ [0, 1]: the probability that an object appears in one step
+    /// when none exists.
     probability: f64,
+    /// The birth density b(x) of a new object's state, a Gaussian mixture (weights sum to 1).
     #[serde(default)]
     mixture: GaussianMixture,
 }
@@ -700,9 +706,15 @@ through_constructor!(
     below "birth"
 );
 
+/// Object detection: p_D(x; S) = 1_S(x) p_D, eq. (51) of LeGrand & Ferrari, "Split Happens!
+/// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper
+/// 001).
 #[derive(Serialize, Deserialize)]
+#[serde(rename = "Detection")]
 struct DetectionRepr {
+    /// The detection probability p_D ∈ [0, 1] inside the field of view S.
     probability: f64,
+    /// The field of view S; omitted: detection everywhere.
     #[serde(default)]
     fov: Option<Region>,
 }

@@ -12,38 +12,13 @@ use crate::boundary::{
     JsResult, OrThrow, core_error, core_error_rendered, read, render_path, seed_or_entropy, write,
 };
 use crate::names::Renamed;
-use crate::types::{MixtureComponent, WeightedGaussian};
+use crate::types::MixtureComponent;
 use fisst::filters::{
     self as core_filters, BernoulliFilterConfig, EstimateOptions, GmBernoulliPredictOptions,
     GmBernoulliUpdateOptions, ParticleOptions, TransitionRows,
 };
 use fisst::regions::Region;
 use fisst::sim::airport::{AirportScenarioOptions, AirportScenarioReport, Anchor, TruthPoint};
-
-/// Object birth: p_b and the birth density b(x) (weights sum to 1; may be empty when
-/// p_b = 0).
-#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `Birth`
-#[derive(Tsify)]
-pub struct BirthOptions {
-    /// The birth probability p_b ∈ [0, 1]: the probability that an object appears in one step when
-    /// none exists.
-    pub probability: f64,
-    /// The birth density b(x) of a new object's state, a Gaussian mixture (weights sum to 1).
-    #[tsify(optional)]
-    pub mixture: Vec<WeightedGaussian>,
-}
-
-/// Object detection: p_D(x; S) = 1_S(x) p_D, eq. (51) of LeGrand & Ferrari, "Split Happens!
-/// Imprecise and negative information in Gaussian mixture random finite set filtering" (paper 001).
-#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `Detection`
-#[derive(Tsify)]
-pub struct DetectionOptions {
-    /// The detection probability p_D ∈ [0, 1] inside the field of view S.
-    pub probability: f64,
-    /// The field of view S; omitted: detection everywhere.
-    #[tsify(optional)]
-    pub fov: Option<Region>,
-}
 
 // `clutter` is the core's `Clutter` (its density reads as a number or an array, the core's
 // `ScalarOr`), and `reduction` the core's `ReductionOptions` (omitted: the filters' default
