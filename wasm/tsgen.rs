@@ -128,7 +128,8 @@ fn docs(attrs: &[Attribute]) -> Vec<String> {
 /// The Rust field paths quoted in a doc line under their JavaScript names, as the declarations
 /// show the fields: "`prior.multivariate_gaussian.mean`" → "`prior.multivariateGaussian.mean`",
 /// "`quadrature_cardinality`" → "`quadratureCardinality`". Only code spans that are a plain
-/// path (identifiers, dots, `[i]`) change; Rust paths (`a::b`) and expressions stay.
+/// path (identifiers, dots, `[i]`) change; Rust paths (`a::b`) and expressions stay; `None`
+/// is said as JavaScript says it, `null`.
 fn js_code_spans(line: &str) -> String {
     let mut out = String::with_capacity(line.len());
     for (i, part) in line.split('`').enumerate() {
@@ -144,7 +145,10 @@ fn js_code_spans(line: &str) -> String {
             && part
                 .split('.')
                 .all(|seg| seg.starts_with(|c: char| c.is_ascii_lowercase() || c == '_'));
-        if i % 2 == 1 && plain_path {
+        if i % 2 == 1 && part == "None" {
+            // an absent value, as the bindings write it
+            out.push_str("null");
+        } else if i % 2 == 1 && plain_path {
             let mut parent = "";
             let renamed: Vec<_> = part
                 .split('.')

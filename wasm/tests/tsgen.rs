@@ -23,7 +23,7 @@ pub struct FilterOptions {
     pub p: f64,
     /// Scans ahead (with `transition.survival_probability`; see `shape[i].max_corner`,
     /// `Transition::survival_probability`, `MAX_DENSE_WORK` and `a_b + c`; eq. (3) of
-    /// `001_0f0df91eee9b30d5.txt`).
+    /// `001_0f0df91eee9b30d5.txt`); `None`: no limit.
     pub future_scans: Option<usize>,
     pub transition: Transition,
     pub pairs: Vec<(usize, usize)>,
@@ -291,7 +291,10 @@ fn field_paths_quoted_in_docs_are_in_javascript_names() {
         "{ts}"
     );
     // a file name is not a path: its segments are not identifiers
-    assert!(ts.contains("`001_0f0df91eee9b30d5.txt`)."), "{ts}");
+    assert!(
+        ts.contains("`001_0f0df91eee9b30d5.txt`); `null`: no limit."),
+        "{ts}"
+    );
 }
 
 #[test]

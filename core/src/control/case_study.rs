@@ -101,8 +101,8 @@ impl Scheme {
 
 /// Options of one run of Algorithm 1 on the case study of Ristic & Vo, "Sensor control for multi-object state-space estimation using random finite sets" (paper 004), Sec. 5 (𝒜 = [0, 1000]²
 /// m, p_D = 0.95, λ = 0.8, sources at (300, 600) and (750, 250), σ = 10 + 4·10⁻⁵ d²). The
-/// scene (area, truth, sensor, actions, regularisation) is the paper's and is not read by
-/// serde.
+/// scene (area, truth, sensor, actions, regularisation) is the paper's and is not read from
+/// the options.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ControlOptions {

@@ -16,7 +16,7 @@ use super::pmf::{self, FovCardinality, GlmbHypothesis};
 /// A multi-object density whose single-object densities are Gaussians or Gaussian mixtures
 /// (eq. (7) of `001_…`).
 ///
-/// Its serde form (feature `serde`) has exactly one key: `poisson` (a mixture
+/// Written as options, it has exactly one key: `poisson` (a mixture
 /// `[{weight, mean, cov}, …]`), `iid_cluster` (`{cardinality, density}`), `multi_bernoulli`
 /// (`[{existence, mean, cov}, …]`) or `glmb` (`[{weight, components: [{mean, cov}, …]}, …]`).
 #[derive(Clone, Debug, PartialEq)]

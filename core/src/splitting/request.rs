@@ -279,14 +279,14 @@ pub struct SplitForRegionsReport {
     /// part) lies in the first region (`inside` is the sum of the weights it selects).
     pub inside_mask: Vec<bool>,
     /// The exact mass ⟨1_S, p⟩ of the first region S under the input mixture p, eq. (8)
-    /// (`None`, written null, when too costly: [`exact_mass_affordable`]).
+    /// (`None` when too costly: [`exact_mass_affordable`]).
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::nullable"))]
     pub exact_inside: Option<f64>,
     /// The number of recursion levels used.
     pub depth: usize,
     /// The number of split operations (components replaced by R children).
     pub splits: usize,
-    /// `None` (written null), or the cap that stopped the recursion.
+    /// `None`, or the cap that stopped the recursion.
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::nullable"))]
     pub stop: Option<SplitStop>,
 }
