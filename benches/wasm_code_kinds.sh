@@ -9,6 +9,15 @@
 # Measured (stop 40): the filing commit of issue 25 (52f9197^, six modules 2.0 MB) against
 # 063f7c2 (2.43 MB): serde 248 → 358 KB, binding glue 322 → 317 KB, numerics 762 → 968 KB,
 # nalgebra + libm 135 → 148 KB, runtime 464 → 479 KB, data 122 → 133 KB.
+#
+# Ways to the filing's size tried (stop 41, 85b8350's six modules 2,438,269 bytes), none reaching
+# 2.07 MB: without LTO, the core (and nalgebra, libm) at opt-level 3 and every other crate at
+# "z" (a `[profile.*.package]` table): 2,420,226; every crate at "z" without LTO, the floor of
+# what the compiler's size settings give: 2,223,786 (the particle filter 2.5× slower at "z",
+# measured in stop 40); binaryen's `wasm-opt` (npm, version 132) with only
+# `--duplicate-function-elimination --merge-similar-functions --remove-unused-module-elements`:
+# 2,388,715. What is left is code: the core's numerics grew by 206 KB with the features of the
+# issues since; float formatting of error messages (`core::fmt::float`, flt2dec) is about 20 KB per module.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
