@@ -29,6 +29,11 @@ pub const ALIASES: &[(&str, &str, &str)] = &[
     ("Clutter", "ClutterOptions", "Clutter (the core's `Clutter`)."),
     ("GmBernoulliUpdateResult", "GmBernoulliUpdate", "Result of `gmBernoulliUpdate`: the posterior Bernoulli"),
     ("FilterEstimateResult", "FilterEstimateReport", "The result of the filters' `estimate()`: the posterior existence, MMSE state and\ncovariance"),
+    ("AirportScenarioResult", "AirportScenarioReport", "Result of `airportScenario`: the airport example of LeGrand & Ferrari, \"Split Happens!\nImprecise and negative information in Gaussian mixture random finite set filtering\" (paper\n001), Section V-C"),
+    ("AirportConfig", "AirportFilterConfig", "The filter configuration of the example, ready for both classes (a\n`BernoulliFilterConfig`)"),
+    ("AirportBirth", "Birth", "Object birth of the example"),
+    ("AirportDetection", "Detection", "Detection of the example"),
+    ("AirportClutter", "Clutter", "Clutter (false reports) of the example"),
     ("AnchorOut", "Anchor", "An anchor of the airport example"),
     ("TruthOut", "TruthPoint", "The truth at one report time"),
     // bounds

@@ -375,7 +375,10 @@ impl<'de> Deserialize<'de> for GaussianMixture {
     }
 }
 
+/// A `LinearGaussianTransition` as written: F and Q as rows, the form of the core's
+/// `TransitionRows` (`{ F, Q }` in the bindings' names).
 #[derive(Serialize, Deserialize)]
+#[serde(rename = "TransitionRows")]
 struct TransitionRepr {
     #[serde(with = "matrix")]
     f: DMatrix<f64>,
