@@ -27,6 +27,7 @@ pub const ALIASES: &[(&str, &str, &str)] = &[
     ("BirthOptions", "Birth", "Object birth"),
     ("DetectionOptions", "Detection", "Object detection"),
     ("Clutter", "ClutterOptions", "Clutter (the core's `Clutter`)."),
+    ("GmBernoulliResult", "GmBernoulli", "Result of `gmBernoulliPredict`: the predicted Bernoulli"),
     ("GmBernoulliUpdateResult", "GmBernoulliUpdate", "Result of `gmBernoulliUpdate`: the posterior Bernoulli"),
     ("FilterEstimateResult", "FilterEstimateReport", "The result of the filters' `estimate()`: the posterior existence, MMSE state and\ncovariance"),
     ("AirportScenarioResult", "AirportScenarioReport", "Result of `airportScenario`: the airport example of LeGrand & Ferrari, \"Split Happens!\nImprecise and negative information in Gaussian mixture random finite set filtering\" (paper\n001), Section V-C"),

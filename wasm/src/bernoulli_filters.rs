@@ -12,7 +12,6 @@ use crate::boundary::{
     JsResult, OrThrow, core_error, core_error_rendered, read, render_path, seed_or_entropy, write,
 };
 use crate::names::Renamed;
-use crate::types::MixtureComponent;
 use fisst::filters::{
     self as core_filters, BernoulliFilterConfig, EstimateOptions, GmBernoulliPredictOptions,
     GmBernoulliUpdateOptions, ParticleOptions,
@@ -45,16 +44,6 @@ export interface ClutterOptions {
     density: ClutterDensityOption;
 }
 "#;
-
-/// Result of `gmBernoulliPredict`: a Bernoulli with a Gaussian-mixture (GM) density.
-#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `GmBernoulli`
-#[derive(Tsify)]
-pub struct GmBernoulliResult {
-    /// The predicted existence probability r ∈ [0, 1].
-    pub existence: f64,
-    /// The predicted spatial density p(x), a Gaussian mixture (weights sum to 1).
-    pub mixture: Vec<MixtureComponent>,
-}
 
 /// The GM Bernoulli prediction, eqs. (40)–(49) of LeGrand & Ferrari, "Split Happens! Imprecise and
 /// negative information in Gaussian mixture random finite set filtering" (paper 001). Options `{
