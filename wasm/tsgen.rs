@@ -209,11 +209,20 @@ pub fn collect(dir: &Path, out: &mut BTreeMap<String, Def>) {
 /// impl has no derive to read; when the impl goes through a derived form renamed to it
 /// (`#[serde(rename = "Density1")] enum Density1Repr`), the form is also registered under that
 /// name, which is how the type is written; of two forms renamed to one name (a type's
-/// `Serialize` form and its `Deserialize` form), the one read from JavaScript.
+/// `Serialize` form and its `Deserialize` form), the one read from JavaScript. A type written
+/// through a form by `through_constructor!(Type, Form, …)` is registered as its form.
 pub fn walk(items: Vec<Item>, out: &mut BTreeMap<String, Def>) {
     let mut forms = Vec::new();
+    let mut constructed = Vec::new();
     for it in items {
         match &it {
+            Item::Macro(m) if m.mac.path.is_ident("through_constructor") => {
+                let args = m.mac.tokens.to_string();
+                let mut names = args.split(',').map(str::trim);
+                if let (Some(ty), Some(form)) = (names.next(), names.next()) {
+                    constructed.push((ty.to_string(), form.to_string()));
+                }
+            }
             Item::Struct(s) if serde_of(&s.attrs).derive => {
                 forms.extend(serde_of(&s.attrs).rename.map(|r| (r, it.clone())));
                 out.insert(s.ident.to_string(), Def { item: it.clone() });
@@ -238,6 +247,11 @@ pub fn walk(items: Vec<Item>, out: &mut BTreeMap<String, Def>) {
     forms.sort_by_key(|(_, item)| !serde_of(item_attrs(item)).deserialize);
     for (name, item) in forms {
         out.entry(name).or_insert(Def { item });
+    }
+    for (ty, form) in constructed {
+        if let Some(item) = out.get(&form).map(|d| d.item.clone()) {
+            out.entry(ty).or_insert(Def { item });
+        }
     }
 }
 
@@ -378,7 +392,10 @@ impl Gen<'_> {
                             format!("{}[]", self.ty_paren(&args[0]))
                         }
                     }
-                    "Option" => format!("{} | undefined", self.ty(&args[0], None)),
+                    // an `Option` held by another type (an array's entry; a field's is optional
+                    // instead, see `fields`): the bindings write `None` as null (and read null
+                    // or undefined)
+                    "Option" => format!("{} | null", self.ty(&args[0], None)),
                     // one number, or an array of `T` (numbers may be a `Float64Array`)
                     "ScalarOr" => match &*self.ty(&args[0], None) {
                         "number" => "number | number[] | Float64Array".into(),
@@ -421,17 +438,14 @@ impl Gen<'_> {
         }
     }
 
-    /// The TypeScript name of the core type `name`: the name a derived form is renamed to
-    /// where it is registered under it (`#[serde(rename = "BoxRegion")] struct AxisBoxRepr`),
-    /// else its own.
+    /// The TypeScript name of the core type `name`: the name its form is renamed to where a
+    /// type is registered under it, which is how it is written: a derived form's
+    /// (`#[serde(rename = "BoxRegion")] struct AxisBoxRepr`), or the form of a type written
+    /// through it (`LinearGaussianTransition` through `#[serde(rename = "TransitionRows")]
+    /// struct TransitionRepr`, written as the core's `TransitionRows`); else its own.
     fn ts_name(&self, name: &str) -> String {
-        let ident = |item: &Item| match item {
-            Item::Struct(s) => Some(s.ident.to_string()),
-            Item::Enum(e) => Some(e.ident.to_string()),
-            _ => None,
-        };
         match serde_of(item_attrs(&self.defs[name].item)).rename {
-            Some(r) if self.defs.get(&r).and_then(|d| ident(&d.item)).as_deref() == Some(name) => r,
+            Some(r) if r != name && self.defs.contains_key(&r) => r,
             _ => name.to_string(),
         }
     }

@@ -375,7 +375,10 @@ impl<'de> Deserialize<'de> for GaussianMixture {
     }
 }
 
+/// A `LinearGaussianTransition` as written: F and Q as rows, the form of the core's
+/// `TransitionRows` (`{ F, Q }` in the bindings' names).
 #[derive(Serialize, Deserialize)]
+#[serde(rename = "TransitionRows")]
 struct TransitionRepr {
     #[serde(with = "matrix")]
     f: DMatrix<f64>,
@@ -666,9 +669,14 @@ through_constructor!(
     |r| ParticleSet::new(&r.points, Some(&r.weights))
 );
 
+/// A Bernoulli with a Gaussian-mixture (GM) spatial density, eq. (39) of paper 001: f(∅) =
+/// 1 − r, f({x}) = r p(x).
 #[derive(Serialize, Deserialize)]
 struct GmBernoulliRepr {
+    /// The existence probability r ∈ [0, 1].
     existence: f64,
+    /// The spatial density p(x), a Gaussian mixture (weights sum to 1).
+    #[serde(with = "crate::serde_shapes::components")]
     mixture: GaussianMixture,
 }
 

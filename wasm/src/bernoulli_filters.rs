@@ -12,13 +12,12 @@ use crate::boundary::{
     JsResult, OrThrow, core_error, core_error_rendered, read, render_path, seed_or_entropy, write,
 };
 use crate::names::Renamed;
-use crate::types::MixtureComponent;
 use fisst::filters::{
     self as core_filters, BernoulliFilterConfig, EstimateOptions, GmBernoulliPredictOptions,
-    GmBernoulliUpdateOptions, ParticleOptions, TransitionRows,
+    GmBernoulliUpdateOptions, ParticleOptions,
 };
 use fisst::regions::Region;
-use fisst::sim::airport::{AirportScenarioOptions, AirportScenarioReport, Anchor, TruthPoint};
+use fisst::sim::airport::{AirportScenarioOptions, AirportScenarioReport};
 
 // `clutter` is the core's `Clutter` (its density reads as a number or an array, the core's
 // `ScalarOr`), and `reduction` the core's `ReductionOptions` (omitted: the filters' default
@@ -45,16 +44,6 @@ export interface ClutterOptions {
     density: ClutterDensityOption;
 }
 "#;
-
-/// Result of `gmBernoulliPredict`: a Bernoulli with a Gaussian-mixture (GM) density.
-#[allow(dead_code)] // a TypeScript declaration only: the value is the core's `GmBernoulli`
-#[derive(Tsify)]
-pub struct GmBernoulliResult {
-    /// The predicted existence probability r ∈ [0, 1].
-    pub existence: f64,
-    /// The predicted spatial density p(x), a Gaussian mixture (weights sum to 1).
-    pub mixture: Vec<MixtureComponent>,
-}
 
 /// The GM Bernoulli prediction, eqs. (40)–(49) of LeGrand & Ferrari, "Split Happens! Imprecise and
 /// negative information in Gaussian mixture random finite set filtering" (paper 001). Options `{
@@ -334,104 +323,6 @@ impl ParticleBernoulliFilterJs {
     pub fn seed(&self) -> f64 {
         self.seed as f64
     }
-}
-
-// The declarations of `airportScenario`'s result (TypeScript only: the value is the core's
-// `AirportScenarioReport`, written under the contract's names).
-/// The filter configuration of the example, ready for both classes (a `BernoulliFilterConfig`).
-#[allow(dead_code)] // a TypeScript declaration only
-#[derive(Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct AirportConfig {
-    /// The initial existence probability r_{0|0} ∈ [0, 1].
-    pub existence: f64,
-    /// The initial spatial density p_{0|0}, a Gaussian mixture.
-    pub mixture: Vec<MixtureComponent>,
-    /// The motion model: transition matrix F and process noise covariance Q.
-    #[tsify(type = "Transition")]
-    pub transition: TransitionRows,
-    /// The survival probability p_S ∈ [0, 1]: the probability that the person stays one more step.
-    pub survival: f64,
-    /// Object birth: the birth probability p_b and birth density b(x).
-    pub birth: AirportBirth,
-    /// The number n_s of position components: 2 (x, y).
-    pub position_dims: usize,
-    /// Detection: detection probability p_D = 0.9 inside the field of view S.
-    pub detection: AirportDetection,
-    /// Clutter: rate λ_c = 0.25 false reports per scan, density c̃ = 1/10 (one of ten anchors).
-    pub clutter: AirportClutter,
-    /// The exclusion regions the person cannot occupy.
-    pub exclusions: Vec<Region>,
-    /// Particle filter: the number of particles N, 5000.
-    pub particles: usize,
-    /// Particle filter: MCMC moves per update, 1.
-    pub mcmc_moves: usize,
-    /// The scenario's seed, for the particle filter.
-    pub seed: u64,
-}
-
-/// Object birth of the example.
-#[allow(dead_code)] // a TypeScript declaration only
-#[derive(Tsify)]
-pub struct AirportBirth {
-    /// The birth probability p_b ∈ [0, 1]: the probability that a person appears in one step.
-    pub probability: f64,
-    /// The birth density b(x) of a new person's state, a Gaussian mixture.
-    pub mixture: Vec<MixtureComponent>,
-}
-
-/// Detection of the example.
-#[allow(dead_code)] // a TypeScript declaration only
-#[derive(Tsify)]
-pub struct AirportDetection {
-    /// The detection probability p_D ∈ [0, 1] inside the field of view.
-    pub probability: f64,
-    /// The field of view S: the union of the anchors' association discs.
-    pub fov: Region,
-}
-
-/// Clutter (false reports) of the example.
-#[allow(dead_code)] // a TypeScript declaration only
-#[derive(Tsify)]
-pub struct AirportClutter {
-    /// The clutter rate λ_c ≥ 0: the mean number of false reports per scan.
-    pub rate: f64,
-    /// The clutter density c̃ ≥ 0 of a false report (1 / number of anchors).
-    pub density: f64,
-}
-
-/// Result of `airportScenario`: the airport example of LeGrand & Ferrari, "Split Happens! Imprecise
-/// and negative information in Gaussian mixture random finite set filtering" (paper 001), Section
-/// V-C.
-#[allow(dead_code)] // a TypeScript declaration only
-#[derive(Tsify)]
-#[serde(rename_all = "camelCase")]
-pub struct AirportScenarioResult {
-    /// The ten anchors, in report-index order.
-    #[tsify(type = "AnchorOut[]")]
-    pub anchors: Vec<Anchor>,
-    /// The exclusion regions (four rectangles, then the exterior of the concourse).
-    pub exclusions: Vec<Region>,
-    /// The concourse, a box [0, 300] × [0, 30].
-    pub concourse: Region,
-    /// The field of view S: the union of the anchors' association discs.
-    pub fov: Region,
-    /// The report interval T = 15 s.
-    pub dt: f64,
-    /// The configuration of both filters.
-    pub config: AirportConfig,
-    /// The person's true state at each report time.
-    #[tsify(type = "TruthOut[]")]
-    pub truth: Vec<TruthPoint>,
-    /// The reported anchor indices per step.
-    pub reports: Vec<Vec<usize>>,
-    /// The anchor of the true report per step (null: missed).
-    #[tsify(type = "(number | null)[]")]
-    pub true_reports: Vec<Option<usize>>,
-    /// Whether the person was in S per step.
-    pub in_fov: Vec<bool>,
-    /// The seed used (the option's, or the fresh one drawn).
-    pub seed: u64,
 }
 
 /// The airport example of LeGrand & Ferrari, "Split Happens! Imprecise and negative information in

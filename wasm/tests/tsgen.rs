@@ -155,6 +155,7 @@ pub struct Inputs {
     pub estimate: Option<Vec<f64>>,
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::components"))]
     pub split: GaussianMixture,
+    pub true_reports: Vec<Option<usize>>,
 }
 "#;
 
@@ -174,6 +175,8 @@ fn kebab_case_variants_and_the_number_shapes_of_serde_shapes() {
         "    estimate: number[] | null;",
         // a result's mixture, as the binding declares it
         "    split: MixtureComponent[];",
+        // an Option in an array is written null for None
+        "    trueReports: (number | null)[];",
         "    | \"mam\"",
         "    | \"map-cardinality\"",
     ] {
@@ -240,6 +243,42 @@ struct KeptRepr { other: f64 }
     assert!(ts.contains("    kept: number;"), "{ts}");
     assert!(!ts.contains("other"), "{ts}");
     assert!(defs.contains_key("PlainRepr") && !defs.contains_key("Plain"));
+}
+
+#[test]
+fn a_type_written_through_a_form_is_declared_by_it_or_by_the_core_type_it_is_renamed_to() {
+    // `through_constructor!(Type, Form, …)`: `Type` (no derive) is written as `Form`; a form
+    // renamed to another core type is written as that type, and named by it
+    let source = r#"
+pub struct Transition { f: DMatrix<f64> }
+#[derive(Serialize, Deserialize)]
+pub struct TransitionRows { #[serde(rename = "F")] pub f: Vec<Vec<f64>> }
+#[derive(Serialize, Deserialize)]
+#[serde(rename = "TransitionRows")]
+struct TransitionRepr { #[serde(with = "matrix")] f: DMatrix<f64> }
+through_constructor!(Transition, TransitionRepr, |t| TransitionRepr { f: t.f.clone() }, |r| Ok(r));
+pub struct Prior { m: f64 }
+/// A prior as written.
+#[derive(Serialize, Deserialize)]
+struct PriorRepr { mean: f64 }
+through_constructor!(Prior, PriorRepr, |p| PriorRepr { mean: p.m }, |r| Ok(r), below "prior");
+#[derive(Serialize, Deserialize)]
+pub struct Model { pub transition: Transition, pub prior: Prior }
+"#;
+    let mut defs = BTreeMap::new();
+    tsgen::walk(syn::parse_file(source).unwrap().items, &mut defs);
+    let root = "Model".to_string();
+    let (ts, warnings) = tsgen::declarations(&defs, &[&root]);
+    assert!(warnings.is_empty(), "{warnings:?}");
+    for expected in [
+        "    transition: TransitionRows;",
+        "export interface TransitionRows {\n    F: number[][];\n}",
+        "    prior: Prior;",
+        "/**\n * A prior as written.\n */\nexport interface Prior {\n    mean: number;\n}",
+    ] {
+        assert!(ts.contains(expected), "{expected:?} not in\n{ts}");
+    }
+    assert!(!ts.contains("Repr"), "{ts}");
 }
 
 #[test]

@@ -463,6 +463,7 @@ pub struct AirportFilterConfig {
     /// The initial existence probability r_{0|0} ∈ [0, 1].
     pub existence: f64,
     /// The initial spatial density p_{0|0}, a Gaussian mixture.
+    #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::components"))]
     pub mixture: GaussianMixture,
     /// The motion model (70)–(71): transition matrix F and process noise covariance Q.
     pub transition: LinearGaussianTransition,
@@ -480,9 +481,9 @@ pub struct AirportFilterConfig {
     pub clutter: Clutter,
     /// The exclusion regions the person cannot occupy.
     pub exclusions: Vec<Region>,
-    /// Particle filter: the number of particles N ([`default_particles`]).
+    /// Particle filter: the number of particles N, 5000 (the filters' default).
     pub particles: usize,
-    /// Particle filter: MCMC moves per update ([`default_mcmc_moves`]).
+    /// Particle filter: MCMC moves per update, 1 (the filters' default).
     pub mcmc_moves: usize,
     /// The scenario's seed, for the particle filter.
     pub seed: u64,
@@ -514,7 +515,7 @@ pub struct AirportScenarioReport {
     pub true_reports: Vec<Option<usize>>,
     /// Whether the person was in S per step.
     pub in_fov: Vec<bool>,
-    /// The seed used.
+    /// The seed used (the option's, or the fresh one drawn).
     pub seed: u64,
 }
 
