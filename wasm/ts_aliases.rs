@@ -42,6 +42,7 @@ pub const ALIASES: &[(&str, &str, &str)] = &[
     ("JdeExample2Result", "Example2", "Result of `jdeExample2`: the core's `Example2`. Neither number is a lower bound where the\nestimation term matters: p_1 does not vanish at x = 1 (see `jdeExample2Regularity`)."),
     ("JdeExample2RegularityResult", "Example2Regularity", "Result of `jdeExample2Regularity`"),
     ("DensityShape", "Density1", "A 1D density: `{ gaussian: { mean, variance } }`, `{ uniform: { low, high } }`,\n`{ mixture: [{ weight, mean, variance }, …] }` (1 to 1,000 components) or\n`{ table: { x, density } }`"),
+    ("DetectionTableShape", "DetectionTable", "A tabulated detection probability P_o(x)"),
     ("DetectionShape", "JdeDetectionOptions", "The detection probability P_o(x)"),
     ("PriorShape", "PriorOptions", "The prior f of `jdeBound`"),
     ("MonteCarloPriorShape", "MonteCarloPrior", "The state of `jdeMonteCarlo`"),

@@ -148,6 +148,8 @@ fn js_code_spans(line: &str) -> String {
         if i % 2 == 1 && part == "None" {
             // an absent value, as the bindings write it
             out.push_str("null");
+        } else if i % 2 == 1 && part.starts_with('{') {
+            out.push_str(&js_keys(part));
         } else if i % 2 == 1 && plain_path {
             let mut parent = "";
             let renamed: Vec<_> = part
@@ -165,6 +167,27 @@ fn js_code_spans(line: &str) -> String {
         }
     }
     out
+}
+
+/// An object written in a doc's code span with its keys in JavaScript names: "`{
+/// multivariate_gaussian: { mean, cov } }`" → "`{ multivariateGaussian: { mean, cov } }`"
+/// (a name followed by `:`).
+fn js_keys(code: &str) -> String {
+    let mut out = String::with_capacity(code.len());
+    let mut rest = code;
+    while let Some(start) = rest.find(|c: char| c.is_ascii_lowercase() || c == '_') {
+        let len = rest[start..]
+            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .unwrap_or(rest.len() - start);
+        let (word, after) = rest[start..].split_at(len);
+        out.push_str(&rest[..start]);
+        match after.trim_start().starts_with(':') {
+            true => out.push_str(&names_rule::js_name_of("", word)),
+            false => out.push_str(word),
+        }
+        rest = after;
+    }
+    out + rest
 }
 
 /// Rustdoc's intra-doc links as plain code: "[`X`]" and "[`x`](path)" become "`X`", "`x`".
@@ -315,7 +338,10 @@ impl Gen<'_> {
 
     fn ty(&mut self, t: &Type, with: Option<&str>) -> String {
         if let Some(w) = with {
-            let last = w.rsplit("::").next().unwrap_or(w);
+            // a module's `serialize` alone (`serialize_with`) marks the field as the module
+            // does, leaving how it is read alone
+            let mut segments = w.rsplit("::").skip_while(|s| *s == "serialize");
+            let last = segments.next().unwrap_or(w);
             return match last {
                 "matrix" => "number[][]".into(),
                 "vector" | "numbers" => "number[] | Float64Array".into(),

@@ -23,7 +23,8 @@ pub struct FilterOptions {
     pub p: f64,
     /// Scans ahead (with `transition.survival_probability`; see `shape[i].max_corner`,
     /// `Transition::survival_probability`, `MAX_DENSE_WORK` and `a_b + c`; eq. (3) of
-    /// `001_0f0df91eee9b30d5.txt`); `None`: no limit.
+    /// `001_0f0df91eee9b30d5.txt`); `None`: no limit. Or `{ future_scans: { max_corner },
+    /// b: a_b }`.
     pub future_scans: Option<usize>,
     pub transition: Transition,
     pub pairs: Vec<(usize, usize)>,
@@ -155,6 +156,8 @@ pub struct Inputs {
     pub estimate: Option<Vec<f64>>,
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::components"))]
     pub split: GaussianMixture,
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::serde_shapes::numbers::serialize"))]
+    pub knots: Vec<f64>,
 }
 "#;
 
@@ -174,6 +177,8 @@ fn kebab_case_variants_and_the_number_shapes_of_serde_shapes() {
         "    estimate: number[] | null;",
         // a result's mixture, as the binding declares it
         "    split: MixtureComponent[];",
+        // marked by the module's `serialize` alone (read as a plain `Vec`)
+        "    knots: number[] | Float64Array;",
         "    | \"mam\"",
         "    | \"map-cardinality\"",
     ] {
@@ -293,6 +298,11 @@ fn field_paths_quoted_in_docs_are_in_javascript_names() {
     // a file name is not a path: its segments are not identifiers
     assert!(
         ts.contains("`001_0f0df91eee9b30d5.txt`); `null`: no limit."),
+        "{ts}"
+    );
+    // the keys of an object are renamed, the names it holds as values are not
+    assert!(
+        ts.contains("Or `{ futureScans: { max_corner },\n     * b: a_b }`."),
         "{ts}"
     );
 }
