@@ -614,7 +614,8 @@ impl Gen<'_> {
                             self.fields(name, &v.fields, &Serde::default(), "        ")
                         )),
                     };
-                    let alt = match (body, c.untagged, &c.tag) {
+                    // an untagged variant (`#[serde(untagged)]`) is written as its body
+                    let alt = match (body, c.untagged || vs.untagged, &c.tag) {
                         (None, _, None) => format!("\"{tag}\""),
                         (None, _, Some(t)) => format!("{{ {t}: \"{tag}\" }}"),
                         (Some(b), true, _) => b,
@@ -713,9 +714,9 @@ pub fn alias(name: &str, ty: &str, doc: &str) -> String {
 /// The declarations of a part: the core types its `roots` reach (as [`declarations_with`]) and
 /// the aliases of `table` (`ts_aliases.rs`) it reaches. An alias goes in when its name is
 /// among the roots or the names the part's own declarations hold (`mentioned`), or either of
-/// its names is reached by the generated types; the type it names then becomes a root. (A
-/// shape of the binding that only the binding's declarations hold, `BernoulliCosts` in the
-/// filters' `FilterEstimateLoss`, does not bring in the core's name for it, `Costs`.)
+/// its names is reached by the generated types; the type it names then becomes a root (the
+/// filters' own `FilterEstimateLoss` holds `BernoulliCosts`, which brings in the core's
+/// `Costs`).
 pub fn part_declarations(
     defs: &BTreeMap<String, Def>,
     roots: &BTreeSet<String>,

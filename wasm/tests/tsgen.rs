@@ -140,6 +140,8 @@ const SHAPES: &str = r#"
 pub enum Method {
     Mam,
     MapCardinality,
+    #[cfg_attr(feature = "serde", serde(untagged))]
+    Weighted { weight: f64 },
 }
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Inputs {
@@ -181,6 +183,8 @@ fn kebab_case_variants_and_the_number_shapes_of_serde_shapes() {
         "    knots: number[] | Float64Array;",
         "    | \"mam\"",
         "    | \"map-cardinality\"",
+        // an untagged variant is its body alone
+        "    | {\n        weight: number;\n    };",
     ] {
         assert!(ts.contains(expected), "{expected:?} not in\n{ts}");
     }
