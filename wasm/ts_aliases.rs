@@ -2,7 +2,7 @@
 //! `build.rs`, which writes each alias, with its doc, into the declarations of every part that
 //! reaches one of its two names (and then declares the type it names). The left name is
 //! declared by the binding (the generator names it, never generates it); the right one is the
-//! type it stands for: a core type, or a shape the binding declares (`BernoulliCosts`).
+//! type it stands for: a core type.
 //!
 //! `(name, type, doc)`: a doc that does not end in a period is followed by ": the core's
 //! `type`."; `\n` breaks its lines. Every name here is published: keep it, even if no test
@@ -10,7 +10,7 @@
 #[rustfmt::skip]
 pub const ALIASES: &[(&str, &str, &str)] = &[
     // bernoulli
-    ("Costs", "BernoulliCosts", "The core's `Costs`: `BernoulliCosts`."),
+    ("BernoulliCosts", "Costs", "Costs of the loss (7)"),
     ("BernoulliLossCurveOptions", "LossCurveOptions", "Options of `bernoulliLossCurve`"),
     ("BernoulliLossCurveResult", "LossCurve", "Result of `bernoulliLossCurve`"),
     ("BernoulliThresholdCurveOptions", "ThresholdCurveOptions", "Options of `bernoulliThresholdCurve`"),
@@ -26,7 +26,8 @@ pub const ALIASES: &[(&str, &str, &str)] = &[
     ("LikelihoodOptions", "LikelihoodRows", "The linear-Gaussian likelihood N(z; H x, R) of vector measurements: the core's\n`LikelihoodRows`."),
     ("BirthOptions", "Birth", "Object birth"),
     ("DetectionOptions", "Detection", "Object detection"),
-    ("Clutter", "ClutterOptions", "Clutter (the core's `Clutter`)."),
+    ("ClutterOptions", "Clutter", "Poisson false reports: rate λ_c and density c̃(ζ)"),
+    ("ClutterDensityOption", "ClutterDensity", "c̃(ζ): one number for every report, or one per report"),
     ("GmBernoulliResult", "GmBernoulli", "Result of `gmBernoulliPredict`: the predicted Bernoulli"),
     ("GmBernoulliUpdateResult", "GmBernoulliUpdate", "Result of `gmBernoulliUpdate`: the posterior Bernoulli"),
     ("FilterEstimateResult", "FilterEstimateReport", "The result of the filters' `estimate()`: the posterior existence, MMSE state and\ncovariance"),
@@ -48,6 +49,7 @@ pub const ALIASES: &[(&str, &str, &str)] = &[
     ("JdeExample2Result", "Example2", "Result of `jdeExample2`: the core's `Example2`. Neither number is a lower bound where the\nestimation term matters: p_1 does not vanish at x = 1 (see `jdeExample2Regularity`)."),
     ("JdeExample2RegularityResult", "Example2Regularity", "Result of `jdeExample2Regularity`"),
     ("DensityShape", "Density1", "A 1D density: `{ gaussian: { mean, variance } }`, `{ uniform: { low, high } }`,\n`{ mixture: [{ weight, mean, variance }, …] }` (1 to 1,000 components) or\n`{ table: { x, density } }`"),
+    ("DetectionTableShape", "DetectionTable", "A tabulated detection probability P_o(x)"),
     ("DetectionShape", "JdeDetectionOptions", "The detection probability P_o(x)"),
     ("PriorShape", "PriorOptions", "The prior f of `jdeBound`"),
     ("MonteCarloPriorShape", "MonteCarloPrior", "The state of `jdeMonteCarlo`"),

@@ -148,6 +148,8 @@ fn js_code_spans(line: &str) -> String {
         if i % 2 == 1 && part == "None" {
             // an absent value, as the bindings write it
             out.push_str("null");
+        } else if i % 2 == 1 && part.starts_with('{') {
+            out.push_str(&js_keys(part));
         } else if i % 2 == 1 && plain_path {
             let mut parent = "";
             let renamed: Vec<_> = part
@@ -165,6 +167,27 @@ fn js_code_spans(line: &str) -> String {
         }
     }
     out
+}
+
+/// An object written in a doc's code span with its keys in JavaScript names: "`{
+/// multivariate_gaussian: { mean, cov } }`" → "`{ multivariateGaussian: { mean, cov } }`"
+/// (a name followed by `:`).
+fn js_keys(code: &str) -> String {
+    let mut out = String::with_capacity(code.len());
+    let mut rest = code;
+    while let Some(start) = rest.find(|c: char| c.is_ascii_lowercase() || c == '_') {
+        let len = rest[start..]
+            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .unwrap_or(rest.len() - start);
+        let (word, after) = rest[start..].split_at(len);
+        out.push_str(&rest[..start]);
+        match after.trim_start().starts_with(':') {
+            true => out.push_str(&names_rule::js_name_of("", word)),
+            false => out.push_str(word),
+        }
+        rest = after;
+    }
+    out + rest
 }
 
 /// Rustdoc's intra-doc links as plain code: "[`X`]" and "[`x`](path)" become "`X`", "`x`".
@@ -329,7 +352,10 @@ impl Gen<'_> {
 
     fn ty(&mut self, t: &Type, with: Option<&str>) -> String {
         if let Some(w) = with {
-            let last = w.rsplit("::").next().unwrap_or(w);
+            // a module's `serialize` alone (`serialize_with`) marks the field as the module
+            // does, leaving how it is read alone
+            let mut segments = w.rsplit("::").skip_while(|s| *s == "serialize");
+            let last = segments.next().unwrap_or(w);
             return match last {
                 "matrix" => "number[][]".into(),
                 "vector" | "numbers" => "number[] | Float64Array".into(),
@@ -602,7 +628,8 @@ impl Gen<'_> {
                             self.fields(name, &v.fields, &Serde::default(), "        ")
                         )),
                     };
-                    let alt = match (body, c.untagged, &c.tag) {
+                    // an untagged variant (`#[serde(untagged)]`) is written as its body
+                    let alt = match (body, c.untagged || vs.untagged, &c.tag) {
                         (None, _, None) => format!("\"{tag}\""),
                         (None, _, Some(t)) => format!("{{ {t}: \"{tag}\" }}"),
                         (Some(b), true, _) => b,
@@ -701,9 +728,9 @@ pub fn alias(name: &str, ty: &str, doc: &str) -> String {
 /// The declarations of a part: the core types its `roots` reach (as [`declarations_with`]) and
 /// the aliases of `table` (`ts_aliases.rs`) it reaches. An alias goes in when its name is
 /// among the roots or the names the part's own declarations hold (`mentioned`), or either of
-/// its names is reached by the generated types; the type it names then becomes a root. (A
-/// shape of the binding that only the binding's declarations hold, `BernoulliCosts` in the
-/// filters' `FilterEstimateLoss`, does not bring in the core's name for it, `Costs`.)
+/// its names is reached by the generated types; the type it names then becomes a root (the
+/// filters' own `FilterEstimateLoss` holds `BernoulliCosts`, which brings in the core's
+/// `Costs`).
 pub fn part_declarations(
     defs: &BTreeMap<String, Def>,
     roots: &BTreeSet<String>,

@@ -146,7 +146,9 @@ pub mod point_sets {
 
 /// Numbers, `Vec<f64>` (or `Option<Vec<f64>>`), as `[x, …]`: the serde shape is the plain
 /// array; the module marks the field for the bindings' type generators (a binding may read a
-/// typed array, `Float64Array` in JavaScript, as well).
+/// typed array, `Float64Array` in JavaScript, as well). Its `serialize` alone
+/// (`serialize_with`) marks it too, and leaves the field's reader as it is (a `with` reader
+/// is a copy of the array reader in each binding's module).
 pub mod numbers {
     use super::*;
 

@@ -491,6 +491,62 @@ fn costs_error<E: serde::de::Error>(e: Error) -> E {
     )
 }
 
+// [`Costs`] as read: the visitor below reads one of these forms (its messages name them,
+// `COST_FORMS`) and builds the costs from it (written back as the five costs, `CostsRepr`);
+// the JavaScript binding's TypeScript generator declares `Costs` by this form (its `rename`).
+/// Costs of the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with
+/// applications" (paper 000): the MPE preset `'mpe'` (0, 1, 1, 0, 1), the MMOL preset
+/// `{ mmol: { asset: c_A, countermeasure: c_M } }` (c00 = 0, c01 = c_A, c10 = c_M, c11 = c_M,
+/// c = c_A), or the five costs (finite, ≥ 0).
+#[derive(Serialize)]
+#[serde(rename = "Costs", rename_all = "lowercase")]
+enum CostsForm {
+    /// `'mpe'`: the minimum-probability-of-error preset (0, 1, 1, 0, 1) of Table I.
+    Mpe,
+    /// `{ mmol: { asset, countermeasure } }`: the MMOL preset of Table I.
+    Mmol {
+        /// The value c_A of the asset a missed target costs (finite, ≥ 0).
+        asset: f64,
+        /// The cost c_M of the countermeasure, spent on each report (finite, ≥ 0).
+        countermeasure: f64,
+    },
+    /// `{ c00, c01, c10, c11, c }`: the five costs, each finite and ≥ 0.
+    #[serde(untagged)]
+    Five {
+        /// No target, none reported.
+        c00: f64,
+        /// A missed target.
+        c01: f64,
+        /// A report without a target (a false alarm).
+        c10: f64,
+        /// A report of a present target.
+        c11: f64,
+        /// Added to c11 when the report is farther than the radius r0 from the target.
+        c: f64,
+    },
+}
+
+impl CostsForm {
+    /// The costs, through [`Costs`]' constructors (errors named relative to the costs).
+    #[inline(always)]
+    fn costs<E: serde::de::Error>(self) -> Result<Costs, E> {
+        match self {
+            CostsForm::Mpe => Ok(Costs::mpe()),
+            CostsForm::Mmol {
+                asset,
+                countermeasure,
+            } => Costs::mmol(asset, countermeasure).map_err(costs_error),
+            CostsForm::Five {
+                c00,
+                c01,
+                c10,
+                c11,
+                c,
+            } => Costs::new(c00, c01, c10, c11, c).map_err(costs_error),
+        }
+    }
+}
+
 /// Reads the three forms of the loss (7)'s costs: the string `"mpe"` ([`Costs::mpe`]),
 /// `{mmol: {asset, countermeasure}}` ([`Costs::mmol`]) or the five costs `{c00, c01, c10, c11,
 /// c}` ([`Costs::new`]); written back as the five costs.
@@ -505,7 +561,7 @@ impl<'de> Deserialize<'de> for Costs {
             }
             fn visit_str<E: serde::de::Error>(self, s: &str) -> Result<Costs, E> {
                 match s {
-                    "mpe" => Ok(Costs::mpe()),
+                    "mpe" => CostsForm::Mpe.costs(),
                     other => Err(E::custom(alloc::format!(
                         "must be {COST_FORMS}, got {other:?}"
                     ))),
@@ -530,13 +586,24 @@ impl<'de> Deserialize<'de> for Costs {
                             &COST_FORMS,
                         ));
                     }
-                    return Costs::mmol(m.asset, m.countermeasure).map_err(costs_error);
+                    return CostsForm::Mmol {
+                        asset: m.asset,
+                        countermeasure: m.countermeasure,
+                    }
+                    .costs();
                 }
                 let mut c = [0.0; 5];
                 for (i, v) in values.iter().enumerate() {
                     c[i] = v.ok_or_else(|| A::Error::missing_field(COST_KEYS[i]))?;
                 }
-                Costs::new(c[0], c[1], c[2], c[3], c[4]).map_err(costs_error)
+                CostsForm::Five {
+                    c00: c[0],
+                    c01: c[1],
+                    c10: c[2],
+                    c11: c[3],
+                    c: c[4],
+                }
+                .costs()
             }
         }
         deserializer.deserialize_any(V)

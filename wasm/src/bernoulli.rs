@@ -16,17 +16,8 @@ use fisst::bernoulli::{
 // TypeScript is generated, `BernoulliDensity` its contract name (`ts_aliases.rs`).
 
 // The costs of the loss (7) are the core's `Costs`, read by its own deserializer ('mpe',
-// `{ mmol }` or the five costs; errors name `.c01`, `.mmol.asset` under `options.costs`).
-#[wasm_bindgen(typescript_custom_section)]
-const COSTS: &str = r#"
-/**
- * Costs of the loss (7) of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with
- * applications" (paper 000): the MPE preset `'mpe'` (0, 1, 1, 0, 1), the MMOL preset `{ mmol: {
- * asset: c_A, countermeasure: c_M } }` (c00 = 0, c01 = c_A, c10 = c_M, c11 = c_M, c = c_A), or the
- * five costs (finite, ≥ 0).
- */
-export type BernoulliCosts = 'mpe' | { mmol: { asset: number; countermeasure: number } } | { c00: number; c01: number; c10: number; c11: number; c: number };
-"#;
+// `{ mmol }` or the five costs; errors name `.c01`, `.mmol.asset` under `options.costs`); its
+// TypeScript is generated, `BernoulliCosts` its contract name (`ts_aliases.rs`).
 
 /// The Bayes-optimal point estimate of a Bernoulli (Theorem III.3 of Narykov, Üney & Ralph,
 /// "Optimal Bernoulli point estimation with applications", paper 000): report the MMUC point a*

@@ -21,29 +21,7 @@ use fisst::sim::airport::{AirportScenarioOptions, AirportScenarioReport};
 
 // `clutter` is the core's `Clutter` (its density reads as a number or an array, the core's
 // `ScalarOr`), and `reduction` the core's `ReductionOptions` (omitted: the filters' default
-// reduction); their TypeScript names stay (`ts_aliases.rs`). `Clutter`'s is written here: the core's density
-// also holds a function (Rust only), which has no TypeScript.
-#[wasm_bindgen(typescript_custom_section)]
-const CORE_NAMES: &str = r#"
-/**
- * c̃(ζ): one number for every report, or one per report.
- */
-export type ClutterDensityOption = number | number[];
-/**
- * Poisson false reports: rate λ_c and density c̃(ζ).
- */
-export interface ClutterOptions {
-    /**
-     * The clutter rate λ_c ≥ 0: the mean number of false reports per scan.
-     */
-    rate: number;
-    /**
-     * The clutter density c̃(ζ) ≥ 0 of a false report (e.g. 1 / number of anchors, or 1 / area for
-     * vector measurements).
-     */
-    density: ClutterDensityOption;
-}
-"#;
+// reduction); their TypeScript is generated, their names kept (`ts_aliases.rs`).
 
 /// The GM Bernoulli prediction, eqs. (40)–(49) of LeGrand & Ferrari, "Split Happens! Imprecise and
 /// negative information in Gaussian mixture random finite set filtering" (paper 001). Options `{

@@ -23,7 +23,8 @@ pub struct FilterOptions {
     pub p: f64,
     /// Scans ahead (with `transition.survival_probability`; see `shape[i].max_corner`,
     /// `Transition::survival_probability`, `MAX_DENSE_WORK` and `a_b + c`; eq. (3) of
-    /// `001_0f0df91eee9b30d5.txt`); `None`: no limit.
+    /// `001_0f0df91eee9b30d5.txt`); `None`: no limit. Or `{ future_scans: { max_corner },
+    /// b: a_b }`.
     pub future_scans: Option<usize>,
     pub transition: Transition,
     pub pairs: Vec<(usize, usize)>,
@@ -139,6 +140,8 @@ const SHAPES: &str = r#"
 pub enum Method {
     Mam,
     MapCardinality,
+    #[cfg_attr(feature = "serde", serde(untagged))]
+    Weighted { weight: f64 },
 }
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Inputs {
@@ -156,6 +159,8 @@ pub struct Inputs {
     #[cfg_attr(feature = "serde", serde(with = "crate::serde_shapes::components"))]
     pub split: GaussianMixture,
     pub true_reports: Vec<Option<usize>>,
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::serde_shapes::numbers::serialize"))]
+    pub knots: Vec<f64>,
 }
 "#;
 
@@ -177,8 +182,12 @@ fn kebab_case_variants_and_the_number_shapes_of_serde_shapes() {
         "    split: MixtureComponent[];",
         // an Option in an array is written null for None
         "    trueReports: (number | null)[];",
+        // marked by the module's `serialize` alone (read as a plain `Vec`)
+        "    knots: number[] | Float64Array;",
         "    | \"mam\"",
         "    | \"map-cardinality\"",
+        // an untagged variant is its body alone
+        "    | {\n        weight: number;\n    };",
     ] {
         assert!(ts.contains(expected), "{expected:?} not in\n{ts}");
     }
@@ -332,6 +341,11 @@ fn field_paths_quoted_in_docs_are_in_javascript_names() {
     // a file name is not a path: its segments are not identifiers
     assert!(
         ts.contains("`001_0f0df91eee9b30d5.txt`); `null`: no limit."),
+        "{ts}"
+    );
+    // the keys of an object are renamed, the names it holds as values are not
+    assert!(
+        ts.contains("Or `{ futureScans: { max_corner },\n     * b: a_b }`."),
         "{ts}"
     );
 }

@@ -38,9 +38,11 @@ use crate::serde_shapes::{Covariance, ScalarOr, covariance_row_major};
 /// definite.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct GaussianOptions {
-    /// The mean x0, l finite numbers.
+    /// The mean x0, l finite numbers (1 ≤ l ≤ 64).
+    #[serde(serialize_with = "crate::serde_shapes::numbers::serialize")]
     pub mean: Vec<f64>,
-    /// The covariance P, l × l, symmetric positive definite.
+    /// The covariance P, l × l, symmetric positive definite: l rows of l numbers, l·l
+    /// row-major numbers or (l = 1) a bare variance.
     pub cov: Covariance,
 }
 
@@ -100,17 +102,33 @@ impl<'de> Deserialize<'de> for PriorOptions {
     }
 }
 
+// [`PriorOptions`] as written (and read, by [`deserialize_density_or`]); the JavaScript
+// binding's TypeScript generator declares `PriorOptions` by this form (its `rename`).
+/// The prior f of `jde_bound`: a 1D density (`{ gaussian }`, `{ uniform }`, `{ mixture }`,
+/// `{ table }`) or, for a state in R^l, `{ multivariate_gaussian: { mean, cov } }` (the
+/// vector bounds (63)–(72) of Section V).
+#[derive(Serialize)]
+#[serde(rename = "PriorOptions", untagged)]
+enum PriorOptionsRepr<'a> {
+    /// A 1D density (`Density1`).
+    Density(&'a Density1),
+    /// `{ multivariate_gaussian: { mean, cov } }`: N(mean, cov) in R^l.
+    MultivariateGaussian {
+        /// N(mean, cov) in R^l (1 ≤ l ≤ 64); the observation then has a constant P_o, gain
+        /// rows H and `noise_cov`.
+        multivariate_gaussian: &'a GaussianOptions,
+    },
+}
+
 impl Serialize for PriorOptions {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         match self {
-            PriorOptions::Density(d) => d.serialize(s),
-            PriorOptions::MultivariateGaussian(g) => {
-                use serde::ser::SerializeMap;
-                let mut m = s.serialize_map(Some(1))?;
-                m.serialize_entry("multivariate_gaussian", g)?;
-                m.end()
-            }
+            PriorOptions::Density(d) => PriorOptionsRepr::Density(d),
+            PriorOptions::MultivariateGaussian(g) => PriorOptionsRepr::MultivariateGaussian {
+                multivariate_gaussian: g,
+            },
         }
+        .serialize(s)
     }
 }
 
@@ -149,31 +167,52 @@ pub enum JdeDetectionOptions {
     },
 }
 
-/// `{x, probability}`, the table of a [`JdeDetectionOptions::Table`].
+/// A tabulated detection probability P_o(x), `{ x, probability }` (a table of
+/// `JdeDetectionOptions`): linear interpolation, held constant beyond the end knots.
 #[derive(Serialize, Deserialize)]
 struct DetectionTable {
+    /// The knots x, strictly increasing (2 to 10,000).
+    #[serde(serialize_with = "crate::serde_shapes::numbers::serialize")]
     x: Vec<f64>,
+    /// The detection probability P_o ∈ [0, 1] at each knot.
+    #[serde(serialize_with = "crate::serde_shapes::numbers::serialize")]
     probability: Vec<f64>,
 }
 
-/// `{"table": {x, probability}}`.
-#[derive(Serialize, Deserialize)]
+/// `{"table": {x, probability}}`, as read.
+#[derive(Deserialize)]
 struct DetectionTableWrapper {
     table: DetectionTable,
+}
+
+// [`JdeDetectionOptions`] as written (and read, by its `Deserialize`); the JavaScript
+// binding's TypeScript generator declares `JdeDetectionOptions` by this form (its `rename`).
+/// The detection probability P_o(x): a number in [0, 1] (a constant) or
+/// `{ table: { x, probability } }`.
+#[derive(Serialize)]
+#[serde(rename = "JdeDetectionOptions", untagged)]
+enum JdeDetectionRepr {
+    /// A constant P_o ∈ [0, 1].
+    Constant(f64),
+    /// `{ table: { x, probability } }`: P_o tabulated at the knots x.
+    Table {
+        /// The knots and P_o at each.
+        table: DetectionTable,
+    },
 }
 
 impl Serialize for JdeDetectionOptions {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         match self {
-            JdeDetectionOptions::Constant(p) => s.serialize_f64(*p),
-            JdeDetectionOptions::Table { x, probability } => DetectionTableWrapper {
+            JdeDetectionOptions::Constant(p) => JdeDetectionRepr::Constant(*p),
+            JdeDetectionOptions::Table { x, probability } => JdeDetectionRepr::Table {
                 table: DetectionTable {
                     x: x.clone(),
                     probability: probability.clone(),
                 },
-            }
-            .serialize(s),
+            },
         }
+        .serialize(s)
     }
 }
 
@@ -577,18 +616,45 @@ impl<'de> Deserialize<'de> for MonteCarloPrior {
     }
 }
 
+// [`MonteCarloPrior`] as written (and read, by [`deserialize_density_or`], which also takes
+// the other 1D densities, for [`JdeMonteCarloRequest::run`] to refuse: they are written as
+// their [`Density1`]); the JavaScript binding's TypeScript generator declares
+// `MonteCarloPrior` by this form (its `rename`).
+/// The state of `jde_monte_carlo`: `{ gaussian: { mean, variance } }`,
+/// `{ multivariate_gaussian: { mean, cov } }` (a linear-Gaussian `observation`), or
+/// `'example2'` (Example 2 (32): f and g fixed, `observation.detection_probability` a
+/// constant P_o).
+#[derive(Serialize)]
+#[serde(rename = "MonteCarloPrior", rename_all = "snake_case")]
+enum MonteCarloPriorRepr<'a> {
+    /// `{ gaussian: { mean, variance } }`: N(mean, variance) on the line.
+    Gaussian {
+        /// The mean, a finite number.
+        mean: f64,
+        /// The variance, > 0.
+        variance: f64,
+    },
+    /// `{ multivariate_gaussian: { mean, cov } }`: N(mean, cov) in R^l (1 ≤ l ≤ 64), with a
+    /// linear-Gaussian `observation`.
+    MultivariateGaussian(&'a GaussianOptions),
+    /// `'example2'`: Example 2 (32), f(x) = 2x(eˣ − 1) on [0, 1] with
+    /// g(z|x) = x e^{xz}/(eˣ − 1).
+    Example2,
+}
+
 impl Serialize for MonteCarloPrior {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        use serde::ser::SerializeMap;
         match self {
-            MonteCarloPrior::Gaussian(d) => d.serialize(s),
-            MonteCarloPrior::MultivariateGaussian(g) => {
-                let mut m = s.serialize_map(Some(1))?;
-                m.serialize_entry("multivariate_gaussian", g)?;
-                m.end()
+            &MonteCarloPrior::Gaussian(Density1::Gaussian { mean, variance }) => {
+                MonteCarloPriorRepr::Gaussian { mean, variance }
             }
-            MonteCarloPrior::Example2 => s.serialize_str("example2"),
+            MonteCarloPrior::Gaussian(d) => return d.serialize(s),
+            MonteCarloPrior::MultivariateGaussian(g) => {
+                MonteCarloPriorRepr::MultivariateGaussian(g)
+            }
+            MonteCarloPrior::Example2 => MonteCarloPriorRepr::Example2,
         }
+        .serialize(s)
     }
 }
 

@@ -367,4 +367,33 @@ fn the_options_write_back_as_they_read() {
     );
     let back: JdeMonteCarloRequest = read(&serde_json::to_string(&r).unwrap());
     assert_eq!(back, r);
+    // each form writes as it reads (a 1D density other than a Gaussian, which the Monte
+    // Carlo refuses, as the density)
+    for (prior, json) in [
+        (
+            r#"{"gaussian": {"mean": 0, "variance": 2}}"#,
+            r#"{"gaussian":{"mean":0.0,"variance":2.0}}"#,
+        ),
+        (
+            r#"{"uniform": {"low": 0, "high": 1}}"#,
+            r#"{"uniform":{"low":0.0,"high":1.0}}"#,
+        ),
+        (
+            r#"{"multivariate_gaussian": {"mean": [1], "cov": 2}}"#,
+            r#"{"multivariate_gaussian":{"mean":[1.0],"cov":2.0}}"#,
+        ),
+    ] {
+        let p: MonteCarloPrior = read(prior);
+        assert_eq!(serde_json::to_string(&p).unwrap(), json);
+    }
+    for (detection, json) in [
+        ("0.5", "0.5"),
+        (
+            r#"{"table": {"x": [0, 1], "probability": [0.5, 0.9]}}"#,
+            r#"{"table":{"x":[0.0,1.0],"probability":[0.5,0.9]}}"#,
+        ),
+    ] {
+        let d: JdeDetectionOptions = read(detection);
+        assert_eq!(serde_json::to_string(&d).unwrap(), json);
+    }
 }

@@ -44,16 +44,34 @@ impl From<crate::serde_shapes::ScalarOr<f64>> for ClutterDensity {
     }
 }
 
+// [`ClutterDensity`] as written (and read, as a `ScalarOr<f64>`); the JavaScript binding's
+// TypeScript generator declares `ClutterDensity` by this form (its `rename`; a function,
+// Rust only, has none).
+/// c̃(ζ): one number for every report, or one per report.
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize)]
+#[serde(rename = "ClutterDensity", untagged)]
+enum ClutterDensityRepr<'a> {
+    /// One value for every report: e.g. 1/|𝔸| for reports uniform over the anchors, or 1/V
+    /// for vector clutter uniform over a region of volume V.
+    Constant(f64),
+    /// One value per report of the scan, in report order.
+    PerReport(&'a Vec<f64>),
+}
+
 #[cfg(feature = "serde")]
 impl serde::Serialize for ClutterDensity {
     fn serialize<S: serde::Serializer>(&self, s: S) -> core::result::Result<S::Ok, S::Error> {
-        match self {
-            Self::Constant(c) => s.serialize_f64(*c),
-            Self::PerReport(v) => serde::Serialize::serialize(v, s),
-            Self::Function(_) => Err(serde::ser::Error::custom(
-                "a clutter density function cannot be serialised",
-            )),
-        }
+        let repr = match self {
+            Self::Constant(c) => ClutterDensityRepr::Constant(*c),
+            Self::PerReport(v) => ClutterDensityRepr::PerReport(v),
+            Self::Function(_) => {
+                return Err(serde::ser::Error::custom(
+                    "a clutter density function cannot be serialised",
+                ));
+            }
+        };
+        serde::Serialize::serialize(&repr, s)
     }
 }
 
@@ -82,10 +100,11 @@ impl PartialEq for ClutterDensity {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Clutter {
-    /// λ_c ≥ 0, the expected number of false reports per scan.
+    /// The clutter rate λ_c ≥ 0: the expected number of false reports per scan.
     pub rate: f64,
-    /// The clutter density c̃(ζ) ≥ 0 of a false report ζ (a constant, one value per report, or a
-    /// function).
+    /// The clutter density c̃(ζ) ≥ 0 of a false report ζ: a constant (e.g. 1 / number of
+    /// anchors, or 1 / area for vector measurements), one value per report, or (Rust only) a
+    /// function.
     pub density: ClutterDensity,
 }
 
