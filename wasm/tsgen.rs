@@ -114,15 +114,77 @@ impl<T: quote::ToTokens> TokStr for T {
 }
 
 fn docs(attrs: &[Attribute]) -> Vec<String> {
-    attrs
+    let lines: Vec<String> = attrs
         .iter()
         .filter(|a| a.path().is_ident("doc"))
         .filter_map(|a| match &a.meta {
             Meta::NameValue(nv) => lit_str(&nv.value),
             _ => None,
         })
-        .map(|s| js_code_spans(&strip_links(s.strip_prefix(' ').unwrap_or(&s))))
+        .map(|s| strip_links(s.strip_prefix(' ').unwrap_or(&s)))
+        .collect();
+    if lines.is_empty() {
+        return lines;
+    }
+    // joined, as an aside may run over lines
+    drop_rust_asides(&lines.join("\n"))
+        .split('\n')
+        .map(js_code_spans)
         .collect()
+}
+
+/// A doc without its asides for Rust readers only, which a JavaScript reader cannot use: a
+/// parenthetical that only names Rust items (code spans holding `::`, joined by `,`, `/`,
+/// `and`, `or`, after an optional "see": "(`LikelihoodRows::build`)", "(see
+/// `SpatialDensity::mmuc`)"), and one that starts "in Rust" (the convention for anything else
+/// only Rust has: "(in Rust, also a function)", "(In Rust, `X::build` makes it.)"). The
+/// spaces before an aside go with it.
+fn drop_rust_asides(doc: &str) -> String {
+    let mut doc = doc.to_string();
+    'scan: loop {
+        let (mut opens, mut code) = (Vec::new(), false);
+        for (i, c) in doc.char_indices() {
+            match c {
+                '`' => code = !code,
+                '(' if !code => opens.push(i),
+                ')' if !code => {
+                    let Some(open) = opens.pop() else { continue };
+                    if !rust_only(&doc[open + 1..i]) {
+                        continue;
+                    }
+                    // the spaces before, and a line break (not a paragraph's)
+                    let mut before = doc[..open].trim_end_matches(' ');
+                    if before.ends_with('\n') && !before.ends_with("\n\n") && before.len() > 1 {
+                        before = &before[..before.len() - 1];
+                    }
+                    let after = match before.is_empty() || before.ends_with('\n') {
+                        true => doc[i + 1..].trim_start_matches(' '),
+                        false => &doc[i + 1..],
+                    };
+                    doc = format!("{before}{after}");
+                    continue 'scan;
+                }
+                _ => {}
+            }
+        }
+        return doc;
+    }
+}
+
+/// Whether the text of a parenthetical is for Rust readers only (see [`drop_rust_asides`]).
+fn rust_only(aside: &str) -> bool {
+    let aside = aside.trim();
+    if aside.to_lowercase().starts_with("in rust") {
+        return true;
+    }
+    let parts: Vec<&str> = aside.split('`').collect();
+    parts.len() >= 3
+        && parts.len() % 2 == 1
+        && parts.iter().enumerate().all(|(i, p)| match (i, p.trim()) {
+            (_, code) if i % 2 == 1 => code.contains("::"),
+            (0, "see") => true,
+            (_, text) => matches!(text, "" | "," | "/" | "and" | "or" | ", and" | ", or"),
+        })
 }
 
 /// The Rust field paths quoted in a doc line under their JavaScript names, as the declarations

@@ -451,3 +451,37 @@ enum Density {
     }
     assert!(!ts.contains("Repr") && !ts.contains("ball"), "{ts}");
 }
+
+#[test]
+fn asides_for_rust_readers_only_are_left_out() {
+    let source = r#"
+/// The options of a split ([`SplitOptions::split`]), its caps (see
+/// [`crate::MAX_DEPTH`] / [`crate::MAX_COMPONENTS`]) and its library (`lambda`).
+/// (In Rust, [`SplitOptions::build`] checks them and makes the `Split`.)
+///
+/// ([`Split::new`] and [`Split::run`]) A new paragraph.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct SplitOptions {
+    /// A constant or one value per report (in Rust, also a function; see
+    /// [`Density::Function`]), e.g. `f(x)` (as in [`Density::eval`], not a Rust aside).
+    pub density_value: f64,
+}
+"#;
+    let mut defs = BTreeMap::new();
+    tsgen::walk(syn::parse_file(source).unwrap().items, &mut defs);
+    let root = "SplitOptions".to_string();
+    let (ts, _) = tsgen::declarations(&defs, &[&root]);
+    for expected in [
+        // a parenthetical of Rust items alone goes, with the spaces and line break before it
+        " * The options of a split, its caps and its library (`lambda`).\n",
+        // one that starts "in Rust" goes, whatever it holds
+        "(`lambda`).\n *\n",
+        // a paragraph keeps its break
+        " *\n * A new paragraph.\n",
+        // joined to the line after it; a parenthetical that also says more stays
+        "A constant or one value per report, e.g. `f(x)` (as in `Density::eval`, not a Rust aside).\n",
+    ] {
+        assert!(ts.contains(expected), "missing {expected:?} in\n{ts}");
+    }
+    assert!(!ts.contains("In Rust") && !ts.contains("::build"), "{ts}");
+}
