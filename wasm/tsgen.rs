@@ -126,8 +126,9 @@ fn docs(attrs: &[Attribute]) -> Vec<String> {
     if lines.is_empty() {
         return lines;
     }
-    // joined, as an aside may run over lines
+    // joined, as an aside may run over lines; a paragraph dropped at the end leaves no blank
     drop_rust_asides(&lines.join("\n"))
+        .trim_end()
         .split('\n')
         .map(js_code_spans)
         .collect()

@@ -464,6 +464,8 @@ fn asides_for_rust_readers_only_are_left_out() {
 pub struct SplitOptions {
     /// A constant or one value per report (in Rust, also a function; see
     /// [`Density::Function`]), e.g. `f(x)` (as in [`Density::eval`], not a Rust aside).
+    ///
+    /// (In Rust, a paragraph of its own.)
     pub density_value: f64,
 }
 "#;
@@ -480,6 +482,8 @@ pub struct SplitOptions {
         " *\n * A new paragraph.\n",
         // joined to the line after it; a parenthetical that also says more stays
         "A constant or one value per report, e.g. `f(x)` (as in `Density::eval`, not a Rust aside).\n",
+        // a paragraph dropped at the end leaves no empty line
+        "not a Rust aside).\n     */\n",
     ] {
         assert!(ts.contains(expected), "missing {expected:?} in\n{ts}");
     }

@@ -181,16 +181,16 @@ fn decide_each<'a>(
     })
 }
 
-/// The options of [`BernoulliEstimateOptions::estimate`]: one Bernoulli (existence p and
-/// spatial density s) and the loss (7) of `000_…` (radius r0 and costs).
+/// The options of a Bernoulli's optimal estimate ([`BernoulliEstimateOptions::estimate`]): one
+/// Bernoulli (existence p and spatial density s) and the loss (7) of `000_…` (radius r0, costs).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BernoulliEstimateOptions {
     /// The existence probability p ∈ [0, 1]: the probability that the object exists.
     pub existence: f64,
     /// The spatial density of the object when it exists. The MMUC search takes a mixture of
-    /// at most [`MAX_MMUC_COMPONENTS`](super::MAX_MMUC_COMPONENTS) components and at most
-    /// [`MAX_MMUC_PARTICLES`](super::MAX_MMUC_PARTICLES) particles in 2 or more dimensions.
+    /// at most 100 components ([`MAX_MMUC_COMPONENTS`](super::MAX_MMUC_COMPONENTS)), and in 2 or
+    /// more dimensions 1,500 particles ([`MAX_MMUC_PARTICLES`](super::MAX_MMUC_PARTICLES)).
     pub density: SpatialDensity,
     /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
     pub radius: f64,
@@ -258,13 +258,13 @@ impl From<&BernoulliEstimate> for BernoulliReport {
 pub struct BernoulliComponent {
     /// The existence probability r ∈ [0, 1] of this component.
     pub existence: f64,
-    /// The component's spatial density (the MMUC search's size caps apply, as in
-    /// [`BernoulliEstimateOptions::density`]).
+    /// The component's spatial density: at most 100 components and at most 1,500 particles in
+    /// 2 or more dimensions, the MMUC search's caps ([`SpatialDensity::check_mmuc_size`]).
     pub density: SpatialDensity,
 }
 
-/// The options of [`MultiBernoulliPointOptions::estimate`]: the components of a
-/// multi-Bernoulli and the loss (7) of `000_…`.
+/// The options of a multi-Bernoulli's estimate, a Bernoulli estimate per component
+/// ([`MultiBernoulliPointOptions::estimate`]): its components and the loss (7) of `000_…`.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MultiBernoulliPointOptions {

@@ -15,7 +15,7 @@ use crate::math::geometry::{self, circumcentre, smallest_enclosing_ball};
 use crate::math::optimise::{BfgsOptions, Minimum, bfgs};
 use crate::math::sum::NeumaierSum;
 
-/// How [`SpatialDensity::mmuc`] found a* (written in kebab case: `"gaussian-mean"`, …).
+/// How the MMUC search ([`SpatialDensity::mmuc`]) found a*, in kebab case: `"gaussian-mean"`, ….
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]
@@ -63,13 +63,13 @@ pub const MAX_MMUC_COMPONENTS: usize = 100;
 /// 1D particles (a sort and a sweep) have no cap.
 pub const MAX_MMUC_PARTICLES: usize = 1_500;
 
-/// The options of [`MmucOptions::estimate`]: a spatial density and the radius r0 of the
-/// ball of eq. (12) of `000_…`.
+/// The options of the MMUC estimate ([`MmucOptions::estimate`]): a spatial density and the
+/// radius r0 of the ball of eq. (12) of `000_…`.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MmucOptions {
-    /// The spatial density of the object's state (the size caps of
-    /// [`SpatialDensity::check_mmuc_size`] apply).
+    /// The spatial density of the object's state: at most 100 components and at most 1,500
+    /// particles in 2 or more dimensions ([`SpatialDensity::check_mmuc_size`]).
     pub density: SpatialDensity,
     /// The radius r0 > 0 of the ball whose miss probability q(a) is minimised, in state units.
     pub radius: f64,
@@ -91,8 +91,8 @@ impl MmucOptions {
     }
 }
 
-/// The options of [`ProbabilityOutsideBallOptions::probability`]: a spatial density and a
-/// ball, the miss probability q(a) of the loss (7) of `000_…`.
+/// The options of the miss probability q(a) of the loss (7) of `000_…`
+/// ([`ProbabilityOutsideBallOptions::probability`]): a spatial density and a ball.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ProbabilityOutsideBallOptions {

@@ -489,7 +489,7 @@ impl ObservationOptions {
 }
 
 /// Options of [`jde_bound`] as a user writes them (Theorems 1 and 2 of paper 002 and their
-/// vector extensions (63)–(72)); [`JdeBoundOptions::into_core`] makes the [`JdeOptions`].
+/// vector extensions (63)–(72)) (in Rust, [`JdeBoundOptions::into_core`] makes the options).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct JdeBoundOptions {
     /// The measurement model: `"I"` (false alarms, (13)) or `"II"` (Poisson clutter, (22)).
@@ -660,7 +660,7 @@ impl Serialize for MonteCarloPrior {
 
 /// Options of [`jde_monte_carlo`] as a user writes them: the problem of [`JdeBoundOptions`]
 /// (Gaussian priors and Example 2), the rule on Z = ∅, the number of scans and the Monte
-/// Carlo's size and seed; [`JdeMonteCarloRequest::run`] runs it.
+/// Carlo's size and seed (in Rust, [`JdeMonteCarloRequest::run`] runs it).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct JdeMonteCarloRequest {
     /// The measurement model, `"I"` or `"II"`.
@@ -682,7 +682,7 @@ pub struct JdeMonteCarloRequest {
     pub false_alarm_error: f64,
     /// The squared error (cost) e_1² ≥ 0 of a missed target: the square itself.
     pub miss_error: f64,
-    /// The rule on Z = ∅ (default [`JdeMonteCarloOptions::default`]'s `"optimal"`).
+    /// The rule on Z = ∅ (default `"optimal"`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub empty_rule: Option<EmptyRule>,
     /// The number k of scans of one target, 1 to 5,000 (default 1; k > 1 needs a Gaussian

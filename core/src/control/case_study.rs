@@ -107,7 +107,7 @@ impl Scheme {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ControlOptions {
     /// The seed (integer in [0, 2^53 − 1]); omitted: fresh entropy, read back as `run.seed`
-    /// (a binding draws it; [`ControlRun::new`] takes the seed it uses).
+    /// (in Rust, the caller draws it: [`ControlRun::new`] takes the seed it uses).
     #[cfg_attr(
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")

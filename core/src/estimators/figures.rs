@@ -28,7 +28,7 @@ pub const MAX_IDENTICAL_COMPONENTS: usize = 300;
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "kebab-case"))]
 pub enum DecisionEstimator {
-    /// The optimal GOSPA estimate (with [`DecisionMapOptions::alpha`]).
+    /// The optimal GOSPA estimate (with the map's `alpha`).
     Gospa,
     /// `ospa`: the estimate that minimises the mean OSPA error.
     Ospa,
@@ -69,7 +69,7 @@ pub struct DecisionMapOptions {
     /// The metrics' order p ≥ 1 (default 2; the metric estimators only).
     #[cfg_attr(feature = "serde", serde(default = "default_order"))]
     pub p: f64,
-    /// GOSPA's α in (0, 2] (default 2; [`DecisionEstimator::Gospa`] only).
+    /// GOSPA's α in (0, 2] (default 2; used by the GOSPA estimator `"gospa"` only).
     #[cfg_attr(feature = "serde", serde(default = "default_alpha"))]
     pub alpha: f64,
 }

@@ -103,8 +103,8 @@ pub struct Clutter {
     /// The clutter rate λ_c ≥ 0: the expected number of false reports per scan.
     pub rate: f64,
     /// The clutter density c̃(ζ) ≥ 0 of a false report ζ: a constant (e.g. 1 / number of
-    /// anchors, or 1 / area for vector measurements), one value per report, or (Rust only) a
-    /// function.
+    /// anchors, or 1 / area for vector measurements) or one value per report (in Rust, also a
+    /// function).
     pub density: ClutterDensity,
 }
 

@@ -220,8 +220,8 @@ impl Default for Splitting {
 /// The splitting step as a user gives it (`splitting`): the parameters of the split library
 /// and of Algorithms 1–2 of LeGrand & Ferrari, "Split Happens! Imprecise and negative
 /// information in Gaussian mixture random finite set filtering" (paper 001), every one optional,
-/// the defaults those of [`Splitting::default`].
-/// [`SplittingOptions::build`] checks them and makes the [`Splitting`].
+/// with the defaults given below ([`Splitting::default`]).
+/// (In Rust, [`SplittingOptions::build`] checks them and makes the [`Splitting`].)
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(
     feature = "serde",

@@ -105,8 +105,8 @@ impl ConfigShapes<'_> {
 /// The mean length of every component of `mixture`.
 /// F and Q as a user writes them, unchecked (`transition: { F, Q }` with the paper's
 /// capitals): the form a binding reads, so that their shapes are checked against the rest of
-/// the configuration ([`TransitionRows::check_shapes`]) before the transition is built
-/// ([`TransitionRows::build`]).
+/// the configuration before the transition is built (in Rust,
+/// [`TransitionRows::check_shapes`], then [`TransitionRows::build`]).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TransitionRows {

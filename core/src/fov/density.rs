@@ -48,8 +48,8 @@ pub enum MultiObjectDensity {
 /// of numbers or a `Float64Array`).
 type Numbers = Vec<f64>;
 
-/// An i.i.d. cluster density: a cardinality pmf and one single-object density (the
-/// [`MultiObjectDensity::IidCluster`] variant).
+/// An i.i.d. cluster density: a cardinality pmf and one single-object density
+/// ([`MultiObjectDensity::IidCluster`]).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct IidCluster {

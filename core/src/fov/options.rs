@@ -101,8 +101,8 @@ impl FovCardinalityOptions {
     }
 }
 
-/// The result of [`FovCardinalityOptions::run`]: the pmf of the number of objects in the field
-/// of view (eqs. (72)–(92) of `001_…`), flat.
+/// The pmf of the number of objects in the field of view (eqs. (72)–(92) of `001_…`), flat
+/// ([`FovCardinalityOptions::run`]).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FovCardinalityResult {

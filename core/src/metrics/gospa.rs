@@ -83,7 +83,7 @@ pub struct GospaDecomposition {
 
 /// GOSPA between two point sets with, for α = 2, its decomposition (Prop. 3 of
 /// García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation and how GOSPA solves it",
-/// paper 003): what [`Gospa::report`] returns. For α ≠ 2 only `distance` is set
+/// paper 003) ([`Gospa::report`]). For α ≠ 2 only `distance` is set
 /// (the decomposition into localisation, missed and false targets exists for α = 2 only).
 #[derive(Clone, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]

@@ -13,8 +13,8 @@ use crate::math::sum::sum;
 /// and how GOSPA solves it", paper 003: localisation, missed and false targets) per step and
 /// averaged, when it exists.
 ///
-/// Built by [`Gospa::series`] / [`Gospa::series_with`], or collected from per-step
-/// decompositions: `steps.map(|(x, y)| g.decompose(x, y)).collect::<Result<GospaSeries>>()`.
+/// (In Rust, built by [`Gospa::series`] / [`Gospa::series_with`], or collected from per-step
+/// decompositions: `steps.map(|(x, y)| g.decompose(x, y)).collect::<Result<GospaSeries>>()`.)
 #[derive(Clone, Debug, Default, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GospaSeries {
@@ -23,8 +23,8 @@ pub struct GospaSeries {
     /// The mean of `distance` over the steps (0 for no steps).
     pub mean_distance: f64,
     /// The localisation cost Σ d^p over the assigned pairs at each step: a sum of p-th powers,
-    /// not rooted (as in [`GospaDecomposition::localisation`], unlike OSPA's rooted part);
-    /// α = 2 only, like [`Gospa::decompose`].
+    /// not rooted (as in one step's decomposition ([`GospaDecomposition::localisation`]),
+    /// unlike OSPA's rooted part); α = 2 only, like the decomposition itself.
     #[cfg_attr(
         feature = "serde",
         serde(default, skip_serializing_if = "Option::is_none")

@@ -195,8 +195,8 @@ pub const fn default_steps() -> usize {
 
 /// Options of [`airport_scenario`] (`airportScenario`, the airport example of LeGrand &
 /// Ferrari, "Split Happens! Imprecise and negative information in Gaussian mixture random
-/// finite set filtering" (paper 001), Section V-C); every field optional, the defaults those
-/// of [`AirportScenarioOptions::default`] (fresh entropy, 60 steps).
+/// finite set filtering" (paper 001), Section V-C); every field optional, by default fresh
+/// entropy and 60 steps ([`AirportScenarioOptions::default`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(
     feature = "serde",
@@ -455,8 +455,8 @@ impl AirportScenario {
 }
 
 /// The filter configuration of the airport example as a caller passes it to either filter
-/// (`GmBernoulliFilter`, `ParticleBernoulliFilter`): [`AirportScenario::config`]'s model
-/// (Section V-C of `001_…`) with the particle filter's size, moves and seed.
+/// (`GmBernoulliFilter`, `ParticleBernoulliFilter`): the example's model of Section V-C of
+/// `001_…` ([`AirportScenario::config`]) with the particle filter's size, moves and seed.
 #[derive(Clone, Debug)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct AirportFilterConfig {

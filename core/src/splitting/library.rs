@@ -22,8 +22,8 @@ pub enum Spacing {
     /// ⌈R/2⌉ − 1 free weights. The default.
     #[default]
     Equal,
-    /// Symmetric means at free positions ±μ_q: a larger family, so a lower J (R = 4,
-    /// λ = 0.001: 3.60e-4 against 4.12e-4). Identical to [`Spacing::Equal`] for R ≤ 3.
+    /// Symmetric means at free positions ±μ_q: a larger family, so a lower J (R = 4, λ = 0.001:
+    /// 3.60e-4 against 4.12e-4). Identical to `"equal"` ([`Spacing::Equal`]) for R ≤ 3.
     Free,
 }
 

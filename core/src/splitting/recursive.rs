@@ -120,9 +120,9 @@ pub mod defaults {
     serde(rename_all = "camelCase")
 )]
 pub enum SplitStop {
-    /// A component still straddled a boundary at [`SplitOptions::max_depth`].
+    /// A component still straddled a boundary at the depth cap ([`SplitOptions::max_depth`]).
     MaxDepth,
-    /// A split would have exceeded [`SplitOptions::max_components`].
+    /// A split would have exceeded the component cap ([`SplitOptions::max_components`]).
     MaxComponents,
 }
 

@@ -146,7 +146,7 @@ pub struct SplitForRegionsOptions {
     #[cfg_attr(feature = "serde", serde(default = "defaults::components"))]
     pub components: usize,
     /// The split library's penalty weight λ of eq. (13) (default 0.001), in [1e-6, 10]
-    /// (`lambda_`: see [`SplitLibraryOptions::lambda_`]).
+    /// (in Rust `lambda_`: see [`SplitLibraryOptions::lambda_`]).
     #[cfg_attr(feature = "serde", serde(default = "defaults::lambda"))]
     pub lambda_: f64,
     /// The split library's family: how its means are spaced (default `equal`).
@@ -397,7 +397,7 @@ impl From<&NegativeInformationStep> for NegativeInformationStepReport {
 }
 
 /// The Fig. 5 example of `001_…` as a result: the FoV, the initial mixture (state x, y, ẋ,
-/// ẏ) and the three steps ([`NegativeInformationScenario::fig5`] and its run).
+/// ẏ) and the three steps (in Rust, [`NegativeInformationScenario::fig5`] and its run).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct NegativeInformationReport {
