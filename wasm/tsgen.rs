@@ -135,7 +135,8 @@ fn docs(attrs: &[Attribute]) -> Vec<String> {
 }
 
 /// A doc without its asides for Rust readers only, which a JavaScript reader cannot use: a
-/// parenthetical that only names Rust items (code spans holding `::`, joined by `,`, `/`,
+/// parenthetical that only names Rust items (code spans holding `::` or naming a constant,
+/// `MAX_GAUSSIANS`, joined by `,`, `/`,
 /// `and`, `or`, after an optional "see": "(`LikelihoodRows::build`)", "(see
 /// `SpatialDensity::mmuc`)"), and one that starts "in Rust" (the convention for anything else
 /// only Rust has: "(in Rust, also a function)", "(In Rust, `X::build` makes it.)"). The
@@ -172,6 +173,14 @@ fn drop_rust_asides(doc: &str) -> String {
     }
 }
 
+/// A Rust constant's name (`MAX_GAUSSIANS`): capitals, digits and at least one `_`.
+fn is_rust_constant(code: &str) -> bool {
+    code.contains('_')
+        && code
+            .chars()
+            .all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_')
+}
+
 /// Whether the text of a parenthetical is for Rust readers only (see [`drop_rust_asides`]).
 fn rust_only(aside: &str) -> bool {
     let aside = aside.trim();
@@ -182,7 +191,7 @@ fn rust_only(aside: &str) -> bool {
     parts.len() >= 3
         && parts.len() % 2 == 1
         && parts.iter().enumerate().all(|(i, p)| match (i, p.trim()) {
-            (_, code) if i % 2 == 1 => code.contains("::"),
+            (_, code) if i % 2 == 1 => code.contains("::") || is_rust_constant(code),
             (0, "see") => true,
             (_, text) => matches!(text, "" | "," | "/" | "and" | "or" | ", and" | ", or"),
         })

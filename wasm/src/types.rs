@@ -88,7 +88,7 @@ export type GaussianMixture = WeightedGaussian[];
 "#;
 
 /// A mixture component as results give it back: `cov` as nested rows. It can be passed back
-/// wherever a [`WeightedGaussian`] is taken.
+/// wherever a `WeightedGaussian` is taken.
 #[derive(Clone, Debug, Serialize, Tsify)]
 pub struct MixtureComponent {
     /// The component's weight, ≥ 0.

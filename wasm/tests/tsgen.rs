@@ -456,7 +456,8 @@ enum Density {
 fn asides_for_rust_readers_only_are_left_out() {
     let source = r#"
 /// The options of a split ([`SplitOptions::split`]), its caps (see
-/// [`crate::MAX_DEPTH`] / [`crate::MAX_COMPONENTS`]) and its library (`lambda`).
+/// [`crate::MAX_DEPTH`] / [`crate::MAX_COMPONENTS`]) and its library (`lambda`), at most 16
+/// levels deep ([`MAX_LEVELS`]) and 100 wide (`MAX_WIDTH`: a constant; `NOT_ONE`).
 /// (In Rust, [`SplitOptions::build`] checks them and makes the `Split`.)
 ///
 /// ([`Split::new`] and [`Split::run`]) A new paragraph.
@@ -475,9 +476,11 @@ pub struct SplitOptions {
     let (ts, _) = tsgen::declarations(&defs, &[&root]);
     for expected in [
         // a parenthetical of Rust items alone goes, with the spaces and line break before it
-        " * The options of a split, its caps and its library (`lambda`).\n",
+        " * The options of a split, its caps and its library (`lambda`), at most 16\n",
+        // a constant is a Rust item too, alone; said with more it stays
+        " * levels deep and 100 wide (`MAX_WIDTH`: a constant; `NOT_ONE`).\n",
         // one that starts "in Rust" goes, whatever it holds
-        "(`lambda`).\n *\n",
+        "`NOT_ONE`).\n *\n",
         // a paragraph keeps its break
         " *\n * A new paragraph.\n",
         // joined to the line after it; a parenthetical that also says more stays

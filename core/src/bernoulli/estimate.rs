@@ -268,8 +268,8 @@ pub struct BernoulliComponent {
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MultiBernoulliPointOptions {
-    /// The Bernoulli components, each decided alone (at most
-    /// [`MAX_MULTI_BERNOULLI_COMPONENTS`]).
+    /// The Bernoulli components, each decided alone (at most 10,000
+    /// ([`MAX_MULTI_BERNOULLI_COMPONENTS`])).
     pub components: Vec<BernoulliComponent>,
     /// The radius r0 > 0 of the tolerance ball of the loss (7), in state units.
     pub radius: f64,

@@ -78,8 +78,8 @@ pub struct ThresholdCurveOptions {
     pub radius: f64,
     /// The costs of the loss (7).
     pub costs: Costs,
-    /// The dimension d, an integer in [1, [`MAX_ISOTROPIC_DIM`]]; `None` (the default): 1, as
-    /// in Fig. 3.
+    /// The dimension d, an integer in [1, 10,000] ([`MAX_ISOTROPIC_DIM`]); `None` (the
+    /// default): 1, as in Fig. 3.
     #[cfg_attr(feature = "serde", serde(default))]
     pub dim: Option<usize>,
 }

@@ -60,7 +60,7 @@ pub const fn default_cutoff() -> f64 {
 pub struct DecisionMapOptions {
     /// The estimator whose decisions are mapped.
     pub estimator: DecisionEstimator,
-    /// Cells per axis, an integer in [1, 2000] ([`MAX_DECISION_MAP_RESOLUTION`]; default 100).
+    /// Cells per axis (default 100), an integer in [1, 2000] ([`MAX_DECISION_MAP_RESOLUTION`]).
     #[cfg_attr(feature = "serde", serde(default = "default_resolution"))]
     pub resolution: usize,
     /// The metrics' cut-off c > 0 (default 1; the metric estimators only).
@@ -168,8 +168,8 @@ pub fn decision_map(options: &DecisionMapOptions) -> Result<DecisionMap> {
 pub struct IdenticalComponentCountsOptions {
     /// The common existence probability r in [0, 1].
     pub existence: f64,
-    /// n runs over 1 … `max_components`, an integer in [1, 300]
-    /// ([`MAX_IDENTICAL_COMPONENTS`]: the call costs O(N³ log N) for N = `max_components`).
+    /// n runs over 1 … `max_components`, an integer in [1, 300] ([`MAX_IDENTICAL_COMPONENTS`]),
+    /// as the call costs O(N³ log N) for N = `max_components`.
     pub max_components: usize,
 }
 

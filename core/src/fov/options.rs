@@ -134,7 +134,7 @@ impl From<FovCount> for FovCardinalityResult {
 pub type Axis = [f64; 3];
 
 /// A 2D grid of positions, one axis `[min, max, count]` per coordinate (`count` points from
-/// `min` to `max`, like linspace; `count` an integer in [1, [`MAX_GRID_AXIS`]]).
+/// `min` to `max`, like linspace; `count` an integer in [1, 4096] ([`MAX_GRID_AXIS`])).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Grid {

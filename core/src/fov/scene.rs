@@ -37,8 +37,8 @@ pub const MAX_SCENE_COUNT: usize = 10_000;
     serde(default)
 )]
 pub struct SceneOptions {
-    /// Number of multi-Bernoulli components, an integer in [0, 10000]
-    /// ([`MAX_SCENE_COUNT`]; default 100).
+    /// Number of multi-Bernoulli components (default 100), an integer in [0, 10000]
+    /// ([`MAX_SCENE_COUNT`]).
     pub count: usize,
     /// Seed of the SplitMix64 stream, an integer in [0, 2^53 − 1] (default 1: a fixed
     /// default, so the same call always gives the same scene).

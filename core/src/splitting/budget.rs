@@ -200,8 +200,8 @@ mod tests {
 
 /// A bounded mixture reduction as a caller writes it (an interactive page's): prune
 /// (renormalising), Vo & Ma's Mahalanobis merge, then Runnalls' KL-based reduction, each pass
-/// only when asked; at most 5,000 components ([`MAX_REDUCE_INPUT`]), 3,000 into Runnalls'
-/// ([`MAX_RUNNALLS_INPUT`]) (in Rust, [`ReduceMixtureOptions::reduce`] runs it).
+/// only when asked; at most 5,000 components ([`MAX_REDUCE_INPUT`]) and 3,000 into Runnalls'
+/// reduction ([`MAX_RUNNALLS_INPUT`]) (in Rust, [`ReduceMixtureOptions::reduce`] runs it).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ReduceMixtureOptions {
