@@ -75,6 +75,8 @@ pub mod bernoulli;
 pub mod bounds;
 pub mod cardinality;
 pub mod control;
+#[cfg(all(test, feature = "std"))]
+mod doc_caps_tests;
 pub mod error;
 pub mod estimators;
 pub mod filters;
