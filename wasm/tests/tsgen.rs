@@ -47,8 +47,13 @@ pub struct NotSerde { pub x: f64 }
 "#;
 
 fn declarations(roots: &[&str]) -> (String, std::vec::Vec<String>) {
+    declarations_in(SOURCE, roots)
+}
+
+/// What `tsgen::declarations` declares of the items of `source` for `roots`, and its warnings.
+fn declarations_in(source: &str, roots: &[&str]) -> (String, std::vec::Vec<String>) {
     let mut defs = BTreeMap::new();
-    tsgen::walk(syn::parse_file(SOURCE).unwrap().items, &mut defs);
+    tsgen::walk(syn::parse_file(source).unwrap().items, &mut defs);
     let roots: std::vec::Vec<String> = roots.iter().map(|r| r.to_string()).collect();
     let refs: std::vec::Vec<&String> = roots.iter().collect();
     tsgen::declarations(&defs, &refs)
@@ -91,10 +96,7 @@ fn only_the_roots_and_what_they_hold_are_declared() {
 #[test]
 fn a_type_that_is_not_a_serde_type_is_a_warning_not_a_guess() {
     let source = "#[cfg_attr(feature = \"serde\", derive(serde::Serialize))] pub struct A { pub b: NotSerde }";
-    let mut defs = BTreeMap::new();
-    tsgen::walk(syn::parse_file(source).unwrap().items, &mut defs);
-    let root = "A".to_string();
-    let (ts, warnings) = tsgen::declarations(&defs, &[&root]);
+    let (ts, warnings) = declarations_in(source, &["A"]);
     assert!(ts.contains("b: unknown;"));
     assert_eq!(warnings.len(), 1, "{warnings:?}");
 }
@@ -116,10 +118,7 @@ pub struct Run {
     pub likelihoods: Vec<Vec<f64>>,
 }
 "#;
-    let mut defs = BTreeMap::new();
-    tsgen::walk(syn::parse_file(source).unwrap().items, &mut defs);
-    let root = "Run".to_string();
-    let (ts, warnings) = tsgen::declarations(&defs, &[&root]);
+    let (ts, warnings) = declarations_in(source, &["Run"]);
     assert!(warnings.is_empty(), "{warnings:?}");
     for expected in [
         "    start: [number, number];",
@@ -166,10 +165,7 @@ pub struct Inputs {
 
 #[test]
 fn kebab_case_variants_and_the_number_shapes_of_serde_shapes() {
-    let mut defs = BTreeMap::new();
-    tsgen::walk(syn::parse_file(SHAPES).unwrap().items, &mut defs);
-    let root = "Inputs".to_string();
-    let (ts, warnings) = tsgen::declarations(&defs, &[&root]);
+    let (ts, warnings) = declarations_in(SHAPES, &["Inputs"]);
     assert!(warnings.is_empty(), "{warnings:?}");
     for expected in [
         "    existence: number[] | Float64Array;",
@@ -274,10 +270,7 @@ through_constructor!(Prior, PriorRepr, |p| PriorRepr { mean: p.m }, |r| Ok(r), b
 #[derive(Serialize, Deserialize)]
 pub struct Model { pub transition: Transition, pub prior: Prior }
 "#;
-    let mut defs = BTreeMap::new();
-    tsgen::walk(syn::parse_file(source).unwrap().items, &mut defs);
-    let root = "Model".to_string();
-    let (ts, warnings) = tsgen::declarations(&defs, &[&root]);
+    let (ts, warnings) = declarations_in(source, &["Model"]);
     assert!(warnings.is_empty(), "{warnings:?}");
     for expected in [
         "    transition: TransitionRows;",
@@ -429,11 +422,7 @@ enum Density {
     IidCluster { size_hint: f64 },
 }
 "#;
-    let mut defs = BTreeMap::new();
-    tsgen::walk(syn::parse_file(source).unwrap().items, &mut defs);
-    let roots = ["Region".to_string(), "Density".to_string()];
-    let refs: std::vec::Vec<&String> = roots.iter().collect();
-    let (ts, warnings) = tsgen::declarations(&defs, &refs);
+    let (ts, warnings) = declarations_in(source, &["Region", "Density"]);
     assert!(warnings.is_empty(), "{warnings:?}");
     for expected in [
         "/**\n * A region.\n */\nexport type Region =\n",
@@ -470,10 +459,7 @@ pub struct SplitOptions {
     pub density_value: f64,
 }
 "#;
-    let mut defs = BTreeMap::new();
-    tsgen::walk(syn::parse_file(source).unwrap().items, &mut defs);
-    let root = "SplitOptions".to_string();
-    let (ts, _) = tsgen::declarations(&defs, &[&root]);
+    let (ts, _) = declarations_in(source, &["SplitOptions"]);
     for expected in [
         // a parenthetical of Rust items alone goes, with the spaces and line break before it
         " * The options of a split, its caps and its library (`lambda`), at most 16\n",
