@@ -139,9 +139,8 @@ pub fn jde_example2_regularity() -> JsResult<JsValue> {
 
 /// The seeded Monte Carlo of the optimal joint detector-estimator of Rezaeian & Vo, "Error
 /// bounds for joint detection and estimation of a single object with random finite set
-/// observation" (paper 002) (MAP
-/// detection, the posterior mean): the risk that
-/// `jdeBound` bounds, with its parts and standard error. Options `{ model, existence, prior,
+/// observation" (paper 002) (MAP detection, the posterior mean): the risk that `jdeBound`
+/// bounds, with its parts and standard error. Options `{ model, existence, prior,
 /// observation, falseAlarm?, clutter?, falseAlarmError, missError, emptyRule?, scans?,
 /// samples?, seed? }`.
 #[wasm_bindgen(js_name = jdeMonteCarlo, unchecked_return_type = "JdeMonteCarloResult")]

@@ -93,11 +93,9 @@ export function negativeInformationScenario(options?: NegativeInformationOptions
 
 /// The negative-information example of Fig. 5 (Section IV-G) of LeGrand & Ferrari, "Split
 /// Happens! Imprecise and negative information in Gaussian mixture random finite set filtering"
-/// (paper 001): a constant-velocity object
-/// crossing a square FoV with three non-detections (p_D = 1), split by Algorithm 1 with
-/// w_min = 0.01, R = 3, λ = 0.001.
-/// Options `{ step }` (optional, 1–3): without it returns
-/// `{ fov, initial, steps }`, with it the one step.
+/// (paper 001): a constant-velocity object crossing a square FoV with three non-detections
+/// (p_D = 1), split by Algorithm 1 with w_min = 0.01, R = 3, λ = 0.001. Options `{ step }`
+/// (optional, 1–3): without it returns `{ fov, initial, steps }`, with it the one step.
 #[wasm_bindgen(
     js_name = negativeInformationScenario,
     unchecked_return_type = "NegativeInformationScenario | NegativeInformationStep"
