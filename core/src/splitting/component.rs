@@ -37,10 +37,15 @@ impl Eigen {
     /// asymmetric pair; [`Error::NotDefinite`] naming `what` with the smallest eigenvalue if
     /// an eigenvalue is not finite and > 0 (NaN if the solver does not converge).
     pub fn new(cov: &DMatrix<f64>, what: &str) -> Result<Self> {
+        Self::named(cov, &|| String::from(what))
+    }
+
+    /// [`Eigen::new`] with the name built only for an error.
+    pub(crate) fn named(cov: &DMatrix<f64>, what: &dyn Fn() -> String) -> Result<Self> {
         let n = cov.nrows();
-        covariance::check_symmetric(cov, &|| String::from(what))?;
+        covariance::check_symmetric(cov, what)?;
         let not_definite = |smallest_eigenvalue: f64| Error::NotDefinite {
-            what: String::from(what),
+            what: what(),
             smallest_eigenvalue,
             semidefinite: false,
         };

@@ -242,8 +242,9 @@ struct Item {
     cov: Rc<Shared>,
     /// The input component it descends from (names errors).
     origin: usize,
-    /// The input Gaussian, for components never split.
-    original: Option<Gaussian>,
+    /// Whether it is the input component itself (never split): the output then clones the
+    /// input Gaussian, factor included, instead of building one.
+    original: bool,
     done: bool,
 }
 
@@ -267,12 +268,13 @@ impl Shared {
         if let Some(info) = self.info.get() {
             return Ok(info);
         }
-        let what = format!("mixture[{origin}].cov");
-        let full = Eigen::new(&self.cov, &what)?;
+        // The name is built only for an error.
+        let what = || format!("mixture[{origin}].cov");
+        let full = Eigen::named(&self.cov, &what)?;
         let position = if ns == self.cov.nrows() {
             full.clone()
         } else {
-            Eigen::new(&self.cov.view((0, 0), (ns, ns)).into_owned(), &what)?
+            Eigen::named(&self.cov.view((0, 0), (ns, ns)).into_owned(), &what)?
         };
         Ok(self.info.get_or_init(|| CovInfo { full, position }))
     }
@@ -450,7 +452,7 @@ pub fn split_for_regions(
             mean: g.mean().clone(),
             cov: Shared::new(g.cov().clone()),
             origin: i,
-            original: Some(g.clone()),
+            original: true,
             done: false,
         })
         .collect();
@@ -515,7 +517,7 @@ pub fn split_for_regions(
                     mean,
                     cov: Rc::clone(&cov),
                     origin: item.origin,
-                    original: None,
+                    original: false,
                     done: false,
                 });
             }
@@ -530,18 +532,17 @@ pub fn split_for_regions(
     }
     let mut components = Vec::with_capacity(items.len());
     for item in items {
-        let g = match item.original {
-            Some(g) => g,
-            None => {
-                let origin = item.origin;
-                let what = move || format!("mixture[{origin}]");
-                match item.cov.gaussian.get() {
-                    Some(sibling) => sibling.with_mean(item.mean, &what)?,
-                    None => {
-                        let g = Gaussian::named(item.mean, item.cov.cov.clone(), &what)?;
-                        let _ = item.cov.gaussian.set(g.clone());
-                        g
-                    }
+        let g = if item.original {
+            mixture.components()[item.origin].1.clone()
+        } else {
+            let origin = item.origin;
+            let what = move || format!("mixture[{origin}]");
+            match item.cov.gaussian.get() {
+                Some(sibling) => sibling.with_mean(item.mean, &what)?,
+                None => {
+                    let g = Gaussian::named(item.mean, item.cov.cov.clone(), &what)?;
+                    let _ = item.cov.gaussian.set(g.clone());
+                    g
                 }
             }
         };
@@ -612,7 +613,18 @@ fn split_direction(
     // in j order.
     let mut a = [0.0f64; 16];
     let small = ns <= 4;
-    let roots: Vec<f64> = pos.values.iter().map(|&l| fns::sqrt(l)).collect();
+    // √λ_j, on the stack for n_s ≤ 4 (one decision per component and level: no allocation).
+    let mut roots_small = [0.0f64; 4];
+    let roots_vec: Vec<f64>;
+    let roots: &[f64] = if small {
+        for (r, &l) in roots_small.iter_mut().zip(&pos.values) {
+            *r = fns::sqrt(l);
+        }
+        &roots_small[..ns]
+    } else {
+        roots_vec = pos.values.iter().map(|&l| fns::sqrt(l)).collect();
+        &roots_vec
+    };
     if small {
         for i in 0..ns {
             for j in 0..ns {
@@ -643,7 +655,7 @@ fn split_direction(
             &scratch.reach[..]
         },
         vectors: pos.vectors.as_slice(),
-        roots: &roots,
+        roots,
         zeta: grid.zeta,
         slack,
     };
