@@ -112,6 +112,7 @@ bench: pkg
 	python3 benches/map_vs_numpy.py
 	python3 benches/bernoulli_vs_scipy.py
 	python3 benches/bernoulli_vs_stonesoup.py
+	python3 benches/airport_curve.py
 
 clean:
 	cargo clean
