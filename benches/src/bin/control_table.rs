@@ -45,6 +45,23 @@
 //! in Node. Seed 1's steps 1–4 and the set-up (`control_table 1 1 4` under callgrind) are
 //! 5.81e9 instructions instead of 6.07e9: the gain is mostly in latency (libm's exp has a
 //! division and branches; the Horner form of the new one, as many instructions, gained 4 %).
+//!
+//! Where the rest goes (2026-12-05, 422dfaa, load average 0.6–1.0; one native thread: worst
+//! 122.8–125.9 ms, mean 44.2–44.8 ms; Node: worst 158–168 ms, mean 51.3–55.0 ms), each by a
+//! temporary change, none kept:
+//! - seed 1's steps 1–4 are 5.0 M of their 6.9 M (particle, scan) evaluations with four
+//!   objects and four measurements, 16 pairs each;
+//! - of all pairs, half are below the kernel's cut (no exp); of those above, a third are
+//!   within 4 of the largest exponent, the rest spread evenly down to the cut;
+//! - an exp costing almost nothing (a 6-flop stand-in with wrong values) makes the table's
+//!   worst 74 ms and mean 23.7 ms: the exps are about half of the time, the pairs' exponents
+//!   and the subset sum the other half; a table-driven 1-ulp exp would save about a third of
+//!   an exp's 53 operations, ≈ 15 % of a step;
+//! - replacing a particle's likelihood by its all-missed floor when its excess is below
+//!   10⁻¹⁷ of Σ w T (and of Σ w √T) would spare 0.14 % of the pairs: the particles are tight
+//!   against σ;
+//! - every pair's exp in one fused loop with a select instead of packing those above the cut
+//!   (the same bits): 3–7 % slower.
 use fisst::control::{ControlOptions, ControlRun, Scheme, StepOutcome};
 use std::hint::black_box;
 use std::time::Instant;
