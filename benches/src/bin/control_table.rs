@@ -51,9 +51,10 @@
 //! temporary change, none kept:
 //! - seed 1's steps 1–4 are 5.0 M of their 6.9 M (particle, scan) evaluations with four
 //!   objects and four measurements, 16 pairs each;
-//! - of all pairs, half are below the kernel's cut (no exp); of those above (exponents up to
-//!   52 above the cut), a third are in the top 4 (48–52 above it), the rest spread down to
-//!   the cut, thinning (seeds 1–10: 16 % at 44–48, 8 % at 40–44, … 2.5 % at 0–4);
+//! - below the kernel's cut (no exp): 36 % of the pairs of seeds 1–10 (50 % in seed 1's
+//!   steps 1–6); of those above (exponents up to 52 above the cut), half are in the top 4
+//!   (48–52 above it; a third in seed 1's steps 1–6), then 15 % at 44–48, 8 % at 40–44,
+//!   thinning to 1.5 % at 0–4;
 //! - an exp costing almost nothing (a 6-flop stand-in with wrong values) makes the table's
 //!   worst 74 ms and mean 23.7 ms: the exps are about half of the time, the pairs' exponents
 //!   and the subset sum the other half; a table-driven 1-ulp exp would save about a third of
