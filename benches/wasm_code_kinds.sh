@@ -18,6 +18,12 @@
 # `--duplicate-function-elimination --merge-similar-functions --remove-unused-module-elements`:
 # 2,388,715. What is left is code: the core's numerics grew by 206 KB with the features of the
 # issues since; float formatting of error messages (`core::fmt::float`, flt2dec) is about 20 KB per module.
+#
+# Stop 43 (same settings): 2,332,289 → 2,157,908 bytes. The standard library's float formatting
+# (19 KB per module: f64's Display in four error messages and serde's `Unexpected`, f64's Debug
+# in `f64::clamp`'s panic) replaced by `fisst::math::decimal` (5 KB, the same text) and
+# `math::fns::clamp`; the 2–5 driftsorts per module (one per element type, 92 KB of the six) by
+# the crate's own merge sort (3 KB per module). Named build: runtime 465 → 255 KB.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD

@@ -8,6 +8,8 @@ use alloc::string::String;
 use alloc::vec::Vec;
 use core::fmt;
 
+use crate::math::decimal::Decimal;
+
 /// What went wrong, and where.
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
@@ -433,9 +435,13 @@ impl fmt::Display for Error {
                 what,
                 value,
                 expected,
-            } => write!(f, "{what} must be {expected}, got {value}"),
+            } => write!(f, "{what} must be {expected}, got {}", Decimal(*value)),
             Error::InvalidProbability { what, value } => {
-                write!(f, "{what} must be a probability in [0, 1], got {value}")
+                write!(
+                    f,
+                    "{what} must be a probability in [0, 1], got {}",
+                    Decimal(*value)
+                )
             }
             Error::DimensionMismatch {
                 what,
@@ -494,7 +500,9 @@ impl fmt::Display for Error {
                 lower,
             } => write!(
                 f,
-                "{what} is not symmetric: [{row}][{col}] = {upper} but [{col}][{row}] = {lower}"
+                "{what} is not symmetric: [{row}][{col}] = {} but [{col}][{row}] = {}",
+                Decimal(*upper),
+                Decimal(*lower)
             ),
             Error::NotDefinite {
                 what,
@@ -504,7 +512,8 @@ impl fmt::Display for Error {
                 let semi = if *semidefinite { "semi" } else { "" };
                 write!(
                     f,
-                    "{what} is not positive {semi}definite (smallest eigenvalue {smallest_eigenvalue})"
+                    "{what} is not positive {semi}definite (smallest eigenvalue {})",
+                    Decimal(*smallest_eigenvalue)
                 )
             }
             Error::Form { what, problem, .. } => {

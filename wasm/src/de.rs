@@ -25,6 +25,7 @@
 //! Value checks beyond "a finite number" (ranges, probabilities, positive definiteness) stay in
 //! the core's `Result`s; [`crate::boundary`] maps those to `RangeError`s with the same paths.
 
+use fisst::math::decimal::Decimal;
 use std::borrow::Cow;
 use std::fmt::{self, Display};
 use std::string::{String, ToString};
@@ -186,7 +187,7 @@ impl de::Error for Error {
         // a number as JavaScript prints it (`got 1`, not serde's "floating point `1.0`")
         let unexp = match unexp {
             de::Unexpected::Float(x) => number_text(x),
-            other => other.to_string(),
+            other => unexpected_text(other),
         };
         Self {
             class: ErrorClass::Type,
@@ -197,7 +198,10 @@ impl de::Error for Error {
     }
 
     fn invalid_value(unexp: de::Unexpected<'_>, exp: &dyn de::Expected) -> Self {
-        Self::custom(std::format!("must be {exp}, got {unexp}"))
+        Self::custom(std::format!(
+            "must be {exp}, got {}",
+            unexpected_text(unexp)
+        ))
     }
 
     fn invalid_length(len: usize, exp: &dyn de::Expected) -> Self {
@@ -273,7 +277,42 @@ pub fn number_text(x: f64) -> String {
     } else if x == f64::NEG_INFINITY {
         "-Infinity".into()
     } else {
-        std::format!("{x}")
+        Decimal(x).to_string()
+    }
+}
+
+/// serde's `Display` of an [`de::Unexpected`], word for word, with the float written by the
+/// core's [`Decimal`]: serde's own prints it through the standard library's float formatting,
+/// which is about 19 KB of every wasm module (issue 25, wasm size). The test
+/// `unexpected_text_is_serdes` compares the two.
+pub fn unexpected_text(unexp: de::Unexpected<'_>) -> String {
+    use de::Unexpected as U;
+    match unexp {
+        U::Bool(b) => std::format!("boolean `{b}`"),
+        U::Unsigned(i) => std::format!("integer `{i}`"),
+        U::Signed(i) => std::format!("integer `{i}`"),
+        U::Float(x) => {
+            // serde's `WithDecimalPoint`: a finite number without a point gets ".0"
+            let mut t = Decimal(x).to_string();
+            if x.is_finite() && !t.contains('.') {
+                t.push_str(".0");
+            }
+            std::format!("floating point `{t}`")
+        }
+        U::Char(c) => std::format!("character `{c}`"),
+        U::Str(s) => std::format!("string {s:?}"),
+        U::Bytes(_) => "byte array".into(),
+        U::Unit => "unit value".into(),
+        U::Option => "Option value".into(),
+        U::NewtypeStruct => "newtype struct".into(),
+        U::Seq => "sequence".into(),
+        U::Map => "map".into(),
+        U::Enum => "enum".into(),
+        U::UnitVariant => "unit variant".into(),
+        U::NewtypeVariant => "newtype variant".into(),
+        U::TupleVariant => "tuple variant".into(),
+        U::StructVariant => "struct variant".into(),
+        U::Other(other) => other.into(),
     }
 }
 
@@ -367,7 +406,7 @@ impl<'a> De<'a> {
             let what = if min == 0.0 {
                 "a non-negative integer".to_string()
             } else {
-                std::format!("an integer in [{min}, {max}]")
+                std::format!("an integer in [{}, {}]", Decimal(min), Decimal(max))
             };
             return Err(Error::range_error(
                 &self.path,
@@ -1133,5 +1172,38 @@ mod tests {
         assert_eq!(inner.message, "options[2] has length 1, expected 2");
         let again = e.clone().at(&Path::Root("other"));
         assert_eq!(again, e);
+    }
+
+    #[test]
+    fn unexpected_text_is_serdes() {
+        use de::Unexpected as U;
+        let all = [
+            U::Bool(true),
+            U::Unsigned(7),
+            U::Signed(-3),
+            U::Float(1.0),
+            U::Float(-0.0),
+            U::Float(1.5e-7),
+            U::Float(1e21),
+            U::Float(f64::NAN),
+            U::Float(f64::NEG_INFINITY),
+            U::Char('x'),
+            U::Str("a \"b\"\n"),
+            U::Bytes(b"ab"),
+            U::Unit,
+            U::Option,
+            U::NewtypeStruct,
+            U::Seq,
+            U::Map,
+            U::Enum,
+            U::UnitVariant,
+            U::NewtypeVariant,
+            U::TupleVariant,
+            U::StructVariant,
+            U::Other("something else"),
+        ];
+        for u in all {
+            assert_eq!(unexpected_text(u), u.to_string());
+        }
     }
 }

@@ -536,7 +536,7 @@ fn sweep_2d(p: &ParticleSet, radius: f64) -> Vec<f64> {
             }
         }
         // Arc starts before ends at equal angles: arcs are closed.
-        crate::math::sort::sort_by(&mut events, |a, b| {
+        crate::math::sort::sort_copy_by(&mut events, |a, b| {
             a.0.total_cmp(&b.0).then(b.1.total_cmp(&a.1))
         });
         let mut cur = base + wrapped;

@@ -410,7 +410,7 @@ impl Density for Density1 {
                     let disc = (d0 * d0 + 2.0 * slope * m).max(0.0);
                     (fns::sqrt(disc) - d0) / slope
                 };
-                x[i] + t.clamp(0.0, h)
+                x[i] + crate::math::fns::clamp(t, 0.0, h)
             }
         })
     }

@@ -151,7 +151,7 @@ fn scaled_mean(plain: f64, x: impl Iterator<Item = (f64, f64)> + Clone) -> f64 {
     for (w, v) in x {
         acc.add(w * (v / s));
     }
-    (acc.total() * s).clamp(lo, hi)
+    crate::math::fns::clamp(acc.total() * s, lo, hi)
 }
 
 /// The covariance Σ_k a_k (P_k + d_k d_kᵀ), d_k = m_k − mean (shares a_k summing to 1; P_k

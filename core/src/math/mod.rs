@@ -3,6 +3,7 @@
 //! and its samplers.
 
 pub mod assignment;
+pub mod decimal;
 pub(crate) mod exp;
 pub mod fns;
 pub mod geometry;

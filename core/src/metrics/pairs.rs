@@ -202,7 +202,7 @@ impl Candidates {
                     (key, i as u32)
                 })
                 .collect();
-            order.sort_unstable();
+            crate::math::sort::sort(&mut order);
             let mut coords = Vec::with_capacity(order.len() * axes);
             for &(_, i) in &order {
                 let q = metric.grid_coordinates(&pts[i as usize]).unwrap_or(&[]);

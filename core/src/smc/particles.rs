@@ -56,8 +56,8 @@ impl Area {
     /// `p` moved to the nearest point of the area.
     pub fn clamp(&self, p: State) -> State {
         [
-            p[0].clamp(self.lo[0], self.hi[0]),
-            p[1].clamp(self.lo[1], self.hi[1]),
+            crate::math::fns::clamp(p[0], self.lo[0], self.hi[0]),
+            crate::math::fns::clamp(p[1], self.lo[1], self.hi[1]),
         ]
     }
 }

@@ -292,7 +292,7 @@ impl<'a> Cubature<'a> {
                 }
             }
         }
-        pts.sort_by(f64::total_cmp);
+        crate::math::sort::sort_f64(&mut pts);
         let min_gap = 1e-9 * (ch - cl);
         pts.dedup_by(|b, a| *b - *a <= min_gap);
         pts
@@ -370,7 +370,7 @@ impl<'a> Cubature<'a> {
             }
         }
         if added {
-            out.sort_by(|a, b| a.0.total_cmp(&b.0));
+            crate::math::sort::sort_by(&mut out, |a, b| a.0.total_cmp(&b.0));
         }
         out
     }
@@ -640,7 +640,7 @@ pub(super) fn logistic_normal(mu: f64, s: f64, tol: f64) -> f64 {
         )
     };
     let (mut lo, mut hi) = (mu - s2, mu + s2);
-    let mut u = (mu / (1.0 + 0.5 * s2)).clamp(lo, hi);
+    let mut u = crate::math::fns::clamp(mu / (1.0 + 0.5 * s2), lo, hi);
     for _ in 0..60 {
         let (f, d) = slope(u);
         if f > 0.0 {
@@ -713,7 +713,7 @@ pub(super) fn logistic_normal_adaptive(mu: f64, s: f64, tol: f64) -> f64 {
 /// The pieces of [lo, hi] split at the `cuts` strictly inside it, in increasing order (a cut
 /// repeated or outside is skipped): the breakpoints of a piecewise quadrature.
 fn breakpoints<const K: usize>(lo: f64, hi: f64, mut cuts: [f64; K]) -> Vec<f64> {
-    cuts.sort_by(f64::total_cmp);
+    crate::math::sort::sort_f64(&mut cuts);
     let mut pts = alloc::vec![lo];
     for t in cuts {
         if t > lo && t < hi && t > pts[pts.len() - 1] {
