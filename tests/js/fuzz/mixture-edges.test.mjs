@@ -12,8 +12,12 @@ const rho = [[1, 0.5], [0.5, 1]];
 const spread = (i) => (i * 0.6180339887498949) % 1;
 const comps = (n, d = 2) => Array.from({ length: n }, (_, i) => ({ weight: 1 / n, mean: Array.from({ length: d }, (_, k) => 10 * spread(i + k * 7919)), cov: d === 1 ? [[1]] : I2 }));
 const rangeError = (prefix) => (e) => e instanceof RangeError && e.message.startsWith(prefix);
-// CPU time of the call (as the fuzzer's watchdog counts it: test files run in parallel).
-const timed = (f, ms = 2000) => {
+// CPU time of the call (as the fuzzer's watchdog counts it: test files run in parallel),
+// bounded: the calls at a cap take 0.7–1.2 s on the machine these caps were set on and up to
+// 3.5 s on a three times slower one (stop 43, where a 2 s bound failed with the package before
+// and after that stop's changes alike); without the caps the same calls run for minutes to
+// hours. The bound shows that a cap holds, not a speed (speed is measured in benches/).
+const timed = (f, ms = 10_000) => {
   const t = process.cpuUsage();
   const r = f();
   const { user, system } = process.cpuUsage(t);
@@ -60,7 +64,7 @@ test('mmucEstimate-huge-radius: particles at radius 1e308 give a finite centre',
   noNaN(fisst.multiBernoulliPointEstimate({ components: [{ existence: 0.9, density }], radius: 1e308, costs: 'mpe' }));
 });
 
-test('reduceMixture caps: 5000 components (RangeError naming options.mixture beyond, before reading them), Runnalls 3000; each under 2 s', () => {
+test('reduceMixture caps: 5000 components (RangeError naming options.mixture beyond, before reading them), Runnalls 3000; each bounded', () => {
   assert.throws(() => fisst.reduceMixture({ mixture: comps(5001, 1), maxComponents: 1 }), rangeError('options.mixture has 5001 components, at most 5000 are supported'));
   const million = comps(1_000_000, 1);
   assert.throws(() => timed(() => fisst.reduceMixture({ mixture: million, maxComponents: 1_000_000, mergeDistance: 0 }), 100), rangeError('options.mixture has 1000000 components, at most 5000 are supported'));
@@ -69,7 +73,7 @@ test('reduceMixture caps: 5000 components (RangeError naming options.mixture bey
   assert.equal(timed(() => fisst.reduceMixture({ mixture: comps(5000), mergeDistance: 0 })).length, 5000);
 });
 
-test('MMUC search caps: 100 mixture components, 1500 particles in 2+ dimensions; each under 2 s at the cap', () => {
+test('MMUC search caps: 100 mixture components, 1500 particles in 2+ dimensions; each bounded at the cap', () => {
   assert.throws(
     () => fisst.bernoulliEstimate({ existence: 0.5, density: { mixture: comps(101) }, radius: 1, costs: 'mpe' }),
     rangeError('options.density.mixture must have 1 to 100 components, got 101'),
