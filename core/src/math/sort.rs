@@ -31,7 +31,10 @@ pub fn sort_by<T>(v: &mut [T], mut cmp: impl FnMut(&T, &T) -> Ordering) {
 
 /// Sorts `v` stably by `cmp`, compiled for this call site with `cmp` inlined: for a sort in
 /// a hot loop (the 2D MMUC sweep sorts a list of arc events per particle), at about 1 KB of
-/// wasm per call site. The same order as [`sort_by`].
+/// wasm per call site. The same order as [`sort_by`], which uses it on indices. Insertion
+/// sort of runs of 12, then bottom-up merges between `v` and a copy, taking from the left run
+/// on ties and copying a pair of runs already in order after one comparison: O(n log n)
+/// comparisons, n extra elements of memory.
 #[inline]
 pub fn sort_copy_by<T: Copy, F: FnMut(&T, &T) -> Ordering>(v: &mut [T], mut cmp: F) {
     let n = v.len();
@@ -116,58 +119,12 @@ fn insertion_sort<T>(v: &mut [T], cmp: &mut dyn FnMut(&T, &T) -> Ordering) {
 }
 
 /// The indices 0..n in the stable order of `cmp(i, j)` (which compares the elements at i and
-/// j): insertion sort of runs of [`RUN`], then bottom-up merges between two buffers, taking
-/// from the left run on ties, and copying a pair of runs already in order with one
-/// comparison. O(n log n) comparisons, 2n words of memory.
+/// j), by [`sort_copy_by`] compiled once here for indices.
 #[inline(never)]
 fn stable_order(n: usize, cmp: &mut dyn FnMut(usize, usize) -> Ordering) -> Vec<usize> {
-    let mut src: Vec<usize> = (0..n).collect();
-    for lo in (0..n).step_by(RUN) {
-        let hi = (lo + RUN).min(n);
-        for k in lo + 1..hi {
-            let x = src[k];
-            let mut j = k;
-            while j > lo && cmp(x, src[j - 1]) == Ordering::Less {
-                src[j] = src[j - 1];
-                j -= 1;
-            }
-            src[j] = x;
-        }
-    }
-    if n <= RUN {
-        return src;
-    }
-    let mut dst = alloc::vec![0usize; n];
-    let mut width = RUN;
-    while width < n {
-        let mut lo = 0;
-        while lo < n {
-            let mid = (lo + width).min(n);
-            let hi = (lo + 2 * width).min(n);
-            if mid == hi || cmp(src[mid], src[mid - 1]) != Ordering::Less {
-                dst[lo..hi].copy_from_slice(&src[lo..hi]);
-            } else {
-                let (mut i, mut j, mut k) = (lo, mid, lo);
-                while i < mid && j < hi {
-                    if cmp(src[j], src[i]) == Ordering::Less {
-                        dst[k] = src[j];
-                        j += 1;
-                    } else {
-                        dst[k] = src[i];
-                        i += 1;
-                    }
-                    k += 1;
-                }
-                dst[k..k + (mid - i)].copy_from_slice(&src[i..mid]);
-                k += mid - i;
-                dst[k..k + (hi - j)].copy_from_slice(&src[j..hi]);
-            }
-            lo = hi;
-        }
-        core::mem::swap(&mut src, &mut dst);
-        width *= 2;
-    }
-    src
+    let mut order: Vec<usize> = (0..n).collect();
+    sort_copy_by(&mut order, |&i, &j| cmp(i, j));
+    order
 }
 
 /// Rearranges `v` so that its k-th element is the one that was at `order[k]` (`order` a
