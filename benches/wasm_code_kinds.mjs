@@ -1,6 +1,8 @@
 // The code bytes of wasm modules by kind, from their function names (a build with
 // `wasm-bindgen --keep-debug`; benches/wasm_code_kinds.sh makes one and calls this):
-//   node benches/wasm_code_kinds.mjs DIR [DIR…]   (DIR holds <part>_bg.wasm for the six parts)
+//   node benches/wasm_code_kinds.mjs [--top N] DIR [DIR…]   (DIR holds <part>_bg.wasm for the six parts)
+// `--top N` also lists the N largest functions (bytes summed over the six modules, with the
+// number of modules holding each and its kind).
 // Kinds, by the first rule that matches a function's name: serde (serde, (De)Serialize impls,
 // visitors, the binding's de.rs and names.rs, the core's serde_valid), binding (fisst_wasm,
 // wasm-bindgen, js-sys, and unnamed glue), numerics (fisst), nalgebra + libm, runtime (core,
@@ -85,6 +87,7 @@ function kinds(file) {
   if (names.size === 0) throw new Error(`${file} has no name section: build it with --keep-debug`);
   const out = Object.fromEntries(KINDS.map((k) => [k, 0]));
   out.data = data;
+  out.functions = [];
   for (const [index, len] of bodies) {
     const n = names.get(index) ?? '';
     let k;
@@ -94,19 +97,37 @@ function kinds(file) {
     else if (/nalgebra|libm/.test(n)) k = 'nalgebra+libm';
     else k = 'runtime';
     out[k] += len;
+    out.functions.push([n, len, k]);
   }
   return out;
 }
 
-for (const dir of process.argv.slice(2)) {
+const args = process.argv.slice(2);
+let top = 0;
+if (args[0] === '--top') {
+  top = Number(args[1]);
+  args.splice(0, 2);
+}
+for (const dir of args) {
+  const byName = new Map();
   console.log(`${dir}\n${['part', ...KINDS, 'total'].map((s) => s.padStart(14)).join('')}`);
   const sum = Object.fromEntries(KINDS.map((k) => [k, 0]));
   for (const part of PARTS) {
     const k = kinds(`${dir}/${part}_bg.wasm`);
     for (const key of KINDS) sum[key] += k[key];
+    for (const [n, len, kind] of k.functions) {
+      const e = byName.get(n) ?? { bytes: 0, modules: 0, kind };
+      e.bytes += len;
+      e.modules += 1;
+      byName.set(n, e);
+    }
     const total = KINDS.reduce((a, key) => a + k[key], 0);
     console.log([part, ...KINDS.map((key) => k[key]), total].map((s) => String(s).padStart(14)).join(''));
   }
   const total = KINDS.reduce((a, key) => a + sum[key], 0);
   console.log(['six', ...KINDS.map((key) => sum[key]), total].map((s) => String(s).padStart(14)).join(''));
+  const largest = [...byName].sort((a, b) => b[1].bytes - a[1].bytes).slice(0, top);
+  for (const [n, e] of largest) {
+    console.log(`${String(e.bytes).padStart(9)} ${e.modules} ${e.kind.padEnd(13)} ${n}`);
+  }
 }

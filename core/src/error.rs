@@ -520,7 +520,9 @@ impl fmt::Display for Error {
                 // a sentence about a part of the field ("[1] has length …") continues its
                 // path, and so does one after a colon
                 let joined = match problem.first() {
-                    Some(Phrase::Text(t)) => t.starts_with(['[', '.', ':']),
+                    Some(Phrase::Text(t)) => {
+                        matches!(t.as_bytes().first(), Some(b'[' | b'.' | b':'))
+                    }
                     _ => false,
                 };
                 f.write_str(what)?;
@@ -555,6 +557,47 @@ pub(crate) fn check_probabilities(name: &str, values: &[f64]) -> Result<()> {
         check_probability(|| alloc::format!("{name}[{i}]"), r)?;
     }
     Ok(())
+}
+
+/// A string in double quotes, escaped as Rust's `{:?}` escapes it wherever that is defined by
+/// ASCII alone: `\"`, `\\`, `\n`, `\r`, `\t`, `\0`, and any other control character (C0, DEL,
+/// C1) as `\u{1b}`. Other characters are written as they are, where `{:?}` would also escape
+/// the unprintable and combining ones by the standard library's Unicode tables (with the
+/// character and string `Debug` code, about 6 KB of every wasm module of the npm package;
+/// issue 25).
+/// The test `quoted_is_debug_for_ascii_and_printable_text` compares the two.
+pub struct Quoted<'a>(pub &'a str);
+
+impl fmt::Display for Quoted<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use fmt::Write;
+        f.write_char('"')?;
+        for c in self.0.chars() {
+            match c {
+                '"' => f.write_str("\\\"")?,
+                '\\' => f.write_str("\\\\")?,
+                '\n' => f.write_str("\\n")?,
+                '\r' => f.write_str("\\r")?,
+                '\t' => f.write_str("\\t")?,
+                '\0' => f.write_str("\\0")?,
+                '\u{1}'..='\u{1f}' | '\u{7f}'..='\u{9f}' => {
+                    let n = c as u32;
+                    f.write_str("\\u{")?;
+                    if n >= 16 {
+                        f.write_char(hex_digit(n >> 4))?;
+                    }
+                    f.write_char(hex_digit(n & 15))?;
+                    f.write_char('}')?;
+                }
+                c => f.write_char(c)?,
+            }
+        }
+        f.write_char('"')
+    }
+}
+
+fn hex_digit(d: u32) -> char {
+    char::from_digit(d, 16).unwrap_or('0')
 }
 
 #[cfg(test)]
@@ -683,5 +726,30 @@ mod tests {
             let e = check_probabilities("r", &[0.2, bad]).unwrap_err();
             assert_eq!(e.field(), "r[1]");
         }
+    }
+
+    #[test]
+    fn quoted_is_debug_for_ascii_and_printable_text() {
+        // every ASCII character, alone and between others
+        for b in 0u8..128 {
+            let c = char::from(b);
+            for s in [c.to_string(), alloc::format!("a{c}b")] {
+                assert_eq!(Quoted(&s).to_string(), alloc::format!("{s:?}"), "{b}");
+            }
+        }
+        // C1 controls, and printable text beyond ASCII
+        for s in [
+            "\u{80}",
+            "x\u{9f}y",
+            "détection",
+            "日本語 ✓",
+            "naïve café",
+            "∑ λ ∞",
+        ] {
+            assert_eq!(Quoted(s).to_string(), alloc::format!("{s:?}"), "{s}");
+        }
+        // where the two differ: a combining mark, which `{:?}` escapes by its Unicode tables
+        assert_eq!(Quoted("e\u{301}").to_string(), "\"e\u{301}\"");
+        assert_eq!(alloc::format!("{:?}", "e\u{301}"), "\"e\\u{301}\"");
     }
 }

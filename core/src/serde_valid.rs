@@ -83,7 +83,7 @@ macro_rules! through_constructor {
 /// continues its own path with it (`config.detection` + `.probability`).
 fn below(e: Error, field: &str) -> Error {
     e.map_field(|what| match what.strip_prefix(field) {
-        Some(rest) if rest.starts_with(['.', '[']) => rest.into(),
+        Some(rest) if matches!(rest.as_bytes().first(), Some(b'.' | b'[')) => rest.into(),
         _ => what.into(),
     })
 }
@@ -563,7 +563,8 @@ impl<'de> Deserialize<'de> for Costs {
                 match s {
                     "mpe" => CostsForm::Mpe.costs(),
                     other => Err(E::custom(alloc::format!(
-                        "must be {COST_FORMS}, got {other:?}"
+                        "must be {COST_FORMS}, got {}",
+                        crate::error::Quoted(other)
                     ))),
                 }
             }

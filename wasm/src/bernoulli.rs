@@ -5,7 +5,6 @@
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, read, write};
-use crate::names::Renamed;
 use fisst::bernoulli::{
     self, BernoulliEstimateOptions, LossCurveOptions, MmucOptions, MultiBernoulliPointOptions,
     ProbabilityOutsideBallOptions, ThresholdCurveOptions,
@@ -30,7 +29,7 @@ pub fn bernoulli_estimate(
     #[wasm_bindgen(unchecked_param_type = "BernoulliEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: BernoulliEstimateOptions = read(options, "options")?;
-    write(&Renamed::new(&o.estimate().or_throw_rendered("options")?))
+    write(&o.estimate().or_throw_rendered("options")?)
 }
 
 /// q(center) = P(‖x − center‖ > radius) for x drawn from `density`: exact in 1D, to 1e-10
@@ -67,7 +66,7 @@ pub fn mmuc_estimate(
     #[wasm_bindgen(unchecked_param_type = "MmucEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: MmucOptions = read(options, "options")?;
-    write(&Renamed::new(&o.estimate().or_throw_rendered("options")?))
+    write(&o.estimate().or_throw_rendered("options")?)
 }
 
 /// Theorem III.3 of Narykov, Üney & Ralph, "Optimal Bernoulli point estimation with applications"
@@ -86,7 +85,7 @@ pub fn multi_bernoulli_point_estimate(
     #[wasm_bindgen(unchecked_param_type = "MultiBernoulliPointEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: MultiBernoulliPointOptions = read(options, "options")?;
-    write(&Renamed::new(&o.estimate().or_throw_rendered("options")?))
+    write(&o.estimate().or_throw_rendered("options")?)
 }
 
 /// The expected losses against p for Fig. 2: ρ_∅ (14), ρ_{a*} (13), and the loss of the rule
@@ -99,7 +98,5 @@ pub fn bernoulli_loss_curve(
     #[wasm_bindgen(unchecked_param_type = "BernoulliLossCurveOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: LossCurveOptions = read(options, "options")?;
-    write(&Renamed::new(
-        &bernoulli::loss_curve(&o).or_throw_rendered("options")?,
-    ))
+    write(&bernoulli::loss_curve(&o).or_throw_rendered("options")?)
 }

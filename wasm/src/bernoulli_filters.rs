@@ -11,7 +11,6 @@ use wasm_bindgen::prelude::*;
 use crate::boundary::{
     JsResult, OrThrow, core_error, core_error_rendered, read, render_path, seed_or_entropy, write,
 };
-use crate::names::Renamed;
 use fisst::filters::{
     self as core_filters, BernoulliFilterConfig, EstimateOptions, GmBernoulliPredictOptions,
     GmBernoulliUpdateOptions, ParticleOptions,
@@ -48,7 +47,7 @@ pub fn gm_bernoulli_update(
 ) -> JsResult<JsValue> {
     let o: GmBernoulliUpdateOptions = read(options, "options")?;
     let out = o.run().or_throw_rendered("options")?;
-    write(&Renamed::new(&out))
+    write(&out)
 }
 
 /// The argument of `update`: `Region[]` or `{ measurements }`.
@@ -173,7 +172,7 @@ macro_rules! filter_methods {
                     Scan::Reports(r) => self.inner.update(&r),
                     Scan::Measurements(z) => self.inner.update_measurements(&z),
                 };
-                write(&Renamed::new(&info.map_err(scan_error)?))
+                write(&info.map_err(scan_error)?)
             }
 
             /// `{ existence, mean, cov, report }`; options `{ radius, costs }` for `report`.
@@ -185,7 +184,7 @@ macro_rules! filter_methods {
             ) -> JsResult<JsValue> {
                 let o = estimate_options(options)?;
                 let e = self.inner.estimate(&o).map_err(estimate_error)?;
-                write(&Renamed::new(&core_filters::FilterEstimateReport::from(e)))
+                write(&core_filters::FilterEstimateReport::from(e))
             }
 
             /// The current existence probability r ∈ [0, 1].
@@ -320,5 +319,5 @@ pub fn airport_scenario(
     };
     let seed = seed_or_entropy(o.seed)?;
     let report = AirportScenarioReport::new(seed, o.steps).or_throw_rendered("options")?;
-    write(&Renamed::new(&report))
+    write(&report)
 }

@@ -16,6 +16,7 @@ use serde::de::DeserializeOwned;
 use wasm_bindgen::JsValue;
 
 use crate::de::{self, ErrorClass};
+use crate::names::Renamed;
 
 /// Result of a binding: the error is the JS exception to throw.
 pub type JsResult<T> = Result<T, JsValue>;
@@ -43,13 +44,14 @@ pub fn read<T: DeserializeOwned>(value: JsValue, root: &str) -> JsResult<T> {
     de::from_js(value, root).map_err(de_error)
 }
 
-/// Writes `value` as a plain JS value: structs become objects, `Vec`s arrays, `None` `null`
-/// (fields that are absent when unset say so with `skip_serializing_if`).
+/// Writes `value` as a plain JS value: structs become objects with their fields under their
+/// JavaScript names ([`Renamed`]), `Vec`s arrays, `None` `null` (fields that are absent when
+/// unset say so with `skip_serializing_if`).
 pub fn write<T: Serialize + ?Sized>(value: &T) -> JsResult<JsValue> {
     let serializer = serde_wasm_bindgen::Serializer::new()
         .serialize_missing_as_null(true)
         .serialize_maps_as_objects(true);
-    value
+    Renamed::new(value)
         .serialize(&serializer)
         .map_err(|e| js_sys::Error::new(&e.to_string()).into())
 }

@@ -5,7 +5,6 @@
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, read, write};
-use crate::names::Renamed;
 use fisst::bounds;
 
 /// Corollary 3 of Rezaeian & Vo, "Error bounds for joint detection and estimation of a single
@@ -17,7 +16,7 @@ pub fn jde_bound_no_clutter(
     #[wasm_bindgen(unchecked_param_type = "JdeBoundNoClutterOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: bounds::NoClutterOptions = read(options, "options")?;
-    write(&Renamed::new(&o.bound().or_throw_rendered("options")?))
+    write(&o.bound().or_throw_rendered("options")?)
 }
 
 /// The Fisher information J_1 of p(x, z) for z = a x + v and its inverse (Example 1 of Rezaeian &
@@ -32,9 +31,7 @@ pub fn gaussian_fisher_information(
     #[wasm_bindgen(unchecked_param_type = "GaussianFisherInformationOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: bounds::GaussianInformationOptions = read(options, "options")?;
-    write(&Renamed::new(
-        &o.information().or_throw_rendered("options")?,
-    ))
+    write(&o.information().or_throw_rendered("options")?)
 }
 
 /// The IRF (35) and Enumeration (37) bounds of Rezaeian & Vo, "Error bounds for joint detection and
@@ -46,7 +43,7 @@ pub fn jde_sequential_bound(
     #[wasm_bindgen(unchecked_param_type = "JdeSequentialBoundOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: bounds::SequentialOptions = read(options, "options")?;
-    write(&Renamed::new(&o.bound().or_throw_rendered("options")?))
+    write(&o.bound().or_throw_rendered("options")?)
 }
 
 // The options of `jdeBound` and `jdeMonteCarlo` are the core's `bounds::JdeBoundOptions` and
@@ -110,7 +107,7 @@ pub fn jde_bound(
     let options = o.into_core().or_throw_rendered("options")?;
     let out =
         bounds::jde_bound(&options, fisst::math::rng::entropy_seed).or_throw_rendered("options")?;
-    write(&Renamed::new(&bounds::JdeBoundReport::from(&out)))
+    write(&bounds::JdeBoundReport::from(&out))
 }
 
 /// Example 2 of Rezaeian & Vo, "Error bounds for joint detection and estimation of a single object
@@ -123,7 +120,7 @@ pub fn jde_example2(
     #[wasm_bindgen(unchecked_param_type = "JdeExample2Options")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: bounds::Example2Options = read(options, "options")?;
-    write(&Renamed::new(&o.example2().or_throw_rendered("options")?))
+    write(&o.example2().or_throw_rendered("options")?)
 }
 
 /// The regularity failure of Example 2 of Rezaeian & Vo, "Error bounds for joint detection and
@@ -134,7 +131,7 @@ pub fn jde_example2(
     unchecked_return_type = "JdeExample2RegularityResult"
 )]
 pub fn jde_example2_regularity() -> JsResult<JsValue> {
-    write(&Renamed::new(&bounds::example2_regularity()))
+    write(&bounds::example2_regularity())
 }
 
 /// The seeded Monte Carlo of the optimal joint detector-estimator of Rezaeian & Vo, "Error
@@ -151,5 +148,5 @@ pub fn jde_monte_carlo(
     let out = o
         .run(fisst::math::rng::entropy_seed)
         .or_throw_rendered("options")?;
-    write(&Renamed::new(&out))
+    write(&out)
 }

@@ -13,7 +13,6 @@ use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, core_error_rendered, de_error, read};
 use crate::boundary::{seed_or_entropy, write};
-use crate::names::Renamed;
 
 // The options of `compareSchemes` (with the callback); the contract's names for the core's
 // types are aliases (`ts_aliases.rs`).
@@ -43,7 +42,7 @@ pub fn multi_object_likelihood(
     #[wasm_bindgen(unchecked_param_type = "MultiObjectLikelihoodOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: MultiObjectLikelihoodOptions = read(options, "options")?;
-    write(&Renamed::new(&o.evaluate().map_err(options_error)?))
+    write(&o.evaluate().map_err(options_error)?)
 }
 
 /// One run of Algorithm 1 of Ristic & Vo, "Sensor control for multi-object state-space estimation
@@ -73,7 +72,7 @@ impl SensorControlRunJs {
     #[wasm_bindgen(unchecked_return_type = "ControlStep")]
     pub fn step(&mut self) -> JsResult<JsValue> {
         let s = self.inner.step().map_err(|e| core_error_rendered(e, ""))?;
-        write(&Renamed::new(&s))
+        write(&s)
     }
 
     /// The multi-object particles of the filter (a copy; empty before the first step).
@@ -153,7 +152,7 @@ pub fn compare_schemes(
             Failure::Js(v) => v,
             Failure::Core(e) => options_error(e),
         })?;
-    write(&Renamed::new(&out))
+    write(&out)
 }
 
 /// A failure inside the comparison: a core error or the callback's exception.

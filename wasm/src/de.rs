@@ -25,6 +25,7 @@
 //! Value checks beyond "a finite number" (ranges, probabilities, positive definiteness) stay in
 //! the core's `Result`s; [`crate::boundary`] maps those to `RangeError`s with the same paths.
 
+use fisst::error::Quoted;
 use fisst::math::decimal::Decimal;
 use std::borrow::Cow;
 use std::fmt::{self, Display};
@@ -138,10 +139,8 @@ impl Error {
                 // ".ball.radius must be …", as the core's Gaussian and region types write
                 // them, in Rust names) continues the path, its part rendered in JavaScript
                 // names (`.disc.radius`); any other continues the sentence ("… must be …").
-                None if self.message.starts_with(['[', '.']) => {
-                    let (part, rest) = self
-                        .message
-                        .split_at(self.message.find(' ').unwrap_or(self.message.len()));
+                None if matches!(self.message.as_bytes().first(), Some(b'[' | b'.')) => {
+                    let (part, rest) = cut_at(&self.message, b' ');
                     let part = match part.strip_prefix('.') {
                         Some(p) => std::format!(".{}", render_path_in(path.parent_key(), p)),
                         None => render_path_in(path.parent_key(), part),
@@ -216,7 +215,8 @@ impl de::Error for Error {
         Self {
             class: ErrorClass::Type,
             message: std::format!(
-                "has an unknown key {field:?}{hint}; its keys are {}",
+                "has an unknown key {}{hint}; its keys are {}",
+                Quoted(field),
                 expected.join(", ")
             ),
             located: false,
@@ -227,8 +227,9 @@ impl de::Error for Error {
     fn unknown_variant(variant: &str, expected: &'static [&'static str]) -> Self {
         let listed: Vec<String> = expected.iter().map(|v| std::format!("'{v}'")).collect();
         Self::custom(std::format!(
-            "must be one of {}, got {variant:?}",
-            listed.join(", ")
+            "must be one of {}, got {}",
+            listed.join(", "),
+            Quoted(variant)
         ))
     }
 
@@ -248,7 +249,7 @@ pub fn describe(v: &JsValue) -> String {
     } else if let Some(s) = v.as_string() {
         let shown: String = s.chars().take(40).collect();
         let more = if shown.len() < s.len() { "…" } else { "" };
-        std::format!("the string {shown:?}{more}")
+        std::format!("the string {}{more}", Quoted(&shown))
     } else if let Some(x) = v.as_f64() {
         number_text(x)
     } else if let Some(b) = v.as_bool() {
@@ -289,8 +290,8 @@ pub fn unexpected_text(unexp: de::Unexpected<'_>) -> String {
     use de::Unexpected as U;
     match unexp {
         U::Bool(b) => std::format!("boolean `{b}`"),
-        U::Unsigned(i) => std::format!("integer `{i}`"),
-        U::Signed(i) => std::format!("integer `{i}`"),
+        U::Unsigned(i) => std::format!("integer `{}`", integer_text(false, i)),
+        U::Signed(i) => std::format!("integer `{}`", integer_text(i < 0, i.unsigned_abs())),
         U::Float(x) => {
             // serde's `WithDecimalPoint`: a finite number without a point gets ".0"
             let mut t = Decimal(x).to_string();
@@ -299,8 +300,13 @@ pub fn unexpected_text(unexp: de::Unexpected<'_>) -> String {
             }
             std::format!("floating point `{t}`")
         }
-        U::Char(c) => std::format!("character `{c}`"),
-        U::Str(s) => std::format!("string {s:?}"),
+        U::Char(c) => {
+            let mut t = String::from("character `");
+            t.push(c);
+            t.push('`');
+            t
+        }
+        U::Str(s) => std::format!("string {}", Quoted(s)),
         U::Bytes(_) => "byte array".into(),
         U::Unit => "unit value".into(),
         U::Option => "Option value".into(),
@@ -314,6 +320,34 @@ pub fn unexpected_text(unexp: de::Unexpected<'_>) -> String {
         U::StructVariant => "struct variant".into(),
         U::Other(other) => other.into(),
     }
+}
+
+/// An integer as `{}` writes it (`-12`), from its sign and magnitude: one small loop instead of
+/// the standard library's `u64` and `i64` `Display` (about 1.8 KB each in every module).
+pub fn integer_text(negative: bool, mut magnitude: u64) -> String {
+    let mut digits = [0u8; 21];
+    let mut at = digits.len();
+    loop {
+        at -= 1;
+        digits[at] = b'0' + (magnitude % 10) as u8;
+        magnitude /= 10;
+        if magnitude == 0 {
+            break;
+        }
+    }
+    if negative {
+        at -= 1;
+        digits[at] = b'-';
+    }
+    digits[at..].iter().map(|&b| char::from(b)).collect()
+}
+
+/// `s` split before the first byte `b` (an ASCII byte), or all of `s` and "" without one:
+/// `str::find` and `split_at` would bring in the character searcher and the string slicing
+/// panic (with its `Debug` code) into every module.
+pub fn cut_at(s: &str, b: u8) -> (&str, &str) {
+    let i = s.bytes().position(|c| c == b).unwrap_or(s.len());
+    s.split_at_checked(i).unwrap_or((s, ""))
 }
 
 /// The value a [`De`] reads: a JS value, or one number of a typed array already copied out.
@@ -580,7 +614,7 @@ impl<'a> De<'a> {
                 let shown: String = s.chars().take(40).collect();
                 return Err(Error::range_error(
                     &self.path,
-                    std::format!("must be one of {}, got {shown:?}", listed()),
+                    std::format!("must be one of {}, got {}", listed(), Quoted(&shown)),
                 ));
             };
             return Ok(Variant {
@@ -668,7 +702,8 @@ fn unknown_key(path: &Path<'_>, key: &str, fields: &[&'static str]) -> Error {
     Error::type_error(
         path,
         std::format!(
-            "has an unknown key {shown:?}{hint}; its keys are {}",
+            "has an unknown key {}{hint}; its keys are {}",
+            Quoted(&shown),
             fields.join(", ")
         ),
     )
@@ -1205,5 +1240,22 @@ mod tests {
         for u in all {
             assert_eq!(unexpected_text(u), u.to_string());
         }
+        for i in [0, 9, 10, 99, 100, 4_294_967_296, u64::MAX] {
+            assert_eq!(unexpected_text(U::Unsigned(i)), U::Unsigned(i).to_string());
+        }
+        for i in [i64::MIN, -10, -1, 0, 1, 12_345, i64::MAX] {
+            assert_eq!(unexpected_text(U::Signed(i)), U::Signed(i).to_string());
+        }
+        for c in ['\'', '"', 'é', '日'] {
+            assert_eq!(unexpected_text(U::Char(c)), U::Char(c).to_string());
+        }
+    }
+
+    #[test]
+    fn cut_at_splits_before_the_first_byte() {
+        assert_eq!(cut_at("a.b.c", b'.'), ("a", ".b.c"));
+        assert_eq!(cut_at("abc", b'.'), ("abc", ""));
+        assert_eq!(cut_at("", b'.'), ("", ""));
+        assert_eq!(cut_at("é[2]", b'['), ("é", "[2]"));
     }
 }

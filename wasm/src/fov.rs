@@ -8,7 +8,6 @@ use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, read, write};
-use crate::names::Renamed;
 use fisst::fov::{
     FovCardinalityOptions as CoreCardinalityOptions,
     FovVarianceMapOptions as CoreVarianceMapOptions, MixtureDensityGridOptions as CoreGridOptions,
@@ -46,7 +45,7 @@ pub fn fov_cardinality_js(
     let core: CoreCardinalityOptions = read(options, "options")?;
     // the core's caps, budget and checks, its paths rendered under `options`
     let res = core.run().or_throw_rendered("options")?;
-    write(&Renamed::new(&res))
+    write(&res)
 }
 
 /// The FoV-count variance of a multi-Bernoulli over a grid of FoV centres, and its maximiser
@@ -84,7 +83,7 @@ pub fn placement_scene_js(
 ) -> JsResult<JsValue> {
     let o: Option<SceneOptions> = read(options.unwrap_or(JsValue::UNDEFINED), "options")?;
     let scene = o.unwrap_or_default().scene().or_throw_rendered("options")?;
-    write(&Renamed::new(&scene))
+    write(&scene)
 }
 
 /// A Gaussian mixture's density Σ w N(s; m, P) at every position of a grid, e.g. a

@@ -6,7 +6,6 @@ use tsify::Tsify;
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, read, write};
-use crate::names::Renamed;
 use crate::types::PointSet;
 use fisst::metrics::{
     Gospa, GospaOptions, GospaSeriesOptions, Ospa, OspaOptions, OspaSeriesOptions,
@@ -99,7 +98,7 @@ pub fn gospa(
 ) -> JsResult<JsValue> {
     let (truth, estimate, o) = sets_and::<GospaOptions>(truth, estimate, options)?;
     let g = o.metric().or_throw_in("options")?;
-    write(&Renamed::new(&g.report(&truth, &estimate).or_throw()?))
+    write(&g.report(&truth, &estimate).or_throw()?)
 }
 
 /// OSPA between two point sets with its rooted localisation and cardinality parts (Schuhmacher, Vo
@@ -115,9 +114,7 @@ pub fn ospa(
 ) -> JsResult<JsValue> {
     let (truth, estimate, o) = sets_and::<OspaOptions>(truth, estimate, options)?;
     let metric = o.metric().or_throw_in("options")?;
-    write(&Renamed::new(
-        &metric.decompose(&truth, &estimate).or_throw()?,
-    ))
+    write(&metric.decompose(&truth, &estimate).or_throw()?)
 }
 
 /// UOSPA (GOSPA with α = 1) between two point sets. Options `{ c, p = 2 }`; returns
@@ -147,9 +144,7 @@ pub fn gospa_series(
     // the generic series, not `o.series()`: the assignment code is then instantiated once, in
     // this crate, for every metric here (a core non-generic wrapper would add a second copy)
     let g = Gospa::new(o.c, o.p, o.alpha).or_throw_in("options")?;
-    write(&Renamed::new(
-        &g.series(&o.truths, &o.estimates).or_throw_in("options")?,
-    ))
+    write(&g.series(&o.truths, &o.estimates).or_throw_in("options")?)
 }
 
 /// OSPA with its localisation and cardinality parts over a whole scenario in one call (eqs. 24–26
@@ -163,11 +158,11 @@ pub fn ospa_series(
     check_steps(&options)?;
     let o: OspaSeriesOptions = read(options, "options")?;
     let metric = Ospa::new(o.c, o.p).or_throw_in("options")?;
-    write(&Renamed::new(
+    write(
         &metric
             .series(&o.truths, &o.estimates)
             .or_throw_in("options")?,
-    ))
+    )
 }
 
 /// Exact rectangular linear assignment: `cost` is an array of rows (equal lengths). Returns
@@ -178,5 +173,5 @@ pub fn linear_assignment(
     #[wasm_bindgen(unchecked_param_type = "CostMatrix")] cost: JsValue,
 ) -> JsResult<JsValue> {
     let a = read::<CostMatrix>(cost, "cost")?.0.assign().or_throw()?;
-    write(&Renamed::new(&a))
+    write(&a)
 }

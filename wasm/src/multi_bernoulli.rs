@@ -4,7 +4,6 @@
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, read, write};
-use crate::names::Renamed;
 use crate::types::Numbers;
 use fisst::cardinality::{leave_one_out_cardinalities, multi_bernoulli_cardinality};
 use fisst::estimators::figures::{
@@ -50,7 +49,7 @@ pub fn mb_optimal_estimate(
     #[wasm_bindgen(unchecked_param_type = "MbOptimalEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: MbOptimalEstimateOptions = read(options, "options")?;
-    write(&Renamed::new(&o.estimate().or_throw_in("options")?))
+    write(&o.estimate().or_throw_in("options")?)
 }
 
 /// The mean error E[d^p] (mean square for p = 2) of the estimate `report` (a boolean per
@@ -76,7 +75,7 @@ pub fn mb_alternative_estimate(
     #[wasm_bindgen(unchecked_param_type = "MbAlternativeEstimateOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: MbAlternativeEstimateOptions = read(options, "options")?;
-    write(&Renamed::new(&o.estimate().or_throw_in("options")?))
+    write(&o.estimate().or_throw_in("options")?)
 }
 
 /// Fig. 1 / Fig. 2 decision maps of García-Fernández & Svensson, "Spooky effect in optimal OSPA
@@ -90,9 +89,7 @@ pub fn mb_decision_map(
     #[wasm_bindgen(unchecked_param_type = "MbDecisionMapOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: DecisionMapOptions = read(options, "options")?;
-    write(&Renamed::new(
-        &decision_map(&o).or_throw_rendered("options")?,
-    ))
+    write(&decision_map(&o).or_throw_rendered("options")?)
 }
 
 /// Fig. 3 of García-Fernández & Svensson, "Spooky effect in optimal OSPA estimation and how GOSPA
@@ -104,7 +101,5 @@ pub fn mb_identical_component_counts(
     #[wasm_bindgen(unchecked_param_type = "MbIdenticalComponentCountsOptions")] options: JsValue,
 ) -> JsResult<JsValue> {
     let o: IdenticalComponentCountsOptions = read(options, "options")?;
-    write(&Renamed::new(
-        &identical_component_counts(&o).or_throw_rendered("options")?,
-    ))
+    write(&identical_component_counts(&o).or_throw_rendered("options")?)
 }

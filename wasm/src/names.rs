@@ -65,17 +65,22 @@ pub fn variant_name(rust: &'static str) -> &'static str {
 pub fn render_path_in(parent: &str, rust_path: &str) -> String {
     let mut out = String::with_capacity(rust_path.len());
     let mut parent = parent;
-    for (i, segment) in rust_path.split('.').enumerate() {
-        if i > 0 {
-            out.push('.');
-        }
+    let mut rest = rust_path;
+    loop {
+        let (segment, after) = crate::de::cut_at(rest, b'.');
         // `name[3][1]`: the name, then its indices as they are
-        let (name, indices) = segment.split_at(segment.find('[').unwrap_or(segment.len()));
+        let (name, indices) = crate::de::cut_at(segment, b'[');
         out.push_str(&rule::js_name_of(parent, name));
         out.push_str(indices);
         parent = name;
+        match after.strip_prefix('.') {
+            Some(next) => {
+                out.push('.');
+                rest = next;
+            }
+            None => return out,
+        }
     }
-    out
 }
 
 thread_local! {
@@ -111,6 +116,17 @@ impl<T: Serialize + ?Sized> Serialize for Renamed<'_, T> {
 struct Rename<S> {
     inner: S,
     parent: &'static str,
+}
+
+/// 2^53 − 1, JavaScript's `Number.MAX_SAFE_INTEGER`.
+const MAX_SAFE_INTEGER: u64 = (1 << 53) - 1;
+
+/// serde-wasm-bindgen's error for an integer no JS number holds exactly.
+fn unrepresentable<E: ser::Error>(negative: bool, magnitude: u64) -> E {
+    E::custom(std::format!(
+        "{} can't be represented as a JavaScript number",
+        crate::de::integer_text(negative, magnitude)
+    ))
 }
 
 /// A compound serializer of `inner` whose elements are wrapped in [`Renamed`].
@@ -165,11 +181,9 @@ impl<S: Serializer> Serializer for Rename<S> {
         serialize_i8(v: i8);
         serialize_i16(v: i16);
         serialize_i32(v: i32);
-        serialize_i64(v: i64);
         serialize_u8(v: u8);
         serialize_u16(v: u16);
         serialize_u32(v: u32);
-        serialize_u64(v: u64);
         serialize_f32(v: f32);
         serialize_f64(v: f64);
         serialize_char(v: char);
@@ -179,6 +193,25 @@ impl<S: Serializer> Serializer for Rename<S> {
         serialize_unit();
         serialize_unit_struct(name: &'static str);
         serialize_unit_variant(name: &'static str, index: u32, variant: &'static str);
+    }
+
+    // 64-bit integers (counts, indices) as JS numbers, as serde-wasm-bindgen writes them, but
+    // without its BigInt path and the standard library's 64-bit integer text in every module
+    // (issue 25, wasm size); the message for one beyond 2^53 is serde-wasm-bindgen's.
+    fn serialize_i64(self, v: i64) -> Result<S::Ok, S::Error> {
+        if v.unsigned_abs() <= MAX_SAFE_INTEGER {
+            self.inner.serialize_f64(v as f64)
+        } else {
+            Err(unrepresentable(v < 0, v.unsigned_abs()))
+        }
+    }
+
+    fn serialize_u64(self, v: u64) -> Result<S::Ok, S::Error> {
+        if v <= MAX_SAFE_INTEGER {
+            self.inner.serialize_f64(v as f64)
+        } else {
+            Err(unrepresentable(false, v))
+        }
     }
 
     fn serialize_some<T: Serialize + ?Sized>(self, value: &T) -> Result<S::Ok, S::Error> {

@@ -5,7 +5,6 @@
 use wasm_bindgen::prelude::*;
 
 use crate::boundary::{JsResult, OrThrow, read, write};
-use crate::names::Renamed;
 use fisst::splitting::{
     NegativeInformationOptions, NegativeInformationReport, ReduceMixtureOptions,
     SplitForRegionsOptions as CoreSplitForRegionsOptions, SplitLibraryOptions, SplitLibraryReport,
@@ -30,7 +29,7 @@ pub fn split_library_js(
 ) -> JsResult<JsValue> {
     let o: SplitLibraryOptions = read(options, "options")?;
     let lib = o.library_memo().or_throw_rendered("options")?;
-    write(&Renamed::new(&SplitLibraryReport::from(&lib)))
+    write(&SplitLibraryReport::from(&lib))
 }
 
 /// Algorithm 2 (Algorithm 1 for one region) of LeGrand & Ferrari, "Split Happens! Imprecise and
@@ -52,7 +51,7 @@ pub fn split_for_regions_js(
         .library_memo()
         .or_throw_rendered("options")?;
     let report = split_for_regions_report(&request, &library).or_throw_rendered("options")?;
-    write(&Renamed::new(&report))
+    write(&report)
 }
 
 /// Mixture reduction: prune (renormalising), Vo & Ma's Mahalanobis merge, then Runnalls'
@@ -110,7 +109,5 @@ pub fn negative_information_scenario_js(
     let o = o.unwrap_or_default();
     o.validate().or_throw_rendered("options")?;
     let report = NegativeInformationReport::fig5_memo().or_throw()?;
-    write(&Renamed::new(
-        &o.select(&report).or_throw_rendered("options")?,
-    ))
+    write(&o.select(&report).or_throw_rendered("options")?)
 }

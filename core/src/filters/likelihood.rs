@@ -167,8 +167,13 @@ impl LinearGaussianLikelihood {
         if r.nrows() != m || r.ncols() != m {
             return Err(r_against_h((r.nrows(), r.ncols()), (m, h.ncols())));
         }
-        let noise = Gaussian::new(nalgebra::DVector::zeros(m), r, "likelihood.r")
-            .map_err(|e| e.map_field(|what| what.replace("likelihood.r.cov", "likelihood.r")))?;
+        let noise = Gaussian::new(nalgebra::DVector::zeros(m), r, "likelihood.r").map_err(|e| {
+            // the Gaussian's `likelihood.r.cov…` is the contract's `likelihood.r…`
+            e.map_field(|what| match what.strip_prefix("likelihood.r.cov") {
+                Some(rest) => alloc::format!("likelihood.r{rest}"),
+                None => what.into(),
+            })
+        })?;
         Ok(Self { h, noise })
     }
 

@@ -181,17 +181,19 @@ fn at_step(e: Error, t: usize) -> Error {
         let mut out = String::with_capacity(what.len() + 16);
         let mut rest = what;
         while !rest.is_empty() {
-            let (word, plural) = if rest.starts_with("truth") {
-                ("truth", "truths")
-            } else if rest.starts_with("estimate") {
-                ("estimate", "estimates")
+            // (no string slicing: its panic brings the string `Debug` code into every wasm
+            // module)
+            let (word, plural, after) = if let Some(after) = rest.strip_prefix("truth") {
+                ("truth", "truths", after)
+            } else if let Some(after) = rest.strip_prefix("estimate") {
+                ("estimate", "estimates", after)
             } else {
-                let ch = rest.chars().next().unwrap_or(' ');
-                out.push(ch);
-                rest = &rest[ch.len_utf8()..];
+                let mut chars = rest.chars();
+                out.extend(chars.next());
+                rest = chars.as_str();
                 continue;
             };
-            rest = &rest[word.len()..];
+            rest = after;
             if rest.starts_with('s') {
                 out.push_str(word);
             } else {
