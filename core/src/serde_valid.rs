@@ -33,7 +33,6 @@
 //! No paper: these are data formats only.
 
 use alloc::boxed::Box;
-use alloc::string::ToString;
 use alloc::vec::Vec;
 
 use nalgebra::DMatrix;
@@ -72,7 +71,7 @@ macro_rules! through_constructor {
                 let $r = <$repr>::deserialize(deserializer)?;
                 let built: Result<Self, Error> = $from;
                 $(let built = built.map_err(|e| below(e, $field));)?
-                built.map_err(|e| D::Error::custom(e.to_string()))
+                built.map_err(|e| D::Error::custom(alloc::format!("{e}")))
             }
         }
     };
@@ -226,7 +225,7 @@ impl GaussianRead {
     /// N(mean, cov); errors name the fields relative to the Gaussian at `at` (`.cov`,
     /// `[2].mean[1]`), which a path-tracking deserializer appends to its path.
     fn gaussian(&self, at: &str) -> Result<Gaussian, alloc::string::String> {
-        Gaussian::from_slices(&self.mean, &self.cov, at).map_err(|e| e.to_string())
+        Gaussian::from_slices(&self.mean, &self.cov, at).map_err(|e| alloc::format!("{e}"))
     }
 }
 
@@ -290,7 +289,7 @@ fn mixture_in(read: Vec<ComponentIn>, at: &str) -> Result<GaussianMixture, alloc
     for (j, ComponentIn(c)) in read.iter().enumerate() {
         components.push((c.weight, c.gaussian(&alloc::format!("{at}[{j}]"))?));
     }
-    GaussianMixture::new(components, at).map_err(|e| e.to_string())
+    GaussianMixture::new(components, at).map_err(|e| alloc::format!("{e}"))
 }
 
 impl Serialize for GaussianMixture {
@@ -485,10 +484,7 @@ struct MmolIn {
 /// A [`Costs`] constructor's error as a serde error naming the field relative to the costs
 /// (`.c01`, `.mmol.asset`), which a path-tracking deserializer appends to its path.
 fn costs_error<E: serde::de::Error>(e: Error) -> E {
-    E::custom(
-        e.map_field(|f| f.strip_prefix("costs").unwrap_or(f).to_string())
-            .to_string(),
-    )
+    E::custom(e.map_field(|f| f.strip_prefix("costs").unwrap_or(f).into()))
 }
 
 // [`Costs`] as read: the visitor below reads one of these forms (its messages name them,
@@ -880,7 +876,10 @@ impl<'de> Deserialize<'de> for Region {
             RegionRepr::Complement(r) => Ok(Region::complement(*r)),
         };
         built.map_err(|e| {
-            D::Error::custom(e.map_field(|what| alloc::format!(".{what}")).to_string())
+            D::Error::custom(alloc::format!(
+                "{}",
+                e.map_field(|what| alloc::format!(".{what}"))
+            ))
         })
     }
 }
@@ -964,7 +963,7 @@ impl Serialize for Density1 {
 /// (`.gaussian.variance`, `.mixture[2].weight`, `.table.x[3]`): a path-tracking deserializer
 /// (the JavaScript one) continues its own path with it.
 fn relative(e: Error, kind: &str) -> alloc::string::String {
-    e.within(&alloc::format!(".{kind}")).to_string()
+    alloc::format!("{}", e.within(&alloc::format!(".{kind}")))
 }
 
 /// [`Density1`] from its form through its constructors; their errors name the part at fault
@@ -1149,7 +1148,7 @@ impl<'de> Deserialize<'de> for BoundsDetection {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         match JdeDetectionOptions::deserialize(deserializer)? {
             JdeDetectionOptions::Constant(p) => BoundsDetection::constant(p).map_err(|e| {
-                let message = e.map_field(|_| "".into()).to_string();
+                let message = alloc::format!("{}", e.map_field(|_| "".into()));
                 D::Error::custom(message.trim_start())
             }),
             JdeDetectionOptions::Table { x, probability } => {
@@ -1227,7 +1226,7 @@ impl Serialize for SpatialDensity {
                     .map(|(w, g)| (w, g.clone()))
                     .collect();
                 let mixture = GaussianMixture::new(owned, "density.mixture")
-                    .map_err(|e| S::Error::custom(e.to_string()))?;
+                    .map_err(|e| S::Error::custom(alloc::format!("{e}")))?;
                 SpatialDensityRepr::Mixture { mixture }
             }
         };
@@ -1244,11 +1243,11 @@ const DENSITY_FORMS: &str =
 /// (`density.mixture[2].weight` → `.mixture[2].weight`, `sum of density.weights` →
 /// `.weights sum`).
 fn density_error(e: Error) -> alloc::string::String {
-    e.map_paths(|p| match p.strip_prefix("sum of density") {
+    let e = e.map_paths(|p| match p.strip_prefix("sum of density") {
         Some(rest) => alloc::format!("{rest} sum"),
         None => p.strip_prefix("density").unwrap_or(p).into(),
-    })
-    .to_string()
+    });
+    alloc::format!("{e}")
 }
 
 struct DensityVisitor;
@@ -1391,6 +1390,7 @@ through_constructor!(
 #[cfg(test)]
 mod bounds_tests {
     use super::*;
+    use alloc::string::ToString;
 
     #[test]
     fn eq63_prior_and_sensor_read_back_through_their_constructors() {

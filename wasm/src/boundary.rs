@@ -9,8 +9,6 @@
 //! write(&GospaResult { … })                                  // serde-wasm-bindgen
 //! ```
 
-use std::string::ToString;
-
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 use wasm_bindgen::JsValue;
@@ -53,12 +51,12 @@ pub fn write<T: Serialize + ?Sized>(value: &T) -> JsResult<JsValue> {
         .serialize_maps_as_objects(true);
     Renamed::new(value)
         .serialize(&serializer)
-        .map_err(|e| js_sys::Error::new(&e.to_string()).into())
+        .map_err(|e| js_sys::Error::new(&std::format!("{e}")).into())
 }
 
 /// The JS exception for a `fisst` error: a `RangeError` carrying its message.
 pub fn core_error(e: fisst::Error) -> JsValue {
-    range_error(e.to_string())
+    range_error(std::format!("{e}"))
 }
 
 /// The JS exception for a `fisst` error whose field is a Rust path under `prefix`, naming the
@@ -71,7 +69,7 @@ pub fn core_error_rendered(e: fisst::Error, prefix: &str) -> JsValue {
         .map_paths(crate::names::render_path)
         .map_names(crate::names::render_path);
     if e.is_wrong_kind() {
-        type_error(e.to_string())
+        type_error(std::format!("{e}"))
     } else {
         core_error(e)
     }

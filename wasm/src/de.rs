@@ -167,7 +167,7 @@ impl de::Error for Error {
     fn custom<T: Display>(msg: T) -> Self {
         Self {
             class: ErrorClass::Range,
-            message: msg.to_string(),
+            message: std::format!("{msg}"),
             located: false,
             missing: None,
         }
@@ -278,7 +278,7 @@ pub fn number_text(x: f64) -> String {
     } else if x == f64::NEG_INFINITY {
         "-Infinity".into()
     } else {
-        Decimal(x).to_string()
+        std::format!("{}", Decimal(x))
     }
 }
 
@@ -294,7 +294,7 @@ pub fn unexpected_text(unexp: de::Unexpected<'_>) -> String {
         U::Signed(i) => std::format!("integer `{}`", integer_text(i < 0, i.unsigned_abs())),
         U::Float(x) => {
             // serde's `WithDecimalPoint`: a finite number without a point gets ".0"
-            let mut t = Decimal(x).to_string();
+            let mut t = std::format!("{}", Decimal(x));
             if x.is_finite() && !t.contains('.') {
                 t.push_str(".0");
             }

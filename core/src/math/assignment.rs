@@ -85,9 +85,8 @@ impl<'de> serde::Deserialize<'de> for CostRows {
     fn deserialize<D: serde::Deserializer<'de>>(
         deserializer: D,
     ) -> core::result::Result<Self, D::Error> {
-        use alloc::string::ToString;
         let rows = Vec::<Vec<f64>>::deserialize(deserializer)?;
-        Self::new(&rows, "").map_err(|e| serde::de::Error::custom(e.to_string()))
+        Self::new(&rows, "").map_err(serde::de::Error::custom)
     }
 }
 
