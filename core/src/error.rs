@@ -324,7 +324,14 @@ impl Error {
     /// The same error with every field path it names mapped by `rename` (the field and, for
     /// [`Error::ShapeMismatch`], the field it disagrees with; for [`Error::Form`], the
     /// [`Phrase::Path`]s).
-    pub fn map_paths(mut self, mut rename: impl FnMut(&str) -> String) -> Self {
+    pub fn map_paths(self, mut rename: impl FnMut(&str) -> String) -> Self {
+        self.map_paths_with(&mut rename)
+    }
+
+    /// [`Error::map_paths`] through one non-generic body (one copy per wasm module, not one
+    /// per closure: issue 25, wasm size).
+    #[inline(never)]
+    fn map_paths_with(mut self, rename: &mut dyn FnMut(&str) -> String) -> Self {
         match &mut self {
             Error::ShapeMismatch { other, .. } => *other = rename(other),
             Error::Form { problem, .. } => {
@@ -336,7 +343,9 @@ impl Error {
             }
             _ => {}
         }
-        self.map_field(rename)
+        let what = self.field_mut();
+        *what = rename(what);
+        self
     }
 
     /// The same error with the bare field names of an [`Error::Form`]'s sentence
@@ -374,7 +383,14 @@ impl Error {
     /// The same error about another field: `rename` maps the field's name (e.g. to say which
     /// time step of a series it is in, or to render a path in a binding's own names).
     pub fn map_field(mut self, rename: impl FnOnce(&str) -> String) -> Self {
-        match &mut self {
+        let what = self.field_mut();
+        *what = rename(what);
+        self
+    }
+
+    /// The field this error is about, to rename.
+    fn field_mut(&mut self) -> &mut String {
+        match self {
             Error::OutOfRange { what, .. }
             | Error::OverBudget { what, .. }
             | Error::Count { what, .. }
@@ -386,9 +402,8 @@ impl Error {
             | Error::NotSymmetric { what, .. }
             | Error::NotDefinite { what, .. }
             | Error::Form { what, .. }
-            | Error::Unsupported { what, .. } => *what = rename(what),
+            | Error::Unsupported { what, .. } => what,
         }
-        self
     }
 
     /// The same error about the field `prefix.field` (or `prefix[i]…` when the field starts
