@@ -241,7 +241,7 @@ impl de::Error for Error {
 type Result<T, E = Error> = std::result::Result<T, E>;
 
 /// How a value is described in a message: "the string \"2\"", "an array", "null", "NaN".
-pub fn describe(v: &JsValue) -> String {
+pub fn describe(v: &JsValue) -> Cow<'static, str> {
     if v.is_undefined() {
         "undefined".into()
     } else if v.is_null() {
@@ -249,11 +249,11 @@ pub fn describe(v: &JsValue) -> String {
     } else if let Some(s) = v.as_string() {
         let shown: String = s.chars().take(40).collect();
         let more = if shown.len() < s.len() { "…" } else { "" };
-        std::format!("the string {}{more}", Quoted(&shown))
+        std::format!("the string {}{more}", Quoted(&shown)).into()
     } else if let Some(x) = v.as_f64() {
         number_text(x)
     } else if let Some(b) = v.as_bool() {
-        std::format!("{b}")
+        (if b { "true" } else { "false" }).into()
     } else if Array::is_array(v) {
         "an array".into()
     } else if v.is_instance_of::<Float64Array>() {
@@ -270,7 +270,7 @@ pub fn describe(v: &JsValue) -> String {
 }
 
 /// A number as JavaScript prints it (`NaN`, `Infinity`, `2.5`).
-pub fn number_text(x: f64) -> String {
+pub fn number_text(x: f64) -> Cow<'static, str> {
     if x.is_nan() {
         "NaN".into()
     } else if x == f64::INFINITY {
@@ -278,7 +278,7 @@ pub fn number_text(x: f64) -> String {
     } else if x == f64::NEG_INFINITY {
         "-Infinity".into()
     } else {
-        std::format!("{}", Decimal(x))
+        std::format!("{}", Decimal(x)).into()
     }
 }
 
@@ -286,27 +286,27 @@ pub fn number_text(x: f64) -> String {
 /// core's [`Decimal`]: serde's own prints it through the standard library's float formatting,
 /// which is about 19 KB of every wasm module (issue 25, wasm size). The test
 /// `unexpected_text_is_serdes` compares the two.
-pub fn unexpected_text(unexp: de::Unexpected<'_>) -> String {
+pub fn unexpected_text(unexp: de::Unexpected<'_>) -> Cow<'_, str> {
     use de::Unexpected as U;
     match unexp {
-        U::Bool(b) => std::format!("boolean `{b}`"),
-        U::Unsigned(i) => std::format!("integer `{}`", integer_text(false, i)),
-        U::Signed(i) => std::format!("integer `{}`", integer_text(i < 0, i.unsigned_abs())),
+        U::Bool(b) => std::format!("boolean `{b}`").into(),
+        U::Unsigned(i) => std::format!("integer `{}`", integer_text(false, i)).into(),
+        U::Signed(i) => std::format!("integer `{}`", integer_text(i < 0, i.unsigned_abs())).into(),
         U::Float(x) => {
             // serde's `WithDecimalPoint`: a finite number without a point gets ".0"
             let mut t = std::format!("{}", Decimal(x));
             if x.is_finite() && !t.contains('.') {
                 t.push_str(".0");
             }
-            std::format!("floating point `{t}`")
+            std::format!("floating point `{t}`").into()
         }
         U::Char(c) => {
             let mut t = String::from("character `");
             t.push(c);
             t.push('`');
-            t
+            t.into()
         }
-        U::Str(s) => std::format!("string {}", Quoted(s)),
+        U::Str(s) => std::format!("string {}", Quoted(s)).into(),
         U::Bytes(_) => "byte array".into(),
         U::Unit => "unit value".into(),
         U::Option => "Option value".into(),
@@ -384,7 +384,7 @@ impl<'a> De<'a> {
         }
     }
 
-    fn describe(&self) -> String {
+    fn describe(&self) -> Cow<'static, str> {
         match &self.value {
             Value::Js(v) => describe(v),
             Value::Number(x) => number_text(*x),

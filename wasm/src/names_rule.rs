@@ -3,6 +3,7 @@
 
 use std::borrow::Cow;
 use std::string::String;
+use std::vec::Vec;
 
 /// Fields whose JavaScript name is not their camelCase: `(parent field, Rust field, JS name)`.
 /// The matrices of a linear-Gaussian transition and measurement model keep the papers' capitals.
@@ -30,19 +31,21 @@ pub fn camel_case(field: &str) -> Cow<'_, str> {
     if !field.contains('_') {
         return Cow::Borrowed(field);
     }
-    let mut out = String::with_capacity(field.len());
+    // Bytewise (ASCII changes only, so the text stays UTF-8): no character encoding code in
+    // every wasm module.
+    let mut out = Vec::with_capacity(field.len());
     let mut upper = false;
-    for c in field.chars() {
-        if c == '_' {
+    for &b in field.as_bytes() {
+        if b == b'_' {
             upper = !out.is_empty();
         } else if upper {
-            out.push(c.to_ascii_uppercase());
+            out.push(b.to_ascii_uppercase());
             upper = false;
         } else {
-            out.push(c);
+            out.push(b);
         }
     }
-    Cow::Owned(out)
+    Cow::Owned(String::from_utf8(out).unwrap_or_default())
 }
 
 /// The JavaScript name of `field` held in `parent`, as text (the exceptions, then
