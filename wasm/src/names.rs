@@ -65,22 +65,18 @@ pub fn variant_name(rust: &'static str) -> &'static str {
 pub fn render_path_in(parent: &str, rust_path: &str) -> String {
     let mut out = String::with_capacity(rust_path.len());
     let mut parent = parent;
-    let mut rest = rust_path;
-    loop {
-        let (segment, after) = crate::de::cut_at(rest, b'.');
+    // (split bytewise at ASCII '.': every part is UTF-8, and no character searcher)
+    for (i, segment) in rust_path.as_bytes().split(|&b| b == b'.').enumerate() {
+        if i > 0 {
+            out.push('.');
+        }
         // `name[3][1]`: the name, then its indices as they are
-        let (name, indices) = crate::de::cut_at(segment, b'[');
+        let (name, indices) = crate::de::cut_at(std::str::from_utf8(segment).unwrap_or(""), b'[');
         out.push_str(&rule::js_name_of(parent, name));
         out.push_str(indices);
         parent = name;
-        match after.strip_prefix('.') {
-            Some(next) => {
-                out.push('.');
-                rest = next;
-            }
-            None => return out,
-        }
     }
+    out
 }
 
 thread_local! {
