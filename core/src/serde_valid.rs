@@ -71,7 +71,7 @@ macro_rules! through_constructor {
                 let $r = <$repr>::deserialize(deserializer)?;
                 let built: Result<Self, Error> = $from;
                 $(let built = built.map_err(|e| below(e, $field));)?
-                built.map_err(|e| D::Error::custom(alloc::format!("{e}")))
+                built.map_err(D::Error::custom)
             }
         }
     };
@@ -875,12 +875,7 @@ impl<'de> Deserialize<'de> for Region {
             RegionRepr::Intersection(m) => Region::intersection(m, "intersection"),
             RegionRepr::Complement(r) => Ok(Region::complement(*r)),
         };
-        built.map_err(|e| {
-            D::Error::custom(alloc::format!(
-                "{}",
-                e.map_field(|what| alloc::format!(".{what}"))
-            ))
-        })
+        built.map_err(|e| D::Error::custom(e.map_field(|what| alloc::format!(".{what}"))))
     }
 }
 

@@ -322,6 +322,9 @@ pub fn unexpected_text(unexp: de::Unexpected<'_>) -> Cow<'_, str> {
     }
 }
 
+/// 2^53 − 1, JavaScript's `Number.MAX_SAFE_INTEGER`: the largest integer read or written.
+pub const MAX_SAFE_INTEGER: u64 = (1 << 53) - 1;
+
 /// An integer as `{}` writes it (`-12`), from its sign and magnitude: one small loop instead of
 /// the standard library's `u64` and `i64` `Display` (about 1.8 KB each in every module).
 pub fn integer_text(negative: bool, mut magnitude: u64) -> String {
@@ -962,11 +965,11 @@ impl<'de> de::Deserializer<'de> for De<'_> {
     // An integer: a finite number with no fraction within the type's range (integers beyond
     // ±(2^53 − 1) are not exact in a JS number, so u64 and i64 stop there).
     integers! {
-        deserialize_u64 => visit_u64 as u64 in 0.0, 9_007_199_254_740_991.0;
+        deserialize_u64 => visit_u64 as u64 in 0.0, MAX_SAFE_INTEGER as f64;
         deserialize_u32 => visit_u64 as u64 in 0.0, f64::from(u32::MAX);
         deserialize_u16 => visit_u64 as u64 in 0.0, f64::from(u16::MAX);
         deserialize_u8 => visit_u64 as u64 in 0.0, f64::from(u8::MAX);
-        deserialize_i64 => visit_i64 as i64 in -9_007_199_254_740_991.0, 9_007_199_254_740_991.0;
+        deserialize_i64 => visit_i64 as i64 in -(MAX_SAFE_INTEGER as f64), MAX_SAFE_INTEGER as f64;
         deserialize_i32 => visit_i64 as i64 in f64::from(i32::MIN), f64::from(i32::MAX);
         deserialize_i16 => visit_i64 as i64 in f64::from(i16::MIN), f64::from(i16::MAX);
         deserialize_i8 => visit_i64 as i64 in f64::from(i8::MIN), f64::from(i8::MAX);

@@ -17,6 +17,7 @@ use serde::ser::{self, Serialize, Serializer};
 // TypeScript declarations of the core's types under the same names.
 #[path = "names_rule.rs"]
 pub(crate) mod rule;
+use crate::de::MAX_SAFE_INTEGER;
 use rule::{EXCEPTIONS, camel_case};
 
 /// The JavaScript name of the Rust field `field` of a value held in the field `parent` (`""`
@@ -113,9 +114,6 @@ struct Rename<S> {
     inner: S,
     parent: &'static str,
 }
-
-/// 2^53 − 1, JavaScript's `Number.MAX_SAFE_INTEGER`.
-const MAX_SAFE_INTEGER: u64 = (1 << 53) - 1;
 
 /// serde-wasm-bindgen's error for an integer no JS number holds exactly.
 fn unrepresentable<E: ser::Error>(negative: bool, magnitude: u64) -> E {
