@@ -64,6 +64,16 @@
 //!   against σ;
 //! - every pair's exp in one fused loop with a select instead of packing those above the cut
 //!   (the same bits): 3–7 % slower.
+//!
+//! After the kernel's pairs went in blocks of 16 (2026-12-05, issue 29: each block's
+//! exponents counted against the cut, then zeroed, one exp loop, or packed; 26 % of the blocks
+//! have no pair above the cut, 50 % all, 24 % some; the same checksums), element-wise minimum
+//! of two runs, alternately with the binary before, load average 1.0: worst 118.9–120.1 ms,
+//! mean 40.2–40.4 ms (before: worst 132.7–139.7, mean 48.9–50.7); in Node (minimum of three
+//! runs of `benches/control_node.mjs table`) worst 163.3 ms, mean 50.3 ms (before: 200.1,
+//! 59.6). Ordering each cardinality group's particles by the range of their first object, so
+//! that a block holds neighbours, changed neither (native 122.6–129.1 / 41.4–42.9, Node
+//! 168.1 / 50.3): not kept.
 use fisst::control::{ControlOptions, ControlRun, Scheme, StepOutcome};
 use std::hint::black_box;
 use std::time::Instant;
