@@ -19,7 +19,9 @@
 // native thread). Since then every module is built with simd128 (.cargo/config.toml): the same
 // checksums, and at load average 2.4–2.8, alternately with the scalar package of the same
 // commit: worst 171–187 ms, mean 54.2–55.2 ms (scalar: worst 272–277 ms, mean 83.1–85.6 ms);
-// Node/native of the means 1.2×.
+// Node/native of the means 1.2×. Since the kernel's exp takes 2^{i/32} from a table (issue 29,
+// 2026-12-05; see `benches/src/bin/control_table.rs`): worst 154.6 ms, mean 44.8 ms (minimum of
+// three runs; the package before: 175.9, 51.3), checksums eaacc73d9ac9e257 / d0cbc2f3b0c64a8c.
 import * as os from 'node:os';
 import * as fisst from '../wasm/pkg/node.js';
 

@@ -74,6 +74,18 @@
 //! 59.6). Ordering each cardinality group's particles by the range of their first object, so
 //! that a block holds neighbours, changed neither (native 122.6–129.1 / 41.4–42.9, Node
 //! 168.1 / 50.3): not kept.
+//!
+//! After the kernel's exp became Tang's table method (`math::exp::exp_kernel_lanes`: 2^{i/32}
+//! from a table, a degree-6 polynomial, three passes over a block of 16 so that two of them
+//! vectorise; 31 operations instead of 56), 2026-12-05, load average 1.1, minimum of two runs
+//! each: worst 90.8 ms, mean 30.3 ms (the blocked polynomial exp just before: 128.6, 41.9);
+//! Node (`benches/control_node.mjs table`, minimum of three): worst 154.6 ms, mean 44.8 ms
+//! (before: 175.9, 51.3). Checksums: rewards and actions eaacc73d9ac9e257 (the rewards' last
+//! bits), actions d0cbc2f3b0c64a8c (unchanged); the same in Node. In Node the table loads are
+//! dear: with every load from entry 0 (wrong values) the table is 148.8 / 40.0 ms. Where
+//! seed 1's steps 1–4 go now (perf natively; `node --cpu-prof` in Node, by wasm function):
+//! the exps 31 % (Node 24 %), the exponents and packing 33 % (31 %), the subset sum
+//! (`BatchLikelihood::scaled_likelihoods`) 30 % (37 %).
 use fisst::control::{ControlOptions, ControlRun, Scheme, StepOutcome};
 use std::hint::black_box;
 use std::time::Instant;

@@ -15,7 +15,7 @@ use super::case_study::ControlOptions;
 use super::rewards::renyi_divergence;
 use super::sensor::RangeSensor;
 use crate::gaussian::normal;
-use crate::math::exp::exp_kernel;
+use crate::math::exp::exp_kernel_lanes;
 use crate::math::fns::{exp, ln, sqrt};
 use crate::math::special::LN_SQRT_2PI;
 use crate::smc::batch::BatchLikelihood;
@@ -191,7 +191,7 @@ const MAX_SCAN: usize = 16;
 /// ln of the normal's constant of every object) is computed once, per future scan what depends
 /// only on Z^j (λ c(z_j)); (20) is then evaluated in plain arithmetic from the factors
 /// p_D g(z_j | x) = e^{ln p_D + ln g} (one exp per pair, by the branch-free
-/// `math::exp::exp_kernel` so that the loop of them vectorises, none when it is exactly 0, no
+/// `math::exp::exp_kernel_lanes` so that the exps vectorise, none when it is exactly 0, no
 /// exp-then-ln, none below `BatchLikelihood::negligible_pair_bound`) and the divergence (15) from those plain
 /// values by [`renyi_plain`] (√ for α = 1/2, no exp or ln per particle). Whenever either
 /// declines (large sets, factors above 1, possible underflow) the scan is redone in log
@@ -200,8 +200,8 @@ const MAX_SCAN: usize = 16;
 ///
 /// Layout: the particles are grouped by cardinality n, and each group's objects are stored
 /// object-major ([o·P + q] for object o of the group's particle q), so that per scan the
-/// exponents of every pair of a group are one contiguous loop, the exps one tight loop over
-/// the pairs that need one (packed), and (20) one call of
+/// exponents of every pair of a group are one contiguous loop in blocks of [`BLOCK`], the exps
+/// a block at a time (the pairs of blocks where only some need one packed first), and (20) one call of
 /// `BatchLikelihood::scaled_likelihoods` of [`crate::smc`] per group. Every number is computed by
 /// the same operations as in the per-particle evaluation this replaced (up to 2caa890) but
 /// the exps (libm's there; the two within 1 ulp of each other): the rewards differ from
@@ -405,6 +405,14 @@ impl CardinalityGroups {
 /// counted against the cut together, and the block then takes one of three loops.
 const BLOCK: usize = 16;
 
+/// The exps of the `BLOCK` arguments in `x`, in place ([`exp_kernel_lanes`]; not inlined, so
+/// that its code is in the module once).
+#[inline(never)]
+fn exp_block(x: &mut [f64; BLOCK]) {
+    let a = *x;
+    exp_kernel_lanes(&a, x);
+}
+
 /// Packs the exponents `e` at or above `cut` into `args` and their places in the row
 /// (`offset` + their index) into `at`, without branches, and zeroes `out` (`args` and `at`
 /// have at least `e.len()` slots); returns how many were kept.
@@ -472,16 +480,21 @@ impl GroupScratch {
         for (row, (&zj, &cut)) in f.chunks_exact_mut(len.max(1)).zip(z.iter().zip(cutoff)) {
             // Block by block: the exponents and how many are at or above the cut, without
             // branches; then a block with none is zeroed, a block with all takes one exp loop
-            // (which vectorises: [`exp_kernel`] has no branches or calls), and a mixed block
+            // (which vectorises but for the table loads: [`exp_kernel_lanes`] has no branches or calls), and a mixed block
             // is zeroed and its exponents at or above the cut packed into `args` (their
             // places in `at`) for one exp loop over the row's packed arguments at the end. Measured over seeds 1–10,
             // steps 1–12: 26 % of the blocks have none, 50 % all, 24 % some.
-            let whole = len - len % BLOCK;
-            let (blocks, rest) = row.split_at_mut(whole);
-            let pairs = g.h.chunks_exact(BLOCK);
-            let pairs = pairs.zip(g.s.chunks_exact(BLOCK).zip(g.k.chunks_exact(BLOCK)));
+            let (blocks, rest) = row.as_chunks_mut::<BLOCK>();
+            let whole = len - rest.len();
+            let pairs = g.h.as_chunks::<BLOCK>().0.iter();
+            let pairs = pairs.zip(
+                g.s.as_chunks::<BLOCK>()
+                    .0
+                    .iter()
+                    .zip(g.k.as_chunks::<BLOCK>().0),
+            );
             let mut packed = 0;
-            for (b, (out, (h, (s, k)))) in blocks.chunks_exact_mut(BLOCK).zip(pairs).enumerate() {
+            for (b, (out, (h, (s, k)))) in blocks.iter_mut().zip(pairs).enumerate() {
                 let mut e = [0.0f64; BLOCK];
                 let mut above = 0usize;
                 for i in 0..BLOCK {
@@ -492,9 +505,8 @@ impl GroupScratch {
                 if above == 0 {
                     out.fill(0.0);
                 } else if above == BLOCK {
-                    for i in 0..BLOCK {
-                        out[i] = exp_kernel(e[i]);
-                    }
+                    *out = e;
+                    exp_block(out);
                 } else {
                     packed += pack(
                         &e,
@@ -523,9 +535,15 @@ impl GroupScratch {
                 &mut self.args[packed..],
                 &mut self.at[packed..],
             );
-            for a in &mut self.args[..packed] {
-                *a = exp_kernel(*a);
+            // The packed arguments a block at a time, the last block padded with zeros.
+            let (chunks, rest) = self.args[..packed].as_chunks_mut::<BLOCK>();
+            for a in chunks {
+                exp_block(a);
             }
+            let mut last = [0.0f64; BLOCK];
+            last[..rest.len()].copy_from_slice(rest);
+            exp_block(&mut last);
+            rest.copy_from_slice(&last[..rest.len()]);
             for (&i, &e) in self.at[..packed].iter().zip(&self.args[..packed]) {
                 row[i as usize] = e;
             }

@@ -1,98 +1,171 @@
 //! eˣ in plain arithmetic for the Rényi kernel of paper `004`
 //! ([`crate::control`]): the same bits natively and in wasm, and a loop of it vectorises.
 //!
-//! [`exp_kernel`] is Cody & Waite's range reduction (Cody & Waite 1980) with a Taylor
-//! polynomial, in the shape of fdlibm's and musl's `exp` but without their branches, table or
-//! division, the lower parts of the reduced argument and of the sums carried as in Tang 1989:
+//! [`exp_kernel_lanes`] is Tang's table-driven method (Tang 1989, in the shape of ARM's
+//! optimized-routines `exp`) with a table of 2^{i/32}, without branches, division or fused
+//! operations:
 //!
-//! 1. k = round(x·log₂e) by the magic addition t = x·log₂e + 1.5·2⁵² (round to nearest
-//!    in the addition; no float-to-integer conversion, which SSE2 has no vector form of);
-//! 2. r = x − k·ln2_hi − k·ln2_lo with fdlibm's two-part ln 2 (ln2_hi has 32 significant
-//!    bits, so k·ln2_hi and x − k·ln2_hi are exact for |k| < 2²¹), |r| ≤ ln2/2 (+ an ulp),
-//!    and the rounding error r_lo of the second subtraction recovered exactly (Fast2Sum);
-//! 3. eʳ = 1 + r + r²·q(r), q the Taylor polynomial 1/2! + r/3! + … + r¹²/14! by Estrin's
-//!    scheme (a dependency chain of depth 4 instead of Horner's 12: the loop is bound by
-//!    latency), truncation below r¹⁵/15! < 10⁻¹⁹ relatively; the sums r + r²q and
-//!    1 + (r + r²q) carried with their rounding errors (Fast2Sum), so that the roundings
-//!    left are the final one and those of r²q (a few ulps of a number below 0.07);
-//! 4. 2ᵏ built in the exponent bits: the low bits of t are k (two's complement), so
-//!    `(t.to_bits() << 52) + ((1023 + 64) << 52)` is 2^{k+64} for every k of the range, and
-//!    p·2^{k+64}·2⁻⁶⁴ is exact for a normal result and rounds once for a subnormal one.
+//! 1. k = round(x·32/ln 2) by the magic addition t = x·32/ln 2 + 1.5·2⁵² (round to nearest in
+//!    the addition; no float-to-integer conversion, which SSE2 has no vector form of), whose
+//!    low bits are k (two's complement);
+//! 2. r = x − k·ln2_hi/32 − k·ln2_lo/32 with fdlibm's two-part ln 2 (ln2_hi has 32 significant
+//!    bits, so k·ln2_hi/32 and x − k·ln2_hi/32 are exact for |k| < 2²¹), |r| ≤ ln2/64 (+ an ulp);
+//! 3. with i = k mod 32 and m = ⌊k/32⌋, 2^{i/32} = H_i·(1 + T_i) from the table (H_i rounded
+//!    to nearest, |T_i| < 2⁻⁵³), and eʳ − 1 ≈ r + r²(1/2! + r/3! + … + r⁴/6!) (truncation below
+//!    r⁷/7! < 4·10⁻¹⁸ relatively), so eˣ = 2ᵐ·H_i·(1 + (T_i + (eʳ − 1))) evaluated as
+//!    s + s·(T_i + r + r²p) with s = 2ᵐH_i: one rounding of the small sum, one of the last addition;
+//! 4. s = 2ᵐH_i built in the exponent bits: the table holds the bits of H_i less i·2⁴⁷, and
+//!    adding k·2⁴⁷ (t's bits shifted left by 47) adds m to the exponent; with 64 more in the
+//!    exponent, s·(…)·2⁻⁶⁴ is exact for a normal result and rounds once for a subnormal one.
 //!
-//! Only +, −, × and comparisons, no fused multiply-add (whether `mul_add` fuses differs
-//! between a native build without FMA and wasm), so every IEEE 754 implementation gives the
-//! same bits. Error: below 1 ulp of the exact value (faithful rounding, so at most 1 ulp from
-//! the correctly rounded value) on [−746, 0], measured against a double-double evaluation
-//! (the tests below): over 10⁸ stratified points at most 0.644 ulp for normal results, of
-//! which 0.73 % not correctly rounded, and 0.787 ulp for subnormal ones (one rounding of p·2ᵏ
-//! to the subnormal grid on top of p's error).
+//! The table is 64 constant words read by index (no arithmetic is chosen by the compiler, and
+//! the loads cannot round): every IEEE 754 implementation gives the same bits, natively and in
+//! wasm (the checksums of `benches/control_table` and `benches/control_node.mjs` agree). Only
+//! +, −, × and comparisons, no fused multiply-add (whether `mul_add` fuses differs between a
+//! native build without FMA and wasm). [`exp_kernel_lanes`] does `L` arguments in three
+//! passes (reduction, table loads, polynomial and scaling), so that the first and the last
+//! vectorise (two SSE2 or wasm SIMD lanes) though the loads cannot.
+//!
+//! Error: below 1 ulp of the exact value (faithful rounding, so at most 1 ulp from the
+//! correctly rounded value) on [−746, 0], measured against a double-double evaluation (the
+//! tests below): over 10⁶ stratified points at most 0.551 ulp for normal results, of which
+//! 0.34 % not correctly rounded, and 0.747 ulp for subnormal ones (one rounding of the result
+//! to the subnormal grid on top of its error). The polynomial method this replaced (Cody &
+//! Waite's reduction and a degree-14 Taylor polynomial, 56 operations against 31 here) had
+//! 0.605 ulp and 0.72 %.
 
 /// Below this eˣ is 0 after rounding (e^{−745.14} is half the smallest subnormal); arguments
-/// are clamped up to it, which also keeps 2^{k+64} a normal number.
+/// are clamped up to it, which also keeps 2^{m+64} a normal number.
 const MIN_ARG: f64 = -746.0;
-/// log₂ e.
-const LOG2_E: f64 = core::f64::consts::LOG2_E;
 /// 1.5·2⁵²: adding it rounds a number of magnitude below 2⁵¹ to an integer, kept in the low
 /// bits of the sum.
 const MAGIC: f64 = 6_755_399_441_055_744.0;
-/// ln 2 rounded to 32 significant bits (fdlibm's `ln2HI`): k·LN2_HI is exact for |k| < 2²¹.
-const LN2_HI: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000);
-/// ln 2 − LN2_HI (fdlibm's `ln2LO`).
-const LN2_LO: f64 = f64::from_bits(0x3dea_39ef_3579_3c76);
+/// 32/ln 2.
+const INV_LN2_32: f64 = 46.166_241_308_446_83;
+/// ln 2 rounded to 32 significant bits (fdlibm's `ln2HI`), over 32: k·LN2_HI_32 is exact for
+/// |k| < 2²¹.
+const LN2_HI_32: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000) / 32.0;
+/// (ln 2 − fdlibm's `ln2HI`)/32 (fdlibm's `ln2LO` over 32).
+const LN2_LO_32: f64 = f64::from_bits(0x3dea_39ef_3579_3c76) / 32.0;
 /// 2⁻⁶⁴, undoing the offset of the exponent built in step 4.
 const TWO_M64: f64 = f64::from_bits((1023 - 64) << 52);
-/// The coefficients 1/n! of the Taylor polynomial, n = 2 … 14, each rounded to nearest.
-const INV_FACT: [f64; 13] = [
-    1.0 / 2.0,
-    1.0 / 6.0,
-    1.0 / 24.0,
-    1.0 / 120.0,
-    1.0 / 720.0,
-    1.0 / 5_040.0,
-    1.0 / 40_320.0,
-    1.0 / 362_880.0,
-    1.0 / 3_628_800.0,
-    1.0 / 39_916_800.0,
-    1.0 / 479_001_600.0,
-    1.0 / 6_227_020_800.0,
-    1.0 / 87_178_291_200.0,
+/// The coefficients 1/n! of the polynomial, n = 2 … 6, each rounded to nearest.
+const INV_FACT: [f64; 5] = [1.0 / 2.0, 1.0 / 6.0, 1.0 / 24.0, 1.0 / 120.0, 1.0 / 720.0];
+
+/// 2^{i/32} = H_i·(1 + T_i) for i = 0 … 31: entry 2i the bits of T_i, entry 2i + 1 the bits
+/// of H_i less i·2⁴⁷ (step 4 of the [module](self) docs). Computed with 60-digit decimal
+/// arithmetic (H_i the double nearest 2^{i/32}, T_i = (2^{i/32} − H_i)/H_i rounded to nearest);
+/// the entries for even i are those of ARM's 128-entry table at 4i.
+static TABLE: [u64; 64] = [
+    0x0000000000000000,
+    0x3ff0000000000000,
+    0x3c8cd2523567f613,
+    0x3fefd9b0d3158574,
+    0x3c979aa65d837b6d,
+    0x3fefb5586cf9890f,
+    0xbc9556522a2fbd0e,
+    0x3fef9301d0125b51,
+    0xbc801b15eaa59348,
+    0x3fef72b83c7d517b,
+    0x3c9aecf73e3a2f60,
+    0x3fef54873168b9aa,
+    0x3c968efde3a8a894,
+    0x3fef387a6e756238,
+    0x3c82f7e16d09ab31,
+    0x3fef1e9df51fdee1,
+    0x3c834d754db0abb6,
+    0x3fef06fe0a31b715,
+    0xbc924aedcc4b5068,
+    0x3feef1a7373aa9cb,
+    0x3c859f48a72a4c6d,
+    0x3feedea64c123422,
+    0x3c4363ed60c2ac11,
+    0x3feece086061892d,
+    0x3c7690cebb7aafb0,
+    0x3feebfdad5362a27,
+    0xbc78dec6bd0f385f,
+    0x3feeb42b569d4f82,
+    0x3c9063e1e21c5409,
+    0x3feeab07dd485429,
+    0xbc8c33c53bef4da8,
+    0x3feea47eb03a5585,
+    0xbc93b3efbf5e2228,
+    0x3feea09e667f3bcd,
+    0xbc781f647e5a3ecf,
+    0x3fee9f75e8ec5f74,
+    0xbc7b32dcb94da51d,
+    0x3feea11473eb0187,
+    0xbc9369b6f13b3734,
+    0x3feea589994cce13,
+    0x3c8db72fc1f0eab4,
+    0x3feeace5422aa0db,
+    0xbc5da9b88b6c1e29,
+    0x3feeb737b0cdc5e5,
+    0x3c71affc2b91ce27,
+    0x3feec49182a3f090,
+    0xbc91bbd1d3bcbb15,
+    0x3feed503b23e255d,
+    0x3c8c1a7792cb3387,
+    0x3feee89f995ad3ad,
+    0xbc68d6f438ad9334,
+    0x3feeff76f2fb5e47,
+    0x3c736eae30af0cb3,
+    0x3fef199bdd85529c,
+    0x3c676b2c6c921968,
+    0x3fef3720dcef9069,
+    0x3c74a385a63d07a7,
+    0x3fef5818dcfba487,
+    0xbc82d52107b43e1f,
+    0x3fef7c97337b9b5f,
+    0xbc8ff7128fd391f0,
+    0x3fefa4afa2a490da,
+    0x3c8a64a931d185ee,
+    0x3fefd0765b6e4540,
 ];
 
-/// eˣ for x ≤ 0 (the range of the Rényi kernel's pair factors), within 1 ulp of the exact
-/// value, without branches, tables or fused operations: see the [module](self) for the
-/// method. Arguments below −746 give 0, as does the exact value rounded; x > 0 is outside the
-/// contract (the formula holds up to about 664, but only x ≤ 0 is tested).
+/// eˣ for each of the `L` arguments x ≤ 0 (the range of the Rényi kernel's pair factors) into
+/// `out`, each within 1 ulp of the exact value, without branches or fused operations: see the
+/// [module](self) for the method. Arguments below −746 give 0, as does the exact value
+/// rounded; x > 0 is outside the contract (the formula holds up to about 709, but only x ≤ 0
+/// is tested). Each lane's bits are those of the same argument in one lane.
 #[inline(always)]
-pub(crate) fn exp_kernel(x: f64) -> f64 {
-    let x = if x < MIN_ARG { MIN_ARG } else { x };
-    // 1. k = round(x·log₂e).
-    let t = x * LOG2_E + MAGIC;
-    let kd = t - MAGIC;
-    // 2. r + r_lo = x − k·ln 2.
-    let hi = x - kd * LN2_HI;
-    let lo = kd * LN2_LO;
-    let r = hi - lo;
-    let r_lo = (hi - r) - lo;
-    // 3. eʳ = 1 + r + r²·q(r), q by Estrin's scheme (depth 4 instead of Horner's 12), the
-    //    two sums with their rounding errors (Fast2Sum: |r| ≥ r²q and 1 > |y|).
+pub(crate) fn exp_kernel_lanes<const L: usize>(x: &[f64; L], out: &mut [f64; L]) {
+    // 1.–2. k and r.
+    let mut r = [0.0f64; L];
+    let mut t = [0u64; L];
+    for l in 0..L {
+        let x = if x[l] < MIN_ARG { MIN_ARG } else { x[l] };
+        let tl = x * INV_LN2_32 + MAGIC;
+        let kd = tl - MAGIC;
+        t[l] = tl.to_bits();
+        r[l] = (x - kd * LN2_HI_32) - kd * LN2_LO_32;
+    }
+    // 3. The table, by k mod 32.
+    let mut tail = [0.0f64; L];
+    let mut h = [0u64; L];
+    for l in 0..L {
+        let i = (t[l] & 31) as usize * 2;
+        tail[l] = f64::from_bits(TABLE[i]);
+        h[l] = TABLE[i + 1];
+    }
+    // 3.–4. The polynomial and s = 2^{m+64}·H_i.
     let c = &INV_FACT;
-    let r2 = r * r;
-    let r4 = r2 * r2;
-    let r8 = r4 * r4;
-    let q01 = (c[0] + c[1] * r) + (c[2] + c[3] * r) * r2;
-    let q23 = (c[4] + c[5] * r) + (c[6] + c[7] * r) * r2;
-    let q45 = (c[8] + c[9] * r) + (c[10] + c[11] * r) * r2;
-    let q = (q01 + q23 * r4) + (q45 + c[12] * r4) * r8;
-    let tail = r2 * q;
-    let y = r + tail;
-    let y_err = tail - (y - r);
-    let s = 1.0 + y;
-    let s_err = (1.0 - s) + y;
-    // d/dr eʳ = eʳ ≈ 1 + r for the correction r_lo (|r_lo| ≤ 2⁻⁵⁵).
-    let p = s + (s_err + (y_err + r_lo * (1.0 + r)));
-    // 4. p·2ᵏ through 2^{k+64}.
-    let scale = f64::from_bits((t.to_bits() << 52).wrapping_add((1023 + 64) << 52));
-    (p * scale) * TWO_M64
+    for l in 0..L {
+        let r = r[l];
+        let r2 = r * r;
+        let p = (c[0] + c[1] * r) + r2 * ((c[2] + c[3] * r) + r2 * c[4]);
+        let small = tail[l] + (r + r2 * p);
+        let s = f64::from_bits(h[l].wrapping_add(t[l] << 47).wrapping_add(64 << 52));
+        out[l] = (s + s * small) * TWO_M64;
+    }
+}
+
+/// eˣ for one x ≤ 0: [`exp_kernel_lanes`] of one lane (the tests' entry).
+#[cfg(test)]
+pub(crate) fn exp_kernel(x: f64) -> f64 {
+    let mut out = [0.0];
+    exp_kernel_lanes(&[x], &mut out);
+    out[0]
 }
 
 #[cfg(test)]
@@ -258,8 +331,8 @@ mod tests {
     }
 
     /// 10⁶ stratified points of [−746, 0]: below 1 ulp everywhere, below 0.65 ulp for normal
-    /// results, and all but about 1 % of those correctly rounded (measured: 0.605 ulp,
-    /// 7229 points above ½ ulp; subnormal results 0.778 ulp). `--nocapture` prints the
+    /// results, and all but about 1 % of those correctly rounded (measured: 0.551 ulp,
+    /// 3410 points above ½ ulp; subnormal results 0.747 ulp). `--nocapture` prints the
     /// figures.
     #[test]
     fn exp_kernel_within_one_ulp() {
