@@ -18,7 +18,7 @@
 //!    adding k·2⁴⁷ (t's bits shifted left by 47) adds m to the exponent; with 64 more in the
 //!    exponent, s·(…)·2⁻⁶⁴ is exact for a normal result and rounds once for a subnormal one.
 //!
-//! The table is 64 constant words read by index (no arithmetic is chosen by the compiler, and
+//! The table is 32 pairs of constant words read by index (no arithmetic is chosen by the compiler, and
 //! the loads cannot round): every IEEE 754 implementation gives the same bits, natively and in
 //! wasm (the checksums of `benches/control_table` and `benches/control_node.mjs` agree). Only
 //! +, −, × and comparisons, no fused multiply-add (whether `mul_add` fuses differs between a
@@ -52,75 +52,43 @@ const TWO_M64: f64 = f64::from_bits((1023 - 64) << 52);
 /// The coefficients 1/n! of the polynomial, n = 2 … 6, each rounded to nearest.
 const INV_FACT: [f64; 5] = [1.0 / 2.0, 1.0 / 6.0, 1.0 / 24.0, 1.0 / 120.0, 1.0 / 720.0];
 
-/// 2^{i/32} = H_i·(1 + T_i) for i = 0 … 31: entry 2i the bits of T_i, entry 2i + 1 the bits
-/// of H_i less i·2⁴⁷ (step 4 of the [module](self) docs). Computed with 60-digit decimal
+/// 2^{i/32} = H_i·(1 + T_i) for i = 0 … 31: entry i the bits of T_i and those of H_i less
+/// i·2⁴⁷ (one 16-byte load per lane in wasm) (step 4 of the [module](self) docs). Computed with 60-digit decimal
 /// arithmetic (H_i the double nearest 2^{i/32}, T_i = (2^{i/32} − H_i)/H_i rounded to nearest);
 /// the entries for even i are those of ARM's 128-entry table at 4i.
-static TABLE: [u64; 64] = [
-    0x0000000000000000,
-    0x3ff0000000000000,
-    0x3c8cd2523567f613,
-    0x3fefd9b0d3158574,
-    0x3c979aa65d837b6d,
-    0x3fefb5586cf9890f,
-    0xbc9556522a2fbd0e,
-    0x3fef9301d0125b51,
-    0xbc801b15eaa59348,
-    0x3fef72b83c7d517b,
-    0x3c9aecf73e3a2f60,
-    0x3fef54873168b9aa,
-    0x3c968efde3a8a894,
-    0x3fef387a6e756238,
-    0x3c82f7e16d09ab31,
-    0x3fef1e9df51fdee1,
-    0x3c834d754db0abb6,
-    0x3fef06fe0a31b715,
-    0xbc924aedcc4b5068,
-    0x3feef1a7373aa9cb,
-    0x3c859f48a72a4c6d,
-    0x3feedea64c123422,
-    0x3c4363ed60c2ac11,
-    0x3feece086061892d,
-    0x3c7690cebb7aafb0,
-    0x3feebfdad5362a27,
-    0xbc78dec6bd0f385f,
-    0x3feeb42b569d4f82,
-    0x3c9063e1e21c5409,
-    0x3feeab07dd485429,
-    0xbc8c33c53bef4da8,
-    0x3feea47eb03a5585,
-    0xbc93b3efbf5e2228,
-    0x3feea09e667f3bcd,
-    0xbc781f647e5a3ecf,
-    0x3fee9f75e8ec5f74,
-    0xbc7b32dcb94da51d,
-    0x3feea11473eb0187,
-    0xbc9369b6f13b3734,
-    0x3feea589994cce13,
-    0x3c8db72fc1f0eab4,
-    0x3feeace5422aa0db,
-    0xbc5da9b88b6c1e29,
-    0x3feeb737b0cdc5e5,
-    0x3c71affc2b91ce27,
-    0x3feec49182a3f090,
-    0xbc91bbd1d3bcbb15,
-    0x3feed503b23e255d,
-    0x3c8c1a7792cb3387,
-    0x3feee89f995ad3ad,
-    0xbc68d6f438ad9334,
-    0x3feeff76f2fb5e47,
-    0x3c736eae30af0cb3,
-    0x3fef199bdd85529c,
-    0x3c676b2c6c921968,
-    0x3fef3720dcef9069,
-    0x3c74a385a63d07a7,
-    0x3fef5818dcfba487,
-    0xbc82d52107b43e1f,
-    0x3fef7c97337b9b5f,
-    0xbc8ff7128fd391f0,
-    0x3fefa4afa2a490da,
-    0x3c8a64a931d185ee,
-    0x3fefd0765b6e4540,
+static TABLE: [[u64; 2]; 32] = [
+    [0x0000000000000000, 0x3ff0000000000000],
+    [0x3c8cd2523567f613, 0x3fefd9b0d3158574],
+    [0x3c979aa65d837b6d, 0x3fefb5586cf9890f],
+    [0xbc9556522a2fbd0e, 0x3fef9301d0125b51],
+    [0xbc801b15eaa59348, 0x3fef72b83c7d517b],
+    [0x3c9aecf73e3a2f60, 0x3fef54873168b9aa],
+    [0x3c968efde3a8a894, 0x3fef387a6e756238],
+    [0x3c82f7e16d09ab31, 0x3fef1e9df51fdee1],
+    [0x3c834d754db0abb6, 0x3fef06fe0a31b715],
+    [0xbc924aedcc4b5068, 0x3feef1a7373aa9cb],
+    [0x3c859f48a72a4c6d, 0x3feedea64c123422],
+    [0x3c4363ed60c2ac11, 0x3feece086061892d],
+    [0x3c7690cebb7aafb0, 0x3feebfdad5362a27],
+    [0xbc78dec6bd0f385f, 0x3feeb42b569d4f82],
+    [0x3c9063e1e21c5409, 0x3feeab07dd485429],
+    [0xbc8c33c53bef4da8, 0x3feea47eb03a5585],
+    [0xbc93b3efbf5e2228, 0x3feea09e667f3bcd],
+    [0xbc781f647e5a3ecf, 0x3fee9f75e8ec5f74],
+    [0xbc7b32dcb94da51d, 0x3feea11473eb0187],
+    [0xbc9369b6f13b3734, 0x3feea589994cce13],
+    [0x3c8db72fc1f0eab4, 0x3feeace5422aa0db],
+    [0xbc5da9b88b6c1e29, 0x3feeb737b0cdc5e5],
+    [0x3c71affc2b91ce27, 0x3feec49182a3f090],
+    [0xbc91bbd1d3bcbb15, 0x3feed503b23e255d],
+    [0x3c8c1a7792cb3387, 0x3feee89f995ad3ad],
+    [0xbc68d6f438ad9334, 0x3feeff76f2fb5e47],
+    [0x3c736eae30af0cb3, 0x3fef199bdd85529c],
+    [0x3c676b2c6c921968, 0x3fef3720dcef9069],
+    [0x3c74a385a63d07a7, 0x3fef5818dcfba487],
+    [0xbc82d52107b43e1f, 0x3fef7c97337b9b5f],
+    [0xbc8ff7128fd391f0, 0x3fefa4afa2a490da],
+    [0x3c8a64a931d185ee, 0x3fefd0765b6e4540],
 ];
 
 /// eˣ for each of the `L` arguments x ≤ 0 (the range of the Rényi kernel's pair factors) into
@@ -144,9 +112,9 @@ pub(crate) fn exp_kernel_lanes<const L: usize>(x: &[f64; L], out: &mut [f64; L])
     let mut tail = [0.0f64; L];
     let mut h = [0u64; L];
     for l in 0..L {
-        let i = (t[l] & 31) as usize * 2;
-        tail[l] = f64::from_bits(TABLE[i]);
-        h[l] = TABLE[i + 1];
+        let [ti, hi] = TABLE[(t[l] & 31) as usize];
+        tail[l] = f64::from_bits(ti);
+        h[l] = hi;
     }
     // 3.–4. The polynomial and s = 2^{m+64}·H_i.
     let c = &INV_FACT;
