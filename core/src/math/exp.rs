@@ -18,9 +18,9 @@
 //!    adding k·2⁴⁷ (t's bits shifted left by 47) adds m to the exponent; with 64 more in the
 //!    exponent, s·(…)·2⁻⁶⁴ is exact for a normal result and rounds once for a subnormal one.
 //!
-//! The table is 32 pairs of constant words read by index (no arithmetic is chosen by the compiler, and
-//! the loads cannot round): every IEEE 754 implementation gives the same bits, natively and in
-//! wasm (the checksums of `benches/control_table` and `benches/control_node.mjs` agree). Only
+//! The table is 32 pairs of constant words read by index (no arithmetic is chosen by the
+//! compiler, and the loads cannot round): every IEEE 754 implementation gives the same bits,
+//! natively and in wasm (the checksums of `benches/control_table` and `benches/control_node.mjs` agree). Only
 //! +, −, × and comparisons, no fused multiply-add (whether `mul_add` fuses differs between a
 //! native build without FMA and wasm). [`exp_kernel_lanes`] does `L` arguments in three
 //! passes (reduction, table loads, polynomial and scaling), so that the first and the last
