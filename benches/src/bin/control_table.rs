@@ -86,6 +86,16 @@
 //! seed 1's steps 1–4 go now (perf natively; `node --cpu-prof` in Node, by wasm function):
 //! the exps 31 % (Node 24 %), the exponents and packing 33 % (31 %), the subset sum
 //! (`BatchLikelihood::scaled_likelihoods`) 30 % (37 %).
+//!
+//! After the table's pairs became one 16-byte entry and the fixed kernels of the subset sum
+//! folded their last row into the final sum (`smc/fixed.rs`, with the objects as the columns:
+//! Σ_S miss^{n−|S|−1}·dp[S]·(κ·miss + Σ_{c∉S} f_c) instead of a row of subset updates and a
+//! product per subset), 2026-12-05, with a fresh-clone `make test` running beside it (load
+//! average 3.3–3.5), alternately with the binary and package before: seed 1's steps 1–6 407
+//! against 435 ms of CPU time natively; Node, minimum of two runs each: worst 135.3–139.0 ms,
+//! mean 40.7–42.9 ms (before: 156.4–162.2, 42.7–46.8). Checksums b4bf0a7f0c9297b2 (rewards'
+//! last bits; 14 of the 68 pinned rewards of `control/tests.rs` moved, by at most 7.6·10⁻¹⁶
+//! relatively) and d0cbc2f3b0c64a8c (actions unchanged), the same in Node.
 use fisst::control::{ControlOptions, ControlRun, Scheme, StepOutcome};
 use std::hint::black_box;
 use std::time::Instant;

@@ -259,16 +259,19 @@ mod tests {
         assert!(ln_likelihood_small(&model, 1, &[0.5], &[0.5]).is_some());
     }
 
-    /// The unrolled kernels of the batch give the bits of the table-driven programme, in both
+    /// The unrolled kernels of the batch give the sums of the table-driven programme, in both
     /// orientations, for every set of a batch: those of the lanes ([`sum_fixed_lanes`]) and
     /// those after the last whole group of lanes, with exact zeros among the factors (as the
-    /// kernel's dropped pairs).
+    /// kernel's dropped pairs). Bit for bit with more objects than measurements (the same
+    /// operations in the same order); otherwise within 10⁻¹⁵ relatively, since the kernels
+    /// fold the last row into the final sum there (measured: at most 3.0·10⁻¹⁶).
     #[test]
-    fn eq20_fixed_kernels_match_the_tables_bit_for_bit() {
+    fn eq20_fixed_kernels_match_the_tables() {
         let mut rng = seeded(77);
         let model = MultiObjectLikelihood::new(0.9, 0.8).unwrap();
         let mut batch = BatchLikelihood::new(&model);
         let count = 4 * LANES + 3;
+        let mut worst = 0.0f64;
         for n in 0..=SMALL_SIDE {
             for m in 0..=SMALL_SIDE {
                 let pairs: Vec<Vec<f64>> = (0..count)
@@ -303,10 +306,19 @@ mod tests {
                             .collect();
                         sum_matchings_small(m, n, &t, &clutter, &miss[..n])
                     };
-                    assert_eq!(fixed.to_bits(), table.unwrap().to_bits(), "n={n} m={m}");
+                    let table = table.unwrap();
+                    if n > m || m == 0 {
+                        assert_eq!(fixed.to_bits(), table.to_bits(), "n={n} m={m}");
+                    } else {
+                        let rel = (fixed - table).abs() / table;
+                        worst = worst.max(rel);
+                        assert!(rel <= 1e-15, "n={n} m={m}: {fixed} against {table}");
+                    }
                 }
             }
         }
+        std::eprintln!("folded kernels: at most {worst:e} relatively from the tables");
+        assert!(worst > 0.0, "the folded kernels were not exercised");
     }
 
     /// The inequality behind `negligible_pair_bound`: pair factors f_ij ≤ 2^{−b} r_i c_j set

@@ -96,49 +96,7 @@ pub(super) fn sum_fixed<const N: usize, const M: usize>(
     clutter: &[f64],
     factor: &impl Fn(usize, usize) -> f64,
 ) -> f64 {
-    let objects_are_rows = N > M;
-    let (rows, cols) = if objects_are_rows { (N, M) } else { (M, N) };
-    let states = 1usize << cols;
-    let clutter = &clutter[..M];
-    let mut dp = [0.0f64; 1 << SMALL_SIDE];
-    dp[0] = 1.0;
-    for r in 0..rows {
-        let rm = if objects_are_rows { miss } else { clutter[r] };
-        let mut row = [0.0f64; SMALL_SIDE];
-        for (c, f) in row.iter_mut().enumerate().take(cols) {
-            *f = if objects_are_rows {
-                factor(r, c)
-            } else {
-                factor(c, r)
-            };
-        }
-        for s in (1..states).rev() {
-            // See `SUBSET_SIZE`: skipped states stay 0, a started sum needs no 0 · rm.
-            let size = SUBSET_SIZE[s] as usize;
-            if size > r + 1 {
-                continue;
-            }
-            let mut v = if size == r + 1 { 0.0 } else { dp[s] * rm };
-            for (c, &f) in row.iter().enumerate().take(cols) {
-                if s & (1 << c) != 0 {
-                    v += dp[s & !(1 << c)] * f;
-                }
-            }
-            dp[s] = v;
-        }
-        dp[0] *= rm;
-    }
-    let mut total = 0.0;
-    for (s, &d) in dp.iter().enumerate().take(states) {
-        let mut f = d;
-        for c in 0..cols {
-            if s & (1 << c) == 0 {
-                f *= if objects_are_rows { clutter[c] } else { miss };
-            }
-        }
-        total += f;
-    }
-    total
+    sum_fixed_lanes::<N, M, 1>(miss, clutter, &|o, j| [factor(o, j)])[0]
 }
 
 /// [`sum_fixed`] for `L` sets of N objects at once (the lanes, e.g. consecutive particles of
@@ -162,10 +120,13 @@ pub(super) fn sum_fixed_lanes<const N: usize, const M: usize, const L: usize>(
     let clutter = &clutter[..M];
     let mut dp = [[0.0f64; L]; 1 << SMALL_SIDE];
     dp[0] = [1.0; L];
+    // With the objects as the columns (one miss factor for all), the last row is folded into
+    // the final sum (see below).
+    let fold_last = !objects_are_rows && rows > 0;
     // Rows and subsets written out (`unrolled!`), so that every test on them below is
     // decided at compile time and the table is straight-line vector code.
     unrolled!(r in [0 1 2 3] {
-        if r < rows {
+        if r < rows && !(fold_last && r + 1 == rows) {
             let rm = if objects_are_rows { miss } else { clutter[r] };
             let mut row = [[0.0f64; L]; SMALL_SIDE];
             for (c, f) in row.iter_mut().enumerate().take(cols) {
@@ -201,6 +162,52 @@ pub(super) fn sum_fixed_lanes<const N: usize, const M: usize, const L: usize>(
             }
         }
     });
+    if fold_last {
+        // The last row r = rows − 1 (clutter factor κ, pair factors f_c) and the final sum
+        // Σ_S dp'[S]·miss^{cols − |S|} in one: substituting dp'[S] = dp[S]·κ + Σ_{c∈S}
+        // dp[S∖c]·f_c, the sum is dp[full]·κ + Σ_{|S| < cols} miss^{cols − |S| − 1}·dp[S]·
+        // (κ·miss + Σ_{c∉S} f_c), accumulated by |S| (after r rows only |S| ≤ r is non-zero).
+        let r = rows - 1;
+        let rm = clutter[r];
+        let mut row = [[0.0f64; L]; SMALL_SIDE];
+        for (c, f) in row.iter_mut().enumerate().take(cols) {
+            *f = factor(c, r);
+        }
+        let base = rm * miss;
+        let mut full = [0.0f64; L];
+        let mut by_size = [[0.0f64; L]; SMALL_SIDE];
+        unrolled!(s in [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15] {
+            let size = SUBSET_SIZE[s] as usize;
+            if s < states && size <= r {
+                if size == cols {
+                    for l in 0..L {
+                        full[l] = dp[s][l] * rm;
+                    }
+                } else {
+                    let mut w = [base; L];
+                    for (c, f) in row.iter().enumerate().take(cols) {
+                        if s & (1 << c) == 0 {
+                            for l in 0..L {
+                                w[l] += f[l];
+                            }
+                        }
+                    }
+                    for l in 0..L {
+                        by_size[size][l] += dp[s][l] * w[l];
+                    }
+                }
+            }
+        });
+        let mut total = full;
+        let mut weight = 1.0;
+        for k in (0..cols).rev() {
+            for l in 0..L {
+                total[l] += by_size[k][l] * weight;
+            }
+            weight *= miss;
+        }
+        return total;
+    }
     let mut total = [0.0; L];
     unrolled!(s in [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15] {
         if s < states {
