@@ -22,6 +22,8 @@
 // Node/native of the means 1.2×. Since the kernel's exp takes 2^{i/32} from a table (issue 29,
 // 2026-12-05; see `benches/src/bin/control_table.rs`): worst 154.6 ms, mean 44.8 ms (minimum of
 // three runs; the package before: 175.9, 51.3), checksums eaacc73d9ac9e257 / d0cbc2f3b0c64a8c.
+// With the folded subset sum too (c4b4953, idle, minimum of three): worst 142.9 ms, mean 42.5 ms
+// (7dc61c3's package, the same runs: 195.6, 61.5), checksums b4bf0a7f0c9297b2 / d0cbc2f3b0c64a8c.
 import * as os from 'node:os';
 import * as fisst from '../wasm/pkg/node.js';
 

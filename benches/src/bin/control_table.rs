@@ -96,6 +96,13 @@
 //! mean 40.7–42.9 ms (before: 156.4–162.2, 42.7–46.8). Checksums b4bf0a7f0c9297b2 (rewards'
 //! last bits; 14 of the 68 pinned rewards of `control/tests.rs` moved, by at most 7.6·10⁻¹⁶
 //! relatively) and d0cbc2f3b0c64a8c (actions unchanged), the same in Node.
+//!
+//! The session's end (2026-12-05, c4b4953 against 7dc61c3, idle machine, load average
+//! 0.6–1.2; element-wise minimum of two native and three Node runs): one native thread worst
+//! 139.5 → 90.2 ms, mean 49.9 → 28.9 ms; Node worst 195.6 → 142.9 ms, mean 61.5 → 42.5 ms;
+//! Node/native 1.58 (worst), 1.47 (mean). In Node only seed 1's steps 4–6 (142.9, 115.4,
+//! 121.6 ms) are above 100 ms. The worst step (seed 1, step 4) is 1.53e9 instructions
+//! natively (callgrind: `control_table 1 1 4` less `control_table 1 1 3`), 2.11e9 before.
 use fisst::control::{ControlOptions, ControlRun, Scheme, StepOutcome};
 use std::hint::black_box;
 use std::time::Instant;
