@@ -9,30 +9,35 @@
 //!    the addition; no float-to-integer conversion, which SSE2 has no vector form of), whose
 //!    low bits are k (two's complement);
 //! 2. r = x − k·ln2_hi/32 − k·ln2_lo/32 with fdlibm's two-part ln 2 (ln2_hi has 32 significant
-//!    bits, so k·ln2_hi/32 and x − k·ln2_hi/32 are exact for |k| < 2²¹), |r| ≤ ln2/64 (+ an ulp);
+//!    bits, so k·ln2_hi/32 and x − k·ln2_hi/32 are exact for |k| < 2²¹), |r| ≤ ln2/64 plus
+//!    about 10⁻¹³ (the rounding of x·32/ln 2);
 //! 3. with i = k mod 32 and m = ⌊k/32⌋, 2^{i/32} = H_i·(1 + T_i) from the table (H_i rounded
 //!    to nearest, |T_i| < 2⁻⁵³), and eʳ − 1 ≈ r + r²(1/2! + r/3! + … + r⁴/6!) (truncation below
-//!    r⁷/7! < 4·10⁻¹⁸ relatively), so eˣ = 2ᵐ·H_i·(1 + (T_i + (eʳ − 1))) evaluated as
-//!    s + s·(T_i + r + r²p) with s = 2ᵐH_i: one rounding of the small sum, one of the last addition;
+//!    r⁷/7! < 4·10⁻¹⁸ relatively), so eˣ ≈ 2ᵐ·H_i·(1 + (T_i + (eʳ − 1))) (the dropped
+//!    T_i·(eʳ − 1) is below 2⁻⁵⁹), evaluated as s + s·(T_i + r + r²p) with s = 2ᵐH_i: the
+//!    roundings of the small sum (a few ulps of a number below 0.012) and of s·(…), then one
+//!    of the last addition;
 //! 4. s = 2ᵐH_i built in the exponent bits: the table holds the bits of H_i less i·2⁴⁷, and
 //!    adding k·2⁴⁷ (t's bits shifted left by 47) adds m to the exponent; with 64 more in the
 //!    exponent, s·(…)·2⁻⁶⁴ is exact for a normal result and rounds once for a subnormal one.
 //!
 //! The table is 32 pairs of constant words read by index (no arithmetic is chosen by the
 //! compiler, and the loads cannot round): every IEEE 754 implementation gives the same bits,
-//! natively and in wasm (the checksums of `benches/control_table` and `benches/control_node.mjs` agree). Only
-//! +, −, × and comparisons, no fused multiply-add (whether `mul_add` fuses differs between a
-//! native build without FMA and wasm). [`exp_kernel_lanes`] does `L` arguments in three
-//! passes (reduction, table loads, polynomial and scaling), so that the first and the last
-//! vectorise (two SSE2 or wasm SIMD lanes) though the loads cannot.
+//! natively and in wasm (the checksums of `benches/control_table` and
+//! `benches/control_node.mjs` agree). Only +, −, × and comparisons, no fused multiply-add
+//! (whether `mul_add` fuses differs between a native build without FMA and wasm).
+//! [`exp_kernel_lanes`] does `L` arguments in three passes (reduction, table loads,
+//! polynomial and scaling), so that the first and the last vectorise (two SSE2 or wasm SIMD
+//! lanes) though the loads cannot.
 //!
 //! Error: below 1 ulp of the exact value (faithful rounding, so at most 1 ulp from the
 //! correctly rounded value) on [−746, 0], measured against a double-double evaluation (the
 //! tests below): over 10⁸ stratified points at most 0.560 ulp for normal results, of which
 //! 0.33 % not correctly rounded, and 0.759 ulp for subnormal ones (one rounding of the result
-//! to the subnormal grid on top of its error); over the 10⁶ of `make test` 0.551 and 0.747. The polynomial method this replaced (Cody &
-//! Waite's reduction and a degree-14 Taylor polynomial, 56 operations against 31 here) had
-//! 0.605 ulp and 0.72 %.
+//! to the subnormal grid on top of its error); over the 10⁶ of `make test` 0.551 and 0.747.
+//! The polynomial method this replaced (Cody & Waite's reduction and a degree-14 Taylor
+//! polynomial, 56 operations against 31 here) had 0.644 ulp, 0.73 % and 0.787 ulp over the
+//! same 10⁸ points (0.605 ulp and 0.72 % over the 10⁶).
 
 /// Below this eˣ is 0 after rounding (e^{−745.14} is half the smallest subnormal); arguments
 /// are clamped up to it, which also keeps 2^{m+64} a normal number.
@@ -53,9 +58,9 @@ const TWO_M64: f64 = f64::from_bits((1023 - 64) << 52);
 const INV_FACT: [f64; 5] = [1.0 / 2.0, 1.0 / 6.0, 1.0 / 24.0, 1.0 / 120.0, 1.0 / 720.0];
 
 /// 2^{i/32} = H_i·(1 + T_i) for i = 0 … 31: entry i the bits of T_i and those of H_i less
-/// i·2⁴⁷ (one 16-byte load per lane in wasm) (step 4 of the [module](self) docs). Computed with 60-digit decimal
-/// arithmetic (H_i the double nearest 2^{i/32}, T_i = (2^{i/32} − H_i)/H_i rounded to nearest);
-/// the entries for even i are those of ARM's 128-entry table at 4i.
+/// i·2⁴⁷ (step 4 of the [module](self) docs; one 16-byte load per lane). Computed with
+/// 60-digit decimal arithmetic (H_i the double nearest 2^{i/32}, T_i = (2^{i/32} − H_i)/H_i
+/// rounded to nearest); every entry i is that of ARM's 128-entry table at 4i.
 static TABLE: [[u64; 2]; 32] = [
     [0x0000000000000000, 0x3ff0000000000000],
     [0x3c8cd2523567f613, 0x3fefd9b0d3158574],
@@ -94,8 +99,9 @@ static TABLE: [[u64; 2]; 32] = [
 /// eˣ for each of the `L` arguments x ≤ 0 (the range of the Rényi kernel's pair factors) into
 /// `out`, each within 1 ulp of the exact value, without branches or fused operations: see the
 /// [module](self) for the method. Arguments below −746 give 0, as does the exact value
-/// rounded; x > 0 is outside the contract (the formula holds up to about 709, but only x ≤ 0
-/// is tested). Each lane's bits are those of the same argument in one lane.
+/// rounded; x > 0 is outside the contract (the formula holds up to about 665, where
+/// 2^{m+64} overflows, but only x ≤ 0 is tested). Each lane's bits are those of the same
+/// argument in one lane.
 #[inline(always)]
 pub(crate) fn exp_kernel_lanes<const L: usize>(x: &[f64; L], out: &mut [f64; L]) {
     // 1.–2. k and r.

@@ -65,7 +65,9 @@ impl BatchLikelihood {
     /// The common sizes (n, m ≤ 4) go to a kernel unrolled for them, [`LANES`] sets at a time
     /// ([`sum_fixed_lanes`], then [`sum_fixed`] for the last few), the others to the fixed
     /// tables ([`sum_matchings_small`], the smaller side as the columns); all with the
-    /// operations of the general programme in the same order (the same bits). The loop over
+    /// operations of the general programme in the same order (the same bits), except that
+    /// the unrolled kernels fold the last row into the final sum when n ≤ m, n, m ≥ 1 (within
+    /// 10⁻¹⁵ relatively; see `smc/fixed.rs`). The loop over
     /// the sets is the inner one, so the size dispatch is paid once per batch and not once per
     /// set.
     pub(crate) fn scaled_likelihoods(

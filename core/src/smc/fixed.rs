@@ -1,7 +1,9 @@
 //! The fixed-size kernels of eq. (20) of paper `004` (Ristic & Vo) for the small sets of the
 //! sensor control's future scans: the sum of [`super::matchings`] in plain arithmetic on
 //! stack tables, unrolled for sizes known at compile time, with the operations of the general
-//! programme in the same order (hence its bits).
+//! programme in the same order (hence its bits) when there are more objects than
+//! measurements or no measurement; otherwise the last row is folded into the final sum,
+//! which agrees with the general programme within 10⁻¹⁵ relatively.
 
 use super::matchings::{dp_row, fold_columns};
 
@@ -87,10 +89,8 @@ const SUBSET_SIZE: [u8; 1 << SMALL_SIDE] = {
 
 /// [`sum_matchings_small`] for N objects and M measurements known at compile time (so that
 /// every loop unrolls), the pair factors from `factor(i, j)`, the objects' miss factor `miss`
-/// and the measurements' `clutter[j]`: the smaller side as the columns, and the operations of
-/// `dp_row` and of the final sum in the same order, hence the same bits.
+/// and the measurements' `clutter[j]`: [`sum_fixed_lanes`] of one lane.
 #[inline(always)]
-#[allow(clippy::needless_range_loop)] // `clutter` is indexed by rows or by columns.
 pub(super) fn sum_fixed<const N: usize, const M: usize>(
     miss: f64,
     clutter: &[f64],
