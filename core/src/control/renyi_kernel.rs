@@ -407,6 +407,14 @@ impl CardinalityGroups {
 /// counted against the cut together, and the block then takes one of three loops.
 const BLOCK: usize = 16;
 
+/// ln p_D g(z | x) = k − v²/2 with v = (z − h)·(1/σ) for a measurement z and an object of
+/// range h, 1/σ = `s` and k = ln p_D/(σ√(2π)): the exponent of a pair factor of (20)–(21).
+#[inline(always)]
+fn pair_exponent(z: f64, h: f64, s: f64, k: f64) -> f64 {
+    let v = (z - h) * s;
+    k - 0.5 * v * v
+}
+
 /// The exps of the `BLOCK` arguments in `x`, in place ([`exp_kernel_lanes`]; not inlined, so
 /// that its code is in the module once).
 #[inline(never)]
@@ -499,8 +507,7 @@ impl GroupScratch {
                 let mut e = [0.0f64; BLOCK];
                 let mut above = 0usize;
                 for i in 0..BLOCK {
-                    let v = (zj - h[i]) * s[i];
-                    e[i] = k[i] - 0.5 * v * v;
+                    e[i] = pair_exponent(zj, h[i], s[i], k[i]);
                     above += usize::from(e[i] >= cut);
                 }
                 if above == 0 {
@@ -525,8 +532,7 @@ impl GroupScratch {
                 .iter()
                 .zip(g.s[whole..].iter().zip(&g.k[whole..]));
             for (e, (&ho, (&so, &ko))) in e.iter_mut().zip(tail) {
-                let v = (zj - ho) * so;
-                *e = ko - 0.5 * v * v;
+                *e = pair_exponent(zj, ho, so, ko);
             }
             packed += pack(
                 &e[..rest.len()],
@@ -536,16 +542,12 @@ impl GroupScratch {
                 &mut self.args[packed..],
                 &mut self.at[packed..],
             );
-            // The packed arguments a block at a time, the last block padded with zeros.
-            let (chunks, rest) = self.args[..packed].as_chunks_mut::<BLOCK>();
-            for a in chunks {
+            // The packed arguments a block at a time, the last block padded with zeros (`args`
+            // has `len + BLOCK` slots, and `packed ≤ len`).
+            let padded = packed.div_ceil(BLOCK) * BLOCK;
+            self.args[packed..padded].fill(0.0);
+            for a in self.args[..padded].as_chunks_mut::<BLOCK>().0 {
                 exp_block(a);
-            }
-            if !rest.is_empty() {
-                let mut last = [0.0f64; BLOCK];
-                last[..rest.len()].copy_from_slice(rest);
-                exp_block(&mut last);
-                rest.copy_from_slice(&last[..rest.len()]);
             }
             for (&i, &e) in self.at[..packed].iter().zip(&self.args[..packed]) {
                 row[i as usize] = e;
